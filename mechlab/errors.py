@@ -1,0 +1,26 @@
+"""Exceptions raised by mechlab.
+
+Every error is a :class:`MechanismError`, itself a :class:`ValueError`, so callers
+(and widgets) can catch one type and show its message: the message names the
+violated condition and shows the numbers.
+"""
+
+
+class MechanismError(ValueError):
+    """A mechanism's dimensions or requested motion are not admissible."""
+
+
+class DimensionError(MechanismError):
+    """A length or parameter is negative, zero, or not finite."""
+
+
+class AssemblyError(MechanismError):
+    """The linkage cannot be assembled at a requested crank angle."""
+
+
+class RotationError(MechanismError):
+    """The crank was asked to turn fully, but the linkage does not allow it."""
+
+
+class SingularityError(MechanismError):
+    """A dead point: the analogs are unbounded (transmission angle 0 or 180°)."""

@@ -1,0 +1,136 @@
+"""What every mechanism shares: the crank's reachable angles and the cycle."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+import numpy as np
+
+from ..errors import AssemblyError, RotationError
+from ..geometry import lift
+from ..motion import Motion
+
+TWO_PI = 2.0 * np.pi
+FULL_TURN = ((0.0, TWO_PI),)
+
+
+def arc_set(lo: float, hi: float, phase: float = 0.0) -> tuple[tuple[float, float], ...]:
+    """The crank angles φ with lo < cos(φ - phase) < hi, as open intervals (radians).
+
+    Returns ``FULL_TURN`` when every angle qualifies, ``()`` when none does, else one
+    or two intervals ``(start, end)`` with ``start < end``.
+    """
+    if lo >= 1.0 or hi <= -1.0 or lo >= hi:
+        return ()
+    if lo < -1.0 and hi > 1.0:
+        return FULL_TURN
+    a = float(np.arccos(min(hi, 1.0)))
+    b = float(np.arccos(max(lo, -1.0)))
+    if hi > 1.0:
+        arcs = ((-b, b),)
+    elif lo < -1.0:
+        arcs = ((a, TWO_PI - a),)
+    else:
+        arcs = ((a, b), (-b, -a))
+    return tuple((s + phase, e + phase) for s, e in arcs)
+
+
+def fmt_ranges(ranges) -> str:
+    return " or ".join(f"[{np.degrees(s):.2f}°, {np.degrees(e):.2f}°]" for s, e in ranges)
+
+
+class Mechanism:
+    """Base of the single-loop mechanisms: a crank O-A driving one output.
+
+    Subclasses are frozen dataclasses of their dimensions and define
+    :meth:`crank_ranges` and :meth:`motion`. ``links`` names the joints each moving
+    link joins (for drawing and for reading the structure), ``pivots`` the joints
+    fixed to the frame, ``output`` is ``"angle"`` or ``"position"``.
+    """
+
+    links: ClassVar[tuple[tuple[str, ...], ...]] = ()
+    pivots: ClassVar[tuple[str, ...]] = ("O",)
+    output: ClassVar[str] = "angle"
+
+    def crank_ranges(self) -> tuple[tuple[float, float], ...]:
+        """Open intervals of crank angles (radians) where the mechanism assembles."""
+        return FULL_TURN
+
+    @property
+    def can_turn(self) -> bool:
+        """True when the crank turns fully (a revolving input)."""
+        return self.crank_ranges() == FULL_TURN
+
+    def rotation_failure(self) -> str:
+        """Why the crank cannot turn fully (subclasses name the inequality)."""
+        return f"crank cannot turn fully: it reaches only φ ∈ {fmt_ranges(self.crank_ranges())}"
+
+    def turn(self, n: int = 361) -> np.ndarray:
+        """n crank angles over one full turn [0, 2π]; RotationError if the crank cannot turn."""
+        if not self.can_turn:
+            raise RotationError(self.rotation_failure())
+        return np.linspace(0.0, TWO_PI, n)
+
+    def cycle(self, n: int = 361) -> np.ndarray:
+        """n crank angles over a full turn, or strictly inside the first reachable range.
+
+        A crank that cannot turn rocks between two dead points, where the analogs are
+        unbounded; the samples stop short of them.
+        """
+        if self.can_turn:
+            return self.turn(n)
+        start, end = self.crank_ranges()[0]
+        margin = 1e-6 * (end - start)
+        return np.linspace(start + margin, end - margin, n)
+
+    def check_reachable(self, phi: np.ndarray) -> None:
+        """Raise AssemblyError naming the reachable range if some φ lies outside it."""
+        ranges = self.crank_ranges()
+        if ranges == FULL_TURN:
+            return
+        inside = np.zeros(phi.shape, dtype=bool)
+        for start, end in ranges:
+            t = np.mod(phi - start, TWO_PI)
+            inside |= (t > 0.0) & (t < end - start)
+        if not np.all(inside):
+            i = int(np.argmin(inside))
+            raise AssemblyError(
+                f"cannot assemble at φ = {np.degrees(phi[i]):.2f}°: {self.assembly_failure(phi[i])}; "
+                f"the crank reaches only φ ∈ {fmt_ranges(ranges)}")
+
+    def assembly_failure(self, phi: float) -> str:
+        """The violated condition at one crank angle (subclasses give the numbers)."""
+        return "the loop does not close"
+
+    def motion(self, phi) -> Motion:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+
+def branch_references(ranges, raw_angle, samples: int = 2049):
+    """Per crank range, the reference that makes an output angle continuous.
+
+    ``raw_angle(phi)`` gives principal angles. On each range the unwrapped angle θ
+    minus ``turns``·φ (turns = whole output turns per crank turn, 0 unless the crank
+    turns fully) spans less than 2π, so θ is the branch within π of ``mid + turns·φ``.
+    Returns tuples ``(start, end, mid, turns)``.
+    """
+    refs = []
+    for start, end in ranges:
+        phi = np.linspace(start, end, samples)[1:-1]
+        theta = np.unwrap(raw_angle(phi))
+        turns = round((theta[-1] - theta[0]) / TWO_PI) if ranges == FULL_TURN else 0
+        rel = theta - turns * phi
+        refs.append((start, end, 0.5 * (rel.min() + rel.max()), turns))
+    return tuple(refs)
+
+
+def lift_on_ranges(theta: np.ndarray, phi: np.ndarray, refs) -> np.ndarray:
+    """Principal angles ``theta`` moved onto the continuous branch given by ``refs``."""
+    if len(refs) == 1:
+        _, _, mid, turns = refs[0]
+        return lift(theta, mid + turns * phi)
+    out = theta.copy()
+    for start, end, mid, turns in refs:
+        on = np.mod(phi - start, TWO_PI) <= end - start
+        out[on] = lift(theta[on], mid + turns * phi[on])
+    return out

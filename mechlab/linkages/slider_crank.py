@@ -1,0 +1,77 @@
+"""The offset slider-crank O-A-B with the slider B on a line parallel to the x axis.
+
+Frame: crank pivot O at the origin; the slider's guide is the line y = ``offset``;
+φ is measured counter-clockwise from the +x axis; the output s is the slider's x
+coordinate. ``assembly = +1`` puts the slider ahead of the pin along +x (the usual
+drawing), ``-1`` behind it (the mirror image in the y axis of the offset-mirrored
+mechanism: s₋(φ; e) = -s₊(π - φ; e), with the same offset e).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import AssemblyError
+from ..geometry import as_angles, check_length, check_sign, crank_point, dyad_rrp, fixed_point
+from ..motion import LinearMotion
+from .base import Mechanism, arc_set, fmt_ranges
+
+
+@dataclass(frozen=True)
+class SliderCrank(Mechanism):
+    """Crank O-A, rod A-B, slider B on the line y = offset; output s = x of B.
+
+    The crank turns fully when crank + |offset| < rod. Raises DimensionError for bad
+    lengths, AssemblyError if it closes at no crank angle.
+    """
+
+    crank: float
+    rod: float
+    offset: float = 0.0
+    assembly: int = 1
+
+    links = (("O", "A"), ("A", "B"))
+    pivots = ("O",)
+    output = "position"
+
+    def __post_init__(self):
+        object.__setattr__(self, "crank", check_length("crank", self.crank))
+        object.__setattr__(self, "rod", check_length("rod", self.rod))
+        e = float(self.offset)
+        if not np.isfinite(e):
+            from ..errors import DimensionError
+            raise DimensionError(f"offset must be finite, got {e}")
+        object.__setattr__(self, "offset", e)
+        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
+        if not self.crank_ranges():
+            raise AssemblyError(
+                f"the slider-crank cannot be assembled at any crank angle: the pin's distance from "
+                f"the guide, |crank·sin φ - offset|, is at least {abs(self.offset) - self.crank:.4g} "
+                f"≥ rod = {self.rod:.4g}")
+
+    def crank_ranges(self):
+        # |a sin φ - e| < rod  <=>  (e - rod)/a < cos(φ - π/2) < (e + rod)/a
+        a, e, l = self.crank, self.offset, self.rod
+        return arc_set((e - l) / a, (e + l) / a, phase=np.pi / 2)
+
+    def rotation_failure(self) -> str:
+        a, e, l = self.crank, self.offset, self.rod
+        return (f"crank cannot turn fully: crank + |offset| = {a + abs(e):.2f} ≥ rod = {l:.2f}; "
+                f"it reaches only φ ∈ {fmt_ranges(self.crank_ranges())}")
+
+    def assembly_failure(self, phi: float) -> str:
+        gap = abs(self.crank * np.sin(phi) - self.offset)
+        return f"the pin is {gap:.4g} from the guide, ≥ rod = {self.rod:.4g}"
+
+    def motion(self, phi) -> LinearMotion:
+        """Paths of O, A, B and the law s, s', s'' at crank angles φ (radians)."""
+        phi = as_angles(phi)
+        self.check_reachable(phi)
+        A = crank_point(self.crank, phi)
+        B, s = dyad_rrp(A, (0.0, self.offset), 0.0, self.rod, self.assembly, phi, "the rod-slider dyad")
+        # Transmission angle: between the rod and the normal to the guide.
+        mu = np.pi / 2 - np.arcsin(np.clip(np.abs(A.p[:, 1] - self.offset) / self.rod, 0.0, 1.0))
+        return LinearMotion(phi, {"O": fixed_point((0.0, 0.0), len(phi)), "A": A, "B": B},
+                            mu, s.theta, s.d, s.dd)

@@ -1,0 +1,97 @@
+"""Slotted links with a straight slot: seed 000's base mechanisms.
+
+* :class:`SlottedLink` — the link turns about a pivot B, its straight slot passes
+  through B and carries the crank pin A (seed 000, Fig. 5). Frame of seed 000 §2:
+  crank pivot O at the origin, link pivot B at (-pivot_distance, 0), so that φ = 0
+  where A is farthest from B; ψ is the link's angle from the ray B→O. With
+  λ = l_OA / l_OB, tan ψ = λ sin φ / (λ cos φ + 1) (seed 000, formula (18)).
+  λ < 1: the link oscillates; λ > 1: it turns fully (Whitworth quick return).
+* :class:`SineMechanism` — the translating slotted link (Scotch yoke) whose straight
+  slot is perpendicular to its guide (seed 000, Fig. 6): s = l_OA cos φ (formula (2)).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import DimensionError
+from ..geometry import AnglePath, PointPath, as_angles, check_length, crank_point, dyad_rpr, fixed_point, lift
+from ..motion import AngularMotion, LinearMotion
+from .base import Mechanism
+
+
+@dataclass(frozen=True)
+class SlottedLink(Mechanism):
+    """Crank O-A (radius ``crank``) driving a slotted link pivoted at B = (-pivot_distance, 0).
+
+    Raises DimensionError for bad lengths and for λ = crank / pivot_distance = 1,
+    where the pin passes through the pivot and the slot's direction is undefined.
+    """
+
+    crank: float
+    pivot_distance: float
+
+    links = (("O", "A"),)
+    pivots = ("O", "B")
+    output = "angle"
+
+    def __post_init__(self):
+        object.__setattr__(self, "crank", check_length("crank", self.crank))
+        object.__setattr__(self, "pivot_distance", check_length("pivot_distance", self.pivot_distance))
+        if abs(self.lam - 1.0) <= 1e-12:
+            raise DimensionError(
+                f"λ = crank / pivot_distance = {self.crank:g} / {self.pivot_distance:g} = 1: the pin "
+                f"passes through the pivot B at φ = 180°, where the slot direction is undefined")
+
+    @property
+    def lam(self) -> float:
+        """λ = l_OA / l_OB (seed 000, text before formula (18))."""
+        return self.crank / self.pivot_distance
+
+    @property
+    def rotates(self) -> bool:
+        """True for λ > 1, where the slotted link turns fully."""
+        return self.lam > 1.0
+
+    def motion(self, phi) -> AngularMotion:
+        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, seed 000 frame)."""
+        phi = as_angles(phi)
+        n = len(phi)
+        A = crank_point(self.crank, phi)
+        B = fixed_point((-self.pivot_distance, 0.0), n)
+        ang, _ = dyad_rpr(A, B)
+        # λ < 1: A - B always has a positive x component, so ψ is principal;
+        # λ > 1: ψ - φ = -atan(sin φ / (λ + cos φ)) stays within π/2 of 0.
+        psi = lift(ang.theta, phi) if self.rotates else ang.theta
+        mu = np.full(n, np.pi / 2)  # the pin pushes along the slot's normal: no pressure angle
+        return AngularMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "B": B}, mu, psi, ang.d, ang.dd)
+
+
+@dataclass(frozen=True)
+class SineMechanism(Mechanism):
+    """Scotch yoke: the pin A drives a yoke whose slot is perpendicular to its guide (x axis).
+
+    The output s is the yoke's x coordinate, s = crank·cos φ; joint K = (s, 0) is where
+    the slot's centre line crosses the guide.
+    """
+
+    crank: float
+
+    links = (("O", "A"),)
+    pivots = ("O",)
+    output = "position"
+
+    def __post_init__(self):
+        object.__setattr__(self, "crank", check_length("crank", self.crank))
+
+    def motion(self, phi) -> LinearMotion:
+        """Paths of O, A, K and s, s', s'' at crank angles φ (radians)."""
+        phi = as_angles(phi)
+        n = len(phi)
+        A = crank_point(self.crank, phi)
+        law = AnglePath(A.p[:, 0].copy(), A.d[:, 0].copy(), A.dd[:, 0].copy())
+        K = PointPath(*(np.stack([x, np.zeros(n)], axis=-1) for x in law))
+        mu = np.full(n, np.pi / 2)
+        return LinearMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "K": K}, mu, *law)

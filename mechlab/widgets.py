@@ -1,0 +1,205 @@
+"""ipywidgets controls bound to :mod:`mechlab.draw`.
+
+Sliders are in degrees and mm (or the mechanism's length unit); the explorer builds
+the mechanism from the slider values, computes its whole cycle once, and moves the
+existing artists (no new figure per slider move). A geometry that cannot be built
+shows its :class:`~mechlab.errors.MechanismError` message in place of the drawing,
+and the widget stays usable. Works with the inline backend (the figure is
+re-shown in an Output widget) and with ipympl (``%matplotlib widget``: the canvas
+itself is the widget and redraws in place).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import ipywidgets as W
+import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
+from IPython.display import display
+
+from .draw import drawing_class
+from .errors import MechanismError
+from .linkages import FourBar
+
+
+@dataclass(frozen=True)
+class Control:
+    """A slider: label, range, step, initial value and unit ("mm", "deg", "" …).
+
+    Values of a "deg" control reach the factory in radians.
+    """
+
+    label: str
+    min: float
+    max: float
+    step: float
+    value: float
+    unit: str = ""
+
+
+def _uses_ipympl() -> bool:
+    return "ipympl" in matplotlib.get_backend() or "widget" in matplotlib.get_backend().lower()
+
+
+class MechanismExplorer:
+    """Sliders → ``factory(**values)`` → drawing, output law and transmission angle.
+
+    ``controls`` maps the factory's keyword names to :class:`Control`; a control
+    named ``assembly`` becomes a ±1 toggle; the crank angle slider (degrees) is
+    added by the explorer. ``trace`` names a joint whose path is drawn.
+    """
+
+    def __init__(self, factory: Callable, controls: dict[str, Control], *, assembly: bool = False,
+                 trace: str | None = None, n: int = 181, title: str = ""):
+        self.factory = factory
+        self.controls = controls
+        self.n = n
+        self.message = ""
+        self.mechanism = None
+        self.motion = None
+        self.frame = 0
+        self.sliders = {name: W.FloatSlider(value=c.value, min=c.min, max=c.max, step=c.step,
+                                            description=f"{c.label} ({c.unit})" if c.unit else c.label,
+                                            continuous_update=True, style={"description_width": "110px"},
+                                            layout=W.Layout(width="380px"))
+                        for name, c in controls.items()}
+        if assembly:
+            self.sliders["assembly"] = W.ToggleButtons(options=[("kc = +1", 1), ("kc = -1", -1)], value=1,
+                                                       description="assembly")
+        self.angle = W.FloatSlider(value=0.0, min=0.0, max=360.0, step=1.0, description="crank φ (deg)",
+                                   continuous_update=True, style={"description_width": "110px"},
+                                   layout=W.Layout(width="380px"))
+        self.play = W.Play(value=0, min=0, max=359, step=4, interval=40, description="play")
+        W.jslink((self.play, "value"), (self.angle, "value"))
+        self.status = W.HTML()
+
+        ipympl = _uses_ipympl()
+        if ipympl:
+            with plt.ioff():
+                self.fig = plt.figure(figsize=(9, 4))
+        else:
+            self.fig = matplotlib.figure.Figure(figsize=(9, 4), dpi=80)
+        self.ax_mech, self.ax_law = self.fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.1, 1]})
+        if title:
+            self.fig.suptitle(title)
+        self.error_text = self.fig.text(0.5, 0.5, "", ha="center", va="center", wrap=True, color="#b00020",
+                                        fontsize=12, bbox=dict(fc="#fff0f0", ec="#b00020"))
+        self.law_lines = {k: self.ax_law.plot([], [], label=k)[0] for k in ("law", "first", "second")}
+        (self.law_marker,) = self.ax_law.plot([], [], "ko", ms=5)
+        self.ax_law.axhline(0.0, color="0.6", lw=0.8)
+        self.ax_law.set_xlabel("φ, degrees")
+        self.ax_law.set_xlim(0, 360)
+        self.ax_law.grid(True, alpha=0.3)
+        self.drawing = None
+        self.trace = trace
+
+        self.output = None if ipympl else W.Output()
+        canvas = self.fig.canvas if ipympl else self.output
+        for w in self.sliders.values():
+            w.observe(self._on_dimensions, names="value")
+        self.angle.observe(self._on_angle, names="value")
+        self.widget = W.VBox([W.HBox([W.VBox(list(self.sliders.values())),
+                                      W.VBox([self.angle, self.play, self.status])]), canvas])
+        self.rebuild()
+
+    # -- state -----------------------------------------------------------------------
+    def values(self) -> dict:
+        """Current slider values as the factory receives them (radians for "deg")."""
+        out = {}
+        for name, w in self.sliders.items():
+            c = self.controls.get(name)
+            out[name] = np.radians(w.value) if c is not None and c.unit == "deg" else w.value
+        return out
+
+    def rebuild(self):
+        """Build the mechanism from the sliders and redraw (message on a MechanismError)."""
+        try:
+            mechanism = self.factory(**self.values())
+            phi = mechanism.cycle(self.n)
+            motion = mechanism.motion(phi)
+        except MechanismError as err:
+            self._show_error(str(err))
+            return
+        self.mechanism, self.motion = mechanism, motion
+        self.message = ""
+        if self.drawing is None or type(self.drawing) is not drawing_class(mechanism):
+            self.ax_mech.clear()
+            self.drawing = drawing_class(mechanism)(self.ax_mech, mechanism, trace=self.trace, n=self.n)
+        self.drawing.set_motion(mechanism, motion)
+        self.drawing.autoscale()
+        deg = np.degrees(phi)
+        law = motion._law()
+        names = ("ψ (rad)", "ψ′", "ψ″") if mechanism.output == "angle" else ("s", "s′", "s″")
+        for line, y, name in zip(self.law_lines.values(), law, names):
+            line.set_data(deg, y)
+            line.set_label(name)
+        lo = min(float(np.min(y)) for y in law)
+        hi = max(float(np.max(y)) for y in law)
+        pad = 0.05 * (hi - lo) + 1e-9
+        self.ax_law.set_xlim(deg[0], deg[-1])
+        self.ax_law.set_ylim(lo - pad, hi + pad)
+        self.ax_law.legend(loc="upper right", fontsize=8)
+        mu = np.degrees(motion.transmission)
+        self.status.value = (f"transmission angle μ: {mu.min():.1f}° … {mu.max():.1f}°"
+                             + ("" if mechanism.can_turn else " · crank rocks: range limited"))
+        self._set_visible(True)
+        self._select_frame()
+        self._redraw()
+
+    def _select_frame(self):
+        phi = np.degrees(self.motion.phi)
+        target = self.angle.value
+        if self.mechanism.can_turn:
+            self.frame = int(np.argmin(np.abs((phi - target + 180.0) % 360.0 - 180.0)))
+        else:
+            self.frame = int(np.clip(np.searchsorted(phi, target), 0, len(phi) - 1))
+        self.drawing.set_frame(self.frame)
+        law = self.motion._law()[0]
+        self.law_marker.set_data([phi[self.frame]], [law[self.frame]])
+
+    def _show_error(self, text: str):
+        self.message = text
+        self.mechanism = self.motion = None
+        self._set_visible(False)
+        self.error_text.set_text(text)
+        self.status.value = f"<span style='color:#b00020'>{text}</span>"
+        self._redraw()
+
+    def _set_visible(self, ok: bool):
+        for ax in (self.ax_mech, self.ax_law):
+            ax.set_visible(ok)
+        self.error_text.set_visible(not ok)
+        if ok:
+            self.error_text.set_text("")
+
+    def _on_dimensions(self, change):
+        self.rebuild()
+
+    def _on_angle(self, change):
+        if self.motion is None:
+            return
+        self._select_frame()
+        self._redraw()
+
+    def _redraw(self):
+        if self.output is None:
+            self.fig.canvas.draw_idle()
+        else:
+            with self.output:
+                self.output.clear_output(wait=True)
+                display(self.fig)
+
+    def _ipython_display_(self):
+        display(self.widget)
+
+
+def fourbar_explorer(crank=1.0, coupler=3.0, rocker=3.0, ground=4.0, *, max_length=10.0, trace="B"):
+    """Sliders for a four-bar's four lengths (mm) and its assembly, with its animation."""
+    def ctl(label, v):
+        return Control(label, 0.1, max_length, 0.05, v, "mm")
+    controls = {"crank": ctl("crank OA", crank), "coupler": ctl("coupler AB", coupler),
+                "rocker": ctl("rocker BE", rocker), "ground": ctl("ground OE", ground)}
+    return MechanismExplorer(FourBar, controls, assembly=True, trace=trace, title="Four-bar O-A-B-E")

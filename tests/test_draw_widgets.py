@@ -1,0 +1,63 @@
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+
+from mechlab import FourBar, SineMechanism, SliderCrank, SlottedLink
+from mechlab.draw import animate, draw, drawing_class, plot_law
+from mechlab.widgets import fourbar_explorer
+
+MECHANISMS = [FourBar(1, 3, 3, 4), FourBar(3, 3, 3, 4, -1), SliderCrank(1, 3, 0.4), SlottedLink(0.5, 1.0),
+              SlottedLink(2.0, 1.0), SineMechanism(1.0)]
+
+
+@pytest.mark.parametrize("mech", MECHANISMS, ids=lambda m: type(m).__name__)
+def test_frames_move_the_same_artists(mech):
+    fig, ax = plt.subplots()
+    drawing = drawing_class(mech)(ax, mech, trace="A")
+    before = [id(a) for a in drawing.artists]
+    n_children = len(ax.get_children())
+    for i in range(0, drawing.n, 30):
+        drawing.set_frame(i)
+        A = drawing.motion.points["A"].p[i]
+        xs, ys = drawing.link_lines[0].get_data()
+        assert np.allclose([xs[-1], ys[-1]], A)  # the crank line ends at the pin
+    assert [id(a) for a in drawing.artists] == before
+    assert len(ax.get_children()) == n_children
+    plt.close(fig)
+
+
+def test_animation_plays_as_javascript():
+    anim = animate(FourBar(1, 3, 3, 4), n=6, trace="B")
+    html = anim.to_jshtml()
+    assert html.count("data:image/png;base64") == 6 or "frames[5]" in html
+    assert "anim" in html
+
+
+def test_draw_and_plot_law():
+    d = draw(SliderCrank(1, 3), phi=0.5)
+    assert np.allclose(d.motion.points["A"].p[0], [np.cos(0.5), np.sin(0.5)])
+    lines = plot_law(FourBar(1, 3, 3, 4).motion(np.linspace(0, 6, 50)))
+    assert len(lines) == 3
+    plt.close("all")
+
+
+def test_explorer_shows_a_bad_geometry_as_a_message_and_recovers():
+    ex = fourbar_explorer()
+    n_figs = len(plt.get_fignums())
+    artists = [id(a) for a in ex.drawing.artists]
+    ex.sliders["crank"].value = 2.5  # non-Grashof for the crank: rocks, still drawable
+    assert ex.message == "" and not ex.mechanism.can_turn
+    ex.sliders["ground"].value = 9.9  # |AE| ≥ 7.4 > coupler + rocker = 6: cannot assemble
+    assert "cannot be assembled" in ex.message
+    assert ex.error_text.get_visible() and not ex.ax_mech.get_visible()
+    ex.sliders["ground"].value = 4.0
+    ex.sliders["crank"].value = 1.0
+    assert ex.message == "" and ex.mechanism.can_turn
+    assert ex.ax_mech.get_visible() and not ex.error_text.get_visible()
+    ex.angle.value = 90.0
+    A = ex.drawing.link_lines[0].get_data()
+    assert np.allclose([A[0][-1], A[1][-1]], [0.0, 1.0], atol=0.02)
+    assert [id(a) for a in ex.drawing.artists] == artists
+    assert len(plt.get_fignums()) == n_figs  # no new figure per slider move
+    ex.sliders["assembly"].value = -1
+    assert np.all(ex.motion.psi < 0)

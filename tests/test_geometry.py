@@ -1,0 +1,122 @@
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from mechlab import AssemblyError, DimensionError, SingularityError
+from mechlab.geometry import (as_angles, check_length, circle_circle, cross, crank_point, dyad_rrp, dyad_rrr,
+                              dyad_rpr, fixed_point, line_circle, wrap)
+from mechlab.linkages.base import FULL_TURN, arc_set
+
+coords = st.floats(-5, 5)
+
+
+@given(coords, coords, coords, coords, st.floats(0.5, 4), st.floats(0.5, 4), st.sampled_from([1, -1]))
+def test_circle_circle_lies_on_both_circles_on_the_requested_side(x1, y1, x2, y2, r1, r2, sign):
+    c1, c2 = np.array([[x1, y1]]), np.array([[x2, y2]])
+    d = np.hypot(x2 - x1, y2 - y1)
+    if not (abs(r1 - r2) + 1e-3 < d < r1 + r2 - 1e-3):
+        with pytest.raises((AssemblyError, SingularityError)):
+            circle_circle(c1, r1, c2, r2, sign)
+        return
+    p = circle_circle(c1, r1, c2, r2, sign)
+    assert np.hypot(*(p - c1)[0]) == pytest.approx(r1, abs=1e-12)
+    assert np.hypot(*(p - c2)[0]) == pytest.approx(r2, abs=1e-12)
+    assert np.sign(cross(c2 - c1, p - c1))[0] == sign
+
+
+def test_circle_circle_error_names_the_numbers():
+    with pytest.raises(AssemblyError, match=r"outside \[\|1 - 1\|, 1 \+ 1\] = \[0, 2\]"):
+        circle_circle(np.zeros((1, 2)), 1.0, np.array([[3.0, 0.0]]), 1.0, 1)
+    with pytest.raises(SingularityError, match="dead point"):
+        circle_circle(np.zeros((1, 2)), 1.0, np.array([[2.0, 0.0]]), 1.0, 1)
+
+
+def _moving_point(phi):
+    """An arbitrary smooth point path with exact analogs, for the dyad tests."""
+    p = np.stack([0.3 * np.cos(phi) + 0.1 * np.sin(2 * phi), 0.4 * np.sin(phi)], axis=-1)
+    d = np.stack([-0.3 * np.sin(phi) + 0.2 * np.cos(2 * phi), 0.4 * np.cos(phi)], axis=-1)
+    dd = np.stack([-0.3 * np.cos(phi) - 0.4 * np.sin(2 * phi), -0.4 * np.sin(phi)], axis=-1)
+    from mechlab.geometry import PointPath
+    return PointPath(p, d, dd)
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+def test_rrr_dyad_closes_and_its_analogs_match_differences(sign):
+    phi = np.linspace(0, 2 * np.pi, 101)
+    h = 1e-5
+    E = fixed_point((2.0, 0.5), len(phi))
+    solve = lambda f: dyad_rrr(_moving_point(f), fixed_point((2.0, 0.5), len(f)), 1.5, 1.2, sign)
+    B = solve(phi)
+    A = _moving_point(phi)
+    assert np.max(np.abs(np.hypot(*(B.p - A.p).T) - 1.5)) < 1e-12
+    assert np.max(np.abs(np.hypot(*(B.p - E.p).T) - 1.2)) < 1e-12
+    Bp, Bm = solve(phi + h), solve(phi - h)
+    assert np.max(np.abs((Bp.p - Bm.p) / (2 * h) - B.d)) < 1e-7
+    assert np.max(np.abs((Bp.d - Bm.d) / (2 * h) - B.dd)) < 1e-7
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+def test_rrp_dyad_analogs_match_differences(sign):
+    phi = np.linspace(0, 2 * np.pi, 101)
+    h = 1e-5
+    solve = lambda f: dyad_rrp(_moving_point(f), (0.0, 0.2), 0.3, 1.0, sign)
+    B, s = solve(phi)
+    A = _moving_point(phi)
+    assert np.max(np.abs(np.hypot(*(B.p - A.p).T) - 1.0)) < 1e-12
+    (_, sp), (_, sm) = solve(phi + h), solve(phi - h)
+    assert np.max(np.abs((sp.theta - sm.theta) / (2 * h) - s.d)) < 1e-7
+    assert np.max(np.abs((sp.d - sm.d) / (2 * h) - s.dd)) < 1e-7
+
+
+def test_rpr_dyad_analogs_match_differences():
+    phi = np.linspace(0, 2 * np.pi, 101)
+    h = 1e-5
+    solve = lambda f: dyad_rpr(_moving_point(f), fixed_point((-1.0, 0.1), len(f)))
+    ang, rho = solve(phi)
+    (ap, rp), (am, rm) = solve(phi + h), solve(phi - h)
+    assert np.max(np.abs(wrap(ap.theta - am.theta) / (2 * h) - ang.d)) < 1e-7
+    assert np.max(np.abs((ap.d - am.d) / (2 * h) - ang.dd)) < 1e-7
+    assert np.max(np.abs((rp.theta - rm.theta) / (2 * h) - rho.d)) < 1e-7
+    assert np.max(np.abs((rp.d - rm.d) / (2 * h) - rho.dd)) < 1e-7
+
+
+def test_line_circle_reports_a_pin_too_far_from_the_guide():
+    with pytest.raises(AssemblyError, match="more than the rod length 1"):
+        line_circle(np.zeros(2), np.array([1.0, 0.0]), np.array([[0.0, 2.0]]), 1.0, 1)
+
+
+@given(st.floats(-3, 3), st.floats(-3, 3), st.floats(-np.pi, np.pi))
+@settings(max_examples=200)
+def test_arc_set_agrees_with_brute_force(lo, hi, phase):
+    ranges = arc_set(lo, hi, phase)
+    phi = np.linspace(-np.pi, np.pi, 2000, endpoint=False) + 1e-4
+    want = (np.cos(phi - phase) > lo) & (np.cos(phi - phase) < hi)
+    got = np.zeros_like(want)
+    for s, e in ranges:
+        t = np.mod(phi - s, 2 * np.pi)
+        got |= (t > 0) & (t < e - s)
+    margin = np.abs(np.cos(phi - phase) - lo).clip(max=1) * np.abs(np.cos(phi - phase) - hi).clip(max=1) > 1e-6
+    assert np.array_equal(got[margin], want[margin])
+    if ranges == FULL_TURN:
+        assert want.all()
+
+
+def test_bad_numbers_are_named():
+    with pytest.raises(DimensionError, match="crank must be > 0, got -1"):
+        check_length("crank", -1)
+    with pytest.raises(DimensionError, match="must be finite"):
+        check_length("crank", float("nan"))
+    with pytest.raises(DimensionError, match="must be a number"):
+        check_length("crank", "abc")
+    with pytest.raises(DimensionError, match="finite"):
+        as_angles([0.0, np.nan])
+    with pytest.raises(DimensionError, match="1-D"):
+        as_angles(np.zeros((2, 2)))
+
+
+def test_crank_point_analogs():
+    phi = np.array([0.3])
+    A = crank_point(2.0, phi)
+    assert np.allclose(A.d, 2.0 * np.array([[-np.sin(0.3), np.cos(0.3)]]))
+    assert np.allclose(A.dd, -A.p)
