@@ -20,9 +20,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 from IPython.display import display
 
-from .draw import drawing_class
-from .errors import MechanismError
-from .linkages import FourBar
+from ..draw import drawing_class
+from ..errors import MechanismError
+from ..linkages import FourBar
 
 
 @dataclass(frozen=True)
