@@ -98,17 +98,76 @@ def check_sign(name: str, value) -> int:
     return int(value)
 
 
+def as_complex(a):
+    """Points as complex numbers x + iy: an (n, 2) array becomes a complex (n,) array
+    (a view, no copy, when the array is C-contiguous); a fixed point a complex scalar."""
+    a = np.asarray(a, dtype=float)
+    if a.ndim == 1:
+        return complex(a[0], a[1])
+    if a.strides[0] == 0:
+        return complex(a[0, 0], a[0, 1])
+    if not a.flags.c_contiguous:
+        a = np.ascontiguousarray(a)
+    return a.view(np.complex128)[:, 0]
+
+
+def as_xy(z, n: int | None = None) -> np.ndarray:
+    """Complex points as an (n, 2) float array: a view of a complex array, or a read-only
+    broadcast of a complex scalar over n rows."""
+    if np.ndim(z) == 0:
+        return np.broadcast_to(np.array([z.real, z.imag], dtype=float), (n, 2))
+    z = np.ascontiguousarray(z, dtype=np.complex128)
+    return z.view(np.float64).reshape(-1, 2)
+
+
+def _re_conj(u, v):
+    """Re(conj(u)·v) = u·v for complex arrays (0 when v is the scalar 0)."""
+    if np.ndim(v) == 0 and v == 0:
+        return 0.0
+    return u.real * v.real + u.imag * v.imag
+
+
+def _im_conj(u, v):
+    """Im(conj(u)·v) = u × v for complex arrays."""
+    return u.real * v.imag - u.imag * v.real
+
+
+def _abs2(z):
+    return z.real * z.real + z.imag * z.imag
+
+
 def fixed_point(xy, n: int) -> PointPath:
-    """A point fixed to the frame, as a path over n crank angles."""
-    p = np.broadcast_to(np.asarray(xy, dtype=float), (n, 2)).copy()
-    z = np.zeros((n, 2))
-    return PointPath(p, z, z.copy())
+    """A point fixed to the frame over n crank angles (read-only broadcast arrays)."""
+    p = np.broadcast_to(np.asarray(xy, dtype=float), (n, 2))
+    z = np.broadcast_to(np.zeros(2), (n, 2))
+    return PointPath(p, z, z)
+
+
+def unit_complex(phi: np.ndarray) -> np.ndarray:
+    """exp(iφ) for an array of angles.
+
+    On a uniform grid φ_k = φ_0 + k·h (checked to a few ulps) it is built as the outer
+    product exp(i(φ_0 + j·m·h))·exp(i·l·h) of two short tables, one complex product per
+    angle (error ≤ 2e-15), instead of a sine and a cosine per angle.
+    """
+    n = len(phi)
+    if n >= 4096:
+        h = (phi[-1] - phi[0]) / (n - 1)
+        k = np.arange(n, dtype=float)
+        if np.max(np.abs(phi - (phi[0] + k * h))) <= 8 * np.finfo(float).eps * (1.0 + np.abs(phi).max()):
+            m = int(np.sqrt(n)) + 1
+            fine = np.exp(1j * h * np.arange(m))
+            coarse = np.exp(1j * (phi[0] + h * m * np.arange((n + m - 1) // m)))
+            return np.multiply.outer(coarse, fine).ravel()[:n]
+    return np.exp(1j * phi)
 
 
 def crank_point(radius: float, phi: np.ndarray, centre=(0.0, 0.0)) -> PointPath:
-    """The pin of a crank of given radius at angles φ about ``centre``."""
-    u = unit(phi)
-    return PointPath(np.asarray(centre, dtype=float) + radius * u, radius * perp(u), -radius * u)
+    """The pin of a crank of given radius at angles φ about ``centre``: p' = i·(p - centre), p'' = -(p - centre)."""
+    r = unit_complex(phi)
+    r *= radius
+    c = complex(centre[0], centre[1])
+    return PointPath(as_xy(r + c if c else r), as_xy(1j * r), as_xy(-r))
 
 
 def relative(q: PointPath, p: PointPath) -> PointPath:
@@ -118,11 +177,11 @@ def relative(q: PointPath, p: PointPath) -> PointPath:
 
 def vector_angle(v: PointPath) -> AnglePath:
     """Principal angle of a moving vector v(φ) with θ' = v×v'/|v|² and its derivative."""
-    r2 = dot(v.p, v.p)
-    c1 = cross(v.p, v.d)
-    d = c1 / r2
-    dd = cross(v.p, v.dd) / r2 - 2.0 * c1 * dot(v.p, v.d) / r2**2
-    return AnglePath(np.arctan2(v.p[:, 1], v.p[:, 0]), d, dd)
+    z, dz, ddz = as_complex(v.p), as_complex(v.d), as_complex(v.dd)
+    r2 = _abs2(z)
+    d = _im_conj(z, dz) / r2
+    dd = _im_conj(z, ddz) / r2 - 2.0 * d * _re_conj(z, dz) / r2
+    return AnglePath(np.angle(z), d, dd)
 
 
 def lift(theta: np.ndarray, reference) -> np.ndarray:
@@ -134,57 +193,98 @@ def _fmt_deg(phi: float) -> str:
     return f"{np.degrees(phi):.2f}°"
 
 
+def _where(phi, i) -> str:
+    return f" at φ = {_fmt_deg(phi[i])}" if phi is not None else ""
+
+
+def _raise_distance_error(d2, r1: float, r2: float, tol: float, phi, what: str):
+    """Name the first row whose joint distance is out of reach or at a dead point."""
+    lo, hi = abs(r1 - r2), r1 + r2
+    out = (d2 > (hi + tol) ** 2) | (d2 < max(lo - tol, 0.0) ** 2)
+    if out.any():
+        i = int(np.argmax(out))
+        raise AssemblyError(
+            f"cannot assemble {what}{_where(phi, i)}: the joint distance is {np.sqrt(d2[i]):.6g}, outside "
+            f"[|{r1:g} - {r2:g}|, {r1:g} + {r2:g}] = [{lo:.6g}, {hi:.6g}]")
+    i = int(np.argmax((d2 >= (hi - tol) ** 2) | (d2 <= (lo + tol) ** 2)))
+    d = np.sqrt(d2[i])
+    raise SingularityError(
+        f"dead point of {what}{_where(phi, i)}: the joint distance {d:.6g} equals "
+        f"{'r1 + r2' if abs(d - hi) <= tol else '|r1 - r2|'}; the analogs are unbounded there")
+
+
+def _circle_circle_z(z1, r1: float, z2, r2: float, sign: int, phi, what: str):
+    """Complex core of :func:`circle_circle`."""
+    v = z2 - z1
+    d2 = np.atleast_1d(_abs2(v))
+    tol = DEAD_POINT_TOL * (r1 + r2)
+    # two reductions decide the usual case: every row assembles away from a dead point
+    if not (d2.min() > (abs(r1 - r2) + tol) ** 2 and d2.max() < (r1 + r2 - tol) ** 2):
+        _raise_distance_error(d2, r1, r2, tol, phi, what)
+    d = np.sqrt(d2)
+    a = (r1 * r1 - r2 * r2 + d2) / (2.0 * d)
+    h = np.sqrt(np.maximum(r1 * r1 - a * a, 0.0))
+    # the point a along the unit vector v/d and h to its left (sign +1) or right
+    return z1 + v * ((a + (1j * sign) * h) / d)
+
+
 def circle_circle(c1: np.ndarray, r1: float, c2: np.ndarray, r2: float, sign: int,
                   phi: np.ndarray | None = None, what: str = "the dyad") -> np.ndarray:
-    """Intersection of circle (c1, r1) with circle (c2, r2), vectorised.
+    """Intersection of circle (c1, r1) with circle (c2, r2), vectorised over rows.
 
     ``sign`` = +1 returns the point on the left of the directed line c1 → c2,
     -1 the one on its right. Raises AssemblyError where the circles do not meet and
     SingularityError where they only touch (stretched or folded dyad).
     """
-    v = c2 - c1
-    d = np.hypot(v[:, 0], v[:, 1])
-    lo, hi = abs(r1 - r2), r1 + r2
-    tol = DEAD_POINT_TOL * hi
-    bad = (d > hi + tol) | (d < lo - tol)
-    if np.any(bad):
-        i = int(np.argmax(bad))
-        at = f" at φ = {_fmt_deg(phi[i])}" if phi is not None else ""
-        raise AssemblyError(
-            f"cannot assemble {what}{at}: the joint distance is {d[i]:.6g}, outside "
-            f"[|{r1:g} - {r2:g}|, {r1:g} + {r2:g}] = [{lo:.6g}, {hi:.6g}]")
-    touch = (np.abs(d - hi) <= tol) | (np.abs(d - lo) <= tol)
-    if np.any(touch):
-        i = int(np.argmax(touch))
-        at = f" at φ = {_fmt_deg(phi[i])}" if phi is not None else ""
-        raise SingularityError(
-            f"dead point of {what}{at}: the joint distance {d[i]:.6g} equals "
-            f"{'r1 + r2' if abs(d[i] - hi) <= tol else '|r1 - r2|'}; the analogs are unbounded there")
-    u = v / d[:, None]
-    a = (r1**2 - r2**2 + d**2) / (2.0 * d)
-    h = np.sqrt(np.maximum(r1**2 - a**2, 0.0))
-    return c1 + a[:, None] * u + (sign * h)[:, None] * perp(u)
-
-
-def _solve2(m11, m12, m21, m22, b1, b2):
-    det = m11 * m22 - m12 * m21
-    return np.stack([(b1 * m22 - m12 * b2) / det, (m11 * b2 - m21 * b1) / det], axis=-1)
+    n = max(np.shape(c1)[0] if np.ndim(c1) == 2 else 1, np.shape(c2)[0] if np.ndim(c2) == 2 else 1)
+    z = _circle_circle_z(as_complex(c1), r1, as_complex(c2), r2, sign, phi, what)
+    return as_xy(np.broadcast_to(z, (n,)))
 
 
 def dyad_rrr(A: PointPath, E: PointPath, la: float, le: float, sign: int,
              phi: np.ndarray | None = None, what: str = "the RRR dyad") -> PointPath:
     """Inner joint B of an RRR dyad: |B - A| = la, |B - E| = le.
 
-    ``sign`` = +1 puts B on the left of the directed line A → E. Positions from
-    :func:`circle_circle`; analogs from the differentiated distance constraints.
+    ``sign`` = +1 puts B on the left of the directed line A → E. With u = B - A,
+    w = B - E and D = u × w (zero only at a dead point), the differentiated
+    constraints u·(B' - A') = 0, w·(B' - E') = 0 solve to B' = i(b2·u - b1·w)/D with
+    b1 = u·A', b2 = w·E' (complex numbers for points); B'' likewise with
+    b1 = u·A'' - |B' - A'|², b2 = w·E'' - |B' - E'|².
     """
-    B = circle_circle(A.p, la, E.p, le, sign, phi, what)
-    u, w = B - A.p, B - E.p
-    dB = _solve2(u[:, 0], u[:, 1], w[:, 0], w[:, 1], dot(u, A.d), dot(w, E.d))
-    ua, we = dB - A.d, dB - E.d
-    ddB = _solve2(u[:, 0], u[:, 1], w[:, 0], w[:, 1],
-                  dot(u, A.dd) - dot(ua, ua), dot(w, E.dd) - dot(we, we))
-    return PointPath(B, dB, ddB)
+    zA, zE = as_complex(A.p), as_complex(E.p)
+    B = _circle_circle_z(zA, la, zE, le, sign, phi, what)
+    u, w = B - zA, B - zE
+    D = _im_conj(u, w)
+    dA, dE = as_complex(A.d), as_complex(E.d)
+    dB = 1j * (_re_conj(w, dE) * u - _re_conj(u, dA) * w) / D
+    ddA, ddE = as_complex(A.dd), as_complex(E.dd)
+    c1 = _re_conj(u, ddA) - _abs2(dB - dA)
+    c2 = _re_conj(w, ddE) - _abs2(dB - dE)
+    ddB = 1j * (c2 * u - c1 * w) / D
+    return PointPath(as_xy(B), as_xy(dB), as_xy(ddB))
+
+
+def rocker_dyad(A: PointPath, E, la: float, le: float, sign: int, phi: np.ndarray | None = None,
+                what: str = "the RRR dyad", reference: float = 0.0) -> tuple[PointPath, AnglePath]:
+    """An RRR dyad whose outer joint E is fixed (a rocker E-B and a coupler A-B).
+
+    Returns the path of B and the rocker's angle ψ (the branch within π of
+    ``reference``, an angle or an array of angles) with its analogs. With u = B - A,
+    w = B - E, D = u × w: B' = iwψ' gives ψ' = -(u·A')/D, and differentiating once more
+    ψ'' = -(u·A'' - |B' - A'|² + ψ'²·(u·w))/D, B'' = iwψ'' - wψ'².
+    """
+    zA, zE = as_complex(A.p), complex(*np.asarray(E, dtype=float))
+    B = _circle_circle_z(zA, la, zE, le, sign, phi, what)
+    u, w = B - zA, B - zE
+    D = _im_conj(u, w)
+    w1 = -_re_conj(u, as_complex(A.d)) / D
+    iw = 1j * w
+    dB = iw * w1
+    w2 = -(_re_conj(u, as_complex(A.dd)) - _abs2(dB - as_complex(A.d)) + w1 * w1 * _re_conj(u, w)) / D
+    ddB = iw * w2 - w * (w1 * w1)
+    turn = np.exp(-1j * np.asarray(reference)) if np.any(reference) else 1.0
+    psi = np.angle(w * turn) + reference
+    return PointPath(as_xy(B), as_xy(dB), as_xy(ddB)), AnglePath(psi, w1, w2)
 
 
 def line_circle(p0: np.ndarray, u: np.ndarray, c: np.ndarray, r: float, sign: int,

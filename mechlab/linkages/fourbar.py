@@ -21,8 +21,8 @@ from typing import NamedTuple
 import numpy as np
 
 from ..errors import AssemblyError
-from ..geometry import (as_angles, check_length, check_sign, circle_circle, crank_point, dot, dyad_rrr,
-                        fixed_point, relative, vector_angle)
+from ..geometry import (_re_conj, as_angles, as_complex, check_length, check_sign, circle_circle, crank_point,
+                        fixed_point, rocker_dyad)
 from ..motion import AngularMotion
 from .base import Mechanism, arc_set, branch_references, fmt_ranges, lift_on_ranges
 
@@ -143,13 +143,15 @@ class FourBar(Mechanism):
         phi = as_angles(phi)
         self.check_reachable(phi)
         n = len(phi)
-        O = fixed_point((0.0, 0.0), n)
         A = crank_point(self.crank, phi)
-        E = fixed_point((self.ground, 0.0), n)
-        B = dyad_rrr(A, E, self.coupler, self.rocker, self.assembly, phi, "the coupler-rocker dyad")
-        ang = vector_angle(relative(B, E))
-        psi = lift_on_ranges(ang.theta, phi, self._psi_reference)
-        ba, be = A.p - B.p, E.p - B.p
-        mu = np.arccos(np.clip(dot(ba, be) / (self.coupler * self.rocker), -1.0, 1.0))
-        return AngularMotion(phi, {"O": O, "A": A, "B": B, "E": E}, mu, psi, ang.d, ang.dd)
-
+        refs = self._psi_reference
+        (_, _, mid, turns), = refs if len(refs) == 1 else ((0, 0, 0.0, 0),)
+        B, psi = rocker_dyad(A, (self.ground, 0.0), self.coupler, self.rocker, self.assembly, phi,
+                             "the coupler-rocker dyad", reference=mid + turns * phi if turns else mid)
+        theta = psi.theta if len(refs) == 1 else lift_on_ranges(psi.theta, phi, refs)
+        # transmission angle μ at B between B→A and B→E (law of cosines, vectorised)
+        zb = as_complex(B.p)
+        cos_mu = _re_conj(zb - as_complex(A.p), zb - self.ground) / (self.coupler * self.rocker)
+        mu = np.arccos(np.clip(cos_mu, -1.0, 1.0))
+        points = {"O": fixed_point((0.0, 0.0), n), "A": A, "B": B, "E": fixed_point((self.ground, 0.0), n)}
+        return AngularMotion(phi, points, mu, theta, psi.d, psi.dd)
