@@ -29,8 +29,24 @@ test: venv
 	$(BIN)/python -m pytest tests -q
 	$(BIN)/python -m pytest --nbval-lax --nbval-current-env -q -p no:cacheprovider notebooks
 
+# `make book`: the course as static HTML in book/_build/html, every notebook executed at build
+# time (the execution cache is book/_build/.jupyter_cache); warnings fail the build.
+BOOK_OUT   := book/_build/html
+SPHINXOPTS ?= -W --keep-going
 book: venv
-	@echo "make book: the book is built by the book issue (#7); not available yet"; exit 1
+	$(BIN)/sphinx-build $(SPHINXOPTS) -b html -d book/_build/doctrees book $(BOOK_OUT)
+	@echo "the book: $(BOOK_OUT)/index.html"
+
+# `make test-browser`: the built book and every chapter in JupyterLab, in Debian's Chromium
+# driven by Playwright (the browser comes from apt, never from `playwright install`).
+CHROMIUM ?= /usr/bin/chromium
+SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+.PHONY: test-browser chromium
+chromium:
+	@test -x $(CHROMIUM) || { $(SUDO) apt-get update && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y chromium; }
+
+test-browser: book chromium
+	CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -q -p no:cacheprovider tests_browser
 
 bench: venv
 	$(BIN)/python benchmarks/bench_fourbar.py

@@ -1,0 +1,88 @@
+"""The book's Errata page: every :class:`mechlab.errata.Erratum`, its evidence recomputed now.
+
+Executed by ``book/errata.md`` at build time. Each row links to the code cell of the
+chapter notebook that demonstrates the mistake: the first code cell of that notebook
+that uses ``errata`` (its ``table``/``check``), addressed by the ``cell-<index>`` anchor
+that ``_ext/mechbook.py`` puts on every code cell.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+from pathlib import Path
+
+NOTEBOOKS = Path(__file__).resolve().parent.parent.parent / "notebooks"
+
+
+def _cells(notebook: Path) -> list[dict]:
+    return json.loads(Path(notebook).read_text(encoding="utf-8"))["cells"]
+
+
+def _source(cell: dict) -> str:
+    src = cell.get("source", "")
+    return "".join(src) if isinstance(src, list) else src
+
+
+def demo_cell(notebook: Path) -> int | None:
+    """Index (in the notebook's cells) of the first code cell that shows the chapter's errata."""
+    for i, cell in enumerate(_cells(notebook)):
+        if cell["cell_type"] == "code" and "errata" in _source(cell):
+            return i
+    return None
+
+
+def notebook_title(notebook: Path) -> str:
+    """The text of the notebook's first Markdown heading (its chapter title), else its stem."""
+    for cell in _cells(notebook):
+        if cell["cell_type"] == "markdown":
+            for line in _source(cell).splitlines():
+                if line.startswith("#"):
+                    return line.lstrip("#").strip()
+    return Path(notebook).stem
+
+
+def chapter_link(notebook_name: str, notebooks_dir: Path = NOTEBOOKS, prefix: str = "notebooks/") -> str:
+    """An HTML link to the cell of ``notebook_name`` that demonstrates its errata.
+
+    Raises ValueError when the erratum names a notebook that does not exist, so a
+    dangling link fails the build instead of reaching a reader.
+    """
+    path = Path(notebooks_dir) / notebook_name
+    if not notebook_name or not path.is_file():
+        raise ValueError(f"erratum names notebook {notebook_name!r}, which is not in {notebooks_dir}")
+    cell = demo_cell(path)
+    anchor = f"#cell-{cell}" if cell is not None else ""
+    href = f"{prefix}{path.stem}.html{anchor}"
+    return f'<a href="{html.escape(href)}">{html.escape(notebook_title(path))}</a>'
+
+
+def _cell(text: str) -> str:
+    return str(text).replace("|", "\\|").replace("\n", " ")
+
+
+def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = "notebooks/") -> str:
+    """A MyST Markdown table of the errata (default: :func:`mechlab.errata.collect`).
+
+    Columns: source (linked to the References page), where, printed, correct, the
+    evidence returned by ``Erratum.check()`` (which raises if the claim stopped being
+    true, failing the build) and the chapter cell that shows it.
+    """
+    from mechlab.errata import SOURCES, collect
+
+    rows = collect() if errata is None else list(errata)
+    if not rows:
+        return "No errata have been collected from the chapters yet."
+    lines = ["| source | where | printed | correct | evidence (recomputed at build time) | shown in |",
+             "|---|---|---|---|---|---|"]
+    for e in sorted(rows, key=lambda e: e.source):
+        if e.source not in SOURCES:
+            raise ValueError(f"erratum cites source {e.source!r}; known: {', '.join(SOURCES)}")
+        source = f'<a href="references.html#seed-{e.source}">{e.source}</a>'
+        evidence = e.evidence()
+        lines.append("| " + " | ".join([source, _cell(e.where), _cell(e.printed), _cell(e.correct),
+                                         _cell(evidence), chapter_link(e.notebook, notebooks_dir, prefix)])
+                     + " |")
+    sources = sorted({e.source for e in rows})
+    lines.insert(0, f"{len(rows)} mistakes in {len(sources)} of the {len(SOURCES)} source texts.\n")
+    return "\n".join(lines)

@@ -1,0 +1,154 @@
+"""The built book in a real browser: every page, offline, math rendered, images, animations.
+
+Serves book/_build/html (built by `make book`) on 127.0.0.1 and visits every page with
+Chromium. A request to any other host is aborted and reported. A screenshot of each
+page is saved under book/_build/screenshots/.
+"""
+
+from __future__ import annotations
+
+import functools
+import http.server
+import threading
+from pathlib import Path
+from urllib.parse import urlparse
+
+import pytest
+
+from conftest import LOCAL_HOSTS, ROOT
+
+HTML = ROOT / "book" / "_build" / "html"
+SHOTS = ROOT / "book" / "_build" / "screenshots"
+PAGES = sorted(p.relative_to(HTML).as_posix() for p in HTML.rglob("*.html")
+               if not {"_sources", "_static", "_images"} & set(p.relative_to(HTML).parts))
+
+
+class _Quiet(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+@pytest.fixture(scope="module")
+def server():
+    if not (HTML / "intro.html").is_file():
+        pytest.fail(f"no built book in {HTML}: run `make book` first (make test-browser does)")
+    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(_Quiet, directory=str(HTML)))
+    thread = threading.Thread(target=httpd.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{httpd.server_address[1]}"
+    finally:
+        httpd.shutdown()
+        httpd.server_close()
+
+
+# The text of the page outside code, with rendered math removed: a TeX delimiter left in
+# it is math that MathJax did not typeset.
+_PROSE_JS = """() => {
+  const main = document.querySelector('main') || document.body;
+  const copy = main.cloneNode(true);
+  copy.querySelectorAll('pre, code, .highlight, mjx-container, script, style, textarea').forEach(e => e.remove());
+  return copy.textContent;
+}"""
+
+_MATH_JS = """() => Array.from(document.querySelectorAll('.math')).map(e => ({
+  typeset: !!e.querySelector('mjx-container') || e.tagName.toLowerCase() === 'mjx-container',
+  text: e.textContent.slice(0, 80)}))"""
+
+_IMAGES_JS = """async () => {
+  const imgs = Array.from(document.images);
+  imgs.forEach(i => { i.loading = 'eager'; });
+  await Promise.all(imgs.map(i => i.complete ? null : new Promise(r => { i.onload = i.onerror = r; })));
+  return imgs.map(i => ({src: (i.currentSrc || i.src || '').slice(0, 100), ok: i.complete && i.naturalWidth > 0}));
+}"""
+
+
+def test_pages_found():
+    assert "intro.html" in PAGES and "errata.html" in PAGES and "glossary.html" in PAGES \
+        and "references.html" in PAGES
+    assert any(p.startswith("notebooks/") for p in PAGES), PAGES
+
+
+@pytest.mark.parametrize("page_path", PAGES)
+def test_page(browser, server, page_path):
+    context = browser.new_context(viewport={"width": 1280, "height": 900})
+    page = context.new_page()
+    errors, failed, remote = [], [], []
+    page.on("console", lambda m: errors.append(f"console {m.type}: {m.text}") if m.type == "error" else None)
+    page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
+    page.on("requestfailed", lambda r: failed.append(f"{r.url[:120]}: {r.failure}")
+            if urlparse(r.url).hostname in LOCAL_HOSTS else None)
+
+    def route(r):
+        url = urlparse(r.request.url)
+        if url.scheme in ("http", "https", "ws", "wss") and url.hostname not in LOCAL_HOSTS:
+            remote.append(r.request.url)
+            r.abort()
+        else:
+            r.continue_()
+
+    page.route("**/*", route)
+    try:
+        response = page.goto(f"{server}/{page_path}", wait_until="networkidle")
+        assert response is not None and response.ok, f"{page_path}: HTTP {response and response.status}"
+        page.evaluate("async () => { if (window.MathJax && MathJax.startup && MathJax.startup.promise)"
+                      " await MathJax.startup.promise; }")
+
+        math = page.evaluate(_MATH_JS)
+        raw = [m["text"] for m in math if not m["typeset"]]
+        assert not raw, f"{page_path}: math not typeset: {raw[:5]}"
+        prose = page.evaluate(_PROSE_JS)
+        for delim in ("\\(", "\\)", "\\[", "\\]", "$$", "\\begin{", "\\frac", "\\varphi"):
+            assert delim not in prose, f"{page_path}: raw TeX {delim!r} left in the text"
+
+        images = page.evaluate(_IMAGES_JS)
+        broken = [i["src"] for i in images if not i["ok"]]
+        assert not broken, f"{page_path}: images not loaded: {broken}"
+
+        animations = page.locator("div.animation")
+        for k in range(animations.count()):
+            anim = animations.nth(k)
+            anim.scroll_into_view_if_needed()
+            img = anim.locator("img").first
+            slider = anim.locator("input.anim-slider")
+            frames = int(slider.get_attribute("max") or page.evaluate("e => e.max", slider.element_handle()))
+            assert frames >= 1, f"{page_path}: animation {k} has one frame"
+            before = (img.get_attribute("src"), slider.input_value())
+            anim.locator("button[title='Play']").click()
+            page.wait_for_function("([el, v]) => el.value !== v", arg=[slider.element_handle(), before[1]],
+                                   timeout=5000)
+            anim.locator("button[title='Pause']").click()
+            after = (img.get_attribute("src"), slider.input_value())
+            assert after[1] != before[1] and after[0] != before[0], \
+                f"{page_path}: animation {k} did not move on Play"
+            # the icons of its buttons are drawn locally (no Font Awesome from a CDN)
+            icon = anim.locator("button[title='Play'] i")
+            glyph = page.evaluate("e => getComputedStyle(e, '::before').content", icon.element_handle())
+            assert glyph not in ("none", "normal", ""), f"{page_path}: Play button has no icon"
+
+        SHOTS.mkdir(parents=True, exist_ok=True)
+        page.evaluate("() => { if (document.activeElement) document.activeElement.blur(); window.scrollTo(0, 0); }")
+        page.screenshot(path=str(SHOTS / (page_path.replace("/", "__").removesuffix(".html") + ".png")),
+                        full_page=True)
+        assert not remote, f"{page_path}: requests to another host: {remote}"
+        assert not failed, f"{page_path}: failed requests: {failed}"
+        assert not errors, f"{page_path}: {errors}"
+    finally:
+        context.close()
+
+
+def test_errata_links_resolve(browser, server):
+    """Every link of the Errata page to a chapter reaches that page and the cell it names."""
+    page = browser.new_page()
+    try:
+        page.goto(f"{server}/errata.html")
+        hrefs = page.evaluate("() => Array.from(document.querySelectorAll('main a'))"
+                              ".map(a => a.getAttribute('href')).filter(h => h && h.startsWith('notebooks/'))")
+        for href in hrefs:
+            path, _, anchor = href.partition("#")
+            assert (HTML / path).is_file(), f"errata links to missing page {path}"
+            if anchor:
+                page.goto(f"{server}/{href}")
+                assert page.locator(f"[id='{anchor}']").count() == 1, f"{href}: no element with id {anchor}"
+    finally:
+        page.close()
