@@ -92,18 +92,17 @@ def main():
     # one widget update: new dimensions → motion over the cycle → artists moved → Agg redraw
     from mechlab.widgets import fourbar_explorer
     ex = fourbar_explorer()
+    ex.output = None  # outside a notebook: redraw on the figure's own Agg canvas, show nothing
     ex.fig.canvas.draw()
     lengths = np.linspace(2.9, 3.1, 40)
 
     def dims_update(i=[0]):
         i[0] += 1
-        ex.sliders["coupler"].value = float(lengths[i[0] % len(lengths)])
-        ex.fig.canvas.draw()
+        ex.sliders["coupler"].value = float(lengths[i[0] % len(lengths)])  # recompute, move artists, draw
 
     def angle_update(i=[0]):
         i[0] += 1
         ex.angle.value = float(i[0] % 360)
-        ex.fig.canvas.draw()
     t_dims, _ = best_of(lambda: [dims_update() for _ in range(20)], repeat=3)
     t_angle, _ = best_of(lambda: [angle_update() for _ in range(20)], repeat=3)
     print(f"widget update (Agg, {ex.fig.get_size_inches()[0]:.0f}×{ex.fig.get_size_inches()[1]:.0f} in at "

@@ -120,3 +120,37 @@ def test_crank_point_analogs():
     A = crank_point(2.0, phi)
     assert np.allclose(A.d, 2.0 * np.array([[-np.sin(0.3), np.cos(0.3)]]))
     assert np.allclose(A.dd, -A.p)
+
+
+def test_unit_complex_on_uniform_and_irregular_grids():
+    from mechlab.geometry import unit_complex
+    rng = np.random.default_rng(1)
+    for phi in (np.linspace(-1.0, 20.0, 100_003), np.arange(1, 5001) * (2 * np.pi / 5000),
+                np.sort(rng.uniform(-7, 7, 9000)), np.linspace(0, 1, 7)):
+        z = unit_complex(phi)
+        assert np.max(np.abs(z - np.exp(1j * phi))) < 5e-15
+        assert np.max(np.abs(np.abs(z) - 1)) < 5e-16
+
+
+def test_complex_views_share_memory():
+    from mechlab.geometry import as_complex, as_xy
+    xy = np.arange(8.0).reshape(4, 2)
+    z = as_complex(xy)
+    assert np.shares_memory(z, xy) and np.allclose(z, xy[:, 0] + 1j * xy[:, 1])
+    assert np.shares_memory(as_xy(z), z)
+    assert as_complex(np.broadcast_to([3.0, 4.0], (5, 2))) == 3 + 4j
+    assert as_xy(3 + 4j, 5).shape == (5, 2)
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+def test_rocker_dyad_agrees_with_the_general_dyad_and_with_differences(sign):
+    from mechlab.geometry import rocker_dyad, vector_angle, relative
+    phi = np.linspace(0, 2 * np.pi, 201)
+    A = _moving_point(phi)
+    B1, psi = rocker_dyad(A, (2.0, 0.5), 1.5, 1.2, sign, reference=1.0)
+    B2 = dyad_rrr(A, fixed_point((2.0, 0.5), len(phi)), 1.5, 1.2, sign)
+    ang = vector_angle(relative(B2, fixed_point((2.0, 0.5), len(phi))))
+    for a, b in zip(B1, B2):
+        assert np.max(np.abs(a - b)) < 1e-12
+    assert np.max(np.abs(psi.d - ang.d)) < 1e-12 and np.max(np.abs(psi.dd - ang.dd)) < 1e-11
+    assert np.all(np.abs(psi.theta - 1.0) <= np.pi) and np.allclose(wrap(psi.theta - ang.theta), 0, atol=1e-14)

@@ -17,6 +17,8 @@ from typing import Callable
 import ipywidgets as W
 import matplotlib
 import matplotlib.pyplot as plt
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 import numpy as np
 from IPython.display import display
 
@@ -81,7 +83,10 @@ class MechanismExplorer:
             with plt.ioff():
                 self.fig = plt.figure(figsize=(9, 4))
         else:
-            self.fig = matplotlib.figure.Figure(figsize=(9, 4), dpi=80)
+            # not managed by pyplot (so the inline backend shows it only through the Output
+            # widget), with an Agg canvas so that it renders
+            self.fig = Figure(figsize=(9, 4), dpi=80)
+            FigureCanvasAgg(self.fig)
         self.ax_mech, self.ax_law = self.fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.1, 1]})
         if title:
             self.fig.suptitle(title)
