@@ -8,6 +8,8 @@ BIN    := $(VENV)/bin
 HASH   := $(shell cat environment.txt pyproject.toml | $(PYTHON) -c "import hashlib,sys; print(hashlib.sha256(sys.stdin.buffer.read()).hexdigest()[:16])")
 STAMP  := $(VENV)/.installed-$(HASH)
 PORT   ?= 8888
+# JupyterLab refuses to run as root unless told; a container's root user is the usual case
+ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 
 .PHONY: venv lab test test-lib test-notebooks book bench clean
 
@@ -22,8 +24,9 @@ $(STAMP):
 	touch $@
 
 lab: venv
-	$(BIN)/jupyter lab --ServerApp.ip=127.0.0.1 --ServerApp.port=$(PORT) --no-browser \
-	    --ServerApp.root_dir=notebooks --LabApp.news_url=None --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate
+	$(BIN)/jupyter lab --ServerApp.ip=127.0.0.1 --ServerApp.port=$(PORT) --no-browser $(ROOT_FLAG) \
+	    --ServerApp.root_dir=notebooks --LabApp.news_url=None \
+	    --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate --LabApp.extension_manager=readonly
 
 test: venv
 	$(BIN)/python -m pytest tests -q
