@@ -84,5 +84,6 @@ def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = 
                                          _cell(evidence), chapter_link(e.notebook, notebooks_dir, prefix)])
                      + " |")
     sources = sorted({e.source for e in rows})
-    lines.insert(0, f"{len(rows)} mistakes in {len(sources)} of the {len(SOURCES)} source texts.\n")
+    noun = "mistake" if len(rows) == 1 else "mistakes"
+    lines.insert(0, f"{len(rows)} {noun} in {len(sources)} of the {len(SOURCES)} source texts.\n")
     return "\n".join(lines)

@@ -1,0 +1,129 @@
+"""The book's build helpers (book/_ext), without a browser."""
+
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import nbformat  # noqa: E402
+import pytest  # noqa: E402
+from matplotlib.animation import FuncAnimation  # noqa: E402
+
+from conftest import ROOT  # noqa: E402
+
+sys.path.insert(0, str(ROOT / "book" / "_ext"))
+import errata_page  # noqa: E402
+import mechbook  # noqa: E402
+from mechlab.errata import SOURCES, Erratum  # noqa: E402
+
+CSS = (ROOT / "book" / "_static" / "mechbook.css").read_text()
+
+
+def _jshtml() -> str:
+    fig, ax = plt.subplots()
+    (line,) = ax.plot([0, 1], [0, 1])
+    anim = FuncAnimation(fig, lambda i: line.set_ydata([0, i]) or (line,), frames=3)
+    html = anim.to_jshtml()
+    plt.close(fig)
+    return html
+
+
+def test_animation_controls_become_local():
+    html = _jshtml()
+    assert "font-awesome" in html and 'class="fa fa-play"' in html  # what matplotlib emits
+    out = mechbook.local_animation_controls(html)
+    assert "font-awesome" not in out and "fa fa-" not in out
+    assert not mechbook.remote_fetches(out)
+    icons = set(re.findall(r'class="mechbook-icon mechbook-([a-z-]+)"', out))
+    assert icons == {"minus", "fast-backward", "step-backward", "play-backwards", "pause", "play",
+                     "step-forward", "fast-forward", "plus"}
+    for name in icons:  # every icon has a glyph in the book's stylesheet
+        assert re.search(rf"\.mechbook-{name}::before\s*\{{\s*content:\s*\"[^\"]+\"", CSS), name
+
+
+@pytest.mark.parametrize("text, urls", [
+    ('<script src="https://cdn.example.org/x.js"></script>', ["https://cdn.example.org/x.js"]),
+    ('<link rel="stylesheet" href="//fonts.example.com/a.css">', ["//fonts.example.com/a.css"]),
+    ("<img alt=x src='http://example.org/i.png'>", ["http://example.org/i.png"]),
+    ('<style>@import "https://x.org/y.css"; b { background: url(http://x.org/z.png) }</style>',
+     ["https://x.org/y.css", "http://x.org/z.png"]),
+    ('<a href="https://example.org/">a link is not a fetch</a>', []),
+    ('<link rel="canonical" href="https://example.org/">', []),
+    ('<script src="_static/x.js"></script><img src="data:image/png;base64,AAAA">', []),
+])
+def test_remote_fetches(text, urls):
+    assert mechbook.remote_fetches(text) == urls
+
+
+def test_remote_fetches_in_css():
+    assert mechbook.remote_fetches("a { src: url('https://f.org/f.woff2') } b { src: url(f.woff) }",
+                                   css=True) == ["https://f.org/f.woff2"]
+
+
+def _notebook(folder: Path, name: str, with_errata: bool = True) -> Path:
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_markdown_cell("# 7 · A chapter\n\ntext"),
+                nbformat.v4.new_code_cell("x = 1"),
+                nbformat.v4.new_markdown_cell("## Errata"),
+                nbformat.v4.new_code_cell("from mechlab import errata\nerrata.table(notebook='x')"
+                                          if with_errata else "y = 2")]
+    path = folder / name
+    nbformat.write(nb, path)
+    return path
+
+
+def test_demo_cell_and_title(tmp_path):
+    path = _notebook(tmp_path, "07_chapter.ipynb")
+    assert errata_page.demo_cell(path) == 3
+    assert errata_page.notebook_title(path) == "7 · A chapter"
+    assert errata_page.demo_cell(_notebook(tmp_path, "08_other.ipynb", with_errata=False)) is None
+
+
+def test_errata_markdown(tmp_path):
+    _notebook(tmp_path, "07_chapter.ipynb")
+    calls = []
+
+    def check():
+        calls.append(1)
+        return "printed gives 1.25, correct gives 1.5"
+
+    e = Erratum(source="000", where="formula (21)", printed="$a | b$", correct="$c$", check=check,
+                notebook="07_chapter.ipynb")
+    md = errata_page.errata_markdown([e], notebooks_dir=tmp_path)
+    assert calls == [1]  # the evidence is recomputed at build time
+    assert "printed gives 1.25, correct gives 1.5" in md
+    assert '<a href="notebooks/07_chapter.html#cell-3">7 · A chapter</a>' in md
+    assert '<a href="references.html#seed-000">000</a>' in md
+    assert "$a \\| b$" in md  # a pipe cannot break the table
+    assert md.startswith(f"1 mistake in 1 of the {len(SOURCES)} source texts.")
+    row = [line for line in md.splitlines() if "formula (21)" in line][0]
+    assert row.count(" | ") == 5
+
+
+def test_errata_markdown_fails_loudly(tmp_path):
+    _notebook(tmp_path, "07_chapter.ipynb")
+
+    def wrong():
+        raise AssertionError("the printed value is right after all")
+
+    with pytest.raises(AssertionError, match="printed value is right"):
+        errata_page.errata_markdown([Erratum("000", "eq. 1", "a", "b", wrong, "07_chapter.ipynb")],
+                                    notebooks_dir=tmp_path)
+    with pytest.raises(ValueError, match="not in"):
+        errata_page.errata_markdown([Erratum("000", "eq. 1", "a", "b", lambda: "ok", "99_missing.ipynb")],
+                                    notebooks_dir=tmp_path)
+    with pytest.raises(ValueError, match="source '123'"):
+        errata_page.errata_markdown([Erratum("123", "eq. 1", "a", "b", lambda: "ok", "07_chapter.ipynb")],
+                                    notebooks_dir=tmp_path)
+    assert errata_page.errata_markdown([], notebooks_dir=tmp_path).startswith("No errata")
+
+
+def test_every_collected_erratum_links_to_an_existing_chapter():
+    md = errata_page.errata_markdown()
+    for href in re.findall(r'href="(notebooks/[^"#]+)', md):
+        assert (ROOT / href.replace(".html", ".ipynb")).is_file(), href
