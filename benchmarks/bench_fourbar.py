@@ -91,8 +91,7 @@ def main():
 
     # one widget update: new dimensions → motion over the cycle → artists moved → Agg redraw
     from mechlab.widgets import fourbar_explorer
-    ex = fourbar_explorer()
-    ex.output = None  # outside a notebook: redraw on the figure's own Agg canvas, show nothing
+    ex = fourbar_explorer(live=True)  # as under ipympl: its own (here Agg) canvas, blitting the crank
     ex.fig.canvas.draw()
     lengths = np.linspace(2.9, 3.1, 40)
 

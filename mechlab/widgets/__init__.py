@@ -42,6 +42,22 @@ class Control:
     unit: str = ""
 
 
+def _fit(ax, bounds) -> bool:
+    """Set the axes limits to ``bounds`` (x0, x1, y0, y1), with 10 % to spare so that small
+    changes fit without a full redraw, unless the current limits already hold them without
+    wasting more than half the view; True if the limits changed."""
+    x0, x1, y0, y1 = bounds
+    (cx0, cx1), (cy0, cy1) = ax.get_xlim(), ax.get_ylim()
+    inside = cx0 <= x0 and x1 <= cx1 and cy0 <= y0 and y1 <= cy1
+    snug = (x1 - x0) > 0.5 * (cx1 - cx0) and (y1 - y0) > 0.5 * (cy1 - cy0)
+    if inside and snug:
+        return False
+    mx, my = 0.1 * (x1 - x0), 0.1 * (y1 - y0)
+    ax.set_xlim(x0 - mx, x1 + mx)
+    ax.set_ylim(y0 - my, y1 + my)
+    return True
+
+
 def _uses_ipympl() -> bool:
     return "ipympl" in matplotlib.get_backend() or "widget" in matplotlib.get_backend().lower()
 
@@ -52,10 +68,15 @@ class MechanismExplorer:
     ``controls`` maps the factory's keyword names to :class:`Control`; a control
     named ``assembly`` becomes a ±1 toggle; the crank angle slider (degrees) is
     added by the explorer. ``trace`` names a joint whose path is drawn.
+
+    ``live`` (default: whether the ipympl backend is active) draws on the figure's own
+    canvas and moves the crank by blitting: only the moving artists are redrawn over a
+    saved background. Otherwise the figure is re-shown in an Output widget (inline
+    backend, static pages).
     """
 
     def __init__(self, factory: Callable, controls: dict[str, Control], *, assembly: bool = False,
-                 trace: str | None = None, n: int = 181, title: str = ""):
+                 trace: str | None = None, n: int = 181, title: str = "", live: bool | None = None):
         self.factory = factory
         self.controls = controls
         self.n = n
@@ -79,6 +100,8 @@ class MechanismExplorer:
         self.status = W.HTML()
 
         ipympl = _uses_ipympl()
+        self.live = ipympl if live is None else live
+        self._background = None
         if ipympl:
             with plt.ioff():
                 self.fig = plt.figure(figsize=(9, 4))
@@ -101,8 +124,11 @@ class MechanismExplorer:
         self.drawing = None
         self.trace = trace
 
-        self.output = None if ipympl else W.Output()
-        canvas = self.fig.canvas if ipympl else self.output
+        self.output = None if self.live else W.Output()
+        # live without ipympl (benchmarks, tests) renders off screen: nothing to place in the layout
+        canvas = self.fig.canvas if ipympl else (self.output or W.HTML())
+        if self.live:
+            self.fig.canvas.mpl_connect("draw_event", self._capture_background)
         for w in self.sliders.values():
             w.observe(self._on_dimensions, names="value")
         self.angle.observe(self._on_angle, names="value")
@@ -133,26 +159,34 @@ class MechanismExplorer:
         if self.drawing is None or type(self.drawing) is not drawing_class(mechanism):
             self.ax_mech.clear()
             self.drawing = drawing_class(mechanism)(self.ax_mech, mechanism, trace=self.trace, n=self.n)
+            for artist in self._moving_artists():
+                artist.set_animated(self.live)
+        was_hidden = not self.ax_mech.get_visible()
         self.drawing.set_motion(mechanism, motion)
-        self.drawing.autoscale()
         deg = np.degrees(phi)
         law = motion._law()
         names = ("ψ (rad)", "ψ′", "ψ″") if mechanism.output == "angle" else ("s", "s′", "s″")
+        relabel = False
         for line, y, name in zip(self.law_lines.values(), law, names):
             line.set_data(deg, y)
+            relabel |= line.get_label() != name
             line.set_label(name)
         lo = min(float(np.min(y)) for y in law)
         hi = max(float(np.max(y)) for y in law)
         pad = 0.05 * (hi - lo) + 1e-9
-        self.ax_law.set_xlim(deg[0], deg[-1])
-        self.ax_law.set_ylim(lo - pad, hi + pad)
-        self.ax_law.legend(loc="upper right", fontsize=8)
+        rescaled = _fit(self.ax_mech, self.drawing.bounds())
+        rescaled |= _fit(self.ax_law, (deg[0], deg[-1], lo - pad, hi + pad))
+        if relabel:
+            self.ax_law.legend(loc="upper right", fontsize=8)
         mu = np.degrees(motion.transmission)
         self.status.value = (f"transmission angle μ: {mu.min():.1f}° … {mu.max():.1f}°"
                              + ("" if mechanism.can_turn else " · crank rocks: range limited"))
         self._set_visible(True)
         self._select_frame()
-        self._redraw()
+        if rescaled or relabel or was_hidden:
+            self._redraw()
+        else:
+            self._blit_or_redraw()
 
     def _select_frame(self):
         phi = np.degrees(self.motion.phi)
@@ -187,7 +221,32 @@ class MechanismExplorer:
         if self.motion is None:
             return
         self._select_frame()
-        self._redraw()
+        self._blit_or_redraw()
+
+    def _blit_or_redraw(self):
+        """Redraw only the moving artists over the saved background when live, else everything."""
+        if self.live and self._background is not None:
+            self.fig.canvas.restore_region(self._background)
+            self._draw_moving()
+            self.fig.canvas.blit(self.fig.bbox)
+        else:
+            self._redraw()
+
+    def _moving_artists(self):
+        """Everything that changes with the crank angle or the dimensions (axes limits aside)."""
+        d = self.drawing
+        return [*d.link_lines, *d.extra_lines, d.trace_line, d.pivot_marks, d.joint_marks,
+                *self.law_lines.values(), self.law_marker]
+
+    def _capture_background(self, event):
+        """After a full draw (which skips the animated artists): save it, then draw them."""
+        self._background = self.fig.canvas.copy_from_bbox(self.fig.bbox)
+        if self.motion is not None:
+            self._draw_moving()
+
+    def _draw_moving(self):
+        for artist in self._moving_artists():
+            artist.axes.draw_artist(artist)
 
     def _redraw(self):
         if self.output is None:
@@ -201,10 +260,11 @@ class MechanismExplorer:
         display(self.widget)
 
 
-def fourbar_explorer(crank=1.0, coupler=3.0, rocker=3.0, ground=4.0, *, max_length=10.0, trace="B"):
+def fourbar_explorer(crank=1.0, coupler=3.0, rocker=3.0, ground=4.0, *, max_length=10.0, trace="B",
+                     live: bool | None = None):
     """Sliders for a four-bar's four lengths (mm) and its assembly, with its animation."""
     def ctl(label, v):
         return Control(label, 0.1, max_length, 0.05, v, "mm")
     controls = {"crank": ctl("crank OA", crank), "coupler": ctl("coupler AB", coupler),
                 "rocker": ctl("rocker BE", rocker), "ground": ctl("ground OE", ground)}
-    return MechanismExplorer(FourBar, controls, assembly=True, trace=trace, title="Four-bar O-A-B-E")
+    return MechanismExplorer(FourBar, controls, assembly=True, trace=trace, title="Four-bar O-A-B-E", live=live)
