@@ -45,7 +45,7 @@ import numpy as np
 
 from .errors import DimensionError, MechanismError
 from .geometry import (AnglePath, PointPath, as_angles, check_length, crank_point, fixed_point, lift,
-                       relative, vector_angle, wrap)
+                       relative, vector_angle)
 from .linkages.base import Mechanism
 from .motion import AngularMotion
 
@@ -75,6 +75,12 @@ def check_slots(z) -> int:
             f"the number of slots z must be a whole number ≥ 3, got z = {zf:g} "
             f"(a Geneva wheel needs z ≥ 3: with z = 2 the crank radius C·sin(π/z) equals C)")
     return int(round(zf))
+
+
+def mid_motion_angle(phi) -> np.ndarray:
+    """σ = φ - π reduced to [-π, π) turn by turn (0 in the middle of the motion)."""
+    phi = np.asarray(phi, dtype=float)
+    return phi - TWO_PI * np.floor(phi / TWO_PI) - np.pi
 
 
 def impact_kind(velocity_jump: float, acceleration_jump: float, tol: float = 1e-9) -> str:
@@ -238,7 +244,7 @@ class PlanarGeneva(Mechanism):
         phi = as_angles(phi)
         n = len(phi)
         turns = np.floor(phi / TWO_PI)
-        sigma = phi - TWO_PI * turns - np.pi  # in [-π, π)
+        sigma = mid_motion_angle(phi)
         s0 = self.engagement_half_angle
         A = self._pin(phi)
         W = fixed_point((self.centre_distance, 0.0), n)
@@ -255,8 +261,7 @@ class PlanarGeneva(Mechanism):
 
     def engaged(self, phi) -> np.ndarray:
         """True where the pin is in a slot."""
-        phi = as_angles(phi)
-        return np.abs(wrap(phi - np.pi)) <= self.engagement_half_angle
+        return np.abs(mid_motion_angle(as_angles(phi))) <= self.engagement_half_angle
 
     def design(self) -> dict:
         """The main sizes (lengths in the unit of C, angles in degrees)."""
@@ -456,6 +461,11 @@ class SphericalGeneva(Mechanism):
     def index_angle(self) -> float:
         return TWO_PI / self.z
 
+    @property
+    def engagement_half_angle(self) -> float:
+        """α0: the pin is in a slot for |α| ≤ α0 (same name as the planar drives)."""
+        return self.alpha0
+
     # -- closed forms (seed (16)-(22)) ------------------------------------------------
     def position(self, alpha) -> AnglePath:
         """β(α) = arcsin(sin α / sqrt(a² - cos²α)) (18), β' (19) and β'' (20) (per ω1, ω1²)."""
@@ -471,10 +481,13 @@ class SphericalGeneva(Mechanism):
         return float(1.0 / np.sqrt(self.a2 - 1.0))
 
     def acceleration_extreme_alpha(self) -> float:
-        """α1 ≥ 0 of the stationary |ε| (22): sin²α1 = 3a² - sqrt(8a⁴ + 1); it may lie
-        beyond α0, i.e. where the wheel no longer moves."""
+        """α1 ∈ [0, π/2] of the largest |ε| of (20): sin²α1 = 3a² - sqrt(8a⁴ + 1) (22),
+        the root of sin⁴α - 6a² sin²α + a⁴ - 1 = 0 below 1. It may lie beyond α0, where
+        the wheel no longer moves. For a² ≥ 6 (ψ ≤ 24.09°) the root is ≥ 1: there is no
+        interior extreme and |ε| grows up to α = π/2, returned then."""
         a2 = self.a2
-        return float(np.arcsin(np.sqrt(3.0 * a2 - np.sqrt(8.0 * a2 * a2 + 1.0))))
+        s2 = 3.0 * a2 - np.sqrt(8.0 * a2 * a2 + 1.0)
+        return float(np.arcsin(np.sqrt(s2))) if s2 < 1.0 else np.pi / 2
 
     def max_acceleration(self) -> tuple[float, float]:
         """(|ε|max/ω1², α where reached) while the wheel moves (|α| ≤ α0): at α1 if
@@ -542,8 +555,7 @@ class SphericalGeneva(Mechanism):
 
     # -- Mechanism protocol --------------------------------------------------------------
     def engaged(self, phi) -> np.ndarray:
-        phi = as_angles(phi)
-        return np.abs(wrap(phi - np.pi)) <= self.alpha0
+        return np.abs(mid_motion_angle(as_angles(phi))) <= self.alpha0
 
     def motion(self, phi) -> AngularMotion:
         """Wheel angle ψ = β + β0 (0 at φ = 0, +2π/z per turn) with analogs: the exact
@@ -557,7 +569,7 @@ class SphericalGeneva(Mechanism):
         phi = as_angles(phi)
         n = len(phi)
         turns = np.floor(phi / TWO_PI)
-        alpha = phi - TWO_PI * turns - np.pi
+        alpha = mid_motion_angle(phi)
         m = self.model(alpha)
         on = np.abs(alpha) <= self.alpha0
         b0 = self.beta0
@@ -686,13 +698,19 @@ def drive(mechanism, *, inertia: float, omega1: float, resisting_torque: float =
     k = float(overload)
     if not k >= 1.0:
         raise DriveError(f"the overload factor must be ≥ 1, got {overload!r}")
+
+    def crank_torque(phi):
+        mo = mechanism.motion(phi)
+        M1 = (J * mo.ddpsi * w1**2 + Mr * np.sign(mo.dpsi)) * mo.dpsi
+        return np.where(M1 > 0.0, M1 / eta, M1 * eta)
+
     phi = np.linspace(0.0, TWO_PI, n)
-    mo = mechanism.motion(phi)
-    T2 = J * mo.ddpsi * w1**2 + Mr * np.sign(mo.dpsi)
-    M1 = T2 * mo.dpsi
-    M1 = np.where(M1 > 0.0, M1 / eta, M1 * eta)
-    mean = float(np.trapezoid(M1, phi) / TWO_PI)
-    peak = float(np.max(M1) * w1)
+    M1 = crank_torque(phi)
+    # the torque vanishes during the dwell and is smooth while engaged: integrate there
+    s0 = mechanism.engagement_half_angle
+    on = np.pi + s0 * (1.0 - 1e-13) * np.linspace(-1.0, 1.0, n)  # ends just inside despite rounding
+    mean = float(np.trapezoid(crank_torque(on), on) / TWO_PI)
+    peak = float(max(np.max(M1), np.max(crank_torque(on))) * w1)
     return Drive(phi, M1, mean, mean * w1, peak, max(mean * w1, peak / k))
 
 
