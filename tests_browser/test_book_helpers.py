@@ -127,3 +127,36 @@ def test_every_collected_erratum_links_to_an_existing_chapter():
     md = errata_page.errata_markdown()
     for href in re.findall(r'href="(notebooks/[^"#]+)', md):
         assert (ROOT / href.replace(".html", ".ipynb")).is_file(), href
+
+
+def test_kernel_startup_shows_widgets_statically(tmp_path, monkeypatch):
+    """In a kernel started with the book's profile, a widget's HTML is its last plot plus a note."""
+    from nbclient import NotebookClient
+
+    startup = tmp_path / "ipython" / "profile_default" / "startup"
+    startup.mkdir(parents=True)
+    (startup / "00-mechbook.py").write_text((ROOT / "book" / "_ext" / "kernel_startup.py").read_text())
+    monkeypatch.setenv("IPYTHONDIR", str(tmp_path / "ipython"))
+    nb = nbformat.v4.new_notebook(metadata={"kernelspec": {"name": "python3", "display_name": "Python 3",
+                                                           "language": "python"}})
+    nb.cells = [nbformat.v4.new_code_cell(
+        "%matplotlib widget\n"
+        "import ipywidgets as W, matplotlib.pyplot as plt\n"
+        "import matplotlib\n"
+        "backend = matplotlib.get_backend()\n"
+        "out = W.Output()\n"
+        "fig, ax = plt.subplots(figsize=(2, 2))\n"
+        "with out:\n"
+        "    ax.plot([0, 1], [1, 0]); plt.show()\n"
+        "W.VBox([W.FloatSlider(value=2.5, description='length'), out])"),
+        nbformat.v4.new_code_cell("W.IntSlider(description='alone')"),
+        nbformat.v4.new_code_cell("print(backend)")]
+    NotebookClient(nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}).execute()
+    box = [o for o in nb.cells[0].outputs if o.get("output_type") == "execute_result"][0]["data"]
+    assert "application/vnd.jupyter.widget-view+json" in box  # the live view is still there for JupyterLab
+    html = box["text/html"]
+    assert html.count('<img src="data:image/png;base64,') == 1
+    assert "length = 2.5" in html and "make lab" in html
+    alone = [o for o in nb.cells[1].outputs if o.get("output_type") == "execute_result"][0]["data"]["text/html"]
+    assert "<img" not in alone and "make lab" in alone
+    assert "inline" in nb.cells[2].outputs[0]["text"]  # %matplotlib widget fell back to inline

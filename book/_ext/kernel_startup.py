@@ -1,78 +1,95 @@
 """IPython start-up file for the kernels that execute the book's pages (never for JupyterLab).
 
 book/conf.py copies it into a profile in the git-ignored build folder and points
-IPYTHONDIR there. A static page has no kernel behind it, so:
+IPYTHONDIR there. A static page has no kernel behind it, so a widget is shown as what
+it displays for its default values plus a one-line note on running it live:
 
-* a mechlab explorer (``MechanismExplorer``) is shown as the figure for its default
-  slider values plus a one-line note on running it live with ``make lab``;
-* any other widget shows the same note instead of an empty widget view;
+* every image (a figure with the inline backend) displayed into an ``ipywidgets.Output``
+  is remembered, and a widget's HTML representation shows the last image of each
+  Output widget it contains — so a mechlab explorer, an ``interact`` or any box of
+  controls with a plot appears as its plot, with its controls' values as a caption;
 * ``%matplotlib widget`` / ``ipympl`` falls back to the inline backend (ipympl figures
   do not render in static HTML).
+
+conf.py removes the widget view from myst-nb's MIME priority, so this HTML is chosen.
 """
 
 
 def _mechbook_setup():
-    import base64
     import html
-    import io
-
-    from IPython import get_ipython
-    from IPython.display import display
-
-    note = ('<p class="mechbook-live-note">Live widget: in the book you see the figure for the '
-            'default values; run this notebook with <code>make lab</code> to move the sliders.</p>')
-
-    def figure_bundle(fig, title):
-        buf = io.BytesIO()
-        fig.savefig(buf, format="png", dpi=fig.dpi)
-        data = base64.b64encode(buf.getvalue()).decode("ascii")
-        alt = html.escape(title or "widget figure for the default values", quote=True)
-        return {"text/html": (f'<div class="mechbook-widget"><img src="data:image/png;base64,{data}" '
-                              f'alt="{alt}"/>{note}</div>'),
-                "text/plain": f"<widget: {title or 'explorer'} (run live with make lab)>"}
-
-    try:
-        from mechlab.widgets import MechanismExplorer
-    except Exception:  # the book still builds the pages that do not need mechlab
-        MechanismExplorer = None
-
-    if MechanismExplorer is not None:
-        def _static_display(self):
-            title = self.fig.get_suptitle()
-            parts = [f"{w.description} = {w.value}" for w in self.sliders.values()]
-            caption = (f'<p class="mechbook-widget-values">{html.escape(", ".join(parts))}</p>'
-                       if parts else "")
-            bundle = figure_bundle(self.fig, title)
-            bundle["text/html"] = bundle["text/html"].replace("</div>", caption + "</div>", 1)
-            display(bundle, raw=True)
-
-        MechanismExplorer._ipython_display_ = _static_display
 
     import ipywidgets
+    from IPython import get_ipython
+
+    ip = get_ipython()
+    if ip is None:
+        return
+
+    note = ('<p class="mechbook-live-note">Live widget: the book shows it for the default values; '
+            'run this notebook with <code>make lab</code> to move the sliders.</p>')
+    last_image: dict[str, str] = {}  # Output widget model id -> last image/png (base64)
+    capturing: list = []  # the Output widgets being written into (nested `with out:`)
+
+    publish = ip.display_pub.publish
+
+    def recording_publish(data, metadata=None, *args, **kwargs):
+        if capturing and isinstance(data, dict) and "image/png" in data:
+            last_image[capturing[-1].model_id] = data["image/png"]
+        return publish(data, metadata, *args, **kwargs)
+
+    ip.display_pub.publish = recording_publish
+
+    enter, exit_ = ipywidgets.Output.__enter__, ipywidgets.Output.__exit__
+
+    def output_enter(self):
+        capturing.append(self)
+        return enter(self)
+
+    def output_exit(self, *exc):
+        if capturing and capturing[-1] is self:
+            capturing.pop()
+        return exit_(self, *exc)
+
+    ipywidgets.Output.__enter__, ipywidgets.Output.__exit__ = output_enter, output_exit
+
+    def walk(widget, seen):
+        if id(widget) in seen:
+            return
+        seen.add(id(widget))
+        yield widget
+        for child in getattr(widget, "children", ()) or ():
+            if isinstance(child, ipywidgets.Widget):
+                yield from walk(child, seen)
+
+    def static_html(widget) -> str:
+        parts, values = [], []
+        for w in walk(widget, set()):
+            if isinstance(w, ipywidgets.Output) and w.model_id in last_image:
+                parts.append(f'<img src="data:image/png;base64,{last_image[w.model_id]}" '
+                             f'alt="figure for the default values"/>')
+            elif isinstance(w, ipywidgets.ValueWidget) and getattr(w, "description", ""):
+                values.append(f"{w.description} = {w.value}")
+        caption = (f'<p class="mechbook-widget-values">{html.escape(", ".join(values))}</p>'
+                   if values and parts else "")
+        return f'<div class="mechbook-widget">{"".join(parts)}{caption}{note}</div>'
 
     original = ipywidgets.Widget._repr_mimebundle_
 
-    def _with_note(self, **kwargs):
+    def with_static_html(self, **kwargs):
         data = original(self, **kwargs)
         if isinstance(data, dict):
             data = dict(data)
-            data["text/html"] = f'<div class="mechbook-widget">{note}</div>'
+            data["text/html"] = static_html(self)
         return data
 
-    ipywidgets.Widget._repr_mimebundle_ = _with_note
+    ipywidgets.Widget._repr_mimebundle_ = with_static_html
 
-    ip = get_ipython()
-    if ip is not None:
-        magics = ip.magics_manager.magics["line"]
-        matplotlib_magic = magics.get("matplotlib")
+    enable_matplotlib = ip.enable_matplotlib  # what %matplotlib calls
 
-        def _matplotlib(line=""):
-            if line.strip() in ("widget", "ipympl", "notebook"):
-                line = "inline"
-            return matplotlib_magic(line)
+    def inline_matplotlib(gui=None):
+        return enable_matplotlib("inline" if gui in ("widget", "ipympl", "notebook", "nbagg") else gui)
 
-        if matplotlib_magic is not None:
-            ip.register_magic_function(_matplotlib, "line", "matplotlib")
+    ip.enable_matplotlib = inline_matplotlib
 
 
 _mechbook_setup()
