@@ -1,0 +1,938 @@
+"""Kinetostatics: loads, reactions group by group, balancing torque, friction, efficiency, drive.
+
+The method is the one seed 003 (SibSIU proceedings, "Kinetostatic analysis of the
+slider-crank mechanism with an additional link", formulas (1)-(5) and the force plans
+of its Figs. 2-5) applies by hand: split the mechanism into structural groups of zero
+mobility (Assur groups), load every link with its gravity, its d'Alembert inertia
+force and couple and the external loads, and solve the groups **from the output back
+to the crank**, each group's reactions becoming known loads on the links it is
+attached to; the crank (the leading link) is solved last and gives the balancing
+(driving) torque. Here every group is solved at once for all crank angles: the
+3·k equilibrium equations of its k links are a batch of small linear systems.
+
+Stable API (used by the chapters on Chebyshev six-bars and Geneva drives)
+-------------------------------------------------------------------------
+Structure (frozen dataclasses; lengths and masses in one consistent unit system —
+with metres, kilograms and rad/s, forces come out in N and torques in N·m):
+
+* ``Body(name, origin, axis=0.0, mass=0, inertia=0, com=(0, 0), length=0)`` — a link.
+  ``origin`` is a joint (a key of ``motion.points``) fixed on the link; ``axis`` is
+  its x axis: a pair of joint names ``(P, Q)`` (direction P→Q, the two points need not
+  both lie on the link, the direction must be fixed in it) or a constant angle
+  (a translating link). ``com`` = centre of mass in link coordinates (along the axis,
+  to its left); ``inertia`` = moment of inertia J_S about the centre of mass.
+* ``Revolute(name, a, b, point, friction=0, radius=0)`` — turning pair at a joint;
+  ``friction`` is Coulomb's f, ``radius`` the journal radius r (friction couple f·r·|R|).
+* ``Prismatic(name, a, b, point, angle=0, friction=0)`` — link b slides on link a
+  along a guide at ``angle`` to a's axis (absolute when a is the frame); reaction =
+  normal force N plus a couple (the offset of N along the guide); friction f·|N|.
+* ``HigherPair(name, a, b, point, normal, friction=0)`` — contact at the moving point
+  ``point`` with the common normal at angle ``normal`` to a's axis, or
+  ``normal(motion) → (n, 2)`` unit vectors (a curved slot, a cam); reaction N along it.
+* ``ForceModel(bodies, pairs, groups, crank, pivot)`` — ``groups`` lists the structural
+  groups (tuples of body names) in solving order, output first; ``crank`` is the
+  leading link turning about the joint ``pivot``. Pair ``a`` or ``b`` may be ``FRAME``.
+  ``model.with_body(name, mass=…, inertia=…, com=…)``, ``model.with_friction(f, radius)``
+  return modified copies. ``model_for(mechanism)`` builds the model of a FourBar,
+  SliderCrank, SlottedLink or SineMechanism (massless, frictionless, com mid-link).
+
+Loads: ``Force(body, at, value)`` (``at`` a joint name or link coordinates) and
+``Torque(body, value)``; a value is a constant, an array over the crank angles, or a
+callable ``value(motion)`` returning one (so the load follows any sampling).
+
+Analysis:
+
+* ``solve(model, motion, loads=(), omega1=1.0, eps1=0.0, gravity=(0, -9.81))`` →
+  :class:`ForceResult` with ``reactions[name]`` (:class:`Reaction`: point, force of a
+  on b, couple, normal force), ``torque`` (balancing torque on the crank, from the
+  groups), ``torque_power`` (the same from the power balance, computed independently),
+  ``ideal_torque`` (without friction, by virtual work), ``losses`` (friction power per
+  unit ω1), ``residual`` (largest equilibrium residual of any link), ``efficiency()``,
+  ``cycle_efficiency(...)``.
+* ``virtual_work_torque(model, motion, loads, omega1, eps1, gravity)`` — the frictionless
+  balancing torque from the power balance alone: M_b = −Σ(F_i·v_i + M_i·ω_i)/ω1
+  (Zhukovsky's lever in analytic form).
+* ``drive(torque, phi, omega1, overload=2.0, efficiency=1.0)`` → :class:`Drive` —
+  mean and peak torque, rms torque, mean power (seed 004, last section) and the
+  nominal motor torque and power for a drive without a flywheel.
+* ``Kinetostatics(mechanism, model, loads, omega1, eps1, gravity)`` — a mechanism with
+  its loads: ``.motion(phi)``/``.cycle(n)`` delegate to the mechanism, ``.forces(phi)``
+  solves; :mod:`mechlab.draw.forces` draws it with reaction arrows (``animate`` works).
+
+Friction is solved by **fixed-point iteration**: the friction couples and forces are
+computed from the previous iterate's reactions and applied as known loads, and the
+group-by-group pass is repeated until the reactions change by less than 1e-13 of
+their size (the map contracts with factor ≈ f·r/l for journals, ≈ f·tan(pressure
+angle) for sliders); no convergence within ``maxiter`` means the mechanism is near
+self-locking and raises :class:`SelfLockingError`. The sense of sliding comes from
+the analogs and the sign of ω1 (ω1 = 0 is treated as the start of a motion with ω1 > 0).
+Prismatic friction is f·|N| with N the resultant normal force (edge pressures from
+the reaction couple are not modelled).
+
+Efficiency (seed 001, chapter 3): the instantaneous efficiency from the power balance,
+η = 1 − P_friction / P_drive = M_ideal / M_b, defined where the drive delivers power
+and the loads absorb it (P_drive > 0 and M_ideal·ω1 > 0; elsewhere masked); the thesis' cycle efficiency is the arithmetic mean
+of the instantaneous values over the period in which the output moves
+(``how="mean"``); ``how="work"`` gives the energy ratio 1 − A_friction / A_drive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import Any, Callable, Mapping, Sequence
+
+import numpy as np
+
+from .errors import DimensionError, MechanismError, SingularityError
+from .geometry import PointPath, cross, dot, perp, relative, unit, vector_angle
+from .motion import Motion
+
+FRAME = "frame"
+G = 9.81
+
+
+# --------------------------------------------------------------------------- errors
+class MassError(DimensionError):
+    """A mass or moment of inertia is negative or not finite."""
+
+
+class FrictionError(DimensionError):
+    """A friction coefficient or journal radius is out of range."""
+
+
+class LoadError(DimensionError):
+    """A load's value has the wrong shape or is not finite."""
+
+
+class StructureError(MechanismError):
+    """The force model's links, pairs and groups do not make statically solvable groups."""
+
+
+class SelfLockingError(MechanismError):
+    """The friction iteration does not converge: the mechanism is (nearly) self-locking."""
+
+
+def _nonneg(name: str, value, exc) -> float:
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise exc(f"{name} must be a number, got {value!r}") from None
+    if not np.isfinite(x) or x < 0:
+        raise exc(f"{name} must be a finite number ≥ 0, got {x:g}")
+    return x
+
+
+def _friction(name: str, f) -> float:
+    f = _nonneg(f"friction coefficient of {name}", f, FrictionError)
+    if f >= 1.0:
+        raise FrictionError(f"friction coefficient of {name} must satisfy 0 ≤ f < 1, got f = {f:g}")
+    return f
+
+
+# --------------------------------------------------------------------------- structure
+@dataclass(frozen=True)
+class Body:
+    """A link: a joint fixed on it (``origin``), its axis, and its mass properties.
+
+    ``axis`` = (P, Q): the link's x axis points from joint P to joint Q; a float: the
+    link translates with its axis at that constant angle (radians). ``com`` is the
+    centre of mass in link coordinates (ξ along the axis from the origin, η to its left).
+    ``length`` is informational (a bar's length, for the default slender-bar inertia).
+    """
+
+    name: str
+    origin: str
+    axis: Any = 0.0
+    mass: float = 0.0
+    inertia: float = 0.0
+    com: tuple = (0.0, 0.0)
+    length: float = 0.0
+
+    def __post_init__(self):
+        if self.name == FRAME:
+            raise StructureError(f"a body may not be called {FRAME!r} (reserved for the frame)")
+        object.__setattr__(self, "mass", _nonneg(f"mass of {self.name}", self.mass, MassError))
+        object.__setattr__(self, "inertia", _nonneg(f"moment of inertia of {self.name}", self.inertia, MassError))
+        object.__setattr__(self, "length", _nonneg(f"length of {self.name}", self.length, DimensionError))
+        com = tuple(float(c) for c in self.com)
+        if len(com) != 2 or not all(np.isfinite(com)):
+            raise DimensionError(f"centre of mass of {self.name} must be two finite numbers, got {self.com!r}")
+        object.__setattr__(self, "com", com)
+        if not isinstance(self.axis, tuple):
+            a = float(self.axis)
+            if not np.isfinite(a):
+                raise DimensionError(f"axis angle of {self.name} must be finite, got {a}")
+            object.__setattr__(self, "axis", a)
+        elif len(self.axis) != 2:
+            raise StructureError(f"axis of {self.name} must be (P, Q) joint names or an angle, got {self.axis!r}")
+
+    @property
+    def translates(self) -> bool:
+        return not isinstance(self.axis, tuple)
+
+
+@dataclass(frozen=True)
+class Revolute:
+    """Turning pair at joint ``point``; reaction R = force of link a on link b."""
+
+    name: str
+    a: str
+    b: str
+    point: str
+    friction: float = 0.0
+    radius: float = 0.0
+    n_unknowns = 2
+
+    def __post_init__(self):
+        object.__setattr__(self, "friction", _friction(self.name, self.friction))
+        object.__setattr__(self, "radius", _nonneg(f"journal radius of {self.name}", self.radius, FrictionError))
+
+
+@dataclass(frozen=True)
+class Prismatic:
+    """Link b slides on link a along a guide at ``angle`` to a's axis, through ``point`` (fixed on b)."""
+
+    name: str
+    a: str
+    b: str
+    point: str
+    angle: float = 0.0
+    friction: float = 0.0
+    n_unknowns = 2
+
+    def __post_init__(self):
+        object.__setattr__(self, "friction", _friction(self.name, self.friction))
+        object.__setattr__(self, "angle", float(self.angle))
+
+
+@dataclass(frozen=True)
+class HigherPair:
+    """Contact of links a and b at the moving point ``point``; reaction along the common normal.
+
+    ``normal``: angle of the normal to a's axis, or ``normal(motion) → (n, 2)`` unit vectors.
+    """
+
+    name: str
+    a: str
+    b: str
+    point: str
+    normal: Any = np.pi / 2
+    friction: float = 0.0
+    n_unknowns = 1
+
+    def __post_init__(self):
+        object.__setattr__(self, "friction", _friction(self.name, self.friction))
+
+
+Pair = Revolute | Prismatic | HigherPair
+
+
+@dataclass(frozen=True)
+class ForceModel:
+    """Links, pairs and the structural groups (output first) of a mechanism driven by ``crank``."""
+
+    bodies: tuple
+    pairs: tuple
+    groups: tuple
+    crank: str
+    pivot: str
+
+    def __post_init__(self):
+        object.__setattr__(self, "bodies", tuple(self.bodies))
+        object.__setattr__(self, "pairs", tuple(self.pairs))
+        object.__setattr__(self, "groups", tuple(tuple(g) for g in self.groups))
+        names = [b.name for b in self.bodies]
+        if len(set(names)) != len(names):
+            raise StructureError(f"body names must be unique, got {names}")
+        pnames = [p.name for p in self.pairs]
+        if len(set(pnames)) != len(pnames):
+            raise StructureError(f"pair names must be unique, got {pnames}")
+        known = set(names) | {FRAME}
+        for p in self.pairs:
+            for end in (p.a, p.b):
+                if end not in known:
+                    raise StructureError(f"pair {p.name} joins unknown body {end!r}; bodies: {names}")
+            if p.a == p.b:
+                raise StructureError(f"pair {p.name} joins {p.a} to itself")
+        if self.crank not in names:
+            raise StructureError(f"crank {self.crank!r} is not a body; bodies: {names}")
+        listed = [b for g in self.groups for b in g] + [self.crank]
+        if sorted(listed) != sorted(names):
+            raise StructureError(f"every body except the crank must be in exactly one group: groups "
+                                 f"{self.groups} + crank {self.crank!r} vs bodies {names}")
+        solved: set[str] = set()
+        for g in (*self.groups, (self.crank,)):
+            unknown = self._unknown_pairs(g, solved)
+            count = sum(p.n_unknowns for p in unknown) + (g == (self.crank,))
+            if count != 3 * len(g):
+                raise StructureError(
+                    f"group {g} is not statically determinate: {count} unknown reaction components "
+                    f"(pairs {[p.name for p in unknown]}) for 3·{len(g)} = {3 * len(g)} equilibrium equations")
+            solved |= {p.name for p in unknown}
+        if solved != set(pnames):
+            raise StructureError(f"pairs {sorted(set(pnames) - solved)} belong to no group")
+
+    def _unknown_pairs(self, group, solved):
+        return [p for p in self.pairs if (p.a in group or p.b in group) and p.name not in solved]
+
+    def body(self, name: str) -> Body:
+        for b in self.bodies:
+            if b.name == name:
+                return b
+        raise KeyError(f"no body {name!r}; bodies: {[b.name for b in self.bodies]}")
+
+    def pair(self, name: str):
+        for p in self.pairs:
+            if p.name == name:
+                return p
+        raise KeyError(f"no pair {name!r}; pairs: {[p.name for p in self.pairs]}")
+
+    def with_body(self, name: str, *, mass=None, inertia=None, com=None) -> "ForceModel":
+        """A copy with link ``name``'s mass properties changed.
+
+        ``inertia=None`` with a new mass gives a slender uniform bar, J_S = m·length²/12.
+        """
+        old = self.body(name)
+        m = old.mass if mass is None else mass
+        if inertia is None:
+            inertia = old.inertia if mass is None else _nonneg(f"mass of {name}", m, MassError) * old.length**2 / 12
+        new = replace(old, mass=m, inertia=inertia, com=old.com if com is None else com)
+        return replace(self, bodies=tuple(new if b.name == name else b for b in self.bodies))
+
+    def with_friction(self, f: float, radius: float = 0.0, *, pairs: Sequence[str] | None = None) -> "ForceModel":
+        """A copy with friction coefficient f in the named pairs (all by default) and journal radius r."""
+        chosen = set(pairs) if pairs is not None else {p.name for p in self.pairs}
+        unknown = chosen - {p.name for p in self.pairs}
+        if unknown:
+            raise KeyError(f"no pairs {sorted(unknown)}; pairs: {[p.name for p in self.pairs]}")
+        out = []
+        for p in self.pairs:
+            if p.name in chosen:
+                p = replace(p, friction=f, radius=radius) if isinstance(p, Revolute) else replace(p, friction=f)
+            out.append(p)
+        return replace(self, pairs=tuple(out))
+
+
+# --------------------------------------------------------------------------- loads
+@dataclass(frozen=True)
+class Force:
+    """External force on ``body`` applied at ``at`` (joint name or link coordinates (ξ, η))."""
+
+    body: str
+    at: Any
+    value: Any
+
+
+@dataclass(frozen=True)
+class Torque:
+    """External couple on ``body`` (counter-clockwise positive)."""
+
+    body: str
+    value: Any
+
+
+def _evaluate(value, motion: Motion, shape: tuple, what: str) -> np.ndarray:
+    v = value(motion) if callable(value) else value
+    try:
+        arr = np.broadcast_to(np.asarray(v, dtype=float), shape)
+    except ValueError:
+        raise LoadError(f"{what} must broadcast to shape {shape}, got shape {np.shape(v)}") from None
+    if not np.all(np.isfinite(arr)):
+        raise LoadError(f"{what} must be finite (got NaN or inf)")
+    return arr
+
+
+# --------------------------------------------------------------------------- kinematics of links
+@dataclass(frozen=True, eq=False)
+class _Frame:
+    o: PointPath          # origin
+    th: np.ndarray        # axis angle
+    dth: np.ndarray       # θ'
+    ddth: np.ndarray      # θ''
+
+    def point(self, local) -> PointPath:
+        """A point fixed in the link at link coordinates (ξ, η), with analogs."""
+        xi, eta = local
+        e = unit(self.th)
+        r = xi * e + eta * perp(e)
+        rp = perp(r)
+        return PointPath(self.o.p + r, self.o.d + self.dth[:, None] * rp,
+                         self.o.dd + self.ddth[:, None] * rp - (self.dth**2)[:, None] * r)
+
+    def velocity_at(self, p: np.ndarray) -> np.ndarray:
+        """Velocity analog of the link's point that coincides with positions ``p``."""
+        return self.o.d + self.dth[:, None] * perp(p - self.o.p)
+
+
+def _frames(model: ForceModel, motion: Motion) -> dict[str, _Frame]:
+    n = len(motion)
+    pts = motion.points
+    frames = {}
+    for b in model.bodies:
+        if b.origin not in pts:
+            raise StructureError(f"origin {b.origin!r} of {b.name} is not a joint of the motion: {sorted(pts)}")
+        if b.translates:
+            z = np.zeros(n)
+            frames[b.name] = _Frame(pts[b.origin], np.full(n, b.axis), z, z)
+        else:
+            P, Q = b.axis
+            ang = vector_angle(relative(pts[Q], pts[P]))
+            frames[b.name] = _Frame(pts[b.origin], ang.theta, ang.d, ang.dd)
+    z = np.zeros(n)
+    frames[FRAME] = _Frame(PointPath(np.zeros((n, 2)), np.zeros((n, 2)), np.zeros((n, 2))), z, z, z)
+    return frames
+
+
+def _point(motion: Motion, frame: _Frame, at) -> tuple[np.ndarray, np.ndarray]:
+    """Position and velocity analog of a load's application point on a link."""
+    if isinstance(at, str):
+        if at not in motion.points:
+            raise StructureError(f"load point {at!r} is not a joint of the motion: {sorted(motion.points)}")
+        p = motion.points[at].p
+        return p, frame.velocity_at(p)
+    q = frame.point(at)
+    return q.p, q.d
+
+
+@dataclass(frozen=True, eq=False)
+class _Loads:
+    force: dict           # body → (n, 2) resultant of known loads
+    moment: dict          # body → (n,) moment about the body origin
+    power: np.ndarray     # Σ F·v' + M·θ' over all bodies (virtual power per unit ω1)
+
+
+def _known_loads(model, motion, frames, loads, omega1, eps1, gravity) -> _Loads:
+    n = len(motion)
+    g = np.asarray(gravity, dtype=float)
+    if g.shape != (2,) or not np.all(np.isfinite(g)):
+        raise LoadError(f"gravity must be a finite 2-vector, got {gravity!r}")
+    force = {b.name: np.zeros((n, 2)) for b in model.bodies}
+    moment = {b.name: np.zeros(n) for b in model.bodies}
+    power = np.zeros(n)
+    w2 = omega1 * omega1
+
+    def add(body, F, p, v):
+        fr = frames[body]
+        force[body] += F
+        moment[body] += cross(p - fr.o.p, F)
+        nonlocal power
+        power = power + dot(F, v)
+
+    for b in model.bodies:
+        fr = frames[b.name]
+        if b.mass > 0:
+            S = fr.point(b.com)
+            acc = S.dd * w2 + S.d * eps1
+            add(b.name, b.mass * (g - acc), S.p, S.d)      # gravity + d'Alembert force −m·a_S
+        if b.inertia > 0:
+            M = -b.inertia * (fr.ddth * w2 + fr.dth * eps1)  # d'Alembert couple −J_S·ε
+            moment[b.name] += M
+            power = power + M * fr.dth
+    names = {b.name for b in model.bodies}
+    for ld in loads:
+        if ld.body not in names:
+            raise StructureError(f"load on unknown body {ld.body!r}; bodies: {sorted(names)}")
+        fr = frames[ld.body]
+        if isinstance(ld, Force):
+            F = _evaluate(ld.value, motion, (n, 2), f"force on {ld.body}")
+            p, v = _point(motion, fr, ld.at)
+            add(ld.body, F, p, v)
+        elif isinstance(ld, Torque):
+            M = _evaluate(ld.value, motion, (n,), f"torque on {ld.body}")
+            moment[ld.body] += M
+            power = power + M * fr.dth
+        else:
+            raise LoadError(f"a load must be a Force or a Torque, got {type(ld).__name__}")
+    return _Loads(force, moment, power)
+
+
+def virtual_work_torque(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1: float = 0.0,
+                        gravity=(0.0, -G)) -> np.ndarray:
+    """Frictionless balancing torque from the power balance alone (no reactions).
+
+    All forces — gravity, d'Alembert inertia forces and couples, external loads — and
+    the balancing torque M_b do no net work in a virtual displacement δφ of the
+    ideal mechanism, so M_b = −Σ(F_i·r_i' + M_i·θ_i') with r_i', θ_i' the analogs of
+    the load points and link angles: Zhukovsky's lever in analytic form.
+    """
+    frames = _frames(model, motion)
+    kl = _known_loads(model, motion, frames, loads, float(omega1), float(eps1), gravity)
+    crank = frames[model.crank]
+    return -kl.power / crank.dth
+
+
+# --------------------------------------------------------------------------- results
+@dataclass(frozen=True, eq=False)
+class Reaction:
+    """Reaction in one pair over the cycle: force and couple of link a on link b.
+
+    ``force`` includes the friction force of a sliding pair; ``couple`` is the pair's
+    reaction couple (prismatic) plus the friction couple (revolute); ``normal`` is the
+    signed normal force N (prismatic, higher pairs; None for a revolute).
+    """
+
+    pair: str
+    a: str
+    b: str
+    point: np.ndarray
+    force: np.ndarray
+    couple: np.ndarray
+    normal: np.ndarray | None = None
+
+    @property
+    def magnitude(self) -> np.ndarray:
+        return np.hypot(self.force[:, 0], self.force[:, 1])
+
+
+@dataclass(frozen=True, eq=False)
+class ForceResult:
+    """Kinetostatics over the crank angles ``phi`` at crank speed ω1 and acceleration ε1."""
+
+    phi: np.ndarray
+    omega1: float
+    eps1: float
+    reactions: Mapping[str, Reaction]
+    torque: np.ndarray          # balancing torque on the crank, from the groups
+    torque_power: np.ndarray    # the same from the power balance (with friction losses)
+    ideal_torque: np.ndarray    # frictionless, from virtual work
+    losses: np.ndarray          # friction power per unit ω1 (≥ 0)
+    residual: float             # largest equilibrium residual of any link, relative
+    iterations: int
+    model: ForceModel = field(repr=False)
+
+    @property
+    def power(self) -> np.ndarray:
+        """Driving power M_b·ω1."""
+        return self.torque * self.omega1
+
+    def efficiency(self) -> np.ma.MaskedArray:
+        """Instantaneous efficiency η = 1 − P_friction/P_drive = M_ideal/M_b (seed 001, ch. 3).
+
+        Defined where the drive delivers power and the loads absorb it (P_drive > 0 and
+        M_ideal·ω1 > 0); masked elsewhere — where the links' inertia or gravity drive the crank,
+        an instantaneous efficiency has no meaning.
+        """
+        s = np.sign(self.omega1) or 1.0
+        drive = self.torque * s
+        tiny = 1e-12 * (np.max(np.abs(self.torque)) + 1e-300)
+        defined = (drive > tiny) & (self.ideal_torque * s > tiny)
+        eta = np.ones_like(drive)
+        np.divide(self.losses, drive, out=eta, where=defined)
+        return np.ma.masked_array(np.where(defined, 1.0 - eta, 0.0), mask=~defined)
+
+    def cycle_efficiency(self, moving: np.ndarray | None = None, how: str = "mean") -> float:
+        """Cycle efficiency over the positions where the output moves.
+
+        ``how="mean"``: the thesis' definition (seed 001, ch. 3), the arithmetic mean of the
+        instantaneous efficiencies (over the positions of ``moving`` where η is defined);
+        ``how="work"``: 1 − ∫P_friction dφ / ∫P_drive dφ over those positions.
+        """
+        sel = np.ones(len(self.phi), bool) if moving is None else np.asarray(moving, bool)
+        if sel.shape != self.phi.shape:
+            raise DimensionError(f"moving must be a mask of shape {self.phi.shape}, got {sel.shape}")
+        if how == "mean":
+            eta = self.efficiency()
+            use = sel & ~np.ma.getmaskarray(eta)
+            if not np.any(use):
+                raise MechanismError("cycle efficiency undefined: the drive delivers no power where the output moves")
+            return float(np.mean(eta.data[use]))
+        if how == "work":
+            s = np.sign(self.omega1) or 1.0
+            w = np.where(sel, 1.0, 0.0)
+            a_drive = np.trapezoid(w * self.torque * s, self.phi)
+            a_loss = np.trapezoid(w * self.losses, self.phi)
+            if not a_drive * np.sign(self.phi[-1] - self.phi[0]) > 0:
+                raise MechanismError(f"cycle efficiency undefined: the drive's work over the cycle is {a_drive:.4g} ≤ 0")
+            return float(1.0 - a_loss / a_drive)
+        raise ValueError(f"how must be 'mean' or 'work', got {how!r}")
+
+
+# --------------------------------------------------------------------------- solver
+def _normals(model, motion, frames):
+    """Unit normal (prismatic: to the guide; higher pair: common normal) for each pair."""
+    out = {}
+    for p in model.pairs:
+        fa = frames[p.a]
+        if isinstance(p, Prismatic):
+            out[p.name] = perp(unit(fa.th + p.angle))
+        elif isinstance(p, HigherPair):
+            if callable(p.normal):
+                nv = np.asarray(p.normal(motion), dtype=float)
+                if nv.shape != (len(motion), 2) or not np.all(np.isfinite(nv)):
+                    raise LoadError(f"normal of {p.name} must be finite unit vectors of shape {(len(motion), 2)}")
+                out[p.name] = nv / np.hypot(nv[:, 0], nv[:, 1])[:, None]
+            else:
+                out[p.name] = unit(fa.th + float(p.normal))
+    return out
+
+
+def _sliding(p, frames, P, nrm):
+    """Relative motion at a pair per unit ω1: θ_b' − θ_a' (revolute) or tangential slip (sliding pairs)."""
+    fa, fb = frames[p.a], frames[p.b]
+    if isinstance(p, Revolute):
+        return fb.dth - fa.dth, None
+    t = -perp(nrm)  # tangent (guide direction for a prismatic pair)
+    return dot(fb.velocity_at(P) - fa.velocity_at(P), t), t
+
+
+def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1: float = 0.0,
+          gravity=(0.0, -G), *, maxiter: int = 200, tol: float = 1e-13) -> ForceResult:
+    """Reactions in every pair and the balancing torque, group by group (seed 003's method).
+
+    Groups are solved in ``model.groups`` order (output first), then the crank. Each
+    group's 3k equilibrium equations (ΣF = 0, ΣM about each link's origin = 0) form a
+    batch of linear systems in its unknown reactions, solved at every crank angle at
+    once. Friction (if any pair has f > 0) is iterated to a fixed point, see the module
+    docstring. Raises SingularityError where a group cannot carry its loads (a dead
+    point) and SelfLockingError if the friction iteration diverges.
+    """
+    omega1, eps1 = float(omega1), float(eps1)
+    if not (np.isfinite(omega1) and np.isfinite(eps1)):
+        raise DimensionError(f"crank speed and acceleration must be finite, got ω1 = {omega1}, ε1 = {eps1}")
+    n = len(motion)
+    pts = motion.points
+    for p in model.pairs:
+        if p.point not in pts:
+            raise StructureError(f"point {p.point!r} of pair {p.name} is not a joint of the motion: {sorted(pts)}")
+    frames = _frames(model, motion)
+    kl = _known_loads(model, motion, frames, loads, omega1, eps1, gravity)
+    nrm = _normals(model, motion, frames)
+    sense = np.sign(omega1) or 1.0
+    P = {p.name: pts[p.point].p for p in model.pairs}
+    slip = {p.name: _sliding(p, frames, P[p.name], nrm.get(p.name)) for p in model.pairs}
+    rough = [p for p in model.pairs if p.friction > 0 and (not isinstance(p, Revolute) or p.radius > 0)]
+    crank_dth = frames[model.crank].dth
+    spread = np.concatenate([P[p.name] for p in model.pairs])
+    length = float(np.max(np.ptp(spread, axis=0))) or 1.0   # size of the mechanism
+
+    def pass_(fric):
+        """One group-by-group pass with the friction loads ``fric`` (pair → (force on b, couple on b))."""
+        force, couple, normal = {}, {}, {}   # pair → force/couple of a on b (without friction), N
+        torque = None
+        for group in (*model.groups, (model.crank,)):
+            unknown = model._unknown_pairs(group, set(force))
+            is_crank = group == (model.crank,)
+            m = 3 * len(group)
+            A = np.zeros((n, m, m))
+            rhs = np.zeros((n, m))
+            row = {b: 3 * i for i, b in enumerate(group)}
+            for b in group:
+                r = row[b]
+                rhs[:, r:r + 2] -= kl.force[b]
+                rhs[:, r + 2] -= kl.moment[b]
+            # known reactions (solved pairs) and friction loads acting on this group's links
+            for p in model.pairs:
+                parts = []
+                if p.name in force:
+                    parts.append((force[p.name], couple[p.name]))
+                if p.name in fric:
+                    parts.append(fric[p.name])
+                for F, C in parts:
+                    for body, s in ((p.b, 1.0), (p.a, -1.0)):
+                        if body in row:
+                            r, o = row[body], frames[body].o.p
+                            rhs[:, r:r + 2] -= s * F
+                            rhs[:, r + 2] -= s * (cross(P[p.name] - o, F) + C)
+            col = 0
+            layout = []
+            couple_cols = []
+            for p in unknown:
+                layout.append((p, col))
+                for body, s in ((p.b, 1.0), (p.a, -1.0)):
+                    if body not in row:
+                        continue
+                    r, d = row[body], P[p.name] - frames[body].o.p
+                    if isinstance(p, Revolute):
+                        A[:, r, col] += s
+                        A[:, r + 1, col + 1] += s
+                        A[:, r + 2, col] += -s * d[:, 1]
+                        A[:, r + 2, col + 1] += s * d[:, 0]
+                    else:
+                        e = nrm[p.name]
+                        A[:, r, col] += s * e[:, 0]
+                        A[:, r + 1, col] += s * e[:, 1]
+                        A[:, r + 2, col] += s * cross(d, e)
+                        if isinstance(p, Prismatic):
+                            A[:, r + 2, col + 1] += s
+                if isinstance(p, Prismatic):
+                    couple_cols.append(col + 1)
+                col += p.n_unknowns
+            if is_crank:
+                A[:, 2, col] = 1.0
+                couple_cols.append(col)
+            # Moment rows and couple columns carry a length: scale them so the conditioning
+            # test does not depend on the unit of length.
+            S = A.copy()
+            S[:, 2::3, :] /= length
+            S[:, :, couple_cols] /= length
+            cond = np.linalg.cond(S)
+            if np.any(~(cond < 1e12)):
+                i = int(np.argmax(~(cond < 1e12)))
+                raise SingularityError(
+                    f"group {group} cannot carry its loads at φ = {np.degrees(motion.phi[i]):.2f}°: its equilibrium "
+                    f"equations are singular (condition number {cond[i]:.2e}), a dead point of the group")
+            x = np.linalg.solve(A, rhs[..., None])[..., 0]
+            for p, c in layout:
+                if isinstance(p, Revolute):
+                    force[p.name] = x[:, c:c + 2].copy()
+                    couple[p.name] = np.zeros(n)
+                else:
+                    N = x[:, c].copy()
+                    normal[p.name] = N
+                    force[p.name] = N[:, None] * nrm[p.name]
+                    couple[p.name] = x[:, c + 1].copy() if isinstance(p, Prismatic) else np.zeros(n)
+            if is_crank:
+                torque = x[:, col].copy()
+        return force, couple, normal, torque
+
+    def friction_loads(force, normal):
+        fric, loss = {}, np.zeros(n)
+        for p in rough:
+            rel, t = slip[p.name]
+            sgn = np.sign(rel * sense)
+            if isinstance(p, Revolute):
+                R = np.hypot(force[p.name][:, 0], force[p.name][:, 1])
+                mag = p.friction * p.radius * R
+                fric[p.name] = (np.zeros((n, 2)), -mag * sgn)       # couple on b opposes ω_b − ω_a
+            else:
+                mag = p.friction * np.abs(normal[p.name])
+                fric[p.name] = (-(mag * sgn)[:, None] * t, np.zeros(n))  # force on b opposes its slip
+            loss += mag * np.abs(rel)
+        return fric, loss
+
+    fric, loss = {}, np.zeros(n)
+    force, couple, normal, torque = pass_(fric)
+    iterations = 1
+    if rough:
+        for iterations in range(2, maxiter + 2):
+            fric, loss = friction_loads(force, normal)
+            new = pass_(fric)
+            size = max(np.max(np.abs(v)) for v in new[0].values()) + np.max(np.abs(new[3]))
+            change = max(np.max(np.abs(new[0][k] - force[k])) for k in force)
+            change = max(change, np.max(np.abs(new[3] - torque)))
+            force, couple, normal, torque = new
+            if change <= tol * size:
+                break
+        else:
+            raise SelfLockingError(
+                f"friction iteration did not converge in {maxiter} passes (last change {change:.3g} of "
+                f"{size:.3g}): the mechanism is self-locking or nearly so at f = "
+                f"{max(p.friction for p in rough):g}")
+        fric, loss = friction_loads(force, normal)
+
+    reactions = {}
+    for p in model.pairs:
+        F, C = force[p.name], couple[p.name]
+        if p.name in fric:
+            F, C = F + fric[p.name][0], C + fric[p.name][1]
+        reactions[p.name] = Reaction(p.name, p.a, p.b, P[p.name], F, C, normal.get(p.name))
+
+    residual = _residual(model, frames, kl, reactions, torque)
+    torque_power = (sense * loss - kl.power) / crank_dth
+    ideal = -kl.power / crank_dth
+    return ForceResult(motion.phi, omega1, eps1, reactions, torque, torque_power, ideal, loss, residual,
+                       iterations, model)
+
+
+def _residual(model, frames, kl, reactions, torque) -> float:
+    """Largest |ΣF|, |ΣM| over the links, relative to the largest load or reaction."""
+    resF = {b.name: kl.force[b.name].copy() for b in model.bodies}
+    resM = {b.name: kl.moment[b.name].copy() for b in model.bodies}
+    scale = max([np.max(np.abs(v)) for v in kl.force.values()] + [np.max(np.abs(v)) for v in kl.moment.values()]
+                + [np.max(np.abs(r.force)) for r in reactions.values()] + [np.max(np.abs(torque)), 1e-300])
+    for r in reactions.values():
+        for body, s in ((r.b, 1.0), (r.a, -1.0)):
+            if body == FRAME:
+                continue
+            resF[body] += s * r.force
+            resM[body] += s * (cross(r.point - frames[body].o.p, r.force) + r.couple)
+    resM[model.crank] += torque
+    worst = max(max(np.max(np.abs(resF[b])), np.max(np.abs(resM[b]))) for b in resF)
+    return float(worst / scale)
+
+
+# --------------------------------------------------------------------------- models of the core mechanisms
+def model_for(mechanism) -> ForceModel:
+    """Force model of a core mechanism: massless frictionless links, centres of mass mid-link.
+
+    * FourBar: links crank (O→A), coupler (A→B), rocker (E→B); pairs O, A, B, E; group RRR
+      (coupler, rocker).
+    * SliderCrank: crank, rod (A→B), slider (at B, translating); pairs O, A, B and the
+      prismatic ``guide``; group RRP (rod, slider).
+    * SlottedLink: crank, block (at A, turning with the link), link (B→A); pairs O, A,
+      the prismatic ``slot`` (block in the link) and B; group RPR (block, link).
+    * SineMechanism: crank, block (at A), yoke (at K); pairs O, A, ``slot`` (block in
+      the yoke, vertical) and ``guide`` (yoke on the frame); group (block, yoke).
+    """
+    from .linkages import FourBar, SineMechanism, SliderCrank, SlottedLink
+
+    if not isinstance(mechanism, (FourBar, SliderCrank, SlottedLink, SineMechanism)):
+        raise TypeError(f"no force model for {type(mechanism).__name__}; build a ForceModel for it")
+    crank = Body("crank", "O", ("O", "A"), com=(mechanism.crank / 2, 0.0), length=mechanism.crank)
+    crank_pair = Revolute("O", FRAME, "crank", "O")
+    if isinstance(mechanism, FourBar):
+        return ForceModel(
+            (crank, Body("coupler", "A", ("A", "B"), com=(mechanism.coupler / 2, 0.0), length=mechanism.coupler),
+             Body("rocker", "E", ("E", "B"), com=(mechanism.rocker / 2, 0.0), length=mechanism.rocker)),
+            (crank_pair, Revolute("A", "crank", "coupler", "A"), Revolute("B", "coupler", "rocker", "B"),
+             Revolute("E", FRAME, "rocker", "E")),
+            (("coupler", "rocker"),), "crank", "O")
+    if isinstance(mechanism, SliderCrank):
+        return ForceModel(
+            (crank, Body("rod", "A", ("A", "B"), com=(mechanism.rod / 2, 0.0), length=mechanism.rod),
+             Body("slider", "B", 0.0)),
+            (crank_pair, Revolute("A", "crank", "rod", "A"), Revolute("B", "rod", "slider", "B"),
+             Prismatic("guide", FRAME, "slider", "B", 0.0)),
+            (("rod", "slider"),), "crank", "O")
+    if isinstance(mechanism, SlottedLink):
+        reach = mechanism.pivot_distance + mechanism.crank
+        return ForceModel(
+            (crank, Body("block", "A", ("B", "A")),
+             Body("link", "B", ("B", "A"), com=(reach / 2, 0.0), length=reach)),
+            (crank_pair, Revolute("A", "crank", "block", "A"), Prismatic("slot", "link", "block", "A", 0.0),
+             Revolute("B", FRAME, "link", "B")),
+            (("block", "link"),), "crank", "O")
+    if isinstance(mechanism, SineMechanism):
+        return ForceModel(
+            (crank, Body("block", "A", np.pi / 2), Body("yoke", "K", 0.0)),
+            (crank_pair, Revolute("A", "crank", "block", "A"), Prismatic("slot", "yoke", "block", "A", np.pi / 2),
+             Prismatic("guide", FRAME, "yoke", "K", 0.0)),
+            (("block", "yoke"),), "crank", "O")
+    raise TypeError(f"no force model for {type(mechanism).__name__}; build a ForceModel for it")
+
+
+def slender_bar(mass: float, length: float) -> float:
+    """Moment of inertia m·l²/12 of a uniform slender bar about its centre."""
+    return _nonneg("mass", mass, MassError) * _nonneg("length", length, DimensionError) ** 2 / 12.0
+
+
+# --------------------------------------------------------------------------- drive
+@dataclass(frozen=True)
+class Drive:
+    """Crank torque over a cycle and the motor it needs without a flywheel.
+
+    ``mean_torque`` and ``mean_power`` = M_mean·ω1 (seed 004: N_cp = M_cp·ω_kp, M_cp the
+    mean of the torque over the positions, divided by the efficiency η); ``rms_torque``
+    is the thermally equivalent torque; without a flywheel the motor must also supply
+    the peak within its overload factor λ = M_max/M_nom, so the nominal torque is
+    max(M_rms, M_peak/λ)/η and ``governing`` says which term decided.
+    """
+
+    mean_torque: float
+    peak_torque: float
+    rms_torque: float
+    mean_power: float
+    peak_power: float
+    nominal_torque: float
+    nominal_power: float
+    overload: float
+    efficiency: float
+    governing: str
+
+    def choose(self, catalogue: Sequence[float]) -> float:
+        """The smallest motor power in ``catalogue`` (same unit as the powers here) ≥ nominal_power."""
+        ok = sorted(p for p in catalogue if p >= self.nominal_power)
+        if not ok:
+            raise MechanismError(f"no motor in the catalogue reaches the nominal power {self.nominal_power:.4g} "
+                                 f"(largest: {max(catalogue):.4g})")
+        return ok[0]
+
+
+def cycle_mean(y: np.ndarray, phi: np.ndarray) -> float:
+    """Mean of y(φ) over the sampled interval (trapezoidal rule, any spacing)."""
+    return float(np.trapezoid(y, phi) / (phi[-1] - phi[0]))
+
+
+def drive(torque, phi, omega1: float, *, overload: float = 2.0, efficiency: float = 1.0) -> Drive:
+    """Mean, peak and rms crank torque over the sampled cycle and the motor it needs (seed 004).
+
+    ``torque`` is the balancing torque at the crank angles ``phi`` (e.g. ``ForceResult.torque``);
+    ``efficiency`` is that of the transmission between motor and crank (0 < η ≤ 1);
+    ``overload`` the motor's admissible ratio of peak to nominal torque (λ ≥ 1).
+    """
+    M = np.asarray(torque, dtype=float)
+    phi = np.asarray(phi, dtype=float)
+    if M.shape != phi.shape or M.ndim != 1 or len(M) < 2:
+        raise DimensionError(f"torque and phi must be 1-D arrays of the same length ≥ 2, got {M.shape}, {phi.shape}")
+    if not np.all(np.isfinite(M)):
+        raise LoadError("torque must be finite (got NaN or inf)")
+    omega1 = float(omega1)
+    if not np.isfinite(omega1) or omega1 == 0:
+        raise DimensionError(f"crank speed ω1 must be finite and non-zero, got {omega1}")
+    if not (np.isfinite(overload) and overload >= 1):
+        raise DimensionError(f"overload factor λ must be ≥ 1, got {overload}")
+    if not (np.isfinite(efficiency) and 0 < efficiency <= 1):
+        raise DimensionError(f"efficiency must satisfy 0 < η ≤ 1, got {efficiency}")
+    mean = cycle_mean(M, phi)
+    rms = float(np.sqrt(cycle_mean(M * M, phi)))
+    peak = float(np.max(np.abs(M)))
+    w = abs(omega1)
+    by_peak = peak / overload
+    nominal = max(rms, by_peak) / efficiency
+    return Drive(mean, peak, rms, mean * omega1 / efficiency, peak * w / efficiency, nominal, nominal * w,
+                 float(overload), float(efficiency), "peak" if by_peak > rms else "rms")
+
+
+# --------------------------------------------------------------------------- a mechanism with its loads
+from .linkages.base import Mechanism  # noqa: E402  (after the solver: the module is usable without it)
+
+
+@dataclass(frozen=True, eq=False)
+class Kinetostatics(Mechanism):
+    """A mechanism with its force model and loads: moves like the mechanism, ``forces(phi)`` solves.
+
+    Used by :mod:`mechlab.draw.forces` to animate force plans with ``mechlab.draw.animate``.
+    """
+
+    mechanism: Any
+    model: ForceModel | None = None
+    loads: tuple = ()
+    omega1: float = 1.0
+    eps1: float = 0.0
+    gravity: tuple = (0.0, -G)
+
+    def __post_init__(self):
+        if self.model is None:
+            object.__setattr__(self, "model", model_for(self.mechanism))
+        object.__setattr__(self, "loads", tuple(self.loads))
+
+    @property
+    def links(self):
+        return self.mechanism.links
+
+    @property
+    def pivots(self):
+        return self.mechanism.pivots
+
+    @property
+    def output(self):
+        return self.mechanism.output
+
+    def crank_ranges(self):
+        return self.mechanism.crank_ranges()
+
+    def rotation_failure(self) -> str:
+        return self.mechanism.rotation_failure()
+
+    def turn(self, n: int = 361):
+        return self.mechanism.turn(n)
+
+    def cycle(self, n: int = 361):
+        return self.mechanism.cycle(n)
+
+    def motion(self, phi):
+        return self.mechanism.motion(phi)
+
+    def forces(self, phi=None, motion: Motion | None = None, **kw) -> ForceResult:
+        """Solve at crank angles φ (default: the mechanism's cycle) or on a given motion."""
+        if motion is None:
+            motion = self.motion(self.cycle() if phi is None else phi)
+        return solve(self.model, motion, self.loads, self.omega1, self.eps1, self.gravity, **kw)
+
+
+__all__ = [
+    "FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque",
+    "Reaction", "ForceResult", "Drive", "Kinetostatics",
+    "solve", "virtual_work_torque", "model_for", "slender_bar", "drive", "cycle_mean",
+    "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError",
+]

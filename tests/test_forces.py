@@ -1,0 +1,273 @@
+"""Kinetostatics (mechlab.forces): power balance, equilibrium, hand-derived cases, friction, drive."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from mechlab import FourBar, MechanismError, SineMechanism, SliderCrank, SlottedLink
+from mechlab.forces import (FRAME, Body, Force, ForceModel, FrictionError, HigherPair, Kinetostatics, LoadError,
+                            MassError, Prismatic, Revolute, SelfLockingError, StructureError, Torque, cycle_mean,
+                            drive, model_for, slender_bar, solve, virtual_work_torque)
+from strategies import revolving_fourbars, revolving_slider_cranks
+
+unit_floats = st.floats(min_value=-1.0, max_value=1.0, allow_nan=False)
+pos_floats = st.floats(min_value=0.05, max_value=3.0, allow_nan=False)
+
+
+@st.composite
+def slotted_links(draw):
+    pd = draw(st.floats(min_value=0.3, max_value=5.0))
+    lam = draw(st.one_of(st.floats(0.1, 0.9), st.floats(1.1, 3.0)))
+    return SlottedLink(lam * pd, pd)
+
+
+@st.composite
+def sine_mechanisms(draw):
+    return SineMechanism(draw(st.floats(min_value=0.1, max_value=5.0)))
+
+
+def loaded(draw, mech):
+    """The mechanism's model with random masses, inertias, centres of mass and loads on every link."""
+    model = model_for(mech)
+    size = max(mech.crank, 0.1)
+    loads = []
+    for b in model.bodies:
+        model = model.with_body(b.name, mass=draw(pos_floats), inertia=draw(pos_floats) * size**2,
+                                com=(draw(unit_floats) * size, draw(unit_floats) * size))
+        loads.append(Force(b.name, (draw(unit_floats) * size, draw(unit_floats) * size),
+                           (draw(unit_floats) * 10, draw(unit_floats) * 10)))
+        loads.append(Torque(b.name, draw(unit_floats) * 10 * size))
+    return model, loads, draw(st.floats(0.5, 30.0)), draw(st.floats(-50.0, 50.0))
+
+
+@given(st.data(), st.one_of(revolving_fourbars(), revolving_slider_cranks(), slotted_links(), sine_mechanisms()))
+@settings(max_examples=120, deadline=None)
+def test_group_torque_equals_power_balance_and_links_are_in_equilibrium(data, mech):
+    model, loads, w, e = loaded(data.draw, mech)
+    mo = mech.motion(mech.turn(73))
+    res = solve(model, mo, loads, omega1=w, eps1=e)
+    vw = virtual_work_torque(model, mo, loads, omega1=w, eps1=e)
+    scale = np.max(np.abs(vw)) + 1e-300
+    assert np.max(np.abs(res.torque - vw)) <= 1e-9 * scale
+    assert np.max(np.abs(res.torque - res.ideal_torque)) <= 1e-9 * scale
+    assert res.residual <= 1e-11
+    assert np.all(res.efficiency().filled(1.0) == 1.0)   # no friction: η = 1 wherever it is defined
+
+
+@given(st.data(), st.one_of(revolving_fourbars(), revolving_slider_cranks(), slotted_links(), sine_mechanisms()),
+       st.floats(0.0, 0.15), st.floats(0.0, 0.2))
+@settings(max_examples=80, deadline=None)
+def test_friction_power_balance(data, mech, f, r):
+    model, loads, w, e = loaded(data.draw, mech)
+    model = model.with_friction(f, r * mech.crank)
+    mo = mech.motion(mech.turn(73))
+    try:
+        res = solve(model, mo, loads, omega1=w, eps1=e)
+    except SelfLockingError:
+        return
+    scale = np.max(np.abs(res.torque)) + 1e-300
+    # driving power = useful power + friction losses, with the losses from the iterated reactions
+    assert np.max(np.abs(res.torque - res.torque_power)) <= 1e-9 * scale
+    assert res.residual <= 1e-10
+    assert np.all(res.losses >= 0)
+    eta = res.efficiency()
+    assert np.all(eta.filled(0.0) <= 1.0 + 1e-12)
+
+
+def test_slider_crank_static_against_hand_solution():
+    """Massless links, a force P resisting the slider, ω1 = 0: statics by hand.
+
+    Slider: rod thrust S along u = (B − A)/l, guide normal N, load (−P, 0):
+    S·u_x = P, N = −S·u_y. Crank: the rod pushes A with −S·u, so M_b = S·(A × u).
+    """
+    sc = SliderCrank(0.1, 0.4, 0.03)
+    phi = np.radians(np.arange(5.0, 360.0, 10.0))
+    mo = sc.motion(phi)
+    P = 250.0
+    res = solve(model_for(sc), mo, [Force("slider", "B", (-P, 0.0))], omega1=0.0, gravity=(0.0, 0.0))
+    A, B = mo.points["A"].p, mo.points["B"].p
+    u = (B - A) / sc.rod
+    S = P / u[:, 0]
+    assert np.allclose(res.torque, S * (A[:, 0] * u[:, 1] - A[:, 1] * u[:, 0]), rtol=1e-12, atol=1e-12)
+    assert np.allclose(res.torque, P * mo.ds, rtol=1e-12, atol=1e-12)   # virtual work: M_b = P·s'
+    assert np.allclose(res.reactions["guide"].normal, -S * u[:, 1], rtol=1e-12, atol=1e-12)
+    assert np.allclose(res.reactions["B"].force, S[:, None] * u, rtol=1e-12, atol=1e-12)   # rod on slider
+    assert np.allclose(res.reactions["O"].force, S[:, None] * u, rtol=1e-12, atol=1e-12)   # frame on crank
+    assert np.allclose(res.reactions["guide"].couple, 0.0, atol=1e-12)  # N passes through B
+
+
+def test_fourbar_reaction_grows_as_transmission_angle_falls():
+    """Massless four-bar, torque T on the rocker: the coupler is a two-force member and
+    |R_B| = T / (l_BE · sin μ) — the transmission angle drives the reaction."""
+    fb = FourBar(0.1, 0.3, 0.3, 0.35)
+    mo = fb.motion(fb.turn(181))
+    T = 40.0
+    res = solve(model_for(fb), mo, [Torque("rocker", -T)], omega1=10.0, gravity=(0.0, 0.0))
+    assert np.allclose(res.reactions["B"].magnitude, T / (fb.rocker * np.sin(mo.transmission)), rtol=1e-10)
+    assert np.allclose(res.torque, T * mo.dpsi, rtol=1e-10, atol=1e-12)   # M_b·ω1 = T·ω3
+
+
+def test_crank_gravity_and_inertia_by_hand():
+    """Only the crank has mass, its centre at distance c on the crank line, ω1 constant:
+    the inertia force passes through O, so M_b = m·g·c·cos φ; R_O = m(a_S − g)."""
+    fb = FourBar(0.1, 0.3, 0.3, 0.35)
+    m, c, w = 2.0, 0.04, 15.0
+    model = model_for(fb).with_body("crank", mass=m, inertia=0.003, com=(c, 0.0))
+    phi = fb.turn(37)
+    res = solve(model, fb.motion(phi), omega1=w)
+    assert np.allclose(res.torque, m * 9.81 * c * np.cos(phi), rtol=1e-12, atol=1e-12)
+    aS = -w**2 * c * np.stack([np.cos(phi), np.sin(phi)], axis=1)
+    assert np.allclose(res.reactions["O"].force, m * (aS - np.array([0.0, -9.81])), rtol=1e-12, atol=1e-12)
+
+
+def test_crank_angular_acceleration_needs_J_O_eps():
+    """Massive crank only, at rest (ω1 = 0) but accelerating: M_b = J_O·ε1 + gravity moment, J_O = J_S + m c²."""
+    fb = FourBar(0.1, 0.3, 0.3, 0.35)
+    m, c, J, e = 1.5, 0.05, 0.002, 7.0
+    res = solve(model_for(fb).with_body("crank", mass=m, inertia=J, com=(c, 0.0)), fb.motion(fb.turn(19)),
+                omega1=0.0, eps1=e, gravity=(0.0, 0.0))
+    assert np.allclose(res.torque, (J + m * c * c) * e, rtol=1e-12)
+
+
+def test_higher_pair_equals_massless_block():
+    """A pin in a straight slot as a higher pair (reaction along the slot's normal) gives the
+    same balancing torque and pivot reaction as the RPR dyad with a massless block."""
+    sl = SlottedLink(0.1, 0.25)
+    mo = sl.motion(sl.turn(91))
+    base = model_for(sl).with_body("link", mass=3.0)
+    loads = [Torque("link", -12.0)]
+    rpr = solve(base, mo, loads, omega1=12.0, eps1=2.0)
+    link = base.body("link")
+    crank = base.body("crank")
+    hp = ForceModel((crank, link),
+                    (Revolute("O", FRAME, "crank", "O"), HigherPair("A", "link", "crank", "A", np.pi / 2),
+                     Revolute("B", FRAME, "link", "B")),
+                    (("link",),), "crank", "O")
+    res = solve(hp, mo, loads, omega1=12.0, eps1=2.0)
+    assert np.allclose(res.torque, rpr.torque, rtol=1e-12, atol=1e-12)
+    assert np.allclose(res.reactions["B"].force, rpr.reactions["B"].force, rtol=1e-12, atol=1e-11)
+    assert np.allclose(np.abs(res.reactions["A"].normal), np.abs(rpr.reactions["slot"].normal), rtol=1e-12)
+    assert np.allclose(rpr.reactions["slot"].couple, 0.0, atol=1e-10)   # a massless block carries no couple
+
+
+def test_curved_normal_callable_and_friction_in_higher_pair():
+    sl = SlottedLink(0.1, 0.25)
+    mo = sl.motion(sl.turn(91))
+    link, crank = model_for(sl).body("link"), model_for(sl).body("crank")
+    from mechlab.geometry import perp, unit
+    normal = lambda m: perp(unit(m.psi))  # the slot normal, given as a function of the motion
+    hp = ForceModel((crank, link), (Revolute("O", FRAME, "crank", "O"),
+                                    HigherPair("A", "link", "crank", "A", normal, friction=0.1),
+                                    Revolute("B", FRAME, "link", "B")), (("link",),), "crank", "O")
+    res = solve(hp, mo, [Torque("link", -12.0)], omega1=12.0)
+    assert np.max(np.abs(res.torque - res.torque_power)) < 1e-9 * np.max(np.abs(res.torque))
+    assert np.all(res.losses >= 0) and np.max(res.losses) > 0
+    assert res.residual < 1e-12
+
+
+def test_friction_lowers_efficiency_and_cycle_definitions():
+    sc = SliderCrank(0.1, 0.4)
+    mo = sc.motion(sc.turn(361))
+    working = lambda m: np.where(m.ds < 0, 2000.0, 0.0)   # resists the slider's return stroke only
+    loads = [Force("slider", "B", lambda m: np.stack([working(m), 0 * m.s], axis=1))]
+    model = model_for(sc).with_body("rod", mass=1.0).with_body("slider", mass=2.0)
+    ideal = solve(model, mo, loads, omega1=10.0)
+    rough = solve(model.with_friction(0.1, 0.01), mo, loads, omega1=10.0)
+    eta = rough.efficiency()
+    assert np.all(eta[~eta.mask] < 1.0) and np.all(eta[~eta.mask] > 0.0)
+    assert np.all(rough.torque[~eta.mask] > ideal.torque[~eta.mask])
+    # η = M_ideal / M_b (power balance) where the drive delivers power
+    sel = ~eta.mask
+    assert np.allclose(eta[sel], ideal.torque[sel] / rough.torque[sel], rtol=1e-12)
+    moving = mo.ds < 0
+    mean = rough.cycle_efficiency(moving)
+    assert np.isclose(mean, np.mean(eta.data[moving & sel]), rtol=1e-14)
+    work = rough.cycle_efficiency(how="work")
+    a_drive = np.trapezoid(rough.torque, mo.phi)
+    assert np.isclose(work, 1 - np.trapezoid(rough.losses, mo.phi) / a_drive)
+    assert 0 < work < 1 and 0 < mean < 1
+    assert ideal.cycle_efficiency(how="work") == pytest.approx(1.0, abs=1e-12)
+
+
+def test_self_locking_is_reported():
+    sc = SliderCrank(0.1, 0.105)  # rod barely longer than the crank: pressure angle near 72°
+    mo = sc.motion(sc.turn(73))
+    with pytest.raises(SelfLockingError, match="self-locking"):
+        solve(model_for(sc).with_friction(0.9, 0.02), mo, [Force("slider", "B", (-100.0, 0.0))], omega1=5.0)
+
+
+def test_bad_inputs_raise_named_errors():
+    fb = FourBar(0.1, 0.3, 0.3, 0.35)
+    model = model_for(fb)
+    with pytest.raises(MassError, match=r"mass of coupler must be a finite number ≥ 0, got -1"):
+        model.with_body("coupler", mass=-1.0)
+    with pytest.raises(MassError, match="moment of inertia of rocker"):
+        model.with_body("rocker", mass=1.0, inertia=float("nan"))
+    with pytest.raises(FrictionError, match=r"0 ≤ f < 1, got f = 1.5"):
+        model.with_friction(1.5, 0.01)
+    with pytest.raises(FrictionError, match=r"friction coefficient of O must be a finite number ≥ 0, got -0.1"):
+        model.with_friction(-0.1, 0.01)
+    with pytest.raises(FrictionError, match="journal radius"):
+        model.with_friction(0.1, -0.01)
+    mo = fb.motion(fb.turn(11))
+    with pytest.raises(LoadError, match=r"force on rocker must broadcast to shape \(11, 2\)"):
+        solve(model, mo, [Force("rocker", "B", np.zeros((5, 2)))])
+    with pytest.raises(LoadError, match="must be finite"):
+        solve(model, mo, [Torque("rocker", np.nan)])
+    with pytest.raises(StructureError, match="unknown body 'piston'"):
+        solve(model, mo, [Torque("piston", 1.0)])
+    with pytest.raises(StructureError, match=r"not statically determinate: 4 unknown .* 6 equilibrium"):
+        ForceModel(model.bodies, model.pairs[:3], model.groups, "crank", "O")
+    with pytest.raises(MechanismError):
+        solve(model, mo, omega1=float("inf"))
+    assert issubclass(MassError, MechanismError) and issubclass(FrictionError, MechanismError)
+
+
+def test_group_that_cannot_carry_its_load_is_a_singularity():
+    """A contact normal through the link's own pivot gives no moment about it: the
+    one-link group's equations are singular, reported as a SingularityError (not a NaN)."""
+    from mechlab.errors import SingularityError
+    sl = SlottedLink(0.1, 0.25)
+    base = model_for(sl)
+    bad = ForceModel((base.body("crank"), base.body("link")),
+                     (Revolute("O", FRAME, "crank", "O"), HigherPair("A", "link", "crank", "A", 0.0),
+                      Revolute("B", FRAME, "link", "B")), (("link",),), "crank", "O")
+    with pytest.raises(SingularityError, match=r"group \('link',\) cannot carry its loads at φ = 0.00°"):
+        solve(bad, sl.motion(sl.turn(5)), [Torque("link", 1.0)])
+
+
+def test_drive_summary_and_motor_choice():
+    phi = np.linspace(0, 2 * np.pi, 3601)
+    M = 10.0 + 30.0 * np.sin(phi)
+    d = drive(M, phi, omega1=10.0, overload=2.0, efficiency=0.8)
+    assert d.mean_torque == pytest.approx(10.0, rel=1e-9)
+    assert d.peak_torque == pytest.approx(40.0, rel=1e-6)
+    assert d.rms_torque == pytest.approx(np.sqrt(100 + 450), rel=1e-9)
+    assert d.mean_power == pytest.approx(10.0 * 10 / 0.8, rel=1e-9)
+    assert d.nominal_torque == pytest.approx(np.sqrt(550) / 0.8, rel=1e-9) and d.governing == "rms"
+    assert drive(M, phi, 10.0, overload=1.2).governing == "peak"
+    assert d.choose([100, 250, 300, 400]) == 300
+    with pytest.raises(MechanismError, match="no motor"):
+        d.choose([10, 20])
+    with pytest.raises(MechanismError, match="overload factor"):
+        drive(M, phi, 10.0, overload=0.5)
+    with pytest.raises(MechanismError, match="efficiency"):
+        drive(M, phi, 10.0, efficiency=1.5)
+    assert cycle_mean(np.cos(phi) ** 2, phi) == pytest.approx(0.5, rel=1e-9)
+
+
+def test_kinetostatics_wrapper_and_slender_bar():
+    sc = SliderCrank(0.1, 0.4)
+    k = Kinetostatics(sc, loads=[Force("slider", "B", (-100.0, 0.0))], omega1=5.0)
+    res = k.forces(sc.turn(37))
+    assert np.allclose(res.torque, 100.0 * sc.motion(sc.turn(37)).ds, rtol=1e-9, atol=1e-12)
+    assert k.can_turn and k.links == sc.links
+    assert slender_bar(3.0, 0.4) == pytest.approx(0.04)
+    m = model_for(sc).with_body("rod", mass=3.0)
+    assert m.body("rod").inertia == pytest.approx(0.04)
+
+
+def test_model_for_unknown_mechanism():
+    with pytest.raises(TypeError, match="no force model"):
+        model_for(object())
