@@ -7,8 +7,8 @@ crank speed ω1 and crank acceleration ε1 follow from the chain rule:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Mapping
+from dataclasses import dataclass, field
+from typing import Callable, Mapping
 
 import numpy as np
 
@@ -21,12 +21,19 @@ class Motion:
 
     ``points`` maps joint names to :class:`~mechlab.geometry.PointPath` (positions
     and analogs, each ``(n, 2)``). ``transmission`` is the transmission angle μ in
-    [0, π] at every φ (π/2 is ideal); ``pressure_angle`` is |π/2 - μ|.
+    [0, π] at every φ (π/2 is ideal); ``pressure_angle`` is |π/2 - μ|. A mechanism may
+    pass a function of the motion instead of the array: it is evaluated on first use.
     """
 
     phi: np.ndarray
     points: Mapping[str, PointPath]
-    transmission: np.ndarray
+    _transmission: np.ndarray | Callable[["Motion"], np.ndarray] = field(repr=False)
+
+    @property
+    def transmission(self) -> np.ndarray:
+        if callable(self._transmission):
+            object.__setattr__(self, "_transmission", self._transmission(self))
+        return self._transmission
 
     @property
     def pressure_angle(self) -> np.ndarray:

@@ -149,9 +149,11 @@ class FourBar(Mechanism):
         B, psi = rocker_dyad(A, (self.ground, 0.0), self.coupler, self.rocker, self.assembly, phi,
                              "the coupler-rocker dyad", reference=mid + turns * phi if turns else mid)
         theta = psi.theta if len(refs) == 1 else lift_on_ranges(psi.theta, phi, refs)
-        # transmission angle μ at B between B→A and B→E (law of cosines, vectorised)
-        zb = as_complex(B.p)
-        cos_mu = _re_conj(zb - as_complex(A.p), zb - self.ground) / (self.coupler * self.rocker)
-        mu = np.arccos(np.clip(cos_mu, -1.0, 1.0))
         points = {"O": fixed_point((0.0, 0.0), n), "A": A, "B": B, "E": fixed_point((self.ground, 0.0), n)}
-        return AngularMotion(phi, points, mu, theta, psi.d, psi.dd)
+        return AngularMotion(phi, points, self._transmission, theta, psi.d, psi.dd)
+
+    def _transmission(self, motion) -> np.ndarray:
+        """Transmission angle μ at B between B→A and B→E, from cos μ = (BA·BE)/(l_AB·l_BE)."""
+        zb = as_complex(motion.points["B"].p)
+        cos_mu = _re_conj(zb - as_complex(motion.points["A"].p), zb - self.ground) / (self.coupler * self.rocker)
+        return np.arccos(np.clip(cos_mu, -1.0, 1.0))
