@@ -118,16 +118,15 @@ def _canonical(h: np.ndarray) -> np.ndarray:
 
 
 def separation(c1: Centre, c2: Centre, scale: float = 1.0) -> np.ndarray:
-    """How far apart two centres are, row by row: |P1 - P2|/scale for finite points,
-    |d1 × d2| (sine of the angle) for two points at infinity, 1 for a finite and an
-    infinite one."""
-    f1, f2 = c1.finite, c2.finite
-    both = f1 & f2
-    d = np.ones(len(c1.h))
-    d[both] = np.hypot(*(c1.h[both, :2] - c2.h[both, :2]).T) / scale
-    inf = ~f1 & ~f2
-    d[inf] = np.abs(c1.h[inf, 0] * c2.h[inf, 1] - c1.h[inf, 1] * c2.h[inf, 0])
-    return d
+    """Projective distance of two centres, row by row: the sine of the angle between
+    their homogeneous vectors (x/scale, y/scale, w). About |P1 - P2|/scale for nearby
+    finite points, |d1 × d2| for two points at infinity, small for a far finite point
+    and a point at infinity in its direction; 0 only for the same point."""
+    a = c1.h * [1.0 / scale, 1.0 / scale, 1.0]
+    b = c2.h * [1.0 / scale, 1.0 / scale, 1.0]
+    a = a / np.linalg.norm(a, axis=1)[:, None]
+    b = b / np.linalg.norm(b, axis=1)[:, None]
+    return np.linalg.norm(np.cross(a, b), axis=1)
 
 
 def finite(xy, name: str = "P") -> Centre:
