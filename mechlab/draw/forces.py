@@ -1,0 +1,95 @@
+"""Force plans drawn over a mechanism: reaction arrows in every pair, moved in place.
+
+:class:`ForcePlanDrawing` is registered for :class:`mechlab.forces.Kinetostatics`, so
+``animate(Kinetostatics(mechanism, model, loads, omega1=…), n=36)`` plays the mechanism
+with its reactions. It draws the mechanism with the mechanism's own registered drawing
+and adds one arrow per pair (the force of link a on link b, at the pair's point, all
+arrows at one scale over the cycle) and the balancing torque as text.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..forces import Kinetostatics
+from . import drawing_class, register
+
+ARROW_COLOURS = ("#d62728", "#9467bd", "#ff7f0e", "#2ca02c", "#8c564b", "#e377c2", "#17becf", "#bcbd22")
+
+
+@register(Kinetostatics)
+class ForcePlanDrawing:
+    """The mechanism (its registered drawing) plus reaction arrows and the balancing torque.
+
+    ``pairs`` restricts the arrows to some pairs; ``length`` is the drawn length of the
+    largest reaction over the cycle, as a fraction of the mechanism's size.
+    """
+
+    def __init__(self, ax, mechanism: Kinetostatics, trace: str | None = None, n: int = 361,
+                 pairs=None, length: float = 0.45):
+        self.ax = ax
+        self.n = n
+        self.pair_names = pairs
+        self.length = length
+        self.base = drawing_class(mechanism.mechanism)(ax, mechanism.mechanism, trace=trace, n=n)
+        self.quiver = None
+        self.text = ax.text(0.02, 0.98, "", transform=ax.transAxes, va="top", fontsize=9, zorder=6)
+        self.mechanism = None
+        self.result = None
+        self.set_mechanism(mechanism)
+
+    # -- binding -------------------------------------------------------------------
+    def set_mechanism(self, mechanism: Kinetostatics, phi=None):
+        phi = mechanism.cycle(self.n) if phi is None else phi
+        return self.set_motion(mechanism, mechanism.motion(phi))
+
+    def set_motion(self, mechanism: Kinetostatics, motion):
+        self.mechanism = mechanism
+        self.motion = motion
+        self.base.set_motion(mechanism.mechanism, motion)
+        self.result = mechanism.forces(motion=motion)
+        names = list(self.result.reactions) if self.pair_names is None else list(self.pair_names)
+        self.names = names
+        R = [self.result.reactions[k] for k in names]
+        biggest = max(float(np.max(r.magnitude)) for r in R) or 1.0
+        x0, x1, y0, y1 = self.base.bounds(margin=0.0)
+        self.scale = self.length * max(x1 - x0, y1 - y0) / biggest   # drawn length per unit force
+        colours = [ARROW_COLOURS[i % len(ARROW_COLOURS)] for i in range(len(R))]
+        if self.quiver is not None:
+            self.quiver.remove()
+        self.quiver = self.ax.quiver(np.zeros(len(R)), np.zeros(len(R)), np.zeros(len(R)), np.zeros(len(R)),
+                                     color=colours, angles="xy", scale_units="xy", scale=1.0, width=0.008,
+                                     zorder=5)
+        for old in getattr(self, "_keys", []):
+            old.remove()
+        self._keys = [self.ax.plot([], [], color=c, lw=3, label=f"R {k}")[0] for k, c in zip(names, colours)]
+        self.ax.legend(handles=self._keys, loc="lower right", fontsize=8, framealpha=0.7)
+        self.set_frame(0)
+        return motion
+
+    # -- frames --------------------------------------------------------------------
+    def set_frame(self, i: int):
+        self.base.set_frame(i)
+        R = [self.result.reactions[k] for k in self.names]
+        self.quiver.set_offsets(np.array([r.point[i] for r in R]))
+        uv = np.array([r.force[i] for r in R]) * self.scale
+        self.quiver.set_UVC(uv[:, 0], uv[:, 1])
+        self.text.set_text(f"φ = {np.degrees(self.result.phi[i]):.0f}°   M_b = {self.result.torque[i]:.3g}\n"
+                           + "  ".join(f"|R {k}| = {r.magnitude[i]:.3g}" for k, r in zip(self.names, R)))
+        return self.artists
+
+    @property
+    def artists(self):
+        return [*self.base.artists, self.quiver, self.text]
+
+    def bounds(self, margin: float = 0.15):
+        x0, x1, y0, y1 = self.base.bounds(margin)
+        tips = np.concatenate([r.point + r.force * self.scale
+                               for r in (self.result.reactions[k] for k in self.names)])
+        lo, hi = tips.min(axis=0), tips.max(axis=0)
+        return min(x0, lo[0]), max(x1, hi[0]), min(y0, lo[1]), max(y1, hi[1])
+
+    def autoscale(self):
+        x0, x1, y0, y1 = self.bounds()
+        self.ax.set_xlim(x0, x1)
+        self.ax.set_ylim(y0, y1)
