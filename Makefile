@@ -51,8 +51,12 @@ chromium:
 test-browser: book chromium
 	CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -q -p no:cacheprovider tests_browser
 
+# pylinkage and numba are only for the comparison: they go to a folder of their own, not into the course's venv
+BENCH_DEPS := .bench-deps
 bench: venv
-	$(BIN)/python benchmarks/bench_fourbar.py
+	test -d $(BENCH_DEPS) || $(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps \
+	    --target $(BENCH_DEPS) pylinkage==1.3.0 numba==0.68.1 llvmlite==0.50.0 tqdm==4.70.1
+	PYTHONPATH=$(BENCH_DEPS) $(BIN)/python benchmarks/bench_fourbar.py
 
 clean:
 	rm -rf $(VENV) book/_build
