@@ -327,3 +327,28 @@ def test_impact_detection_and_comparison():
     assert rows[2]["dwell_fraction"] == 0.0 and rows[2]["index_deg"] == pytest.approx(360.0)
     # seed 004's motivation: the spherical drive accelerates less than the external planar one
     assert rows[1]["max_ddpsi"] < rows[0]["max_ddpsi"]
+
+
+# -- exercises and errata -------------------------------------------------------------------------
+def test_exercises_08():
+    from mechlab.exercises import check, solution
+    assert solution("08.1") == pytest.approx(60.0)
+    assert solution("08.2") == pytest.approx((0.7, 0.3))
+    assert solution("08.3") == pytest.approx(10.0)
+    rho0 = np.hypot(20.0, 50.0 * np.sin(np.pi / 6))
+    assert solution("08.4") == pytest.approx(np.degrees(np.arccos(20.0 / rho0)))
+    assert solution("08.6") == "soft"
+    for key in ("08.1", "08.2", "08.3", "08.4", "08.5", "08.6"):
+        assert check(key, solution(key), quiet=True)
+        assert not check(key, ..., quiet=True)
+    assert not check("08.1", 59.0, quiet=True) and not check("08.6", "hard", quiet=True)
+
+
+def test_errata_seed004_geneva():
+    from mechlab.errata import seed004_geneva, table
+    assert len(seed004_geneva.ERRATA) == 8
+    for e in seed004_geneva.ERRATA:
+        assert e.source == "004" and e.notebook == "08_geneva.ipynb"
+        assert e.evidence()
+    md = table(notebook="08_geneva.ipynb")
+    assert md.count("\n| 004 |") == 8
