@@ -160,6 +160,8 @@ class EquivalentSlot(Mechanism):
 
     def _turn(self, p: PointPath) -> PointPath:
         ph = self.phase
+        if ph == np.pi:   # a half turn exactly (no rounding of sin π)
+            return PointPath(-p.p, -p.d, -p.dd)
         return PointPath(_rot(ph, p.p), _rot(ph, p.d), _rot(ph, p.dd))
 
 

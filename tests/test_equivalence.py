@@ -1,0 +1,115 @@
+"""Kinematic equivalence (seed 000 §1): relative paths, curved-slot twins, base law, assembly symmetry."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+
+from mechlab import DimensionError, FourBar, SineMechanism, SliderCrank, SlottedLink
+from mechlab.equivalence import (assembly_symmetry, base_law, base_mechanism, equivalence_error, equivalent_slot,
+                                 law_difference, other_assembly, relative_path)
+from mechlab.halfturn import formula_18
+from strategies import revolving_fourbars, revolving_slider_cranks
+
+H = 1e-5
+
+
+@given(revolving_fourbars())
+@settings(max_examples=150, deadline=None)
+def test_fourbar_twin_reproduces_the_law(fb):
+    phi = fb.turn(241)
+    twin = equivalent_slot(fb)
+    errs = law_difference(fb.motion(phi), twin.motion(phi))
+    scale = 1 + np.max(np.abs(fb.motion(phi).ddpsi))
+    assert errs[0] < 1e-9 and errs[1] < 1e-9 * scale and errs[2] < 1e-9 * scale
+    # the twin's pivot is the four-bar's E and its pin is the same point
+    tm = twin.motion(phi)
+    assert np.allclose(tm.points["E"].p, [fb.ground, 0.0], atol=1e-15)
+    assert np.allclose(tm.points["A"].p, fb.motion(phi).points["A"].p, rtol=0, atol=1e-14 * (1 + fb.crank))
+
+
+@given(revolving_slider_cranks())
+@settings(max_examples=150, deadline=None)
+def test_slider_crank_twin_reproduces_the_law(sc):
+    assert equivalence_error(sc, sc.turn(241)) < 1e-9 * (1 + sc.rod)
+
+
+@given(revolving_fourbars())
+@settings(max_examples=100, deadline=None)
+def test_fourbar_relative_path_is_the_circle_about_B(fb):
+    phi = fb.turn(181)
+    rel = relative_path(fb, phi)
+    assert np.max(np.abs(np.hypot(rel.p[:, 0] - fb.rocker, rel.p[:, 1]) - fb.coupler)) < 1e-12 * (1 + fb.coupler)
+    # each assembly keeps to one arc of the circle (α1–α1 or α2–α2): y never changes sign
+    assert np.all(np.sign(rel.p[:, 1]) == fb.assembly)
+    up, dn = relative_path(fb, phi + H), relative_path(fb, phi - H)
+    s = 1 + np.max(np.abs(rel.dd))
+    assert np.max(np.abs((up.p - dn.p) / (2 * H) - rel.d)) < 1e-6 * s
+    assert np.max(np.abs((up.d - dn.d) / (2 * H) - rel.dd)) < 1e-6 * s
+
+
+def test_branch_sign_of_each_assembly():
+    """Which arc each assembly uses, on the seed's example l_OA = 0.3, l_AB = 0.8, l_BE = l_OE = 1."""
+    phi = np.linspace(0, 2 * np.pi, 73)
+    up = relative_path(FourBar(0.3, 0.8, 1.0, 1.0, 1), phi).p[:, 1]
+    dn = relative_path(FourBar(0.3, 0.8, 1.0, 1.0, -1), phi).p[:, 1]
+    assert np.all(up > 0) and np.all(dn < 0)
+
+
+@given(revolving_slider_cranks())
+@settings(max_examples=100, deadline=None)
+def test_slider_crank_relative_path_is_the_circle_about_the_slider_pin(sc):
+    phi = sc.turn(181)
+    rel = relative_path(sc, phi)
+    assert np.max(np.abs(np.hypot(rel.p[:, 0], rel.p[:, 1] - sc.offset) - sc.rod)) < 1e-12 * (1 + sc.rod)
+    assert np.all(np.sign(rel.p[:, 0]) == -sc.assembly)   # the pin is behind the slider for +1
+
+
+@given(revolving_fourbars())
+@settings(max_examples=150, deadline=None)
+def test_fourbar_assembly_symmetry(fb):
+    sym = assembly_symmetry(fb, fb.turn(181))
+    scale = 1 + np.max(np.abs(fb.motion(fb.turn(181)).ddpsi))
+    assert sym.mirror < 1e-11 * scale and sym.mean_is_base < 1e-11 * scale and sym.branches < 1e-11 * (1 + fb.coupler)
+
+
+@given(revolving_slider_cranks())
+@settings(max_examples=150, deadline=None)
+def test_slider_crank_assembly_symmetry(sc):
+    assert assembly_symmetry(sc, sc.turn(181)).holds(1e-10 * (1 + sc.rod + abs(sc.offset)))
+
+
+def test_symmetry_residuals_detect_a_wrong_relation():
+    """The residuals are not vacuous: comparing an assembly with itself breaks them."""
+    fb = FourBar(0.3, 0.8, 1.0, 1.0, 1)
+    phi = fb.turn(91)
+    p = fb.motion(phi)
+    base = base_law(fb, phi)
+    assert np.max(np.abs(p.dpsi + p.dpsi - 2 * base.d)) > 1e-2
+    assert other_assembly(fb).assembly == -1
+
+
+@given(revolving_fourbars())
+@settings(max_examples=100, deadline=None)
+def test_base_law_is_formula_18_in_the_fourbar_frame(fb):
+    phi = fb.turn(181)
+    k = base_law(fb, phi)
+    f = formula_18(fb.crank / fb.ground, phi - np.pi)
+    assert np.max(np.abs(np.angle(np.exp(1j * (k.theta - np.pi - f.theta))))) < 1e-12
+    assert np.allclose(k.d, f.d, atol=1e-12) and np.allclose(k.dd, f.dd, atol=1e-11)
+    # and it is the angle of A - E
+    A = fb.motion(phi).points["A"].p
+    assert np.allclose(np.angle(np.exp(1j * (np.arctan2(A[:, 1], A[:, 0] - fb.ground) - k.theta))), 0, atol=1e-12)
+
+
+def test_base_mechanisms():
+    assert base_mechanism(FourBar(1, 3, 3, 4)) == SlottedLink(1.0, 4.0)
+    assert base_mechanism(SliderCrank(1, 3)) == SineMechanism(1.0)
+    law = base_law(SliderCrank(1.5, 4.0, 0.5), np.array([0.3]))
+    assert np.allclose([law.theta[0], law.d[0], law.dd[0]], [1.5 * np.cos(0.3), -1.5 * np.sin(0.3), -1.5 * np.cos(0.3)])
+
+
+def test_unsupported_mechanisms_raise_clear_errors():
+    with pytest.raises(DimensionError, match="no curved-slot equivalent known for SlottedLink"):
+        equivalent_slot(SlottedLink(1.0, 2.0))
+    with pytest.raises(DimensionError, match="assembly symmetry is stated for FourBar and SliderCrank"):
+        other_assembly(SlottedLink(1.0, 2.0))
