@@ -101,6 +101,10 @@ def test_page(browser, server, page_path):
         for delim in ("\\(", "\\)", "\\[", "\\]", "$$", "\\begin{", "\\frac", "\\varphi"):
             assert delim not in prose, f"{page_path}: raw TeX {delim!r} left in the text"
 
+        # a widget view left in the page would be an empty box (no kernel, no widget manager)
+        assert page.locator("script[type='application/vnd.jupyter.widget-view+json']").count() == 0, \
+            f"{page_path}: a widget was not rendered statically"
+
         images = page.evaluate(_IMAGES_JS)
         broken = [i["src"] for i in images if not i["ok"]]
         assert not broken, f"{page_path}: images not loaded: {broken}"

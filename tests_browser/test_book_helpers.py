@@ -68,10 +68,10 @@ def test_remote_fetches_in_css():
 def _notebook(folder: Path, name: str, with_errata: bool = True) -> Path:
     nb = nbformat.v4.new_notebook()
     nb.cells = [nbformat.v4.new_markdown_cell("# 7 · A chapter\n\ntext"),
-                nbformat.v4.new_code_cell("x = 1"),
+                nbformat.v4.new_code_cell("import numpy as np\nfrom mechlab import errata\nx = 1"),
                 nbformat.v4.new_markdown_cell("## Errata"),
-                nbformat.v4.new_code_cell("from mechlab import errata\nerrata.table(notebook='x')"
-                                          if with_errata else "y = 2")]
+                nbformat.v4.new_code_cell("show(errata.table(notebook='x'))" if with_errata else "y = 2"),
+                nbformat.v4.new_code_cell("for e in errata.collect(): e.check()")]
     path = folder / name
     nbformat.write(nb, path)
     return path
@@ -81,7 +81,8 @@ def test_demo_cell_and_title(tmp_path):
     path = _notebook(tmp_path, "07_chapter.ipynb")
     assert errata_page.demo_cell(path) == 3
     assert errata_page.notebook_title(path) == "7 · A chapter"
-    assert errata_page.demo_cell(_notebook(tmp_path, "08_other.ipynb", with_errata=False)) is None
+    # without a table, the first cell that uses errata beyond importing it
+    assert errata_page.demo_cell(_notebook(tmp_path, "08_other.ipynb", with_errata=False)) == 4
 
 
 def test_errata_markdown(tmp_path):

@@ -25,9 +25,18 @@ def _source(cell: dict) -> str:
 
 
 def demo_cell(notebook: Path) -> int | None:
-    """Index (in the notebook's cells) of the first code cell that shows the chapter's errata."""
-    for i, cell in enumerate(_cells(notebook)):
-        if cell["cell_type"] == "code" and "errata" in _source(cell):
+    """Index (in the notebook's cells) of the code cell that shows the chapter's errata.
+
+    The first code cell that calls ``table(`` and mentions ``errata``; failing that, the
+    first one that uses ``errata`` on a line that is not an import.
+    """
+    code = [(i, _source(c)) for i, c in enumerate(_cells(notebook)) if c["cell_type"] == "code"]
+    for i, src in code:
+        if "errata" in src and "table(" in src:
+            return i
+    for i, src in code:
+        if any("errata" in line and not line.lstrip().startswith(("import ", "from "))
+               for line in src.splitlines()):
             return i
     return None
 
