@@ -704,20 +704,34 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
     force, couple, normal, torque = pass_(fric)
     iterations = 1
     if rough:
+        f_max = max(p.friction for p in rough)
+
+        def per_angle(fs, tq):
+            return np.max(np.stack([np.max(np.abs(v), axis=1) for v in fs.values()] + [np.abs(tq)]), axis=0)
+
+        start = per_angle(force, torque) + 1e-300
         for iterations in range(2, maxiter + 2):
             fric, loss = friction_loads(force, normal)
             new = pass_(fric)
-            size = max(np.max(np.abs(v)) for v in new[0].values()) + np.max(np.abs(new[3]))
-            change = max(np.max(np.abs(new[0][k] - force[k])) for k in force)
-            change = max(change, np.max(np.abs(new[3] - torque)))
+            size = per_angle(new[0], new[3])
+            change = per_angle({k: new[0][k] - force[k] for k in force}, new[3] - torque)
             force, couple, normal, torque = new
-            if change <= tol * size:
+            # the iteration diverges where friction outgrows the loads a million-fold: stop
+            # before anything overflows and name the crank angle
+            blown = ~(size < 1e6 * start)
+            if np.any(blown):
+                i = int(np.argmax(blown))
+                raise SelfLockingError(
+                    f"friction iteration diverges at φ = {np.degrees(motion.phi[i]):.2f}°: the reactions grow "
+                    f"without bound at f = {f_max:g} — the mechanism is self-locking there")
+            if np.all(change <= tol * size):
                 break
         else:
+            i = int(np.argmax(change / (size + 1e-300)))
             raise SelfLockingError(
-                f"friction iteration did not converge in {maxiter} passes (last change {change:.3g} of "
-                f"{size:.3g}): the mechanism is self-locking or nearly so at f = "
-                f"{max(p.friction for p in rough):g}")
+                f"friction iteration did not converge in {maxiter} passes at φ = {np.degrees(motion.phi[i]):.2f}° "
+                f"(last change {change[i]:.3g} of {size[i]:.3g}): the mechanism is self-locking or nearly so "
+                f"at f = {f_max:g}")
         fric, loss = friction_loads(force, normal)
 
     reactions = {}
@@ -930,9 +944,78 @@ class Kinetostatics(Mechanism):
         return solve(self.model, motion, self.loads, self.omega1, self.eps1, self.gravity, **kw)
 
 
+# --------------------------------------------------------------------------- the chapter's two examples
+def rpm_to_rad(rpm: float) -> float:
+    """Crank speed in rad/s from revolutions per minute."""
+    return float(rpm) * 2.0 * np.pi / 60.0
+
+
+def press_load(P: float, work_fraction: float = 0.3) -> Callable:
+    """Technological resistance of a press: a force P against the slider while it moves
+    towards its outer dead point (s' > 0) in the last ``work_fraction`` of its stroke.
+
+    Returns ``load(motion) → (n, 2)`` for :class:`Force` on the slider.
+    """
+    P = _nonneg("press force P", P, LoadError)
+    if not 0 < work_fraction <= 1:
+        raise LoadError(f"work_fraction must satisfy 0 < fraction ≤ 1, got {work_fraction}")
+
+    def load(motion):
+        s_max = float(np.max(np.abs(motion.s)))  # outer dead point of a centred slider-crank: crank + rod
+        return np.stack([np.where((motion.ds > 0) & (motion.s >= s_max - work_fraction * _stroke(motion)),
+                                  -P, 0.0), np.zeros(len(motion))], axis=1)
+    return load
+
+
+def _stroke(motion) -> float:
+    pts = motion.points
+    A, B = pts["A"].p, pts["B"].p
+    crank = float(np.hypot(*A[0]))
+    rod = float(np.hypot(*(B[0] - A[0])))
+    offset = float(B[0, 1])
+    return float(np.sqrt((rod + crank) ** 2 - offset**2) - np.sqrt((rod - crank) ** 2 - offset**2))
+
+
+def press(crank: float = 0.10, rod: float = 0.40, *, rpm: float = 120.0, P: float = 2000.0,
+          work_fraction: float = 0.3, m_crank: float = 2.0, m_rod: float = 3.0, m_slider: float = 4.0,
+          f: float = 0.0, radius: float = 0.01, eps1: float = 0.0) -> Kinetostatics:
+    """The chapter's crank press (metres, kilograms, N): a centred slider-crank whose slider
+    meets the resistance of :func:`press_load`; the crank is balanced (centre of mass at O),
+    the rod is a uniform bar, friction f in every pair (journal radius ``radius``)."""
+    sc = _slider_crank(crank, rod)
+    sc.turn(2)  # a press's crank turns fully: RotationError (with the numbers) otherwise
+    model = (model_for(sc).with_body("crank", mass=m_crank, inertia=slender_bar(m_crank, crank), com=(0.0, 0.0))
+             .with_body("rod", mass=m_rod).with_body("slider", mass=m_slider).with_friction(f, radius))
+    return Kinetostatics(sc, model, (Force("slider", "B", press_load(P, work_fraction)),), rpm_to_rad(rpm), eps1)
+
+
+def rocker_drive(crank: float = 0.10, coupler: float = 0.30, rocker: float = 0.30, ground: float = 0.35, *,
+                 rpm: float = 120.0, T: float = 40.0, m_coupler: float = 2.0, m_rocker: float = 2.0,
+                 f: float = 0.0, radius: float = 0.01) -> Kinetostatics:
+    """The chapter's four-bar: a crank-rocker whose rocker meets a resisting torque of size T
+    against its motion, uniform bars for coupler and rocker, friction f in every pair."""
+    fb = _four_bar(crank, coupler, rocker, ground)
+    fb.turn(2)  # RotationError (Grashof, with the numbers) unless the crank turns fully
+    model = (model_for(fb).with_body("coupler", mass=m_coupler).with_body("rocker", mass=m_rocker)
+             .with_friction(f, radius))
+    T = _nonneg("resisting torque T", T, LoadError)
+    return Kinetostatics(fb, model, (Torque("rocker", lambda m: -T * np.sign(m.dpsi)),), rpm_to_rad(rpm))
+
+
+def _slider_crank(crank, rod):
+    from .linkages import SliderCrank
+    return SliderCrank(crank, rod)
+
+
+def _four_bar(crank, coupler, rocker, ground):
+    from .linkages import FourBar
+    return FourBar(crank, coupler, rocker, ground)
+
+
 __all__ = [
     "FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque",
     "Reaction", "ForceResult", "Drive", "Kinetostatics",
     "solve", "virtual_work_torque", "model_for", "slender_bar", "drive", "cycle_mean",
+    "rpm_to_rad", "press_load", "press", "rocker_drive",
     "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError",
 ]

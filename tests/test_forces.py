@@ -271,3 +271,53 @@ def test_kinetostatics_wrapper_and_slender_bar():
 def test_model_for_unknown_mechanism():
     with pytest.raises(TypeError, match="no force model"):
         model_for(object())
+
+
+def test_press_and_rocker_examples():
+    from mechlab.forces import press, rocker_drive
+    k = press(P=2000.0, work_fraction=0.3)
+    res = k.forces(k.turn(1441))
+    # the press does P × (working part of the stroke) of work per turn: mean torque = that / 2π
+    stroke = 2 * 0.10
+    # (the load switches on inside a sampling step: the trapezoidal rule is good to ~0.5 %)
+    assert cycle_mean(res.torque, res.phi) == pytest.approx(2000.0 * 0.3 * stroke / (2 * np.pi), rel=1e-2)
+    from mechlab.errors import RotationError
+    with pytest.raises(RotationError, match="crank cannot turn fully"):
+        press(rod=0.08)
+    with pytest.raises(RotationError, match="Grashof"):
+        rocker_drive(ground=0.55)
+    r = rocker_drive(T=40.0, m_coupler=0.0, m_rocker=0.0).forces()
+    assert cycle_mean(np.abs(r.torque), r.phi) > 0
+    # no masses: the rocker torque's work over a turn = 2·T·swing, the crank's = 2π·mean
+    mo = r.model and rocker_drive().motion(r.phi)
+    swing = np.ptp(mo.psi)
+    assert cycle_mean(r.torque, r.phi) * 2 * np.pi == pytest.approx(2 * 40.0 * swing, rel=1e-3)
+
+
+def test_force_drawing_and_explorer_move_in_place():
+    import matplotlib.pyplot as plt
+    from mechlab.draw import animate, drawing_class
+    from mechlab.forces import press
+    from mechlab.widgets.forces import press_explorer
+    k = press()
+    fig, ax = plt.subplots()
+    d = drawing_class(k)(ax, k, n=24)
+    d.autoscale()
+    before = len(ax.get_children())
+    arts = d.set_frame(7)
+    assert len(ax.get_children()) == before and d.quiver in arts
+    i = 7
+    R = d.result.reactions["B"]
+    assert np.allclose(d.quiver.U[2], R.force[i, 0] * d.scale) and np.allclose(d.quiver.V[2], R.force[i, 1] * d.scale)
+    plt.close(fig)
+    anim = animate(k, n=3)
+    assert "<script" in anim.to_jshtml() and anim.drawing.result.residual < 1e-12
+    e = press_explorer()
+    assert e.message == "" and "groups vs power balance" in e.status.value
+    e.sliders["rod"].value = 0.08
+    assert "crank cannot turn fully" in e.message
+    e.sliders["rod"].value = 0.40
+    e.sliders["f"].value = 0.1
+    assert e.message == "" and e.result.iterations > 1
+    e.angle.value = 123.0
+    assert abs(np.degrees(e.result.phi[e.frame]) - 123.0) <= 3.0

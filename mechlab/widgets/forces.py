@@ -1,0 +1,199 @@
+"""Sliders for kinetostatics: speed, masses, load, friction → force plan, torque and efficiency.
+
+:class:`ForceExplorer` builds a :class:`mechlab.forces.Kinetostatics` from its sliders
+(``factory(**values)``), solves it over the cycle once, and shows the mechanism with its
+reaction arrows (:mod:`mechlab.draw.forces`), the balancing torque from the groups and
+from the power balance, and the instantaneous efficiency; the crank-angle slider moves
+the arrows in place. A MechanismError (bad dimensions, self-locking) is shown in place
+of the plots and the widget stays usable. Like :class:`mechlab.widgets.MechanismExplorer`
+it re-shows the figure in an Output widget with the inline backend (and in static
+pages) and redraws the canvas itself under ipympl.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import ipywidgets as W
+import matplotlib.pyplot as plt
+import numpy as np
+from IPython.display import display
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from ..draw import drawing_class
+from ..errors import MechanismError
+from ..forces import drive, press, rocker_drive
+from . import Control, _uses_ipympl
+
+
+class ForceExplorer:
+    """Sliders → ``factory(**values)`` (a Kinetostatics) → force plan, M_b(φ), η(φ).
+
+    ``controls`` maps the factory's keyword names to :class:`~mechlab.widgets.Control`
+    ("deg" controls reach the factory in radians). ``pairs`` restricts the arrows.
+    """
+
+    def __init__(self, factory: Callable, controls: dict[str, Control], *, n: int = 121, title: str = "",
+                 pairs=None):
+        self.factory = factory
+        self.controls = controls
+        self.n = n
+        self.pairs = pairs
+        self.message = ""
+        self.system = None
+        self.result = None
+        self.frame = 0
+        style = {"description_width": "120px"}
+        self.sliders = {name: W.FloatSlider(value=c.value, min=c.min, max=c.max, step=c.step,
+                                            description=f"{c.label} ({c.unit})" if c.unit else c.label,
+                                            continuous_update=False, style=style, layout=W.Layout(width="380px"))
+                        for name, c in controls.items()}
+        self.angle = W.FloatSlider(value=30.0, min=0.0, max=360.0, step=1.0, description="crank φ (deg)",
+                                   continuous_update=True, style=style, layout=W.Layout(width="380px"))
+        self.status = W.HTML()
+        ipympl = _uses_ipympl()
+        if ipympl:
+            with plt.ioff():
+                self.fig = plt.figure(figsize=(10, 4.2))
+        else:
+            self.fig = Figure(figsize=(10, 4.2), dpi=72)
+            FigureCanvasAgg(self.fig)
+        grid = self.fig.add_gridspec(2, 2, width_ratios=[1.2, 1])
+        self.ax_mech = self.fig.add_subplot(grid[:, 0])
+        self.ax_torque = self.fig.add_subplot(grid[0, 1])
+        self.ax_eta = self.fig.add_subplot(grid[1, 1], sharex=self.ax_torque)
+        if title:
+            self.fig.suptitle(title)
+        self.error_text = self.fig.text(0.5, 0.5, "", ha="center", va="center", wrap=True, color="#b00020",
+                                        fontsize=12, bbox=dict(fc="#fff0f0", ec="#b00020"))
+        self.lines = {"groups": self.ax_torque.plot([], [], lw=2, label="M_b, groups")[0],
+                      "power": self.ax_torque.plot([], [], "k--", lw=1, label="M_b, power balance")[0],
+                      "ideal": self.ax_torque.plot([], [], ":", color="0.4", lw=1, label="M_b, no friction")[0],
+                      "eta": self.ax_eta.plot([], [], color="#2a7f62", lw=1.5)[0]}
+        (self.m_marker,) = self.ax_torque.plot([], [], "ko", ms=5)
+        (self.e_marker,) = self.ax_eta.plot([], [], "ko", ms=5)
+        self.ax_torque.axhline(0.0, color="0.6", lw=0.8)
+        self.ax_torque.set_ylabel("M_b")
+        self.ax_torque.legend(loc="upper right", fontsize=7)
+        self.ax_eta.set_ylabel("η")
+        self.ax_eta.set_xlabel("φ, degrees")
+        for ax in (self.ax_torque, self.ax_eta):
+            ax.grid(True, alpha=0.3)
+        self.drawing = None
+        self.output = None if ipympl else W.Output()
+        canvas = self.fig.canvas if ipympl else self.output
+        for w in self.sliders.values():
+            w.observe(lambda change: self.rebuild(), names="value")
+        self.angle.observe(self._on_angle, names="value")
+        self.widget = W.VBox([W.HBox([W.VBox(list(self.sliders.values())), W.VBox([self.angle, self.status])]),
+                              canvas])
+        self.rebuild()
+
+    def values(self) -> dict:
+        out = {}
+        for name, w in self.sliders.items():
+            c = self.controls[name]
+            out[name] = np.radians(w.value) if c.unit == "deg" else w.value
+        return out
+
+    def rebuild(self):
+        """Build and solve from the sliders; show a MechanismError's message instead of plots."""
+        try:
+            system = self.factory(**self.values())
+            phi = system.cycle(self.n)
+            motion = system.motion(phi)
+            if self.drawing is None:
+                self.ax_mech.clear()
+                self.drawing = drawing_class(system)(self.ax_mech, system, n=self.n, pairs=self.pairs)
+            else:
+                self.drawing.set_motion(system, motion)
+            result = self.drawing.result
+        except MechanismError as err:
+            self._show_error(str(err))
+            return
+        self.system, self.result, self.message = system, result, ""
+        self.drawing.autoscale()
+        deg = np.degrees(result.phi)
+        for key, y in (("groups", result.torque), ("power", result.torque_power), ("ideal", result.ideal_torque)):
+            self.lines[key].set_data(deg, y)
+        eta = result.efficiency()
+        self.lines["eta"].set_data(deg, eta.filled(np.nan))
+        lo, hi = float(np.min(result.torque)), float(np.max(result.torque))
+        pad = 0.08 * (hi - lo) + 1e-9
+        self.ax_torque.set_xlim(deg[0], deg[-1])
+        self.ax_torque.set_ylim(min(lo, 0) - pad, hi + pad)
+        self.ax_eta.set_ylim(0.0, 1.05)
+        d = drive(result.torque, result.phi, system.omega1)
+        try:
+            cyc = f"{result.cycle_efficiency():.3f} (mean), {result.cycle_efficiency(how='work'):.3f} (work)"
+        except MechanismError:
+            cyc = "undefined"
+        gap = float(np.max(np.abs(result.torque - result.torque_power)))
+        self.status.value = (f"M_b mean {d.mean_torque:.4g}, peak {d.peak_torque:.4g}, rms {d.rms_torque:.4g}; "
+                             f"mean power {d.mean_power:.4g}<br>cycle efficiency {cyc}<br>"
+                             f"groups vs power balance: {gap:.1e}; equilibrium residual {result.residual:.1e}")
+        self._set_visible(True)
+        self._on_angle()
+
+    def _on_angle(self, change=None):
+        if self.result is None:
+            return
+        phi = np.degrees(self.result.phi)
+        target = self.angle.value
+        self.frame = int(np.argmin(np.abs((phi - target + 180.0) % 360.0 - 180.0)))
+        self.drawing.set_frame(self.frame)
+        eta = self.result.efficiency().filled(np.nan)
+        self.m_marker.set_data([phi[self.frame]], [self.result.torque[self.frame]])
+        self.e_marker.set_data([phi[self.frame]], [eta[self.frame]])
+        self._redraw()
+
+    def _show_error(self, text: str):
+        self.message = text
+        self.system = self.result = None
+        self._set_visible(False)
+        self.error_text.set_text(text)
+        self.status.value = f"<span style='color:#b00020'>{text}</span>"
+        self._redraw()
+
+    def _set_visible(self, ok: bool):
+        for ax in (self.ax_mech, self.ax_torque, self.ax_eta):
+            ax.set_visible(ok)
+        self.error_text.set_visible(not ok)
+
+    def _redraw(self):
+        if self.output is None:
+            self.fig.canvas.draw_idle()
+        else:
+            with self.output:
+                self.output.clear_output(wait=True)
+                display(self.fig)
+
+    def _ipython_display_(self):
+        display(self.widget)
+
+
+def press_explorer(**initial) -> ForceExplorer:
+    """Sliders for the chapter's press (:func:`mechlab.forces.press`): speed, masses, load, friction."""
+    v = dict(rpm=120.0, P=2000.0, m_rod=3.0, m_slider=4.0, f=0.0, rod=0.40)
+    v.update(initial)
+    controls = {"rpm": Control("crank speed", 0.0, 400.0, 5.0, v["rpm"], "rpm"),
+                "P": Control("press force P", 0.0, 10000.0, 100.0, v["P"], "N"),
+                "m_rod": Control("rod mass", 0.0, 20.0, 0.5, v["m_rod"], "kg"),
+                "m_slider": Control("slider mass", 0.0, 40.0, 0.5, v["m_slider"], "kg"),
+                "f": Control("friction f", 0.0, 0.5, 0.01, v["f"]),
+                "rod": Control("rod AB", 0.05, 0.8, 0.01, v["rod"], "m")}
+    return ForceExplorer(press, controls, title="Crank press: reactions and balancing torque")
+
+
+def rocker_explorer(**initial) -> ForceExplorer:
+    """Sliders for the chapter's four-bar (:func:`mechlab.forces.rocker_drive`)."""
+    v = dict(rpm=120.0, T=40.0, m_coupler=2.0, m_rocker=2.0, f=0.0, ground=0.35)
+    v.update(initial)
+    controls = {"rpm": Control("crank speed", 0.0, 400.0, 5.0, v["rpm"], "rpm"),
+                "T": Control("rocker torque T", 0.0, 200.0, 1.0, v["T"], "N·m"),
+                "m_coupler": Control("coupler mass", 0.0, 20.0, 0.5, v["m_coupler"], "kg"),
+                "m_rocker": Control("rocker mass", 0.0, 20.0, 0.5, v["m_rocker"], "kg"),
+                "f": Control("friction f", 0.0, 0.5, 0.01, v["f"]),
+                "ground": Control("ground OE", 0.2, 0.55, 0.005, v["ground"], "m")}
+    return ForceExplorer(rocker_drive, controls, title="Four-bar: reactions and balancing torque")
