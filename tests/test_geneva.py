@@ -348,7 +348,7 @@ def test_errata_seed004_geneva():
     from mechlab.errata import seed004_geneva, table
     assert len(seed004_geneva.ERRATA) == 8
     for e in seed004_geneva.ERRATA:
-        assert e.source == "004" and e.notebook == "08_geneva.ipynb"
+        assert e.source == "004" and e.notebook == "08_geneva_spherical.ipynb"
         assert e.evidence()
-    md = table(notebook="08_geneva.ipynb")
+    md = table(notebook="08_geneva_spherical.ipynb")
     assert md.count("\n| 004 |") == 8

@@ -11,7 +11,7 @@ import numpy as np
 from ..geneva import SphericalGeneva, table1_comparison
 from . import Erratum
 
-NOTEBOOK = "08_geneva.ipynb"
+NOTEBOOK = "08_geneva_spherical.ipynb"
 _G = SphericalGeneva(40.0, 15.0, 4)  # Table 1's R, e with z = 4
 
 
@@ -35,7 +35,7 @@ def _check_21() -> str:
     assert al[i] == 0.0 and abs(p.dd[i]) < 1e-15
     assert abs(p.d[i] - 1 / np.sqrt(_G.a2 - 1)) < 1e-14
     return (f"z = 4: at α = 0, ω/ω1 = {p.d[i]:.4f} = 1/sqrt(a² - 1) = tan ψ (its maximum) while ε/ω1² = "
-            f"{abs(p.dd[i]):.0e}: (21) is the velocity, not the acceleration")
+            f"{abs(p.dd[i]):.1g}: (21) is the velocity, not the acceleration")
 
 
 def _check_deps() -> str:
