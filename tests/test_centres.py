@@ -357,3 +357,72 @@ def test_lookup_errors():
                 lambda: instant_centres(object(), [0.3])):
         with pytest.raises((MechanismError, AttributeError)):
             bad()
+
+
+# -- drawings, widgets, exercises, errata ----------------------------------------------------------------
+def test_centrode_animation_moves_the_same_artists():
+    import matplotlib.pyplot as plt
+    from mechlab.draw.centres import animate_centrodes, draw_centres
+
+    anim = animate_centrodes(Antiparallelogram(1.0, 2.0), "coupler", n=8)
+    ov, dr = anim.overlay, anim.drawing
+    before = [id(a) for a in ov.artists + dr.artists]
+    texts = set()
+    for i in range(8):
+        ov.set_frame(i)
+        dr.set_frame(i)
+        texts.add(ov.arrow_text.get_text())
+        P = ov.cd.centre[i]
+        if P.finite[0]:
+            assert np.allclose(ov.pole.get_data(), P.h[0, :2, None])
+        xs, ys = ov.moving_line.get_data()            # the moving centrode passes through the pole
+        if P.finite[0] and np.hypot(*P.h[0, :2]) < ov.clip:
+            pts = np.ma.column_stack([xs, ys])
+            assert np.ma.min(np.hypot(pts[:, 0] - P.h[0, 0], pts[:, 1] - P.h[0, 1])) < 1e-9
+    assert [id(a) for a in ov.artists + dr.artists] == before
+    assert "html" in anim.to_jshtml(fps=5).lower()
+    ax = draw_centres(instant_centres(EllipticTrammel(1.0, 1.0), [0.7]), 0)
+    labels = {t.get_text() for t in ax.texts}
+    assert {"P14", "P24", "P34", "P15", "P45", "P25", "P35"} <= labels   # the 7 finite centres
+    assert any("P12 → ∞" in t for t in labels) and any("P23 → ∞" in t for t in labels)
+    plt.close("all")
+
+
+def test_explorers_follow_sliders_and_show_errors():
+    from mechlab.widgets.centres import antiparallelogram_explorer, fourbar_centrode_explorer, trammel_explorer
+
+    ex = fourbar_centrode_explorer()
+    ex.angle.value = 90.0
+    P = ex.centrodes.centre[ex.frame].xy[0]
+    assert np.allclose(ex.overlay.pole.get_data(), P[:, None]) and "P24" in ex.status.value
+    ex.sliders["ground"].value = 9.9
+    assert "cannot be assembled" in ex.message
+    ex.sliders["ground"].value = 4.0
+    assert ex.message == "" and ex.centrodes is not None
+    tr = trammel_explorer(rod=2.0, beta_deg=60.0)
+    R = np.hypot(*tr.centrodes.fixed.xy.T)
+    assert np.allclose(R, 2.0 / np.sin(np.radians(60.0)))
+    ap = antiparallelogram_explorer()
+    ap.sliders["crank"].value = 2.0
+    assert "rhombus" in ap.message
+    ap.sliders["crank"].value = 1.0
+    assert ap.message == "" and ap.centrodes.fixed.finite.all()
+
+
+def test_exercises_and_errata():
+    from mechlab.errata import seed002_centres
+    from mechlab.exercises import check, solution
+
+    # 04.1: P13 = AB ∩ frame line, by hand
+    mo = FourBar(1.0, 3.0, 3.0, 4.0).motion(np.radians([60.0]))
+    A, B = mo.points["A"].p[0], mo.points["B"].p[0]
+    assert np.isclose(solution("04.1"), A[0] - A[1] * (B[0] - A[0]) / (B[1] - A[1]))
+    assert np.isclose(solution("04.2"), 100.0 / (2 * np.sin(np.radians(60.0))))
+    k = Antiparallelogram(1.0, 2.0).k
+    assert np.isclose(solution("04.3"), 2 * k / ((1 + k * k) + (1 - k * k) * np.cos(np.pi / 2)))
+    for key in ("04.1", "04.2", "04.3"):
+        assert check(key, solution(key), quiet=True) and not check(key, solution(key) + 0.1, quiet=True)
+    for e in seed002_centres.ERRATA:
+        assert e.source == "002" and e.notebook == "04_instant_centres.ipynb"
+        text = e.evidence()
+        assert any(ch.isdigit() for ch in text)

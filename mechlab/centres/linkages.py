@@ -143,6 +143,12 @@ class Antiparallelogram(Mechanism):
         """Crank angles (rad) where the linkage folds flat: 0 and π."""
         return (0.0, np.pi)
 
+    def cycle(self, n: int = 361) -> np.ndarray:
+        """n crank angles over a full turn, shifted by 0.37 of a step so that no sample falls
+        on a change point (0 or π), where Kennedy's construction is indeterminate."""
+        phi = self.turn(n)
+        return phi + 0.37 * (phi[1] - phi[0]) if n > 1 else phi + 0.1
+
     def as_fourbar(self, assembly: int) -> FourBar:
         """The same lengths as a FourBar with a fixed assembly sign (valid on half a turn each)."""
         return FourBar(self.crank, self.ground, self.crank, self.ground, assembly)
