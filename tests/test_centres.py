@@ -380,7 +380,8 @@ def test_centrode_animation_moves_the_same_artists():
             pts = np.ma.column_stack([xs, ys])
             assert np.ma.min(np.hypot(pts[:, 0] - P.h[0, 0], pts[:, 1] - P.h[0, 1])) < 1e-9
     assert [id(a) for a in ov.artists + dr.artists] == before
-    assert "html" in anim.to_jshtml(fps=5).lower()
+    html = anim.to_jshtml(fps=5)
+    assert html.count("data:image/png;base64") == 8 and "<script" in html
     ax = draw_centres(instant_centres(EllipticTrammel(1.0, 1.0), [0.7]), 0)
     labels = {t.get_text() for t in ax.texts}
     assert {"P14", "P24", "P34", "P15", "P45", "P25", "P35"} <= labels   # the 7 finite centres
