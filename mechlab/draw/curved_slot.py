@@ -1,0 +1,160 @@
+"""Drawings of curved-slot slotted links, of a linkage's curved-slot twin and of the
+class-IV six-bar; a side-by-side animation of a linkage, its twin and the relative path.
+
+Every drawing follows :class:`mechlab.draw.LinkageDrawing`'s protocol, so
+:func:`mechlab.draw.animate` plays each of them on its own.
+"""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.animation import FuncAnimation
+
+from ..equivalence import EquivalentSlot, base_law, equivalent_slot, relative_path
+from ..linkages.curved_slot import CurvedSlotLink, TranslatingCurvedSlot
+from ..sixbar import SixBarIV
+from . import EXTRA_STYLE, LinkageDrawing, drawing_class, register
+
+SLOT_STYLE = dict(color="#2a7f62", lw=5, alpha=0.45, solid_capstyle="round", zorder=2)
+ARM_STYLE = dict(EXTRA_STYLE)
+
+
+def _rotate(xy, angle):
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * xy[:, 0] - s * xy[:, 1], s * xy[:, 0] + c * xy[:, 1]], axis=-1)
+
+
+class _SlotDrawing(LinkageDrawing):
+    """A slotted link: its slot (thick translucent curve) and the arm holding it."""
+
+    n_extras = 2
+    pivot_name = "B"
+
+    def set_motion(self, mechanism, motion):
+        self._slot = mechanism.slot_samples(160)
+        if not hasattr(self, "_slot_line"):
+            (self._slot_line,) = self.ax.plot([], [], **SLOT_STYLE)
+        return super().set_motion(mechanism, motion)
+
+    def _slot_world(self, i):
+        mo = self.motion
+        if hasattr(mo, "psi"):
+            P = mo.points[self.pivot_name].p[i]
+            return P + _rotate(self._slot, mo.psi[i])
+        return self._slot + np.array([mo.s[i], 0.0])
+
+    def set_frame(self, i):
+        self._slot_line.set_data(*self._slot_world(i).T)
+        return super().set_frame(i)
+
+    def extras(self, i):
+        mo = self.motion
+        slot = self._slot_world(i)
+        if hasattr(mo, "psi"):
+            P = mo.points[self.pivot_name].p[i]
+            return [np.array([P, slot[0]]), np.array([P, slot[-1]])]
+        # translating: the yoke's rod along the guide, from C to the slot
+        C = np.array([mo.s[i], 0.0])
+        a = np.max(np.abs(mo.points["A"].p[:, 1]))
+        span = np.ptp(mo.s) + 2 * a
+        return [np.array([C, C + np.array([1.5 * span, 0.0])]),
+                np.array([[mo.s.min() - 0.5 * span, 0.0], [mo.s.max() + 2.2 * span, 0.0]])]
+
+    @property
+    def artists(self):
+        return [self._slot_line, *super().artists]
+
+    def bounds(self, margin: float = 0.15):
+        pts = [v.p for v in self.motion.points.values()]
+        pts += [self._slot_world(j) for j in range(0, len(self.motion), max(1, len(self.motion) // 8))]
+        allp = np.concatenate(pts)
+        lo, hi = np.nanmin(allp, axis=0), np.nanmax(allp, axis=0)
+        pad = margin * max(hi - lo) + 1e-9
+        return lo[0] - pad, hi[0] + pad, lo[1] - pad, hi[1] + pad
+
+
+@register(CurvedSlotLink)
+class CurvedSlotDrawing(_SlotDrawing):
+    pivot_name = "B"
+
+
+@register(TranslatingCurvedSlot)
+class TranslatingSlotDrawing(_SlotDrawing):
+    pass
+
+
+@register(EquivalentSlot)
+class EquivalentSlotDrawing(_SlotDrawing):
+    pivot_name = "E"
+
+
+@register(SixBarIV)
+class SixBarDrawing(LinkageDrawing):
+    """Links 2 and 4 are triangles (ternary links); the rest as in a four-bar."""
+
+
+def animate_equivalence(mechanism, n: int = 36, interval: int = 90, figsize=(9, 3.2), dpi: int = 60) -> FuncAnimation:
+    """Three panels moving together: the linkage, its curved-slot twin (seed 000 §1, Fig. 1-4),
+    and the pin's relative path in the output link's frame with the pin on it."""
+    twin = equivalent_slot(mechanism)
+    fig, axes = plt.subplots(1, 3, figsize=figsize, dpi=dpi)
+    left = drawing_class(mechanism)(axes[0], mechanism, trace="A", n=n)
+    right = drawing_class(twin)(axes[1], twin, trace="A", n=n)
+    for d, title in ((left, type(mechanism).__name__), (right, "curved-slot twin")):
+        d.autoscale()
+        d.ax.set_title(title, fontsize=10)
+    x0, x1, y0, y1 = left.bounds()
+    x2, x3, y2, y3 = right.bounds()
+    for d in (left, right):
+        d.ax.set_xlim(min(x0, x2), max(x1, x3))
+        d.ax.set_ylim(min(y0, y2), max(y1, y3))
+    phi = mechanism.cycle(n)
+    rel = relative_path(mechanism, phi).p
+    dense = relative_path(mechanism, mechanism.cycle(361)).p
+    ax = axes[2]
+    ax.set_aspect("equal")
+    slot = twin.slot_mechanism.slot
+    if slot.periodic:   # the whole closed curve: both branches (α1–α1 and α2–α2 for a circle)
+        ax.plot(*slot.points(np.linspace(slot.t0, slot.t1, 300)).T, color="0.6", lw=0.8, ls="--")
+    ax.plot(*twin.slot_samples(200).T, **SLOT_STYLE)
+    ax.plot(*dense.T, color="#d62728", lw=1)
+    ax.plot([0], [0], marker="^", ms=10, color="#555555", ls="none")
+    (pin,) = ax.plot([], [], "o", mfc="white", mec="#1f4e79", ms=7)
+    ax.set_title("pin A in the output link's frame", fontsize=10)
+    for a in axes:   # tick labels cost most of each frame's rendering
+        a.set_xticks([])
+        a.set_yticks([])
+
+    def frame(i):
+        pin.set_data([rel[i, 0]], [rel[i, 1]])
+        return [*left.set_frame(i), *right.set_frame(i), pin]
+
+    anim = FuncAnimation(fig, frame, frames=n, interval=interval, blit=False)
+    anim.drawings = (left, right)
+    plt.close(fig)
+    return anim
+
+
+def plot_against_base(mechanism, phi=None, axes=None):
+    """ψ, ψ′, ψ″ (or s, s′, s″) of a mechanism with its base mechanism's law dashed."""
+    phi = mechanism.cycle(361) if phi is None else phi
+    mo = mechanism.motion(phi)
+    k = base_law(mechanism, phi)
+    angular = hasattr(mo, "psi")
+    law = (mo.psi, mo.dpsi, mo.ddpsi) if angular else (mo.s, mo.ds, mo.dds)
+    names = ("ψ", "ψ′", "ψ″") if angular else ("s", "s′", "s″")
+    if axes is None:
+        _, axes = plt.subplots(1, 3, figsize=(10, 2.8))
+    deg = np.degrees(phi)
+    for ax, y, yk, name in zip(axes, law, (k.theta, k.d, k.dd), names):
+        if angular and name == "ψ":
+            y, yk = np.unwrap(y), np.unwrap(yk)
+            yk = yk + 2 * np.pi * np.round((y[0] - yk[0]) / (2 * np.pi))
+        ax.plot(deg, y, label=type(mechanism).__name__)
+        ax.plot(deg, yk, "--", label="base mechanism")
+        ax.set_title(name, fontsize=10)
+        ax.set_xlabel("φ, degrees")
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(fontsize=8)
+    return axes
