@@ -88,7 +88,7 @@ def check_lambda(lam) -> float:
         raise DwellRatioError(f"λ = l_OA / l_OB must be a positive finite number, got {lam}")
     if abs(lam - 1.0) <= LAMBDA_TOL:
         raise DwellRatioError(
-            f"λ = l_OA / l_OB = {lam:g} = 1: the pin passes through the pivot B at φ = 180°, where the "
+            f"λ = l_OA / l_OB = {lam:g}, but λ ≠ 1 is needed: the pin passes through the pivot B at φ = 180°, where the "
             f"slot direction is undefined and ψ_K'(π) = λ/(λ - 1) is infinite")
     return lam
 

@@ -232,7 +232,7 @@ def test_lambda_above_one_gives_intermittent_rotation():
     ((0.5, -10 * DEG, 60 * DEG), DwellIntervalError, "within \\[0°, 180°\\]"),
     ((0.5, 60 * DEG, 200 * DEG), DwellIntervalError, "within \\[0°, 180°\\]"),
     ((0.5, 0.0, 60 * DEG), DwellIntervalError, "two-branch"),
-    ((1.0, 60 * DEG, 150 * DEG), DwellRatioError, "= 1"),
+    ((1.0, 60 * DEG, 150 * DEG), DwellRatioError, "λ ≠ 1"),
     ((-0.5, 60 * DEG, 150 * DEG), DwellRatioError, "positive"),
     ((0.5, float("nan"), 150 * DEG), DwellIntervalError, "finite"),
 ])
@@ -247,3 +247,65 @@ def test_bad_transition_and_pivot():
         curved_slot_dwell(0.5, 1.0, 2.0, transition="linear")
     with pytest.raises(DimensionError, match="pivot_distance"):
         curved_slot_dwell(0.5, 1.0, 2.0, pivot_distance=0.0)
+
+
+# -- errata, exercises, drawing, widget ----------------------------------------------------
+def test_errata_of_section_3_hold():
+    from mechlab.errata import seed000_dwell, table
+
+    assert len(seed000_dwell.ERRATA) >= 6
+    for e in seed000_dwell.ERRATA:
+        assert e.source == "000" and e.notebook == "05_dwell_curved_slot.ipynb"
+        assert "λ" in e.evidence() or "l_OA" in e.evidence()
+    assert table(notebook="05_dwell_curved_slot.ipynb").count("\n") == len(seed000_dwell.ERRATA) + 1
+
+
+def test_exercises_have_independent_answers():
+    from mechlab.exercises import check, solution
+
+    lam, p1 = 0.4, 70 * DEG
+    assert solution("05.1") == pytest.approx(np.degrees(lam * p1 / (3 * (lam + 1))), rel=1e-12)
+    assert solution("05.2") == pytest.approx(np.degrees(abs(np.pi / 2 - (p1 - base_law(lam, p1).psi[0]))), rel=1e-12)
+    assert solution("05.3") == pytest.approx(2 * 0.6 / 1.6, rel=1e-12)
+    assert check("05.3", 0.75, quiet=True) and not check("05.3", 0.6, quiet=True)
+
+
+@pytest.mark.filterwarnings("ignore:Animation was deleted without rendering")
+def test_drawing_moves_slot_with_link():
+    import matplotlib.pyplot as plt
+
+    from mechlab.draw import animate, drawing_class
+    from mechlab.draw.dwell import DwellDrawing
+
+    m = curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic", roller_radius=0.05)
+    fig, ax = plt.subplots()
+    d = drawing_class(m)(ax, m, n=24)
+    assert isinstance(d, DwellDrawing)
+    n_artists = len(ax.get_children())
+    for i in range(24):
+        d.set_frame(i)
+        # the pin lies on the drawn slot centre line (to the drawing's sampling)
+        A = d.motion.points["A"].p[i]
+        line = np.array(d._slot_line.get_data()).T
+        assert np.hypot(*(line - A).T).min() < 0.02
+        assert (d._label.get_text() == "dwell") == bool(m.law.in_dwell(d.motion.phi[i:i + 1])[0])
+    assert len(ax.get_children()) == n_artists
+    plt.close(fig)
+    anim = animate(m, n=6)
+    assert isinstance(anim.drawing, DwellDrawing)
+
+
+def test_widget_shows_errors_and_recovers():
+    from mechlab.widgets.dwell import dwell_explorer
+
+    e = dwell_explorer(n=61)
+    assert e.message == "" and "pressure angle" in e.status.value
+    e.sliders["phi1"].value = 160.0
+    assert "φ1 < φ2" in e.message
+    e.sliders["phi1"].value = 60.0
+    assert e.message == ""
+    e.sliders["transition"].value = "cubic"
+    e.sliders["roller_radius"].value = 0.05
+    assert "quintic" in e.message
+    e.sliders["transition"].value = "quintic"
+    assert e.message == "" and e.mechanism.transition == "quintic"
