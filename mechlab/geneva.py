@@ -496,7 +496,8 @@ class SphericalGeneva(Mechanism):
         return float(abs(self.position(al).dd)), al
 
     def entry_velocity(self) -> float:
-        """β'(α0) = sin ψ cos ψ cos α0 / (1 - sin²ψ cos²α0): zero only for e = 0."""
+        """β'(α0) = sin ψ cos ψ cos α0 / (1 - sin²ψ cos²α0), which by (1)-(3)
+        (sin ψ = ρ0/sqrt(R² + e²), cos α0 = e/ρ0) is k·cos β0 = (e/R)·cos(π/z): zero only for e = 0."""
         return float(self.position(self.alpha0).d)
 
     def impacts(self) -> Impact:

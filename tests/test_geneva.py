@@ -238,6 +238,7 @@ def test_spherical_motion_and_impacts(z, R, frac):
     assert imp.entry_velocity_jump > 0 and imp.kind == "hard"
     s, c = np.sin(g.cone_angle), np.cos(g.cone_angle)
     assert np.isclose(imp.entry_velocity_jump, s * c * np.cos(g.alpha0) / (1 - s * s * np.cos(g.alpha0) ** 2))
+    assert np.isclose(g.entry_velocity(), g.k * np.cos(np.pi / z), rtol=1e-12)
     # power balance: the crank arm of the slot-normal force is r·β'
     al = np.linspace(-g.alpha0, g.alpha0, 31)
     wheel, crank = g.force_arms(al)
