@@ -353,3 +353,106 @@ def test_errata_seed004_geneva():
         assert e.evidence()
     md = table(notebook="08_geneva_spherical.ipynb")
     assert md.count("\n| 004 |") == 8
+
+
+# -- drawings and widgets -------------------------------------------------------------------------
+def test_planar_drawing_matches_the_motion():
+    import matplotlib.pyplot as plt
+
+    from mechlab.draw import drawing_class
+    from mechlab.draw.geneva import PlanarGenevaDrawing, wheel_outline
+    from mechlab.geometry import wrap
+
+    for g in (ExternalGeneva(5, 100.0), InternalGeneva(6, 100.0)):
+        inner, outer = wheel_outline(g)
+        assert np.allclose(inner[0], inner[-1])
+        dist = np.hypot(*inner.T)
+        w = 1.08 * g.roller_radius
+        if g.kappa < 0:
+            assert dist.max() <= g.outer_radius + 1e-9 and np.isclose(dist.min(), g.slot_bottom - w, rtol=1e-3)
+            assert len(outer) == 0
+        else:
+            assert np.isclose(dist.max(), g.slot_bottom + w, rtol=1e-3) and np.isclose(dist.min(), g.inner_radius, rtol=1e-9)
+            assert np.allclose(np.hypot(*outer.T), g.outer_radius)
+        fig, ax = plt.subplots()
+        d = drawing_class(g)(ax, g, n=24)
+        d.autoscale()
+        assert isinstance(d, PlanarGenevaDrawing)
+        n_art = len(d.artists)
+        for i in range(24):
+            assert len(d.set_frame(i)) == n_art
+            if not g.engaged(d.motion.phi[i])[0]:
+                continue
+            # the pin lies on a slot's centre line of the drawn (rotated) wheel
+            A, W = d.motion.points["A"].p[i], d.motion.points["W"].p[i]
+            rel = np.arctan2(*(A - W)[::-1]) - d.motion.psi[i]
+            slots = np.pi - g.kappa * np.pi / g.z + 2 * np.pi * np.arange(g.z) / g.z
+            assert np.min(np.abs(wrap(rel - slots))) < 1e-9
+        plt.close("all")
+    # the locking disc faces the wheel during the dwell, its relief during the motion
+    g = ExternalGeneva(4, 100.0)
+    fig, ax = plt.subplots()
+    d = PlanarGenevaDrawing(ax, g, n=37)
+    for i, phi in enumerate(d.motion.phi):
+        lock = d.extras(i)[2]
+        toward_w = np.any(np.abs(np.arctan2(lock[:, 1], lock[:, 0])) < np.radians(6))
+        assert toward_w == (not g.engaged(phi)[0]) or abs(abs(phi - np.pi) - g.engagement_half_angle) < 0.2
+    plt.close(fig)
+
+
+def test_spherical_drawing_and_comparison_plot():
+    import matplotlib.pyplot as plt
+
+    from mechlab.draw import drawing_class
+    from mechlab.draw.geneva import SphericalGenevaDrawing, plot_comparison
+
+    g = SphericalGeneva(40.0, 15.0, 5)
+    fig, ax = plt.subplots()  # a 2-D axes, as animate() makes: the drawing puts a 3-D one in its place
+    d = drawing_class(g)(ax, g, n=20, trace="P")
+    d.autoscale()
+    assert isinstance(d, SphericalGenevaDrawing) and d.ax.name == "3d" and ax not in fig.axes
+    for i in range(20):
+        d.set_frame(i)
+        x, y, z = (np.asarray(a) for a in d.contact.get_data_3d())
+        assert (len(x) == 1) == bool(g.engaged(d.motion.phi[i])[0])
+        if len(x):  # the contact point lies on one of the drawn slot arcs' meridians
+            az = [np.arctan2(*np.asarray(s.get_data_3d())[1::-1, -1]) for s in d.slot_lines[:g.z]]
+            from mechlab.geometry import wrap
+            assert np.min(np.abs(wrap(np.arctan2(y[0], x[0]) - np.array(az)))) < 1e-9
+    assert d.bounds() == (-40.0, 40.0, -40.0, 40.0)
+    axes = plot_comparison({"ext": ExternalGeneva(4, 1.0), "sph": g}, n=181)
+    assert len(axes[0].lines) == 2 and len(axes[1].lines) == 2
+    assert "impact: hard" in axes[0].lines[1].get_label()
+    plt.close("all")
+
+
+def test_geneva_explorers():
+    from mechlab.widgets.geneva import planar_geneva_explorer, spherical_geneva_explorer
+
+    ex = planar_geneva_explorer(z=4, centre_distance=100.0)
+    assert isinstance(ex.mechanism, ExternalGeneva) and "dwell fraction 0.750" in ex.status.value
+    ex.kind.value = "internal"
+    assert isinstance(ex.mechanism, InternalGeneva) and "dwell fraction 0.250" in ex.status.value
+    ex.sliders["z"].value = 6
+    assert ex.mechanism.z == 6
+    sp_ = spherical_geneva_explorer(R=40.0, e=15.0, z=4)
+    assert sp_.ax_mech.name == "3d" and "hard impact" in sp_.status.value
+    sp_.sliders["e"].value = 45.0
+    assert sp_.mechanism is None and "e = 45 ≥ R = 40" in sp_.message
+    sp_.sliders["e"].value = 0.0
+    assert sp_.message == "" and "soft impact" in sp_.status.value
+    sp_.angle.value = 180.0
+    assert sp_.frame == np.argmin(np.abs(np.degrees(sp_.motion.phi) - 180.0))
+
+
+def test_small_helpers():
+    from mechlab.geneva import check_slots, mid_motion_angle
+
+    assert check_slots(4.0) == 4 and isinstance(check_slots(np.int64(5)), int)
+    s = mid_motion_angle(np.array([0.0, np.pi, 2 * np.pi, 3 * np.pi, -np.pi]))
+    assert np.allclose(s, [-np.pi, 0.0, -np.pi, 0.0, 0.0])
+    g = SphericalGeneva(40.0, 15.0, 4)
+    d = g.pin_direction(np.linspace(-3, 3, 7))
+    assert np.allclose(np.linalg.norm(d, axis=1), 1.0) and np.allclose(d[:, 0], np.cos(g.cone_angle))
+    assert set(g.design()) >= {"α0 (deg)", "ρ0", "r_H", "min slot length"}
+    assert np.array_equal(g.engaged([np.pi, 0.0]), [True, False])
