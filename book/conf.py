@@ -64,6 +64,7 @@ nb_execution_raise_on_error = True  # a failing assertion in a chapter fails the
 nb_execution_show_tb = True
 nb_execution_excludepatterns: list[str] = []
 nb_merge_streams = True
+nb_render_markdown_format = "myst"  # math and inline HTML in Markdown outputs (the Errata table)
 # A static page has no kernel: widgets are rendered by _ext/kernel_startup.py as the figure
 # for their default values plus a note; the widget view itself (it would need the
 # html-manager from a CDN) is never chosen, and no widget JavaScript is loaded.

@@ -93,17 +93,22 @@ def test_errata_markdown(tmp_path):
         calls.append(1)
         return "printed gives 1.25, correct gives 1.5"
 
-    e = Erratum(source="000", where="formula (21)", printed="$a | b$", correct="$c$", check=check,
+    e = Erratum(source="000", where="formula (21)", printed="$a | b$", correct="$c$\nsplit", check=check,
                 notebook="07_chapter.ipynb")
-    md = errata_page.errata_markdown([e], notebooks_dir=tmp_path)
+    f = Erratum(source="004", where="Table 1", printed="2.51", correct="2.536", check=lambda: "z = 3: 2.536",
+                notebook="07_chapter.ipynb")
+    md = errata_page.errata_markdown([f, e], notebooks_dir=tmp_path)
     assert calls == [1]  # the evidence is recomputed at build time
-    assert "printed gives 1.25, correct gives 1.5" in md
-    assert '<a href="notebooks/07_chapter.html#cell-3">7 · A chapter</a>' in md
-    assert '<a href="references.html#seed-000">000</a>' in md
-    assert "$a \\| b$" in md  # a pipe cannot break the table
-    assert md.startswith(f"1 mistake in 1 of the {len(SOURCES)} source texts.")
-    row = [line for line in md.splitlines() if "formula (21)" in line][0]
-    assert row.count(" | ") == 5
+    assert md.startswith(f"2 mistakes in 2 of the {len(SOURCES)} source texts.")
+    lines = md.splitlines()
+    # grouped by source in key order, each with its title and a link to the References page
+    head0 = lines.index(f'**Source <a href="references.html#seed-000">000</a>: {SOURCES["000"]}**')
+    head4 = lines.index(f'**Source <a href="references.html#seed-004">004</a>: {SOURCES["004"]}**')
+    assert head0 < lines.index("  - evidence: printed gives 1.25, correct gives 1.5") < head4
+    assert ('- **formula (21)** — shown in <a href="notebooks/07_chapter.html#cell-3">7 · A chapter</a>'
+            in lines)
+    assert "  - printed: $a | b$" in lines and "  - correct: $c$ split" in lines
+    assert lines.index("  - evidence: z = 3: 2.536") > head4
 
 
 def test_errata_markdown_fails_loudly(tmp_path):

@@ -66,33 +66,35 @@ def chapter_link(notebook_name: str, notebooks_dir: Path = NOTEBOOKS, prefix: st
     return f'<a href="{html.escape(href)}">{html.escape(notebook_title(path))}</a>'
 
 
-def _cell(text: str) -> str:
-    return str(text).replace("|", "\\|").replace("\n", " ")
+def _inline(text: str) -> str:
+    return " ".join(str(text).split())
 
 
 def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = "notebooks/") -> str:
-    """A MyST Markdown table of the errata (default: :func:`mechlab.errata.collect`).
+    """MyST Markdown for the errata (default: :func:`mechlab.errata.collect`), grouped by source.
 
-    Columns: source (linked to the References page), where, printed, correct, the
-    evidence returned by ``Erratum.check()`` (which raises if the claim stopped being
-    true, failing the build) and the chapter cell that shows it.
+    Each erratum: the source key (linked to the References page) and where, the chapter
+    cell that shows it, then printed, correct and the evidence returned by
+    ``Erratum.check()`` (which raises if the claim stopped being true, failing the build).
     """
     from mechlab.errata import SOURCES, collect
 
     rows = collect() if errata is None else list(errata)
     if not rows:
         return "No errata have been collected from the chapters yet."
-    lines = ["| source | where | printed | correct | evidence (recomputed at build time) | shown in |",
-             "|---|---|---|---|---|---|"]
-    for e in sorted(rows, key=lambda e: e.source):
+    for e in rows:
         if e.source not in SOURCES:
             raise ValueError(f"erratum cites source {e.source!r}; known: {', '.join(SOURCES)}")
-        source = f'<a href="references.html#seed-{e.source}">{e.source}</a>'
-        evidence = e.evidence()
-        lines.append("| " + " | ".join([source, _cell(e.where), _cell(e.printed), _cell(e.correct),
-                                         _cell(evidence), chapter_link(e.notebook, notebooks_dir, prefix)])
-                     + " |")
     sources = sorted({e.source for e in rows})
     noun = "mistake" if len(rows) == 1 else "mistakes"
-    lines.insert(0, f"{len(rows)} {noun} in {len(sources)} of the {len(SOURCES)} source texts.\n")
-    return "\n".join(lines)
+    out = [f"{len(rows)} {noun} in {len(sources)} of the {len(SOURCES)} source texts.", ""]
+    for key in sources:
+        out += [f'**Source <a href="references.html#seed-{key}">{key}</a>: {SOURCES[key]}**', ""]
+        for e in (e for e in rows if e.source == key):
+            evidence = e.evidence()
+            out += [f"- **{_inline(e.where)}** — shown in {chapter_link(e.notebook, notebooks_dir, prefix)}",
+                    f"  - printed: {_inline(e.printed)}",
+                    f"  - correct: {_inline(e.correct)}",
+                    f"  - evidence: {_inline(evidence)}"]
+        out.append("")
+    return "\n".join(out)

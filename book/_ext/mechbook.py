@@ -6,6 +6,11 @@
 * matplotlib's ``to_jshtml()`` links a Font Awesome stylesheet from a CDN for its
   buttons; the link is removed and the icons become local classes that
   ``_static/mechbook.css`` draws with plain Unicode glyphs.
+* The execution cache (``nb_execution_cache_path``) is keyed by the notebooks' text
+  only; a page's outputs also depend on the library. A hash of ``mechlab/``,
+  ``book/_ext/`` and ``environment.txt`` is kept next to the cache: when it changes the
+  cache is dropped and every page is read (executed) again, so no stale output is
+  ever published.
 * After the build, every HTML page and stylesheet of the output is scanned for a
   script, stylesheet, image, font or frame that would be fetched from another host;
   each one is a warning, so ``sphinx-build -W`` fails on it.
@@ -13,7 +18,9 @@
 
 from __future__ import annotations
 
+import hashlib
 import re
+import shutil
 from pathlib import Path
 
 from docutils import nodes
@@ -60,6 +67,35 @@ def remote_fetches(text: str, css: bool = False) -> list[str]:
     return found
 
 
+def inputs_hash(root: Path) -> str:
+    """SHA-256 of what executed pages depend on besides their own text."""
+    root = Path(root)
+    files = sorted((root / "mechlab").rglob("*.py")) + sorted((root / "book" / "_ext").glob("*.py")) \
+        + [root / "environment.txt"]
+    digest = hashlib.sha256()
+    for path in files:
+        if path.is_file() and "__pycache__" not in path.parts:
+            digest.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+    return digest.hexdigest()
+
+
+def _on_config_inited(app, config):
+    cache = Path(config.nb_execution_cache_path)
+    stamp = cache.parent / (cache.name + ".inputs")
+    current = inputs_hash(Path(app.confdir).parent)
+    app.mechbook_stale = not stamp.is_file() or stamp.read_text() != current
+    if app.mechbook_stale:
+        shutil.rmtree(cache, ignore_errors=True)
+        stamp.parent.mkdir(parents=True, exist_ok=True)
+        stamp.write_text(current)
+
+
+def _on_env_get_outdated(app, env, added, changed, removed):
+    if not getattr(app, "mechbook_stale", False):
+        return []
+    return sorted(d for d in env.found_docs if d not in added and d not in changed and d not in removed)
+
+
 def _on_doctree_read(app, doctree):
     for node in doctree.findall(nodes.container):
         if node.get("nb_element") == "cell_code" and node.get("cell_index") is not None:
@@ -87,6 +123,8 @@ def _on_build_finished(app, exception):
 
 
 def setup(app):
+    app.connect("config-inited", _on_config_inited)
+    app.connect("env-get-outdated", _on_env_get_outdated)
     app.connect("doctree-read", _on_doctree_read)
     app.connect("build-finished", _on_build_finished)
     return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}
