@@ -215,8 +215,8 @@ def test_elliptic_trammel(l, beta_deg):
         centre[1] = -centre[1]
     assert np.abs(np.hypot(*(mv - centre).T) - R / 2).max() < 1e-12 * R        # half the radius
     assert np.abs(mv[:, 0] ** 2 + mv[:, 1] ** 2 - l * mv[:, 0] - 2 * centre[1] * mv[:, 1]).max() < 1e-11 * R * R
-    assert ic.label("rod", "frame") == "P14"
-    # P14 also lies on the crank line O-C, at twice the crank's length (the circles touch there)
+    assert ic.label("rod", "frame") == "P14" and len(ic.centres) == 6
+    # P14 lies on Cardan's crank line O-C, at twice the crank's length (the circles touch there)
     assert np.allclose(cd.centre.xy, 2 * C.p[:-1], atol=1e-12 * R)
 
 
@@ -384,8 +384,8 @@ def test_centrode_animation_moves_the_same_artists():
     assert html.count("data:image/png;base64") == 8 and "<script" in html
     ax = draw_centres(instant_centres(EllipticTrammel(1.0, 1.0), [0.7]), 0)
     labels = {t.get_text() for t in ax.texts}
-    assert {"P14", "P24", "P34", "P15", "P45", "P25", "P35"} <= labels   # the 7 finite centres
-    assert any("P12 → ∞" in t for t in labels) and any("P23 → ∞" in t for t in labels)
+    assert {"P14", "P24", "P34"} <= labels                   # the 3 finite centres of Fig. 7.5
+    assert any("P12 → ∞" in t and "P13 → ∞" in t and "P23 → ∞" in t for t in labels)
     plt.close("all")
 
 

@@ -43,7 +43,8 @@ class Structure:
     ``links``: names in seed-002 order (numbers 1..N); ``frame``/``input``/``output``:
     link names; ``known``: centres fixed by the pairs (0-based index pairs);
     ``normals``: common normals of higher pairs; ``poses``: each link's frame as
-    (origin path, x-axis angle path); ``guide``: unit direction of a translating output.
+    (origin path, x-axis angle path); ``guide``: unit direction of a translating output;
+    ``input_rate``: the input link's angular analog dθ/dφ.
     """
 
     links: tuple[str, ...]
@@ -55,6 +56,7 @@ class Structure:
     poses: Mapping[str, tuple[PointPath, AnglePath]]
     scale: float
     guide: np.ndarray | None = None
+    input_rate: float = 1.0     # dθ_input/dφ: 1 for a crank; -1 for the trammel's rod
 
 
 _STRUCTURES: dict[type, Callable] = {}
@@ -132,22 +134,18 @@ def _sine(m, mo) -> Structure:
 
 @structure_of(EllipticTrammel)
 def _trammel(m, mo) -> Structure:
-    O, C, A, B = (mo.points[k] for k in "OCAB")
+    O, A, B = (mo.points[k] for k in "OAB")
     n = len(mo.phi)
     nb = np.array([-np.sin(m.beta), np.cos(m.beta)])
-    # seed 002 Fig. 7.5: 1 = guides (frame), 2 = slider A, 3 = slider B, 4 = rod; 5 = Cardan's crank
+    # seed 002 Fig. 7.5: 1 = guides (frame), 2 = slider A, 3 = slider B, 4 = rod. Cardan's crank
+    # only parametrises the motion (θ_rod = π/2 + β - φ): the rod is the input, at rate -1.
     known = {(0, 1): at_infinity((0.0, 1.0), n), (0, 2): at_infinity(nb, n), (1, 3): finite(A.p),
-             (2, 3): finite(B.p), (0, 4): finite(O.p), (3, 4): finite(C.p)}
+             (2, 3): finite(B.p)}
     theta = m.rod_angle(mo.phi)
     poses = {"frame": (O, _still(n)), "slider A": (A, _still(n)), "slider B": (B, _still(n)),
-             "rod": (A, AnglePath(theta, -np.ones(n), np.zeros(n))), "crank": _crank_pose_trammel(mo)}
-    return Structure(("frame", "slider A", "slider B", "rod", "crank"), "frame", "crank", "slider A", known,
-                     {}, poses, scale=m.fixed_radius, guide=np.array([1.0, 0.0]))
-
-
-def _crank_pose_trammel(mo):
-    n = len(mo.phi)
-    return mo.points["O"], AnglePath(mo.phi.copy(), np.ones(n), np.zeros(n))
+             "rod": (A, AnglePath(theta, -np.ones(n), np.zeros(n)))}
+    return Structure(("frame", "slider A", "slider B", "rod"), "frame", "rod", "slider A", known,
+                     {}, poses, scale=m.fixed_radius, guide=np.array([1.0, 0.0]), input_rate=-1.0)
 
 
 def twists(st: Structure) -> tuple[list[np.ndarray], list[np.ndarray]]:
@@ -205,10 +203,11 @@ class InstantCentres:
 
     # -- analogs read from the centres ---------------------------------------------
     def angular_analog(self, link) -> np.ndarray:
-        """ω_link / ω_input from the centres only (Kennedy's ratio theorem); 0 where the link translates."""
+        """ω_link / ω_crank from the centres only (Kennedy's ratio theorem); 0 where the link translates."""
         k, one, f = self.index(link), self.index(self.structure.input), self.index(self.structure.frame)
+        rate = self.structure.input_rate
         if k == one:
-            return np.ones(len(self.phi))
+            return np.full(len(self.phi), rate)
         if k == f:
             return np.zeros(len(self.phi))
         p1k, p1f, pkf = self.centres[pair(one, k)], self.centres[pair(one, f)], self.centres[pair(k, f)]
@@ -221,7 +220,7 @@ class InstantCentres:
             i = int(np.argmax(bad))
             raise SingularityError(f"{p1k.name} coincides with {pkf.name} at φ = {np.degrees(self.phi[i]):.4g}°: "
                                    f"a dead point, ω_{k + 1} is unbounded")
-        return np.where(pkf.finite, dot(u, v) / np.where(pkf.finite, vv, 1.0), 0.0)
+        return rate * np.where(pkf.finite, dot(u, v) / np.where(pkf.finite, vv, 1.0), 0.0)
 
     def velocity_analog(self, link, point: np.ndarray) -> np.ndarray:
         """Velocity analog (n, 2) of a point (n, 2) carried by ``link``, from the centres only."""
@@ -240,7 +239,7 @@ class InstantCentres:
             p1k, p1f = self.centres[pair(one, k)], self.centres[pair(one, f)]
             if np.any(trans & ~p1k.finite):
                 raise SingularityError(f"{p1k.name} and {pkf.name} both at infinity: the crank would not turn")
-            base = perp(np.where(p1k.finite[:, None], p1k.h[:, :2], 0.0) - p1f.xy)
+            base = self.structure.input_rate * perp(np.where(p1k.finite[:, None], p1k.h[:, :2], 0.0) - p1f.xy)
             out = np.where(trans[:, None], base, out)
         return out
 
