@@ -166,3 +166,20 @@ def test_kernel_startup_shows_widgets_statically(tmp_path, monkeypatch):
     alone = [o for o in nb.cells[1].outputs if o.get("output_type") == "execute_result"][0]["data"]["text/html"]
     assert "<img" not in alone and "make lab" in alone
     assert "inline" in nb.cells[2].outputs[0]["text"]  # %matplotlib widget fell back to inline
+
+
+def test_inputs_hash_follows_the_library(tmp_path):
+    (tmp_path / "mechlab" / "sub").mkdir(parents=True)
+    (tmp_path / "book" / "_ext").mkdir(parents=True)
+    (tmp_path / "mechlab" / "sub" / "m.py").write_text("x = 1\n")
+    (tmp_path / "environment.txt").write_text("numpy==2\n")
+    first = mechbook.inputs_hash(tmp_path)
+    assert mechbook.inputs_hash(tmp_path) == first
+    (tmp_path / "mechlab" / "sub" / "__pycache__").mkdir()
+    (tmp_path / "mechlab" / "sub" / "__pycache__" / "m.py").write_text("compiled")
+    assert mechbook.inputs_hash(tmp_path) == first  # byte-code does not count
+    (tmp_path / "mechlab" / "sub" / "m.py").write_text("x = 2\n")
+    assert mechbook.inputs_hash(tmp_path) != first
+    second = mechbook.inputs_hash(tmp_path)
+    (tmp_path / "book" / "_ext" / "kernel_startup.py").write_text("# changed\n")
+    assert mechbook.inputs_hash(tmp_path) != second
