@@ -1,0 +1,151 @@
+"""Lambda mechanism of Chebyshev and its circle/straight-line synthesis (seed 001, chapter 1)."""
+
+import numpy as np
+import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+
+from mechlab.chebyshev import (LambdaMechanism, SynthesisError, band_touches, circle_guiding, classic_lambda,
+                               existence_map, fifth_order_line, rotation_boundary, straight_guiding,
+                               thesis_iteration, transmission_lines)
+from mechlab.errors import DimensionError, MechanismError, RotationError
+
+DEG = np.pi / 180
+
+
+@st.composite
+def lambdas(draw):
+    a = draw(st.floats(0.3, 1.7))
+    r = draw(st.floats(0.05, 0.95)) * min(a, 2 - a)
+    assume(min(a, 2 - a) - r > 0.15)  # stay clear of the dead points (finite differences)
+    delta = draw(st.floats(60.0, 180.0)) * DEG
+    return LambdaMechanism(r, a, delta, draw(st.sampled_from([1, -1])))
+
+
+@settings(max_examples=60, deadline=None)
+@given(lambdas())
+def test_lengths_closed_form_and_analogs(m):
+    phi = np.linspace(0, 2 * np.pi, 4001)
+    mo = m.motion(phi)
+    P = {k: v.p for k, v in mo.points.items()}
+    for u, v in [("A", "B"), ("B", "C"), ("B", "D")]:
+        assert np.allclose(np.hypot(*(P[u] - P[v]).T), 1.0, atol=1e-12)
+    # ∠ABD = δ and the closed form (*) of the module docstring
+    ba, bd = P["A"] - P["B"], P["D"] - P["B"]
+    assert np.allclose(np.arccos(np.clip((ba * bd).sum(1), -1, 1)), m.delta, atol=1e-6)
+    assert np.allclose(P["D"], m.coupler_point(phi), atol=1e-12)
+    h = phi[1] - phi[0]
+    D = mo.points["D"]
+    s1, s2 = np.abs(D.d).max(), np.abs(D.dd).max()
+    assert np.allclose((D.p[2:] - D.p[:-2]) / (2 * h), D.d[1:-1], atol=1e-4 * s1)
+    assert np.allclose((D.d[2:] - D.d[:-2]) / (2 * h), D.dd[1:-1], atol=1e-4 * s2 + 1e-3 * s1)
+
+
+@settings(max_examples=60, deadline=None)
+@given(lambdas())
+def test_symmetry_axis_makes_pi_minus_half_delta_with_CO(m):
+    t = np.linspace(0, np.pi, 301)
+    Dp, Dm = m.coupler_point(np.pi + t), m.coupler_point(np.pi - t)
+    e = m.axis
+    w = Dp - m.C
+    mirror = m.C + 2 * (w @ e)[:, None] * e - w
+    assert np.allclose(mirror, Dm, atol=1e-12)
+    co = -m.C / np.linalg.norm(m.C)
+    assert np.isclose(np.arccos(co @ e), np.pi - m.delta / 2, atol=1e-12)
+
+
+def test_rotation_conditions_and_bad_input():
+    with pytest.raises(RotationError, match="r = 0.9 ≥ a = 0.8"):
+        LambdaMechanism(0.9, 0.8, np.pi)
+    with pytest.raises(RotationError, match="r \\+ a = 2.1 ≥ 2"):
+        LambdaMechanism(0.6, 1.5, np.pi)
+    with pytest.raises(DimensionError):
+        LambdaMechanism(-0.1, 0.8, np.pi)
+    with pytest.raises(MechanismError, match="δ"):
+        LambdaMechanism(0.3, 0.8, 4.0)
+    r, a = rotation_boundary()
+    assert np.allclose(np.minimum(a, 2 - a), r)
+
+
+def test_transmission_angle_lines():
+    lines = transmission_lines()
+    for key, mu in (("mu_min", 30 * DEG), ("mu_max", 150 * DEG)):
+        r, a = lines[key]
+        i = len(r) // 3
+        m = LambdaMechanism(r[i], a[i], np.pi) if r[i] < a[i] and r[i] + a[i] < 2 else None
+        if m is not None:
+            got = m.motion(np.linspace(0, 2 * np.pi, 20001)).transmission
+            ext = got.min() if key == "mu_min" else got.max()
+            assert abs(ext - mu) < 1e-6
+
+
+def test_classic_lambda_is_the_straight_line_synthesis_for_180_degrees():
+    s = straight_guiding(np.pi, 0.8, np.pi)
+    assert abs(s.r - 0.4) < 1e-12
+    m = classic_lambda()
+    assert (m.r, m.a) == (0.4, 0.8)
+    # equal ripple found on a dense sample: x(0) = x(±90°) = Y − E, x(±t1) = Y + E
+    t = np.linspace(-np.pi / 2, np.pi / 2, 20001)
+    dev = s.deviation(np.pi + t)
+    assert np.max(np.abs(dev)) <= s.E * (1 + 1e-9)
+    touches = band_touches(dev, s.E, rtol=1e-4)
+    assert len(touches) == 5 and np.all(np.diff(np.sign(dev[touches])) != 0)
+    assert 0.0019 < s.E < 0.0020  # half the band: 0.2 % of l over half a turn
+
+
+@pytest.mark.parametrize("delta,a,dwell", [(150, 0.9, 120), (120, 0.9, 180), (180, 0.5, 240), (150, 0.5, 60)])
+def test_circle_guiding_equal_ripple(delta, a, dwell):
+    g = circle_guiding(delta * DEG, a, dwell * DEG)
+    assert 0 < g.r < min(a, 2 - a)
+    alpha = g.alpha
+    t = np.linspace(-alpha, alpha, 40001)
+    dev = g.deviation(np.pi + t)
+    assert np.max(np.abs(dev)) <= g.E * (1 + 1e-6)
+    touches = band_touches(dev, g.E, rtol=1e-5)
+    # t = 0, ±t3, ±t2, ±α: seven alternating touches over the whole dwell, four on each half
+    assert len(touches) == 7
+    assert np.all(np.diff(np.sign(dev[touches])) != 0)
+    assert np.allclose(np.sort(np.abs(t[touches]))[::2], [0, g.t3, g.t2, alpha], atol=2 * (t[1] - t[0]))
+    # outside the dwell D leaves the band
+    out = g.deviation(np.pi + np.array([alpha * 1.05, -alpha * 1.05]))
+    assert np.all(np.abs(out) > g.E)
+    assert np.isclose(g.R, 0.5 * (g.R0 + g.R1)) and np.isclose(g.E, 0.5 * abs(g.R0 - g.R1))
+
+
+def test_error_grows_with_dwell_and_thesis_iteration_agrees():
+    es = [circle_guiding(150 * DEG, 0.9, d * DEG).E for d in (60, 120, 180, 240)]
+    assert np.all(np.diff(es) > 0)
+    g = circle_guiding(150 * DEG, 0.9, 120 * DEG)
+    r, iterations, history = thesis_iteration(150 * DEG, 0.9, 120 * DEG)
+    assert abs(r - g.r) < 1e-6 and iterations < 20 and history[0] == 0.9 / 4
+
+
+def test_fifth_order_contact():
+    r5, a5, c5 = fifth_order_line(150 * DEG, 50)
+    i = len(r5) // 2
+    m = LambdaMechanism(r5[i], a5[i], 150 * DEG)
+    Q = m.C + c5[i] * m.axis
+    t = np.array([0.0, 0.05, 0.1])
+    rho = m.radius_about(Q, np.pi + t)[0]
+    # six-point contact: ρ(t) − ρ(0) = O(t⁶)
+    ratio = (rho[2] - rho[0]) / (rho[1] - rho[0])
+    assert 40 < ratio < 90  # 2⁶ = 64
+
+
+def test_infeasible_requests_raise_named_errors():
+    with pytest.raises(SynthesisError, match="no circle-guiding"):
+        circle_guiding(150 * DEG, 1.5, 120 * DEG)
+    with pytest.raises(SynthesisError, match="no straight-line"):
+        straight_guiding(np.pi, 1.0, np.pi)
+    with pytest.raises(SynthesisError, match="a = 2.5 ≥ 2"):
+        circle_guiding(np.pi, 2.5, 1.0)
+    with pytest.raises(MechanismError, match="dwell"):
+        circle_guiding(np.pi, 0.8, 7.0)
+
+
+def test_existence_map_curves():
+    em = existence_map(150 * DEG, dwells=(120 * DEG,), n=9)
+    r, a = em[120]
+    assert len(r) >= 4 and np.all(r < np.minimum(a, 2 - a))
+    r5, a5 = em["fifth"]
+    assert np.all((r5 > 0) & (r5 < a5) & (r5 + a5 < 2))
