@@ -172,6 +172,10 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         page.screenshot(path=str(SHOTS / f"lab__{path.stem}.png"))
         assert not page_errors, f"{path.name}: page errors: {page_errors}"
     finally:
+        try:  # free the kernel's memory and CPU for the next notebook
+            page.evaluate("() => window.jupyterapp.shell.currentWidget.sessionContext.shutdown()")
+        except Exception:
+            pass
         page.close()
     # the copy was used, never the tracked notebook
     assert json.loads(path.read_text())["cells"][0].get("outputs", []) == []
