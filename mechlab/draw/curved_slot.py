@@ -94,7 +94,7 @@ class SixBarDrawing(LinkageDrawing):
     """Links 2 and 4 are triangles (ternary links); the rest as in a four-bar."""
 
 
-def animate_equivalence(mechanism, n: int = 36, interval: int = 90, figsize=(9, 3.2), dpi: int = 60) -> FuncAnimation:
+def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9, 3.2), dpi: int = 55) -> FuncAnimation:
     """Three panels moving together: the linkage, its curved-slot twin (seed 000 §1, Fig. 1-4),
     and the pin's relative path in the output link's frame with the pin on it."""
     twin = equivalent_slot(mechanism)

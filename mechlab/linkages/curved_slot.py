@@ -67,7 +67,6 @@ from functools import cached_property
 from typing import Callable
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, SingularityError
@@ -183,6 +182,8 @@ class SampledSlot(SlotCurve):
             i = int(np.argmin(seg))
             raise DimensionError(f"slot samples {i} and {i + 1} coincide: the chord-length parameter needs distinct points")
         t = np.concatenate([[0.0], np.cumsum(seg)])
+        from scipy.interpolate import CubicSpline  # imported here: scipy.interpolate is slow to import
+
         spline = CubicSpline(t, pts, bc_type="periodic" if self.closed else "not-a-knot")
         object.__setattr__(self, "samples", pts)
         object.__setattr__(self, "t1", float(t[-1]))

@@ -44,7 +44,7 @@ class EquivalenceExplorer:
         self.angle = W.FloatSlider(value=30.0, min=0.0, max=360.0, step=2.0, description="crank φ (deg)",
                                    style={"description_width": "110px"}, layout=W.Layout(width="360px"))
         self.status = W.HTML()
-        self.fig = matplotlib.figure.Figure(figsize=(10, 6), dpi=72)
+        self.fig = matplotlib.figure.Figure(figsize=(10, 6), dpi=60)
         grid = self.fig.add_gridspec(2, 3, height_ratios=[1.2, 1])
         self.ax_link, self.ax_twin, self.ax_rel = (self.fig.add_subplot(grid[0, j]) for j in range(3))
         self.ax_d1 = self.fig.add_subplot(grid[1, 0:2])
