@@ -131,6 +131,8 @@ class PlanarGeneva(Mechanism):
     output = "angle"
 
     def __post_init__(self):
+        if self.kappa not in (-1, 1):
+            raise TypeError("PlanarGeneva is the common base: use ExternalGeneva or InternalGeneva")
         object.__setattr__(self, "z", check_slots(self.z))
         object.__setattr__(self, "centre_distance", check_length("centre_distance", self.centre_distance))
         r = 0.15 * self.crank_radius if self.roller_radius is None else self.roller_radius
@@ -285,6 +287,7 @@ class ExternalGeneva(PlanarGeneva):
 
     @property
     def outer_radius(self) -> float:
+        """sqrt(C² cos²(π/z) + r²): the slot corners touch the roller at entry."""
         return float(np.hypot(self.entry_radius, self.roller_radius))
 
     @property
@@ -318,6 +321,7 @@ class InternalGeneva(PlanarGeneva):
 
     @property
     def outer_radius(self) -> float:
+        """The ring's outer rim, drawn 1.5 r beyond the slot bottoms (a drawing choice, not a design rule)."""
         return self.slot_bottom + 2.5 * self.roller_radius
 
     @property

@@ -455,4 +455,7 @@ def test_small_helpers():
     d = g.pin_direction(np.linspace(-3, 3, 7))
     assert np.allclose(np.linalg.norm(d, axis=1), 1.0) and np.allclose(d[:, 0], np.cos(g.cone_angle))
     assert set(g.design()) >= {"α0 (deg)", "ρ0", "r_H", "min slot length"}
+    from mechlab.geneva import PlanarGeneva
+    with pytest.raises(TypeError, match="ExternalGeneva or InternalGeneva"):
+        PlanarGeneva(4, 1.0)
     assert np.array_equal(g.engaged([np.pi, 0.0]), [True, False])
