@@ -427,3 +427,32 @@ def test_exercises_and_errata():
         assert e.source == "002" and e.notebook == "04_instant_centres.ipynb"
         text = e.evidence()
         assert any(ch.isdigit() for ch in text)
+
+
+def test_point_velocities_from_the_centres():
+    """A point carried by the coupler (or the rod): its velocity analog read from the centres
+    equals the loop-closure one, here the midpoint of the joints, (A' + B')/2."""
+    for m, link in ((FourBar(1.0, 3.0, 2.5, 3.5, -1), "coupler"), (SliderCrank(1.0, 3.0, 0.4), "rod")):
+        phi = m.turn(181)
+        ic = instant_centres(m, phi)
+        A, B = ic.motion.points["A"], ic.motion.points["B"]
+        v = ic.velocity_analog(link, (A.p + B.p) / 2)
+        assert np.abs(v - (A.d + B.d) / 2).max() < 1e-12 * 4
+        assert np.allclose(ic.velocity_analog("frame", A.p), 0.0)
+        assert np.allclose(ic.velocity_analog("crank", A.p), A.d, atol=1e-12)
+
+
+def test_pole_at_infinity_in_the_seed_formulas_and_the_change_point_free_cycle():
+    from mechlab.centres import pole_from_two_points
+
+    z = np.array([0.0 + 0j, 1.0 + 0j])
+    with pytest.raises(CentreAtInfinity, match="translates"):   # equal velocities: a translation
+        pole_from_two_points(z, z + 1, np.array([1j, 1j]), np.array([1j, 1j]), phi=np.zeros(2))
+    m = Antiparallelogram(1.0, 2.0)
+    phi = m.cycle(181)
+    assert np.isclose(phi[-1] - phi[0], 2 * np.pi)
+    for cp in m.change_points():
+        assert np.abs(np.angle(np.exp(1j * (phi - cp)))).min() > 0.3 * (phi[1] - phi[0])
+    instant_centres(m, phi)   # no change point sampled, so Kennedy's construction succeeds
+    with pytest.raises(MechanismError, match="none given"):
+        kennedy(3, {})

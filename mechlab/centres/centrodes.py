@@ -21,7 +21,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import MechanismError
 from ..geometry import AnglePath, PointPath, as_angles, perp, unit
 from .homogeneous import Centre, CentreAtInfinity, in_frame
 from .instant import InstantCentres, instant_centres
@@ -118,11 +117,8 @@ def rolling_speeds(mechanism, link: str, reference: str = "frame", phi=None):
     phi = mechanism.cycle() if phi is None else as_angles(phi)
     ic = instant_centres(mechanism, phi, method="velocity")
     poses = ic.structure.poses
-    try:
-        o_r, th_r = poses[ic.links[ic.index(reference)]]
-        o_l, th_l = poses[ic.links[ic.index(link)]]
-    except MechanismError:
-        raise
+    o_r, th_r = poses[ic.links[ic.index(reference)]]
+    o_l, th_l = poses[ic.links[ic.index(link)]]
     l = ic.structure.scale
     u = unit(th_l.theta)
     B = PointPath(o_l.p + l * u, o_l.d + l * th_l.d[:, None] * perp(u),

@@ -83,10 +83,6 @@ class Centre:
     def __getitem__(self, idx) -> "Centre":
         return Centre(np.atleast_2d(self.h[idx]), self.name)
 
-    def distance_to(self, points: np.ndarray) -> np.ndarray:
-        """Distances to ``points`` (n, 2); ``np.inf`` is never returned: raises at infinity."""
-        return np.hypot(*(self.xy - points).T)
-
 
 def normalise(h: np.ndarray, scale: float = 1.0, name: str = "P", phi=None) -> Centre:
     """Homogeneous rows → :class:`Centre`: divide by w, or mark as infinite when |w| is tiny.

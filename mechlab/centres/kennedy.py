@@ -81,6 +81,8 @@ def kennedy(n_links: int, known: Mapping[Pair, Centre], normals: Mapping[Pair, n
     names = list(names) if names is not None else [str(k + 1) for k in range(n_links)]
     label = lambda a, b: "P" + "".join(sorted((names[a], names[b])))  # noqa: E731
     centres = {pair(*k): v.h.copy() for k, v in known.items()}
+    if not centres:
+        raise MechanismError("Kennedy's theorem needs the centres of the pairs to start from; none given")
     n = len(next(iter(centres.values())))
     valid = {k: np.ones(n, dtype=bool) for k in centres}
     steps = []
