@@ -10,7 +10,9 @@
   only; a page's outputs also depend on the library. A hash of ``mechlab/``,
   ``book/_ext/`` and ``environment.txt`` is kept next to the cache: when it changes the
   cache is dropped and every page is read (executed) again, so no stale output is
-  ever published.
+  ever published. A build that ended with warnings leaves a marker, and the next build
+  reads every page again, so its warnings (a failing notebook) are reported again
+  instead of an unchanged page passing silently.
 * After the build, every HTML page and stylesheet of the output is scanned for a
   script, stylesheet, image, font or frame that would be fetched from another host;
   each one is a warning, so ``sphinx-build -W`` fails on it.
@@ -84,14 +86,22 @@ def _on_config_inited(app, config):
     stamp = cache.parent / (cache.name + ".inputs")
     current = inputs_hash(Path(app.confdir).parent)
     app.mechbook_stale = not stamp.is_file() or stamp.read_text() != current
+    marker = _warned_marker(config)
+    app.mechbook_reread = marker.is_file()
+    marker.unlink(missing_ok=True)
     if app.mechbook_stale:
         shutil.rmtree(cache, ignore_errors=True)
         stamp.parent.mkdir(parents=True, exist_ok=True)
         stamp.write_text(current)
 
 
+def _warned_marker(config) -> Path:
+    cache = Path(config.nb_execution_cache_path)
+    return cache.parent / ".mechbook-warned"
+
+
 def _on_env_get_outdated(app, env, added, changed, removed):
-    if not getattr(app, "mechbook_stale", False):
+    if not (getattr(app, "mechbook_stale", False) or getattr(app, "mechbook_reread", False)):
         return []
     return sorted(d for d in env.found_docs if d not in added and d not in changed and d not in removed)
 
@@ -110,8 +120,17 @@ def _on_doctree_read(app, doctree):
 
 
 def _on_build_finished(app, exception):
-    if exception is not None or app.builder.format != "html":
-        return
+    try:
+        if exception is None and app.builder.format == "html":
+            _check_offline(app)
+    finally:
+        if exception is not None or getattr(app, "_warncount", 0):
+            marker = _warned_marker(app.config)
+            marker.parent.mkdir(parents=True, exist_ok=True)
+            marker.write_text("the last build had warnings: read every page again\n")
+
+
+def _check_offline(app):
     out = Path(app.outdir)
     for path in sorted(out.rglob("*")):
         if path.suffix not in (".html", ".css") or "_sources" in path.parts:
