@@ -565,7 +565,7 @@ class DwellSlotMechanism(Mechanism):
         phi = np.linspace(self.phi1, self.phi2, n)
         return self.law._arc_point(self.law.S(phi)[0])
 
-    def max_pressure_angle(self, n: int = 3601) -> tuple[float, float]:
+    def max_pressure_angle(self, n: int = 721) -> tuple[float, float]:
         """(θ_max, φ at θ_max) over the whole turn, from the solver's motion: a grid over
         [0, π] (θ(-φ) = θ(φ): the pin is at the same slot point), then a bounded refinement."""
         from scipy.optimize import minimize_scalar
@@ -603,7 +603,7 @@ def _jerk_jump(law: DwellLaw) -> float:
     return float(np.abs(law(x + e).ddd - law(x - e).ddd).max())
 
 
-def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: int = 1441) -> list[dict]:
+def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: int = 721) -> list[dict]:
     """One row per transition law: ψ_B, peak |ψ'|, |ψ''| (through the slot, whole turn),
     peak |ψ'''| and its largest jump at 0, φ1, φ2, π (from the law), the largest pressure
     angle and where it occurs, the largest |κ| of the slot for φ ∈ [1°, 179°] and |κ| at its
@@ -655,7 +655,7 @@ def where_kind(law: DwellLaw, phi: float, tol: float = np.radians(0.5)) -> str:
     return "transition"
 
 
-def best_placement(lam, length, transition="cubic", pivot_distance=1.0, n_grid: int = 25):
+def best_placement(lam, length, transition="cubic", pivot_distance=1.0, n_grid: int = 19):
     """The dwell [φ1, φ1 + length] that minimises the largest pressure angle (law-based,
     closed form): (θ_max, φ1). Grid over φ1, then a bounded refinement."""
     from scipy.optimize import minimize_scalar
@@ -690,7 +690,7 @@ def dwell_limit(lam, theta_max, transition="cubic", pivot_distance=1.0) -> dict:
             lo = mid
         else:
             hi = mid
-        if hi - lo < 1e-4:
+        if hi - lo < 2e-4:
             break
     th, p1 = best_placement(lam, lo, transition, pivot_distance)
     law = DwellLaw(lam, p1, p1 + lo, transition, pivot_distance)

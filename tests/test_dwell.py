@@ -270,7 +270,6 @@ def test_exercises_have_independent_answers():
     assert check("05.3", 0.75, quiet=True) and not check("05.3", 0.6, quiet=True)
 
 
-@pytest.mark.filterwarnings("ignore:Animation was deleted without rendering")
 def test_drawing_moves_slot_with_link():
     import matplotlib.pyplot as plt
 
@@ -291,8 +290,9 @@ def test_drawing_moves_slot_with_link():
         assert (d._label.get_text() == "dwell") == bool(m.law.in_dwell(d.motion.phi[i:i + 1])[0])
     assert len(ax.get_children()) == n_artists
     plt.close(fig)
-    anim = animate(m, n=6)
-    assert isinstance(anim.drawing, DwellDrawing)
+    fig, ax = plt.subplots(figsize=(2, 2), dpi=40)
+    anim = animate(m, n=4, ax=ax)
+    assert isinstance(anim.drawing, DwellDrawing) and "<script" in anim.to_jshtml()
 
 
 def test_widget_shows_errors_and_recovers():

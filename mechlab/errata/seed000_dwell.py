@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..dwell import DwellLaw, base_law, curved_slot_dwell, dwell_limit
+from ..dwell import DwellLaw, base_law, curved_slot_dwell
 from . import Erratum
 
 NB = "05_dwell_curved_slot.ipynb"
@@ -98,11 +98,15 @@ def _limit_120():
     m = curved_slot_dwell(LAM, P1, P2)
     th, where = m.max_pressure_angle()
     far = np.arctan(2 * (1 + LAM) / P1)
-    res = dwell_limit(LAM, np.radians(60.0), "cubic")
-    assert abs(where) < 1e-5 and abs(th - far) < 1e-7 and res["max_dwell_deg"] < 60.0
+    assert abs(where) < 1e-5 and abs(th - far) < 1e-7
+    # θ ≤ 60° at both slot ends needs φ1 ≥ 2(1 + λ)/tan 60° and π - φ2 ≥ 2(1 - λ)/tan 60°
+    t60 = np.tan(np.radians(60.0))
+    q1, q2 = 2 * (1 + LAM) / t60, np.pi - 2 * (1 - LAM) / t60
+    edge = curved_slot_dwell(LAM, q1, q2)
+    assert abs(edge.max_pressure_angle()[0] - np.radians(60.0)) < 1e-6 and np.degrees(q2 - q1) < 60.0
     return (f"λ = 0.5, [60°, 150°] (a 90° dwell): the worst pressure angle is {np.degrees(th):.2f}° at the slot's "
-            f"far end φ = 0, tan θ = 2(1 + λ)/φ1, whatever the dwell length; keeping θ ≤ 60° everywhere allows at "
-            f"most a {res['max_dwell_deg']:.1f}° dwell with the cubic (φ1 = {np.degrees(res['phi1']):.1f}°)")
+            f"far end φ = 0, tan θ = 2(1 + λ)/φ1, whatever the dwell length; keeping θ ≤ 60° at both ends allows "
+            f"at most [{np.degrees(q1):.1f}°, {np.degrees(q2):.1f}°], a {np.degrees(q2 - q1):.1f}° dwell, with the cubic")
 
 
 ERRATA = [
