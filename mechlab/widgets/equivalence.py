@@ -43,6 +43,8 @@ class EquivalenceExplorer:
                                                        description="assembly")
         self.angle = W.FloatSlider(value=30.0, min=0.0, max=360.0, step=2.0, description="crank φ (deg)",
                                    style={"description_width": "110px"}, layout=W.Layout(width="360px"))
+        self.play = W.Play(value=30, min=0, max=358, step=6, interval=120, description="play")
+        W.jslink((self.play, "value"), (self.angle, "value"))
         self.status = W.HTML()
         self.fig = matplotlib.figure.Figure(figsize=(10, 6), dpi=60)
         grid = self.fig.add_gridspec(2, 3, height_ratios=[1.2, 1])
@@ -53,7 +55,7 @@ class EquivalenceExplorer:
         for w in self.sliders.values():
             w.observe(lambda ch: self.rebuild(), names="value")
         self.angle.observe(lambda ch: self._frame(), names="value")
-        self.widget = W.VBox([W.HBox([W.VBox(list(self.sliders.values())), W.VBox([self.angle, self.status])]),
+        self.widget = W.VBox([W.HBox([W.VBox(list(self.sliders.values())), W.VBox([self.angle, self.play, self.status])]),
                               self.output])
         self.rebuild()
 
