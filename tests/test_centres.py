@@ -368,7 +368,8 @@ def test_centrode_animation_moves_the_same_artists():
     ov, dr = anim.overlay, anim.drawing
     before = [id(a) for a in ov.artists + dr.artists]
     texts = set()
-    for i in range(8):
+    assert len(ov.cd.phi) == 8 * anim.step and anim.step == 45
+    for i in range(0, 8 * anim.step, anim.step):
         ov.set_frame(i)
         dr.set_frame(i)
         texts.add(ov.arrow_text.get_text())

@@ -143,20 +143,20 @@ def draw_centres(ic: InstantCentres, i: int = 0, ax=None, lines: bool = True):
 
 
 def animate_centrodes(mechanism, link: str, reference: str = "frame", n: int = 36, interval: int = 80,
-                      clip: float | None = None, figsize=(4.2, 3.8), dpi: int = 50) -> FuncAnimation:
+                      clip: float | None = None, figsize=(4.4, 4.0), dpi: int = 65) -> FuncAnimation:
     """An animation of the linkage with the two centrodes of ``link`` relative to
-    ``reference`` rolling on each other (n frames over the cycle); play it with
-    ``HTML(anim.to_jshtml())``."""
+    ``reference`` rolling on each other (n frames over the cycle, the curves sampled
+    about 360 times); play it with ``HTML(anim.to_jshtml())``."""
     fig, ax = plt.subplots(figsize=figsize, dpi=dpi)
-    phi = mechanism.cycle(n + 1)[:-1] if mechanism.can_turn else mechanism.cycle(n)
+    k = max(1, 360 // n)                        # the curves are sampled k times finer than the frames
+    phi = mechanism.cycle(n * k + 1)[:-1] if mechanism.can_turn else mechanism.cycle(n * k)
     cd = centrodes(mechanism, link, reference, phi)
-    drawing = drawing_class(mechanism)(ax, mechanism, n=n)
+    drawing = drawing_class(mechanism)(ax, mechanism, n=len(phi))
     drawing.set_motion(mechanism, cd.centres.motion)
     overlay = CentrodeOverlay(ax, cd, clip)
     drawing.autoscale()
     x0, x1, y0, y1 = drawing.bounds()
-    fin = cd.fixed.masked()
-    if cd.reference == "frame" and fin.count():
+    if cd.reference == "frame" and cd.fixed.finite.any():
         near = np.ma.compress_rows(overlay._masked(cd.fixed, np.zeros(2)))
         if len(near):
             x0, x1 = min(x0, near[:, 0].min()), max(x1, near[:, 0].max())
@@ -166,9 +166,9 @@ def animate_centrodes(mechanism, link: str, reference: str = "frame", n: int = 3
     ax.legend(loc="upper right", fontsize=7)
 
     def frame(i):
-        return drawing.set_frame(i) + overlay.set_frame(i)
+        return drawing.set_frame(i * k) + overlay.set_frame(i * k)
 
     anim = FuncAnimation(fig, frame, frames=n, interval=interval, blit=False)
-    anim.drawing, anim.overlay = drawing, overlay
+    anim.drawing, anim.overlay, anim.step = drawing, overlay, k
     plt.close(fig)
     return anim
