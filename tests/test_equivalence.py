@@ -113,3 +113,91 @@ def test_unsupported_mechanisms_raise_clear_errors():
         equivalent_slot(SlottedLink(1.0, 2.0))
     with pytest.raises(DimensionError, match="assembly symmetry is stated for FourBar and SliderCrank"):
         other_assembly(SlottedLink(1.0, 2.0))
+
+
+# -- drawings, animation, explorer, exercises and errata of chapters 01-03 -------------------------
+import matplotlib.pyplot as plt  # noqa: E402
+
+from mechlab.draw import drawing_class  # noqa: E402
+from mechlab.draw.curved_slot import animate_equivalence, plot_against_base  # noqa: E402
+from mechlab.linkages.curved_slot import CircleSlot, CurvedSlotLink, TranslatingCurvedSlot  # noqa: E402
+from mechlab.sixbar import example  # noqa: E402
+
+
+def _slot_distance_to_pin(drawing, i):
+    slot = np.stack(drawing._slot_line.get_data(), -1)
+    pin = drawing.motion.points["A"].p[i]
+    return np.min(np.hypot(*(slot - pin).T))
+
+
+@pytest.mark.parametrize("mech", [CurvedSlotLink(0.4, 1.0, CircleSlot((1.0, 0.0), 0.9), start=1.0),
+                                  TranslatingCurvedSlot(1.0, CircleSlot((0.0, 0.3), 2.0), start=np.pi),
+                                  equivalent_slot(FourBar(0.3, 0.8, 1.0, 1.0, -1)),
+                                  equivalent_slot(SliderCrank(1.0, 3.0, 0.5)), example()],
+                         ids=["curved", "translating", "twin-fourbar", "twin-slider", "sixbar"])
+def test_drawings_move_the_slot_with_the_link(mech):
+    fig, ax = plt.subplots()
+    d = drawing_class(mech)(ax, mech, trace="A", n=61)
+    d.autoscale()
+    ids = [id(a) for a in d.artists]
+    for i in range(0, 61, 10):
+        d.set_frame(i)
+        if hasattr(d, "_slot_line"):
+            # the slot drawn at frame i passes through the pin (to the polyline's resolution)
+            assert _slot_distance_to_pin(d, i) < 0.02
+    assert [id(a) for a in d.artists] == ids
+    plt.close(fig)
+
+
+def test_animate_equivalence_and_plot_against_base():
+    anim = animate_equivalence(FourBar(0.3, 0.8, 1.0, 1.0), n=5)
+    html = anim.to_jshtml()
+    assert "data:image/png;base64" in html
+    left, right = anim.drawings
+    assert np.allclose(left.motion.points["A"].p, right.motion.points["A"].p, atol=1e-14)
+    axes = plot_against_base(SliderCrank(1.0, 3.0, 0.5))
+    base_line = axes[1].get_lines()[1].get_ydata()
+    phi = SliderCrank(1.0, 3.0, 0.5).cycle(361)
+    assert np.allclose(base_line, -np.sin(phi))     # x_K' = -l_OA sin φ
+    plt.close("all")
+
+
+def test_equivalence_explorer_reports_errors_and_recovers():
+    from mechlab.widgets.equivalence import fourbar_equivalence, slider_crank_equivalence
+    ex = fourbar_equivalence()
+    assert ex.error < 1e-9 and ex.limit.holds() and "twin error" in ex.status.value
+    ex.sliders["crank"].value = 1.5            # no longer Grashof for the crank
+    assert ex.mechanism is None and "crank cannot turn fully" in ex.message
+    ex.sliders["crank"].value = 0.3
+    ex.sliders["assembly"].value = -1
+    assert ex.message == "" and ex.mechanism.assembly == -1 and ex.error < 1e-9
+    ex.angle.value = 200.0
+    i = int(np.argmin(np.abs(np.degrees(ex.motion.phi) - 200.0)))
+    assert np.allclose(ex.rel_pin.get_data(), [[ex.rel[i, 0]], [ex.rel[i, 1]]])
+    sc = slider_crank_equivalence()
+    assert sc.error < 1e-9 and "s′" in sc.status.value
+
+
+def test_exercise_answers_are_the_known_values():
+    from mechlab.exercises import check, solution
+    assert np.allclose(solution("01.1"), [0.8, 1.0])
+    assert np.isclose(solution("01.2"), 0.3 / (0.3 - 1))
+    assert np.allclose(solution("01.3"), [1.04 - 0.25, 1.04 + 0.25], rtol=1e-6)
+    assert np.isclose(solution("02.1"), 0.4 / 0.6)
+    assert np.isclose(solution("02.3"), 2 * 0.3 * (0.3 + np.cos(np.radians(40))) / (1.09 + 0.6 * np.cos(np.radians(40))) - 0.35)
+    fb = FourBar(1.0, 3.0, 3.0, 4.0, 1)
+    assert np.isclose(solution("03.1"), fb.motion(np.radians(50.0)).dpsi[0])        # mirror relation
+    both = FourBar(1.0, 3.0, 3.0, 4.0, 1).motion(np.radians(70.0)).ddpsi[0] + \
+        FourBar(1.0, 3.0, 3.0, 4.0, -1).motion(np.radians(70.0)).ddpsi[0]
+    assert np.isclose(solution("03.2"), both / 2)
+    assert np.isclose(solution("03.3"), 2 * np.cos(np.radians(30.0)))
+    assert check("02.1", 2 / 3, quiet=True) and not check("02.1", 0.4 / 1.4, quiet=True)
+
+
+def test_seed000_errata_recompute_their_evidence():
+    from mechlab.errata import seed000_equivalence
+    assert len(seed000_equivalence.ERRATA) == 3
+    for e in seed000_equivalence.ERRATA:
+        text = e.check()
+        assert e.source == "000" and e.notebook == "02_base_mechanism.ipynb"
+        assert ("φ = 60°" in text or "λ = 0.3" in text) and len(text.splitlines()) == 1
