@@ -723,8 +723,8 @@ def two_branch_slot(lam, phi2, pivot_distance=1.0) -> dict:
 
     after = float(link().motion(np.array([0.5 * phi2])).dpsi[0])   # the link dwells on (0, φ2)
     before = float(2 * base_law(lam, 0.0).d[0] - after)
-    # at E = (r + d, 0) the arc's tangent is vertical, the radius B→E horizontal
-    tangent, radius = np.array([0.0, 1.0]), np.array([r + d, 0.0])
-    theta_E = float(np.arccos(abs(tangent @ radius) / np.hypot(*radius)))
-    return dict(pressure_angle_at_E=float(np.pi / 2 - (np.pi / 2 - theta_E)), dpsi_after=after,
+    # at E the slot point is c(0) = (d + r, 0) in the link frame (= B→E); θ = angle(tangent, radius)
+    E = link().slot.evaluate(np.array([0.0]))
+    cos_t = abs(float(E.p[0] @ E.d[0])) / (np.hypot(*E.p[0]) * np.hypot(*E.d[0]))
+    return dict(pressure_angle_at_E=float(np.arccos(cos_t)), dpsi_after=after,
                 dpsi_before=before, velocity_jump=before - after, link=link)

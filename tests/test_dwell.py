@@ -106,6 +106,8 @@ def test_random_designs_dwell_and_half_turn_relation_through_the_slot(design):
     m = curved_slot_dwell(lam, p1, p2, d, tr)
     dw = np.linspace(p1, p2, 101)
     assert np.abs(m.motion(dw).psi - m.law.psi_dwell).max() <= 1e-12 * max(1.0, abs(m.law.psi_dwell))
+    full = np.linspace(0.0, 2 * np.pi, 181)
+    assert np.abs(m.motion(full).psi - m.law(full).psi).max() < 1e-11
     # half-turn relation (Table 2) on the solved motion: same slot point at φ and -φ
     phi = np.linspace(0.02, np.pi - 0.02, 97)
     plus, minus, K = m.motion(phi), m.motion(-phi), base_law(lam, phi)
