@@ -36,11 +36,11 @@ from typing import NamedTuple
 import numpy as np
 from scipy.optimize import brentq, minimize, root
 
-from .errors import MechanismError, RotationError
-from .geometry import (PointPath, as_angles, check_length, check_sign, dot, perp, unit)
-from .linkages import FourBar
-from .linkages.base import Mechanism
-from .motion import AngularMotion
+from ..errors import MechanismError, RotationError
+from ..geometry import (PointPath, as_angles, check_length, check_sign, dot, perp, unit)
+from ..linkages import FourBar
+from ..linkages.base import Mechanism
+from ..motion import AngularMotion
 
 __all__ = [
     "SynthesisError", "LambdaMechanism", "CircleGuide", "StraightGuide", "circle_guiding",
@@ -266,7 +266,8 @@ def _rho(r, c, a, delta, t):
     mu = 2 * np.arcsin(np.clip(d / 2, 0, 1))
     dmu = (-a * r * np.sin(t) / d) / np.cos(mu / 2)
     rho, drho = _rho_mu(m, c, mu)
-    return rho, drho * dmu
+    with np.errstate(invalid="ignore"):
+        return rho, drho * dmu
 
 
 def _curvature_offset(r, a, delta) -> float:
@@ -359,6 +360,30 @@ def _minimax_guess(delta, a, alpha):
     return r0, c0, 0.5 * alpha, np.sqrt(3) / 2 * alpha
 
 
+def _solve_circle(delta, a, dwell, eqs, x0):
+    """Solve the equal-ripple equations from x0 and check the result on a dense sample;
+    returns (CircleGuide, None) or (None, reason)."""
+    alpha = dwell / 2
+    sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13))
+    r, c, t3, t2 = (float(v) for v in sol.x)
+    if not np.all(np.isfinite(sol.x)) or np.max(np.abs(eqs(sol.x))) > 1e-9:
+        return None, f"the equal-ripple equations did not converge ({sol.message.strip()})"
+    if not 1e-4 < r:
+        return None, f"the crank degenerates (r = {r:.3g})"
+    if not 0.0 < t3 < t2 < alpha:
+        return None, f"the touch points are out of order (t3 = {np.degrees(t3):.3g}°, t2 = {np.degrees(t2):.3g}°)"
+    try:
+        rho, _ = _rho(r, c, a, delta, [0.0, t3])
+        g = CircleGuide(delta, a, dwell, r, c, float(rho[0]), float(rho[1]), t3, t2)
+        dense = g.deviation(np.pi + np.linspace(-alpha, alpha, 4001))
+    except MechanismError as err:
+        return None, str(err)
+    if np.max(np.abs(dense)) > g.E * (1 + 1e-6) + 1e-12:
+        return None, (f"the best circle leaves the band inside the dwell (max |ρ − R| = "
+                      f"{np.max(np.abs(dense)):.3g} > E = {g.E:.3g})")
+    return g, None
+
+
 def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None = None) -> CircleGuide:
     """Circle-guiding lambda mechanism for break angle δ, frame a and dwell 2α (radians).
 
@@ -373,6 +398,7 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
     alpha = dwell / 2
+
     def eqs(x, alpha=alpha):
         r, c, t3, t2 = x
         try:
@@ -381,36 +407,19 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
             return np.full(4, 1e3)
         return [rho[0] - rho[2], rho[1] - rho[3], drho[1], drho[2]]
 
-    if guess is None:
-        guess = _continuation_guess(delta, a, alpha, eqs)
-    if guess is None:
-        guess = _minimax_guess(delta, a, alpha)
-
-    sol = root(eqs, guess, method="hybr", options=dict(xtol=1e-13))
-    r, c, t3, t2 = (float(v) for v in sol.x)
-    fail = None
-    if not sol.success or np.max(np.abs(eqs(sol.x))) > 1e-9:
-        fail = f"the equal-ripple equations did not converge ({sol.message.strip()})"
-    elif not 1e-4 < r:
-        fail = f"the crank degenerates (r = {r:.3g})"
-    elif not 0.0 < t3 < t2 < alpha:
-        fail = f"the touch points are out of order (t3 = {np.degrees(t3):.3g}°, t2 = {np.degrees(t2):.3g}°)"
-    if fail is None:
-        try:
-            rho, _ = _rho(r, c, a, delta, [0.0, t3])
-        except MechanismError as err:
-            fail = str(err)
-    if fail is None:
-        g = CircleGuide(delta, a, dwell, r, c, float(rho[0]), float(rho[1]), t3, t2)
-        dense = g.deviation(np.pi + np.linspace(-alpha, alpha, 4001))
-        if np.max(np.abs(dense)) > g.E * (1 + 1e-6) + 1e-12:
-            fail = (f"the best circle leaves the band inside the dwell (max |ρ − R| = "
-                    f"{np.max(np.abs(dense)):.3g} > E = {g.E:.3g})")
-    if fail is not None:
-        raise SynthesisError(
-            f"no circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}, "
-            f"2α = {np.degrees(dwell):.4g}°: {fail}; choose (δ, a, 2α) inside the existence map")
-    return g
+    starts = [guess] if guess is not None else [lambda: _continuation_guess(delta, a, alpha, eqs),
+                                                lambda: _minimax_guess(delta, a, alpha)]
+    for start in starts:
+        x0 = start() if callable(start) else start
+        if x0 is None:
+            fail = "no starting point"
+            continue
+        g, fail = _solve_circle(delta, a, dwell, eqs, x0)
+        if fail is None:
+            return g
+    raise SynthesisError(
+        f"no circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}, "
+        f"2α = {np.degrees(dwell):.4g}°: {fail}; choose (δ, a, 2α) inside the existence map")
 
 
 def thesis_iteration(delta: float, a: float, dwell: float, tol: float = 1e-6, maxiter: int = 100):
@@ -481,8 +490,9 @@ def _rho_mu(m: LambdaMechanism, c: float, mus):
     dcb = (2 * d * dd * 2 * a * d - (k + d * d) * 2 * a * dd) / (2 * a * d) ** 2
     rho2 = rc * rc + c * c - 2 * c * rc * cb
     drho2 = 2 * rc * drc - 2 * c * (drc * cb + rc * dcb)
-    rho = np.sqrt(rho2)
-    return rho, drho2 / (2 * rho)
+    with np.errstate(invalid="ignore", divide="ignore"):  # trial points of a solver may be off the curve
+        rho = np.sqrt(rho2)
+        return rho, drho2 / (2 * rho)
 
 
 # --------------------------------------------------------------------------------------------

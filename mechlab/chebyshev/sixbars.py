@@ -1,0 +1,346 @@
+"""Six-bar dwell mechanisms made by attaching a dyad to the coupler point D (seed 001, Figs. 1, 3).
+
+* МЧВ1 (:class:`LambdaRockerSixBar`, synthesis :func:`mchv1`): a circle-guiding lambda
+  mechanism, a connecting rod D-E of length R (so E sits near the arc centre Q while D runs
+  along the arc) and a rocker E-F. While D is in the band, E stays within about E of Q: the
+  rocker dwells. Synthesis by time ratio K and swing β_m (seed 001, formulas (14), (15) and
+  the construction of Fig. 3): the rocker is farthest out when DE lies on the normal to the
+  coupler curve at D, i.e. at the crank angle t = α + φ_n with φ_n = 2K(π − α)/(1 + K) after
+  the dwell centre; E1 = D1 + R·n there; F lies on the perpendicular bisector of Q-E1 and the
+  rocker length is b = S/(2 sin(β_m/2)) with S = |Q E1|.
+* МЧВ3 (:class:`LambdaSlottedSixBar`): a straight-line lambda mechanism whose coupler point
+  D drives a slotted link (straight slot, pin D) turning about a pivot P. With the slot
+  through P (offset 0) and P on the line of the straight part of the curve, beyond the curve,
+  the link oscillates with a dwell (МЧВ3-1М); with P on the straight part itself it turns
+  180° per crank turn with a dwell (МЧВ3-2М). The thesis' 360° variant МЧВ3-3М (pivot "in
+  the middle of the coupler curve", dwell adjusted by moving it) is not built: a straight slot
+  offset from the pivot is tangent to its circle during the dwell, so the slot angle moves by
+  ≈ √(4E/e) there (no real dwell), and a rod-and-crank dyad D-E-F with E at the arc centre
+  found no geometry that both closes over the turn and turns fully (scan of F around Q).
+
+Frames and angles as in :mod:`mechlab.chebyshev.lambda_mechanism`: the dwell is centred on
+φ = π (A farthest from C); the crank turns counter-clockwise.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import NamedTuple
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..errors import MechanismError
+from ..geometry import (AnglePath, PointPath, as_angles, check_length, check_sign, cross, dot, dyad_rpr, dyad_rrr,
+                        fixed_point, relative, vector_angle)
+from ..linkages.base import TWO_PI, Mechanism
+from ..motion import AngularMotion
+from .lambda_mechanism import CircleGuide, LambdaMechanism, StraightGuide, SynthesisError, _angle
+
+__all__ = ["InfeasibleDesignError", "LambdaRockerSixBar", "LambdaSlottedSixBar", "mchv1", "SixBarReport",
+           "report", "mchv3_oscillating", "mchv3_half_turn", "time_ratio_far_angle"]
+
+
+class InfeasibleDesignError(SynthesisError):
+    """A six-bar requested by K, β_m (or a pivot position) cannot be built."""
+
+
+def time_ratio_far_angle(K: float, dwell: float) -> float:
+    """Crank angle φ_n from the end of the dwell to the far extreme: K = φ_n / (2π − 2α − φ_n),
+    so φ_n = 2K(π − α)/(1 + K) (seed 001, (14)-(15))."""
+    alpha = dwell / 2
+    return 2 * K * (np.pi - alpha) / (1 + K)
+
+
+# --------------------------------------------------------------------------------------------
+# МЧВ1
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LambdaRockerSixBar(Mechanism):
+    """Lambda mechanism (r, a, δ) + connecting rod D-E (``rod``) + rocker E-F (``rocker``)
+    pivoted at F = (``fx``, ``fy``). ``assembly`` puts E on the left (+1) or right (−1) of
+    the directed line D→F. Output ψ: angle of the rocker F→E."""
+
+    r: float
+    a: float
+    delta: float
+    rod: float
+    rocker: float
+    fx: float
+    fy: float
+    assembly: int = 1
+
+    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"), ("D", "E"), ("F", "E"))
+    pivots = ("O", "C", "F")
+    output = "angle"
+
+    def __post_init__(self):
+        object.__setattr__(self, "rod", check_length("rod DE", self.rod))
+        object.__setattr__(self, "rocker", check_length("rocker EF", self.rocker))
+        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
+        for k in ("fx", "fy"):
+            if not np.isfinite(float(getattr(self, k))):
+                raise MechanismError(f"pivot coordinate {k} must be finite")
+        self.base  # validates r, a, δ (full rotation)
+        # the dyad D-E-F must close over the whole turn
+        D = self.base.coupler_point(np.linspace(0, TWO_PI, 1441))
+        dist = np.hypot(*(D - self.F).T)
+        lo, hi = abs(self.rod - self.rocker), self.rod + self.rocker
+        if dist.max() >= hi or dist.min() <= lo:
+            bad = dist.max() if dist.max() >= hi else dist.min()
+            raise InfeasibleDesignError(
+                f"the dyad D-E-F does not close over the whole crank turn: |DF| reaches {bad:.4g}, "
+                f"outside the open interval (|DE − EF|, DE + EF) = ({lo:.4g}, {hi:.4g})")
+
+    @cached_property
+    def base(self) -> LambdaMechanism:
+        return LambdaMechanism(self.r, self.a, self.delta)
+
+    @property
+    def F(self) -> np.ndarray:
+        return np.array([float(self.fx), float(self.fy)])
+
+    @cached_property
+    def _reference(self):
+        phi = np.linspace(0, TWO_PI, 1441)
+        th = np.unwrap(self._raw(phi))
+        return 0.5 * (th.min() + th.max())
+
+    def _raw(self, phi):
+        mo = self.base.motion(phi)
+        D = mo.points["D"]
+        E = dyad_rrr(D, fixed_point(self.F, len(phi)), self.rod, self.rocker, self.assembly, phi, "the dyad D-E-F")
+        return np.arctan2(E.p[:, 1] - self.F[1], E.p[:, 0] - self.F[0])
+
+    def motion(self, phi) -> AngularMotion:
+        """Paths of O, A, B, C, D, E, F and the rocker's ψ, ψ', ψ''; transmission = angle DEF."""
+        phi = as_angles(phi)
+        mo = self.base.motion(phi)
+        D = mo.points["D"]
+        Fp = fixed_point(self.F, len(phi))
+        E = dyad_rrr(D, Fp, self.rod, self.rocker, self.assembly, phi, "the dyad D-E-F")
+        ang = vector_angle(relative(E, Fp))
+        psi = self._reference + ((ang.theta - self._reference + np.pi) % TWO_PI - np.pi)
+        ed, ef = D.p - E.p, Fp.p - E.p
+        mu = np.arccos(np.clip(dot(ed, ef) / (self.rod * self.rocker), -1, 1))
+        pts = dict(mo.points)
+        pts.update(E=E, F=Fp)
+        return AngularMotion(phi, pts, mu, psi, ang.d, ang.dd)
+
+
+class SixBarReport(NamedTuple):
+    """What a simulation of a dwell six-bar shows (angles in radians)."""
+
+    dwell: float          # crank angle of the designed dwell 2α
+    residual: float       # range of ψ over the dwell (residual motion)
+    swing: float          # |ψ(far extreme) − ψ(dwell centre)|
+    far: float            # crank angle φ of the far extreme (ψ' = 0)
+    K: float              # measured time ratio (far − dwell end) / (next dwell start − far)
+    mu_min: float         # smallest transmission angle of the base four-bar over the turn
+    mu_max: float
+    mu2_min: float        # of the attached dyad
+    mu2_max: float
+
+
+def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1) -> LambdaRockerSixBar:
+    """МЧВ1 from a circle-guiding design, a time ratio K and a swing β_m (radians) — Fig. 3.
+
+    ``side`` picks F on one or the other side of the chord Q-E1. Raises InfeasibleDesignError
+    (naming the condition) when K, β_m or the geometry admit no mechanism.
+    """
+    if not isinstance(guide, CircleGuide):
+        raise TypeError("mchv1 needs a CircleGuide from circle_guiding(...)")
+    try:
+        K = float(K)
+    except (TypeError, ValueError):
+        raise InfeasibleDesignError(f"K must be a number, got {K!r}") from None
+    if not (np.isfinite(K) and K > 0):
+        raise InfeasibleDesignError(f"time ratio K must be > 0, got {K:g}")
+    swing = _angle("swing β_m", swing, 0.0, np.pi, closed_hi=False)
+    side = check_sign("side", side)
+    m, alpha, R, Q = guide.mechanism, guide.alpha, guide.R, guide.centre
+    phi_far = np.pi + alpha + time_ratio_far_angle(K, guide.dwell)
+    D1 = m.motion(np.array([phi_far])).points["D"]
+    v = D1.d[0] / np.hypot(*D1.d[0])
+    # the rod lies along the normal at D1, on the side of the arc centre (where E was)
+    n = np.array([-v[1], v[0]])
+    if n @ (Q - D1.p[0]) < 0:
+        n = -n
+    E1 = D1.p[0] + R * n
+    S = float(np.hypot(*(E1 - Q)))
+    if S < 1e-9:
+        raise InfeasibleDesignError("E does not move: the far position of E coincides with the arc centre")
+    b = S / (2 * np.sin(swing / 2))
+    U = 0.5 * (Q + E1)
+    w = (E1 - Q) / S
+    h = np.sqrt(max(b * b - S * S / 4, 0.0))
+    F = U + side * h * np.array([-w[1], w[0]])
+    # the assembly in which E sits at E1 at the far extreme (and near Q in the dwell)
+    asm = 1 if cross(F - D1.p[0], E1 - D1.p[0]) > 0 else -1
+    D0 = m.coupler_point(np.array([np.pi]))[0]
+    if (cross(F - D0, Q - D0) > 0) != (asm > 0):
+        raise InfeasibleDesignError(
+            f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the rod D-E would have to change "
+            f"assembly between the dwell and the far extreme; try the other side or a smaller swing")
+    try:
+        six = LambdaRockerSixBar(m.r, m.a, m.delta, R, b, float(F[0]), float(F[1]), asm)
+    except MechanismError as err:
+        raise InfeasibleDesignError(f"K = {K:g}, β_m = {np.degrees(swing):.4g}°: {err}") from None
+    # the designed extreme must be the real far extreme of the simulated rocker
+    rep = report(six, guide.dwell)
+    if abs(rep.far - phi_far % TWO_PI) > 1e-6 or abs(rep.swing - swing) > 0.25 * swing:
+        raise InfeasibleDesignError(
+            f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the simulated rocker's far extreme is at "
+            f"φ = {np.degrees(rep.far):.2f}°, not at the designed {np.degrees(phi_far % TWO_PI):.2f}°")
+    return six
+
+
+def _far_extreme(mech, dwell: float) -> float:
+    """Crank angle (in (π + α, 3π − α)) of the rocker's far extreme: ψ' = 0 farthest from ψ(π)."""
+    alpha = dwell / 2
+    phi = np.linspace(np.pi + alpha, 3 * np.pi - alpha, 2001)
+    mo = mech.motion(phi)
+    ref = mech.motion(np.array([np.pi])).psi[0]
+    i = int(np.argmax(np.abs(mo.psi - ref)))
+    lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, len(phi) - 1)]
+    f = lambda x: mech.motion(np.array([x])).dpsi[0]
+    if f(lo) * f(hi) > 0:
+        return float(phi[i] % TWO_PI)
+    return float(brentq(f, lo, hi, xtol=1e-14) % TWO_PI)
+
+
+def report(mech, dwell: float) -> SixBarReport:
+    """Simulate a dwell six-bar over a turn: residual motion in the dwell (centred on φ = π),
+    swing, far extreme, measured K and transmission angles."""
+    alpha = dwell / 2
+    mo = mech.motion(np.linspace(0, TWO_PI, 2881))
+    inside = mech.motion(np.pi + np.linspace(-alpha, alpha, 801)).psi
+    far = _far_extreme(mech, dwell)
+    psi_far = mech.motion(np.array([far])).psi[0]
+    psi0 = mech.motion(np.array([np.pi])).psi[0]
+    t = (far - np.pi) % TWO_PI  # thesis angle of the far extreme
+    K = (t - alpha) / (TWO_PI - alpha - t)
+    mu_base = mech.base.motion(mo.phi).transmission
+    return SixBarReport(dwell, float(np.ptp(inside)), float(abs(psi_far - psi0)), far, float(K),
+                        float(mu_base.min()), float(mu_base.max()), float(mo.transmission.min()),
+                        float(mo.transmission.max()))
+
+
+# --------------------------------------------------------------------------------------------
+# МЧВ3
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LambdaSlottedSixBar(Mechanism):
+    """Lambda mechanism (r, a, δ) whose coupler point D slides in the straight slot of a link
+    turning about P = (``px``, ``py``); the slot runs at signed distance ``offset`` from P
+    (to the right of the slot direction). Output ψ: the slot's direction (continuous, so a
+    link that turns fully gains 2π, or π for a slot through a pivot on the path, per turn).
+    """
+
+    r: float
+    a: float
+    delta: float
+    px: float
+    py: float
+    offset: float = 0.0
+
+    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
+    pivots = ("O", "C", "P")
+    output = "angle"
+
+    def __post_init__(self):
+        self.base
+        for k in ("px", "py", "offset"):
+            if not np.isfinite(float(getattr(self, k))):
+                raise MechanismError(f"{k} must be finite")
+        D = self.base.coupler_point(np.linspace(0, TWO_PI, 2881))
+        rho = np.hypot(*(D - self.P).T)
+        if abs(self.offset) > 0 and rho.min() <= abs(self.offset):
+            raise InfeasibleDesignError(
+                f"the pin D comes within {rho.min():.4g} of the pivot, inside the slot offset |e| = "
+                f"{abs(self.offset):.4g}: the slot cannot reach it")
+
+    @cached_property
+    def base(self) -> LambdaMechanism:
+        return LambdaMechanism(self.r, self.a, self.delta)
+
+    @property
+    def P(self) -> np.ndarray:
+        return np.array([float(self.px), float(self.py)])
+
+    @cached_property
+    def _turns(self):
+        """Branch data: period of the output (π for a slot through a pivot on the path, else 2π)
+        and its turns per crank turn."""
+        phi = np.linspace(0, TWO_PI, 4000, endpoint=False) + np.pi / 4000
+        th = self._angle(phi).theta
+        period = np.pi if self.offset == 0 and self._through_pivot else TWO_PI
+        lifted = np.unwrap(th, period=period)
+        return period, lifted[0], round((lifted[-1] - lifted[0]) / period)
+
+    @cached_property
+    def _through_pivot(self) -> bool:
+        D = self.base.coupler_point(np.linspace(0, TWO_PI, 2881))
+        return bool(np.hypot(*(D - self.P).T).min() < 1e-6)
+
+    def _angle(self, phi) -> AnglePath:
+        D = self.base.motion(phi).points["D"]
+        v = relative(D, fixed_point(self.P, len(phi)))
+        ang, rho = dyad_rpr(D, fixed_point(self.P, len(phi)))
+        if np.any(rho.theta < 1e-9):
+            i = int(np.argmin(rho.theta))
+            raise MechanismError(f"the pin D passes through the pivot P at φ = {np.degrees(phi[i]):.4f}°, "
+                                 f"where the slot direction is a limit; sample other crank angles")
+        e = float(self.offset)
+        if e == 0.0:
+            return ang
+        s = e / rho.theta
+        ds = -e * rho.d / rho.theta**2
+        dds = -e * (rho.dd * rho.theta - 2 * rho.d**2) / rho.theta**3
+        q = np.sqrt(1 - s * s)
+        # slot direction = direction of P→D turned by −asin(e/ρ)
+        return AnglePath(ang.theta - np.arcsin(s), ang.d - ds / q, ang.dd - (dds / q + s * ds**2 / q**3))
+
+    def motion(self, phi) -> AngularMotion:
+        phi = as_angles(phi)
+        mo = self.base.motion(phi)
+        ang = self._angle(phi)
+        period, start, turns = self._turns
+        ref = start + turns * period * (phi - np.pi / 4000) / TWO_PI
+        psi = ref + ((ang.theta - ref + period / 2) % period - period / 2)
+        pts = dict(mo.points)
+        pts["P"] = fixed_point(self.P, len(phi))
+        mu = np.full(len(phi), np.pi / 2)  # the pin pushes along the slot's normal
+        return AngularMotion(phi, pts, mu, psi, ang.d, ang.dd)
+
+    @property
+    def turns(self) -> float:
+        """Output rotation per crank turn in revolutions (0 for an oscillating link)."""
+        period, _, k = self._turns
+        return k * period / TWO_PI
+
+
+def _line_frame(guide: StraightGuide):
+    m = guide.mechanism
+    e = m.axis
+    foot = m.C + guide.Y * e  # the point of the straight line on the axis
+    return m, e, foot
+
+
+def mchv3_oscillating(guide: StraightGuide, distance: float) -> LambdaSlottedSixBar:
+    """МЧВ3-1М: pivot on the straight line, ``distance`` (units of l) beyond the end D1 of the
+    straight part: the slot stays along the line during the dwell, the link oscillates."""
+    m, e, foot = _line_frame(guide)
+    distance = check_length("distance", distance)
+    half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
+    along = np.array([-e[1], e[0]])
+    P = foot - (half + distance) * along
+    return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]))
+
+
+def mchv3_half_turn(guide: StraightGuide) -> LambdaSlottedSixBar:
+    """МЧВ3-2М: pivot on the straight part of the path (at D0): 180° per crank turn with a dwell."""
+    m = guide.mechanism
+    P = m.coupler_point(np.array([np.pi]))[0]
+    return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]))

@@ -1,0 +1,84 @@
+"""Six-bar dwell mechanisms on the lambda mechanism (seed 001, Figs. 1, 3) and their loads."""
+
+import numpy as np
+import pytest
+
+from mechlab.chebyshev import (InfeasibleDesignError, LambdaRockerSixBar, LambdaSlottedSixBar, circle_guiding,
+                               mchv1, mchv3_half_turn, mchv3_oscillating, report, straight_guiding,
+                               time_ratio_far_angle)
+from mechlab.errors import MechanismError
+
+DEG = np.pi / 180
+
+
+@pytest.fixture(scope="module")
+def guide():
+    return circle_guiding(150 * DEG, 0.9, 120 * DEG)
+
+
+@pytest.mark.parametrize("K,swing,side", [(1.0, 20, 1), (1.25, 20, -1), (0.8, 30, -1), (1.5, 15, 1)])
+def test_mchv1_achieves_K_and_swing(guide, K, swing, side):
+    six = mchv1(guide, K, swing * DEG, side=side)
+    rep = report(six, guide.dwell)
+    assert abs(rep.K - K) < 1e-9
+    # the swing is designed from the arc centre Q; E sits within ~E of Q in the dwell
+    assert abs(rep.swing - swing * DEG) < 3 * guide.E / six.rocker
+    # residual motion in the dwell: of the order of E (in angle E / rocker length, amplified by
+    # 1/sin of the dyad's smallest transmission angle in the dwell)
+    mu = six.motion(np.pi + np.linspace(-guide.alpha, guide.alpha, 201)).transmission
+    scale = guide.E / (six.rocker * np.sin(mu).min())
+    assert 0.3 * scale < rep.residual < 10 * scale
+    assert 0 < rep.mu2_min < rep.mu2_max < np.pi
+
+
+def test_mchv1_analogs_and_closure(guide):
+    six = mchv1(guide, 1.0, 20 * DEG)
+    phi = np.linspace(0, 2 * np.pi, 20001)
+    mo = six.motion(phi)
+    P = {k: v.p for k, v in mo.points.items()}
+    assert np.allclose(np.hypot(*(P["D"] - P["E"]).T), six.rod, atol=1e-12)
+    assert np.allclose(np.hypot(*(P["F"] - P["E"]).T), six.rocker, atol=1e-12)
+    h = phi[1] - phi[0]
+    assert np.allclose((mo.psi[2:] - mo.psi[:-2]) / (2 * h), mo.dpsi[1:-1], atol=1e-6)
+    assert np.allclose((mo.dpsi[2:] - mo.dpsi[:-2]) / (2 * h), mo.ddpsi[1:-1], atol=1e-5)
+    assert abs(mo.psi[-1] - mo.psi[0]) < 1e-12  # a rocker: back where it started
+
+
+def test_far_extreme_angle_formula():
+    # K = φ_n / (2π − 2α − φ_n)
+    for K, dw in [(1.0, 1.0), (1.3, 2.0), (0.7, 0.5)]:
+        fn = time_ratio_far_angle(K, dw)
+        assert np.isclose(fn / (2 * np.pi - dw - fn), K)
+
+
+def test_mchv1_infeasible(guide):
+    with pytest.raises(InfeasibleDesignError, match="K must be > 0"):
+        mchv1(guide, -1.0, 20 * DEG)
+    with pytest.raises(MechanismError, match="swing"):
+        mchv1(guide, 1.0, 200 * DEG)
+    with pytest.raises(InfeasibleDesignError):
+        # a huge swing needs a very short rocker: the dyad D-E-F cannot close over the turn
+        mchv1(guide, 1.0, 170 * DEG)
+    with pytest.raises(InfeasibleDesignError, match="does not close"):
+        LambdaRockerSixBar(guide.r, guide.a, guide.delta, guide.R, 0.05, 5.0, 5.0)
+
+
+def test_mchv3_oscillating_and_half_turn():
+    s = straight_guiding(np.pi, 0.8, np.pi)
+    phi = np.linspace(0, 2 * np.pi, 1440, endpoint=False) + 1e-3
+    osc = mchv3_oscillating(s, 0.5)
+    assert osc.turns == 0
+    dwell = np.pi + np.linspace(-np.pi / 2, np.pi / 2, 2001) + 1e-5
+    mo, md = osc.motion(phi), osc.motion(dwell)
+    # during the straight part the slot lies along the line: residual ≪ swing
+    assert np.ptp(md.psi) < 0.03 * np.ptp(mo.psi)
+    half = mchv3_half_turn(s)
+    assert abs(half.turns) == 0.5
+    mh = half.motion(dwell)
+    assert np.ptp(mh.psi) < np.radians(1.5)
+    h = phi[1] - phi[0]
+    m2 = half.motion(phi)
+    assert np.allclose((m2.psi[2:] - m2.psi[:-2]) / (2 * h), m2.dpsi[1:-1], atol=1e-3 * np.abs(m2.dpsi).max())
+    with pytest.raises(MechanismError, match="passes through the pivot"):
+        half.motion(np.array([np.pi]))
+    assert isinstance(half, LambdaSlottedSixBar)
