@@ -544,7 +544,8 @@ class CurvedSlotLink(Mechanism):
         ddpsi = base.ddpsi - b.dd
         n = len(phi)
         A = base.points["A"]
-        mu = self._transmission(phi, psi, A)
+        # the transmission angle needs the slot's tangent: computed on first use only
+        mu = lambda mo: self._transmission(phi, psi, A)  # noqa: E731
         return AngularMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A,
                                    "B": fixed_point((-self.pivot_distance, 0.0), n)}, mu, psi, dpsi, ddpsi)
 
@@ -759,7 +760,7 @@ class TranslatingCurvedSlot(Mechanism):
         n = len(phi)
         z = np.zeros(n)
         C = PointPath(np.stack([s, z], -1), np.stack([ds, z], -1), np.stack([dds, z], -1))
-        mu = self._transmission(phi)
+        mu = lambda mo: self._transmission(phi)  # noqa: E731 - on first use
         return LinearMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "C": C}, mu, s, ds, dds)
 
     def _transmission(self, phi):
