@@ -49,8 +49,7 @@ class EquivalenceExplorer:
         self.fig = matplotlib.figure.Figure(figsize=(10, 6), dpi=60)
         grid = self.fig.add_gridspec(2, 3, height_ratios=[1.2, 1])
         self.ax_link, self.ax_twin, self.ax_rel = (self.fig.add_subplot(grid[0, j]) for j in range(3))
-        self.ax_d1 = self.fig.add_subplot(grid[1, 0:2])
-        self.ax_d2 = self.fig.add_subplot(grid[1, 2])
+        self.ax_d0, self.ax_d1, self.ax_d2 = (self.fig.add_subplot(grid[1, j]) for j in range(3))
         self.output = W.Output()
         for w in self.sliders.values():
             w.observe(lambda ch: self.rebuild(), names="value")
@@ -84,7 +83,7 @@ class EquivalenceExplorer:
         self.message = ""
         self.mechanism, self.twin, self.motion, self.twin_motion = mech, twin, mo, tm
         self.error = max(law_difference(mo, tm))
-        for ax in (self.ax_link, self.ax_twin, self.ax_rel, self.ax_d1, self.ax_d2):
+        for ax in (self.ax_link, self.ax_twin, self.ax_rel, self.ax_d0, self.ax_d1, self.ax_d2):
             ax.clear()
         self.d_link = drawing_class(mech)(self.ax_link, mech, trace="A", n=self.n)
         self.d_link.set_motion(mech, mo)
@@ -105,17 +104,25 @@ class EquivalenceExplorer:
         self.ax_rel.set_title("pin in the output link's frame", fontsize=10)
         deg = np.degrees(phi)
         angular = mech.output == "angle"
-        d1, d2 = (mo.dpsi, mo.ddpsi) if angular else (mo.ds, mo.dds)
-        for ax, y, yk, name in ((self.ax_d1, d1, base.d, "′"), (self.ax_d2, d2, base.dd, "″")):
-            ax.plot(deg, y, label=("ψ" if angular else "s") + name)
+        d0, d1, d2 = (mo.psi, mo.dpsi, mo.ddpsi) if angular else (mo.s, mo.ds, mo.dds)
+        k0 = base.theta
+        if angular:   # continuous angles, the base law on the linkage's branch
+            d0, k0 = np.unwrap(d0), np.unwrap(k0)
+            k0 = k0 + 2 * np.pi * np.round((d0[0] - k0[0]) / (2 * np.pi))
+        sym = "ψ" if angular else "s"
+        for ax, y, yk, name in ((self.ax_d0, d0, k0, ""), (self.ax_d1, d1, base.d, "′"), (self.ax_d2, d2, base.dd, "″")):
+            ax.plot(deg, y, label=sym + name)
             ax.plot(deg, yk, "--", label="base " + ("ψ_K" if angular else "x_K") + name)
             ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=8, loc="upper right")
+            ax.legend(fontsize=7, loc="upper right")
             ax.set_xlabel("φ, degrees")
+        self.law = (d0, d1, d2)
+        (self.m0,) = self.ax_d0.plot([], [], "ko", ms=4)
         (self.m1,) = self.ax_d1.plot([], [], "ko", ms=4)
         (self.m2,) = self.ax_d2.plot([], [], "ko", ms=4)
         lim = self.limit
-        self.status.value = (f"twin error {self.error:.1e} · peak |{'ψ' if angular else 's'}′| {lim.peak_velocity:.4f} ≥ "
+        lam = f"λ = l_OA/l_OE = {mech.crank / mech.ground:.3f} · " if angular else ""
+        self.status.value = lam + (f"twin error {self.error:.1e} · peak |{'ψ' if angular else 's'}′| {lim.peak_velocity:.4f} ≥ "
                              f"base {lim.base_peak_velocity:.4f} · peak |″| {lim.peak_acceleration:.4f} ≥ "
                              f"base {lim.base_peak_acceleration:.4f}")
         self._frame()
@@ -128,10 +135,8 @@ class EquivalenceExplorer:
         self.d_link.set_frame(i)
         self.d_twin.set_frame(i)
         self.rel_pin.set_data([self.rel[i, 0]], [self.rel[i, 1]])
-        angular = self.mechanism.output == "angle"
-        d1, d2 = (self.motion.dpsi, self.motion.ddpsi) if angular else (self.motion.ds, self.motion.dds)
-        self.m1.set_data([phi[i]], [d1[i]])
-        self.m2.set_data([phi[i]], [d2[i]])
+        for marker, y in zip((self.m0, self.m1, self.m2), self.law):
+            marker.set_data([phi[i]], [y[i]])
         self._show()
 
     def _show(self):
