@@ -82,3 +82,43 @@ def test_mchv3_oscillating_and_half_turn():
     with pytest.raises(MechanismError, match="passes through the pivot"):
         half.motion(np.array([np.pi]))
     assert isinstance(half, LambdaSlottedSixBar)
+
+
+def test_mchv1_forces_match_the_power_balance(guide):
+    from mechlab.chebyshev.forces import mchv1_forces
+
+    six = mchv1(guide, 1.0, 20 * DEG)
+    # pure inertia J: M1·ω1 = J·ψ̇·ψ̈  →  M1 = J·ψ'·ψ''·ω1² (independent of the group-by-group solve)
+    fi = mchv1_forces(six, inertia=2.0, omega1=3.0, n=361)
+    mo = six.motion(fi.result.phi)
+    assert np.allclose(fi.result.torque, 2.0 * mo.dpsi * mo.ddpsi * 9.0, atol=1e-9)
+    assert fi.result.residual < 1e-9
+    # a constant resisting moment M: M1 = M·|ψ'| on top
+    fm = mchv1_forces(six, inertia=2.0, resisting=0.5, omega1=3.0, n=361)
+    assert np.allclose(fm.result.torque, 18.0 * mo.dpsi * mo.ddpsi + 0.5 * np.abs(mo.dpsi), atol=1e-9)
+    # friction lowers the cycle efficiency below 1 and raises the peak torque
+    ff = mchv1_forces(six, inertia=2.0, resisting=0.5, omega1=3.0, friction=0.1, radius=0.05, n=361,
+                      dwell=guide.dwell)
+    assert 0.5 < ff.cycle_efficiency < 1.0
+    # reactions in the rod's two pins are equal (a two-force member without mass)
+    assert np.isclose(fi.reactions["D"], fi.reactions["E"])
+
+
+def test_drawings_move_in_place(guide):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from mechlab.draw import animate
+
+    six = mchv1(guide, 1.0, 20 * DEG)
+    for m in (guide.guided, six, mchv3_half_turn(straight_guiding(np.pi, 0.8, np.pi))):
+        anim = animate(m, n=12, trace="D")
+        d = anim.drawing
+        before = list(d.artists)
+        d.set_frame(6)
+        assert d.artists == before
+    # the output is highlighted exactly in the dwell frames
+    d = animate(six, n=12).drawing
+    inside = [np.isfinite(d.extras(i)[1]).all() for i in range(12)]
+    phi = d.motion.phi
+    assert inside == [abs((p - np.pi + np.pi) % (2 * np.pi) - np.pi) <= guide.alpha for p in phi]

@@ -43,7 +43,7 @@ from ..linkages.base import Mechanism
 from ..motion import AngularMotion
 
 __all__ = [
-    "SynthesisError", "LambdaMechanism", "CircleGuide", "StraightGuide", "circle_guiding",
+    "SynthesisError", "LambdaMechanism", "GuidedLambda", "CircleGuide", "StraightGuide", "circle_guiding",
     "straight_guiding", "thesis_iteration", "fifth_order_line", "existence_map",
     "rotation_boundary", "transmission_lines", "classic_lambda", "band_touches",
 ]
@@ -181,6 +181,18 @@ class LambdaMechanism(Mechanism):
         return rho, dot(w, D.d) / rho
 
 
+@dataclass(frozen=True)
+class GuidedLambda(LambdaMechanism):
+    """A lambda mechanism with its guiding band: arc centre Q = (qx, qy), radii R0, R1 and the
+    dwell 2α (for drawings and widgets; the kinematics are those of LambdaMechanism)."""
+
+    qx: float = 0.0
+    qy: float = 0.0
+    R0: float = 0.0
+    R1: float = 0.0
+    dwell: float = 0.0
+
+
 def classic_lambda() -> LambdaMechanism:
     """Chebyshev's lambda: crank 1, ground 2, links 2.5, coupler point at 5 (δ = π)."""
     return LambdaMechanism(1.0 / 2.5, 2.0 / 2.5, np.pi)
@@ -228,6 +240,12 @@ class CircleGuide(NamedTuple):
     def centre(self) -> np.ndarray:
         m = self.mechanism
         return m.C + self.c * m.axis
+
+    @property
+    def guided(self) -> "GuidedLambda":
+        """The mechanism with its band attached (drawn by :mod:`mechlab.draw.chebyshev`)."""
+        q = self.centre
+        return GuidedLambda(self.r, self.a, self.delta, 1, float(q[0]), float(q[1]), self.R0, self.R1, self.dwell)
 
     def deviation(self, phi) -> np.ndarray:
         """ρ(φ) − R: the signed distance of D from the mean circle."""

@@ -70,6 +70,7 @@ class LambdaRockerSixBar(Mechanism):
     fx: float
     fy: float
     assembly: int = 1
+    dwell: float = 0.0  # the designed dwell 2α (informational: drawings, widgets)
 
     links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"), ("D", "E"), ("F", "E"))
     pivots = ("O", "C", "F")
@@ -184,7 +185,7 @@ def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1) -> Lambd
             f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the rod D-E would have to change "
             f"assembly between the dwell and the far extreme; try the other side or a smaller swing")
     try:
-        six = LambdaRockerSixBar(m.r, m.a, m.delta, R, b, float(F[0]), float(F[1]), asm)
+        six = LambdaRockerSixBar(m.r, m.a, m.delta, R, b, float(F[0]), float(F[1]), asm, guide.dwell)
     except MechanismError as err:
         raise InfeasibleDesignError(f"K = {K:g}, β_m = {np.degrees(swing):.4g}°: {err}") from None
     # the designed extreme must be the real far extreme of the simulated rocker
@@ -244,6 +245,7 @@ class LambdaSlottedSixBar(Mechanism):
     px: float
     py: float
     offset: float = 0.0
+    dwell: float = 0.0  # the straight part's crank angle 2α (informational)
 
     links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
     pivots = ("O", "C", "P")
@@ -264,6 +266,12 @@ class LambdaSlottedSixBar(Mechanism):
     @cached_property
     def base(self) -> LambdaMechanism:
         return LambdaMechanism(self.r, self.a, self.delta)
+
+    def cycle(self, n: int = 361) -> np.ndarray:
+        """A turn sampled off φ = π by 1e-6 rad (the pin may pass through the pivot exactly there)."""
+        return np.linspace(0.0, TWO_PI, n) + 1e-6
+
+    turn = cycle
 
     @property
     def P(self) -> np.ndarray:
@@ -336,11 +344,11 @@ def mchv3_oscillating(guide: StraightGuide, distance: float) -> LambdaSlottedSix
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
     along = np.array([-e[1], e[0]])
     P = foot - (half + distance) * along
-    return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]))
+    return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), 0.0, guide.dwell)
 
 
 def mchv3_half_turn(guide: StraightGuide) -> LambdaSlottedSixBar:
     """МЧВ3-2М: pivot on the straight part of the path (at D0): 180° per crank turn with a dwell."""
     m = guide.mechanism
     P = m.coupler_point(np.array([np.pi]))[0]
-    return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]))
+    return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), 0.0, guide.dwell)

@@ -1,0 +1,45 @@
+"""Sliders for the lambda mechanism and its six-bars (seed 001): δ, a, 2α, K, β_m in degrees.
+
+Each explorer rebuilds the design through the synthesis (circle_guiding, mchv1), so a request
+outside the existence map shows its SynthesisError message in place of the drawing.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..chebyshev import circle_guiding, mchv1
+from . import Control, MechanismExplorer
+
+
+def _guided(delta, a, dwell):
+    return circle_guiding(delta, a, dwell).guided
+
+
+def lambda_explorer(delta=150.0, a=0.9, dwell=120.0, n=121) -> MechanismExplorer:
+    """Circle-guiding lambda mechanism from δ, a and the dwell 2α, with its band and axis."""
+    controls = {
+        "delta": Control("break δ", 90.0, 180.0, 1.0, delta, "deg"),
+        "a": Control("frame a = OC/l", 0.2, 1.6, 0.01, a),
+        "dwell": Control("dwell 2α", 20.0, 300.0, 2.0, dwell, "deg"),
+    }
+    return MechanismExplorer(_guided, controls, trace="D", n=n, title="Chebyshev lambda mechanism, circle guiding")
+
+
+def _mchv1(delta, a, dwell, K, swing):
+    return mchv1(circle_guiding(delta, a, dwell), K, swing)
+
+
+def mchv1_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.0, swing=20.0, n=121) -> MechanismExplorer:
+    """МЧВ1 six-bar synthesised from δ, a, 2α, the time ratio K and the swing β_m."""
+    controls = {
+        "delta": Control("break δ", 90.0, 180.0, 1.0, delta, "deg"),
+        "a": Control("frame a = OC/l", 0.2, 1.6, 0.01, a),
+        "dwell": Control("dwell 2α", 20.0, 300.0, 2.0, dwell, "deg"),
+        "K": Control("time ratio K", 0.5, 2.0, 0.05, K),
+        "swing": Control("swing β_m", 5.0, 90.0, 1.0, swing, "deg"),
+    }
+    return MechanismExplorer(_mchv1, controls, trace="D", n=n, title="МЧВ1: lambda mechanism + rocker")
+
+
+__all__ = ["lambda_explorer", "mchv1_explorer"]
