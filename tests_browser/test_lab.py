@@ -118,7 +118,9 @@ _STATE_JS = """() => {
 
 # the first widget output that has a slider handle and a plot image; marked for the test
 _MARK_WIDGET_JS = """() => {
-  const outs = Array.from(document.querySelectorAll('.jp-Notebook .jp-OutputArea-output'));
+  document.querySelectorAll('[data-mechtest]').forEach(e => e.removeAttribute('data-mechtest'));
+  const root = window.jupyterapp.shell.currentWidget.node;  // this notebook's panel only
+  const outs = Array.from(root.querySelectorAll('.jp-OutputArea-output'));
   for (const o of outs) {
     if (o.querySelector('.noUi-handle') && o.querySelector('img')) {
       o.setAttribute('data-mechtest', 'explorer');
@@ -140,7 +142,8 @@ def test_notebook_in_jupyterlab(browser, lab, path):
     page_errors = []
     page.on("pageerror", lambda e: page_errors.append(str(e)))
     try:
-        page.goto(f"{base}/lab/tree/{path.name}?token={token}", wait_until="domcontentloaded")
+        # ?reset: a fresh workspace, so the notebooks of earlier tests are not reopened
+        page.goto(f"{base}/lab/tree/{path.name}?reset&token={token}", wait_until="domcontentloaded")
         page.wait_for_function(_READY_JS, timeout=90_000)
         page.evaluate("() => window.jupyterapp.commands.execute('notebook:run-all-cells')")
         state = page.wait_for_function(_STATE_JS, timeout=240_000, polling=500).json_value()
