@@ -201,3 +201,17 @@ def test_seed000_errata_recompute_their_evidence():
         text = e.check()
         assert e.source == "000" and e.notebook == "02_base_mechanism.ipynb"
         assert ("φ = 60°" in text or "λ = 0.3" in text) and len(text.splitlines()) == 1
+
+
+@pytest.mark.parametrize("fb", [FourBar(3, 3, 3, 4, 1), FourBar(3, 3, 3, 4, -1), FourBar(1.0, 3.0, 1.5, 2.0, 1)],
+                         ids=["triple-rocker+", "triple-rocker-", "rocking-crank"])
+def test_twin_of_a_rocking_crank_has_the_same_range_and_law(fb):
+    """A crank that only rocks: the twin's pin meets the slot's extreme points (pressure angle
+    90°) exactly at the four-bar's dead points, so both have the same range."""
+    twin = equivalent_slot(fb)
+    (s, e), = fb.crank_ranges()
+    (ts, te), = twin.crank_ranges()
+    assert np.isclose(np.mod(ts - s, 2 * np.pi), 0, atol=1e-12) or np.isclose(np.mod(ts - s, 2 * np.pi), 2 * np.pi)
+    assert np.isclose(te - ts, e - s, atol=1e-12)
+    phi = np.linspace(s + 0.01 * (e - s), e - 0.01 * (e - s), 201)
+    assert max(law_difference(fb.motion(phi), twin.motion(phi))) < 1e-9
