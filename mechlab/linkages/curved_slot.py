@@ -52,6 +52,15 @@ Analogs from differentiating c·c = S²: t' = (S²)'/(2c·c_t),
 t'' = ((S²)''/2 - (|c_t|² + c·c_tt)·t'²)/(c·c_t); β' = θ_t·t', β'' = θ_tt·t'² + θ_t·t''.
 The translating link likewise solves y_α(t) = a·sin φ.
 
+Scope and its one limitation: the pin runs *back and forth* over one piece of the
+slot (the case of Tables 1-2 and of every equivalent linkage). A slot on which the pin
+would pass through a point where the slot is tangent to the pin's circle about B —
+e.g. the two-branch slot of seed 000 Fig. 10, whose outermost point E the pin reaches
+at φ = 0 — is the degenerate case the seed itself calls unworkable (pressure angle
+π/2): it raises SingularityError rather than guessing a branch. A parameter t with
+|c(t)| strictly monotone on the working piece (e.g. the distance from B itself, the
+choice made by :mod:`mechlab.dwell`) is always safe; c'(t) must not vanish there.
+
 Errors: where the slot ends before the pin's distance range is covered, the crank
 cannot turn fully (``crank_ranges()`` shrinks, ``motion`` raises AssemblyError
 "the pin would leave the slot …"); where the slot becomes tangent to the circle about
