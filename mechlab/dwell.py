@@ -120,6 +120,18 @@ def base_law(lam: float, phi) -> BaseLaw:
     return BaseLaw(psi, d1, d2, d3)
 
 
+def arc_pressure_angle(lam, phi) -> np.ndarray:
+    """Pressure angle where the pin runs on a dwell arc (radius l_OA about O): the slot's normal
+    is along OA, the link point moves perpendicular to BA, so θ = |π/2 - (φ - ψ_K(φ))|.
+
+    Its smallest value over φ is 0 for λ < 1 (at cos φ = -λ, OA ⊥ BA) and π/2 - arcsin(1/λ) for
+    λ > 1 (the angle OAB never exceeds arcsin(1/λ)): a dwell of the rotating link always works
+    at a pressure angle of at least that much.
+    """
+    phi = as_angles(phi)
+    return np.abs(np.pi / 2 - (phi - base_law(lam, phi).psi))
+
+
 def _end_values(lam: float):
     """(ψ_K'(0), ψ_K'''(0), ψ_K'(π), ψ_K'''(π)) in closed form."""
     return (lam / (lam + 1.0), lam * (lam - 1.0) / (lam + 1.0) ** 3,
@@ -566,8 +578,9 @@ class DwellSlotMechanism(Mechanism):
         return self.law._arc_point(self.law.S(phi)[0])
 
     def max_pressure_angle(self, n: int = 721) -> tuple[float, float]:
-        """(θ_max, φ at θ_max) over the whole turn, from the solver's motion: a grid over
-        [0, π] (θ(-φ) = θ(φ): the pin is at the same slot point), then a bounded refinement."""
+        """(θ_max, φ at θ_max) over the whole turn from the solver's motion: a grid over [0, π]
+        (θ(-φ) = θ(φ): the pin is at the same slot point), the peak refined on the closed form
+        :meth:`DwellLaw.pressure_angle`, and θ re-evaluated there through the solver."""
         from scipy.optimize import minimize_scalar
 
         phi = np.linspace(0.0, np.pi, n)
@@ -575,11 +588,11 @@ class DwellSlotMechanism(Mechanism):
         i = int(np.argmax(th))
         best_phi, best = float(phi[i]), float(th[i])
         lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, n - 1)]
-        if hi > lo:
-            res = minimize_scalar(lambda x: -self.motion(x).pressure_angle[0], bounds=(lo, hi),
-                                  method="bounded", options={"xatol": 1e-10})
-            if -res.fun > best:
-                best_phi, best = float(res.x), float(-res.fun)
+        res = minimize_scalar(lambda x: -self.law.pressure_angle(x)[0], bounds=(lo, hi), method="bounded",
+                              options={"xatol": 1e-10})
+        refined = float(self.motion(res.x).pressure_angle[0])
+        if refined > best:
+            best_phi, best = float(res.x), refined
         return best, best_phi
 
 

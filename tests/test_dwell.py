@@ -311,3 +311,21 @@ def test_widget_shows_errors_and_recovers():
     assert "quintic" in e.message
     e.sliders["transition"].value = "quintic"
     assert e.message == "" and e.mechanism.transition == "quintic"
+
+
+def test_rotating_link_dwells_at_a_pressure_angle_of_at_least_90_minus_arcsin():
+    from scipy.optimize import minimize_scalar
+
+    from mechlab.dwell import arc_pressure_angle
+
+    for lam in (1.3, 2.0, 3.5):
+        res = minimize_scalar(lambda x: arc_pressure_angle(lam, x)[0], bounds=(0.0, np.pi), method="bounded",
+                              options={"xatol": 1e-12})
+        assert res.fun == pytest.approx(np.pi / 2 - np.arcsin(1 / lam), abs=1e-9)
+        m = curved_slot_dwell(lam, 60 * DEG, 150 * DEG, transition="quintic")
+        dw = np.linspace(m.phi1, m.phi2, 60)
+        th = m.motion(dw).pressure_angle
+        assert np.allclose(th, arc_pressure_angle(lam, dw), atol=1e-12)
+        assert th.min() >= np.pi / 2 - np.arcsin(1 / lam) - 1e-12
+    # λ < 1: the dwell arc has a point of zero pressure angle, at cos φ = -λ
+    assert arc_pressure_angle(0.4, np.arccos(-0.4))[0] < 1e-12
