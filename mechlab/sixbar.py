@@ -44,7 +44,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from .errors import AssemblyError, DimensionError, RotationError, SingularityError
-from .geometry import (AnglePath, PointPath, as_angles, check_length, check_sign, crank_point, cross, dot,
+from .geometry import (AnglePath, PointPath, as_angles, check_length, check_sign, crank_point, dot,
                        dyad_rrr, fixed_point, perp, relative, unit, vector_angle)
 from .linkages.base import Mechanism
 from .motion import AngularMotion

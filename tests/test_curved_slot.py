@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab import AssemblyError, DimensionError, FourBar, SingularityError, SliderCrank
+from mechlab import AssemblyError, DimensionError, FourBar, SingularityError
 from mechlab.linkages.curved_slot import (CircleSlot, CurvedSlotLink, ParametricSlot, SampledSlot,
                                           TranslatingCurvedSlot)
 from strategies import revolving_fourbars, revolving_slider_cranks

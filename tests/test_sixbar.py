@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from mechlab import AssemblyError, DimensionError, RotationError
 from mechlab.equivalence import equivalent_slot, law_difference, relative_path
-from mechlab.sixbar import SixBarIV, example
+from mechlab.sixbar import example
 
 H = 1e-5
 
