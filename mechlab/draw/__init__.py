@@ -39,15 +39,19 @@ def register(mechanism_type: type):
 
 def drawing_class(mechanism) -> type:
     """The drawing class registered for a mechanism (searching this package's modules)."""
-    for klass in type(mechanism).__mro__:
-        if klass in _REGISTRY:
-            return _REGISTRY[klass]
+    def registered():
+        return next((_REGISTRY[k] for k in type(mechanism).__mro__ if k in _REGISTRY), None)
+
+    found = registered()
+    # the family modules register on import: load them one by one until one serves
     for info in pkgutil.iter_modules(__path__):
+        if found is not None:
+            return found
         importlib.import_module(f"{__name__}.{info.name}")
-    for klass in type(mechanism).__mro__:
-        if klass in _REGISTRY:
-            return _REGISTRY[klass]
-    raise TypeError(f"no drawing registered for {type(mechanism).__name__}")
+        found = registered()
+    if found is None:
+        raise TypeError(f"no drawing registered for {type(mechanism).__name__}")
+    return found
 
 
 class LinkageDrawing:
