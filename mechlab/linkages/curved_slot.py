@@ -291,6 +291,19 @@ def _solve_on_segment(seg: _Segment, curve: SlotCurve, g_of: Callable, dg_of: Ca
     return u
 
 
+def _distinct_roots(roots, curve: SlotCurve) -> list[float]:
+    """Roots without repeats (on a closed curve t0 and t1 are the same point)."""
+    out: list[float] = []
+    span = curve.t1 - curve.t0
+    for r in sorted(roots):
+        if curve.periodic:
+            r = curve.t0 + float(np.mod(r - curve.t0, span))
+        if all(min(abs(r - q), span - abs(r - q) if curve.periodic else np.inf) > 1e-12 * max(1.0, span)
+               for q in out):
+            out.append(r)
+    return out
+
+
 def _fmt_deg(x):
     return f"{np.degrees(x):.2f}°"
 
@@ -394,8 +407,7 @@ class CurvedSlotLink(Mechanism):
         roots = [float(t[i]) for i in np.flatnonzero(g == 0)]
         for i in np.flatnonzero(g[:-1] * g[1:] < 0):
             roots.append(brentq(lambda x: self._g(np.array([x]))[0] - target, t[i], t[i + 1], xtol=1e-15, rtol=1e-15))
-        if curve.periodic and roots:
-            roots = sorted(set(np.round(roots, 14)))
+        roots = _distinct_roots(roots, curve)
         if not roots:
             r = np.sqrt(self._g(t))
             raise DimensionError(
@@ -663,8 +675,7 @@ class TranslatingCurvedSlot(Mechanism):
         roots = [float(t[i]) for i in np.flatnonzero(y == 0)]
         for i in np.flatnonzero(y[:-1] * y[1:] < 0):
             roots.append(brentq(lambda x: self._y(np.array([x]))[0], t[i], t[i + 1], xtol=1e-15, rtol=1e-15))
-        if curve.periodic and roots:
-            roots = sorted(set(np.round(roots, 14)))
+        roots = _distinct_roots(roots, curve)
         if not roots:
             raise DimensionError(f"the slot never crosses the x axis (y_α = 0), where the pin is at φ = 0: "
                                  f"its points have y in [{y.min():.6g}, {y.max():.6g}]")
