@@ -225,3 +225,13 @@ def test_bad_input_messages():
     assert not mech.can_turn
     with pytest.raises(AssemblyError, match=r"cannot assemble at φ = 90.00°.*spans heights \[-0.5, 0.5\]"):
         mech.motion(np.pi / 2)
+
+
+def test_pin_starting_where_the_slot_is_tangent_is_refused_and_the_seam_counts_once():
+    """A closed slot whose seam (t = ±π) is its farthest point from B, reached by the pin at φ = 0:
+    one root, not two, and the seed's Fig. 10 verdict (pressure angle 90°)."""
+    shifted = ParametricSlot(lambda t: np.stack([1 - 0.4 * np.cos(t), -0.4 * np.sin(t)], -1),
+                             lambda t: np.stack([0.4 * np.sin(t), -0.4 * np.cos(t)], -1),
+                             lambda t: np.stack([0.4 * np.cos(t), 0.4 * np.sin(t)], -1), -np.pi, np.pi, periodic=True)
+    with pytest.raises(SingularityError, match=r"at φ = 0 the slot \(t = -3.14159\) is tangent"):
+        CurvedSlotLink(0.4, 1.0, shifted)
