@@ -6,8 +6,9 @@ Seed 001 compares linkages with cams by three invariants of the rise:
 
 * B = max |y'| — velocity, the physical peak is B·h·ω/Φ;
 * C = max |y''| — acceleration, the peak is C·h·ω²/Φ²;
-* D = max (y'·y'') — "kinetic power" (velocity × acceleration), the peak of the inertia
-  power is D·J·h²·ω³/Φ³.
+* D = max |y'·y''| — "kinetic power" (velocity × acceleration), the peak of the inertia
+  power is D·J·h²·ω³/Φ³. (The absolute value: the thesis' МЧВ1 rows are reproduced only with
+  it; for the symmetric cam laws it equals the signed maximum.)
 
 :func:`rise_invariants` measures the same numbers on any output law ψ(φ) sampled by a
 mechanism (analogs ψ', ψ'' with respect to φ), so linkages and cams go in one table.
@@ -23,7 +24,8 @@ from scipy.optimize import minimize_scalar
 
 from .errors import MechanismError
 
-__all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "rise_invariants", "thesis_cam_rows"]
+__all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "rise_invariants", "thesis_cam_rows",
+           "thesis_mchv1_rows"]
 
 
 class Invariants(tuple):
@@ -64,9 +66,10 @@ def _piecewise(x, lo, hi):
 
 
 def _dh_dd_max():
-    # double harmonic: y'y'' = (π³/4)(sin πx − ½ sin 2πx)(cos πx − cos 2πx); maximum by calculus
-    f = lambda x: -(PI**3 / 4) * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x)) * (np.cos(PI * x) - np.cos(2 * PI * x))
-    return -minimize_scalar(f, bounds=(0.0, 0.5), method="bounded", options=dict(xatol=1e-12)).fun
+    # double harmonic: y'y'' = (π³/4)(sin πx − ½ sin 2πx)(cos πx − cos 2πx); its largest magnitude is
+    # in the deceleration (x > 2/3, where y'' < 0), found by a bounded search on [2/3, 1]
+    f = lambda x: (PI**3 / 4) * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x)) * (np.cos(PI * x) - np.cos(2 * PI * x))
+    return -minimize_scalar(f, bounds=(2 / 3, 1.0), method="bounded", options=dict(xatol=1e-12)).fun
 
 
 LAWS = {
@@ -153,14 +156,14 @@ def law_invariants(law: RiseLaw | str, n: int = 20001) -> Invariants:
         return max(float(v[i]), -res.fun)
 
     return Invariants(peak(lambda s: np.abs(law.dy(s))), peak(lambda s: np.abs(law.ddy(s))),
-                      peak(lambda s: law.dy(s) * law.ddy(s)))
+                      peak(lambda s: np.abs(law.dy(s) * law.ddy(s))))
 
 
 def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: np.ndarray) -> Invariants:
     """B, C, D of an output law sampled over one rise (φ from its start to its end).
 
     With Φ = φ_end − φ_start and h = ψ_end − ψ_start: B = max|ψ'|·Φ/|h|, C = max|ψ''|·Φ²/|h|,
-    D = max(ψ'ψ'')·Φ³/h² (seed 001, chapter 2: invariants of velocity, acceleration and kinetic
+    D = max|ψ'ψ''|·Φ³/h² (seed 001, chapter 2: invariants of velocity, acceleration and kinetic
     power). Raises MechanismError if the output does not move.
     """
     Phi = float(phi[-1] - phi[0])
@@ -168,7 +171,7 @@ def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: n
     if not abs(h) > 0 or not Phi > 0:
         raise MechanismError(f"no rise to normalise: stroke h = {h:.3g}, duration Φ = {Phi:.3g}")
     return Invariants(np.max(np.abs(dpsi)) * Phi / abs(h), np.max(np.abs(ddpsi)) * Phi**2 / abs(h),
-                      np.max(dpsi * ddpsi) * Phi**3 / h**2)
+                      np.max(np.abs(dpsi * ddpsi)) * Phi**3 / h**2)
 
 
 def thesis_cam_rows() -> dict:
@@ -183,3 +186,15 @@ def thesis_cam_rows() -> dict:
         "3-4-5 polynomial": (1.875, 5.77, None),  # printed D is garbled ("6.ВЭ")
         "double harmonic": (2.04, 9.88, 7.00),
     }
+
+
+def thesis_mchv1_rows() -> list:
+    """МЧВ1 rows of the same table (K = 1, β_m = 20°) as printed: (δ°, α°, a, B, C, D).
+    The dwell is 2α; a is printed to one decimal only."""
+    return [
+        (120, 25, 0.7, 2.58, 17.11, 22.79), (120, 50, 0.8, 2.23, 11.69, 14.02), (120, 75, 0.8, 1.98, 9.11, 9.74),
+        (180, 25, 0.9, 2.51, 18.25, 22.47), (180, 50, 1.0, 2.16, 12.32, 16.67), (180, 100, 1.0, 1.70, 7.77, 6.71),
+        (180, 125, 1.1, 1.43, 4.70, 3.58), (240, 25, 1.2, 2.26, 13.94, 15.20), (240, 50, 1.5, 1.97, 8.22, 8.86),
+        (240, 100, 1.4, 1.52, 5.17, 4.13), (240, 125, 1.4, 1.30, 3.50, 2.43), (270, 25, 1.5, 2.16, 11.76, 12.52),
+        (270, 50, 1.7, 1.92, 7.23, 7.89), (270, 100, 1.6, 1.45, 4.95, 3.51),
+    ]

@@ -122,3 +122,19 @@ def test_drawings_move_in_place(guide):
     inside = [np.isfinite(d.extras(i)[1]).all() for i in range(12)]
     phi = d.motion.phi
     assert inside == [abs((p - np.pi + np.pi) % (2 * np.pi) - np.pi) <= guide.alpha for p in phi]
+
+
+REPRODUCED = [(120, 25), (180, 25), (180, 50), (180, 100), (240, 25), (240, 50), (240, 100)]
+
+
+@pytest.mark.parametrize("delta,alpha", REPRODUCED)
+def test_thesis_mchv1_rows_reproduced(delta, alpha):
+    from mechlab.chebyshev import rise_law
+    from mechlab.motion_laws import rise_invariants, thesis_mchv1_rows
+
+    row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
+    g = circle_guiding(delta * DEG, row[2], 2 * alpha * DEG)
+    inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG), g.dwell))
+    assert abs(inv.B / row[3] - 1) < 0.02
+    assert abs(inv.C / row[4] - 1) < 0.02
+    assert abs(inv.D / row[5] - 1) < 0.04  # a is printed to one decimal only

@@ -78,9 +78,10 @@ class LambdaMechanism(Mechanism):
     which the symmetry axis of the coupler curve makes π − δ/2 with the ray C→O; −1 is
     its mirror image in the line OC. The output ψ is the angle of the rocker C→B.
 
-    Full rotation of the crank (seed 001, text before Fig. 1: l_OA < l and l_OC + l_OA < 2l,
-    boundary lines r = a and r + a = 2 of Fig. 2a): r < a when a ≤ 1 and r + a < 2 when
-    a ≥ 1; otherwise RotationError names the violated inequality.
+    Crank-rocker condition (boundary lines r = a and r + a = 2 of seed 001, Fig. 2a): r < a
+    and r + a < 2; otherwise RotationError names the violated inequality. (The text before
+    Fig. 1 prints only l_OA < l and l_OC + l_OA < 2l, which also admits the double crank
+    r > a: see the errata.)
     """
 
     r: float
@@ -95,13 +96,18 @@ class LambdaMechanism(Mechanism):
     def __post_init__(self):
         object.__setattr__(self, "r", check_length("r", self.r))
         object.__setattr__(self, "a", check_length("a", self.a))
-        object.__setattr__(self, "delta", _angle("δ", self.delta, 0.0, np.pi))
+        object.__setattr__(self, "delta", _angle("δ", self.delta, 0.0, 2 * np.pi, closed_hi=False))
         object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
         r, a = self.r, self.a
-        if not (r < a and r + a < 2.0):
-            which = (f"r = {r:.6g} ≥ a = {a:.6g}" if r >= a else f"r + a = {r + a:.6g} ≥ 2")
-            raise RotationError(f"the crank of the lambda mechanism cannot turn fully: {which} "
-                                f"(full rotation needs r < a and r + a < 2, lines PX and EN of Fig. 2a)")
+        if not r + a < 2.0:
+            raise RotationError(
+                f"the crank of the lambda mechanism cannot turn fully: r + a = {r + a:.6g} ≥ 2 (Grashof: with "
+                f"links r, 1, 1, a the crank turns only if r + a < 2; line EN of Fig. 2a)")
+        if not r < a:
+            raise RotationError(
+                f"the base four-bar is not a crank-rocker: r = {r:.6g} ≥ a = {a:.6g} (the frame is the shortest "
+                f"link, so the rocker BC would turn fully too: a double crank); the thesis' region needs r < a "
+                f"(line PX of Fig. 2a)")
 
     @cached_property
     def fourbar(self) -> FourBar:
@@ -311,7 +317,7 @@ def _initial_r(a: float) -> float:
 
 
 def _check_inputs(delta, a, dwell, what):
-    delta = _angle("δ", delta, 0.0, np.pi)
+    delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     a = check_length("a", a)
     if not a < 2.0:
         raise SynthesisError(f"{what}: a = {a:.6g} ≥ 2 leaves no crank with full rotation (r < 2 − a)")
@@ -597,7 +603,7 @@ def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray
     D0 means F'(μ0) = F''(μ0) = 0: linear in p = c/a and q = p·k, then a + r = 2 sin(μ0/2)
     and a − r = k/(a + r). Returns (r, a, c) along the line, parametrised by μ0 ∈ (0, δ).
     """
-    delta = _angle("δ", delta, 0.0, np.pi)
+    delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     mu = np.linspace(1e-3, delta - 1e-3, n)
     u, v = (delta - mu) / 2, mu / 2
     rc, drc, ddrc = 2 * np.sin(u), -np.cos(u), -0.5 * np.sin(u)
@@ -625,7 +631,7 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
     rounded) computed by continuation in a, and the transmission lines μ = 30°, 150°.
     Each curve is a pair of arrays (r, a).
     """
-    delta = _angle("δ", delta, 0.0, np.pi)
+    delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     out = {"rotation": rotation_boundary(), "fifth": fifth_order_line(delta)[:2]}
     out.update(transmission_lines())
     for key, dw in [("whole", 2 * np.pi)] + [(int(round(np.degrees(w))), w) for w in dwells]:

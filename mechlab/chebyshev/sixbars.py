@@ -352,3 +352,19 @@ def mchv3_half_turn(guide: StraightGuide) -> LambdaSlottedSixBar:
     m = guide.mechanism
     P = m.coupler_point(np.array([np.pi]))[0]
     return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), 0.0, guide.dwell)
+
+
+def rise_law(mech, dwell: float, n: int = 4001):
+    """Output law over the rise: from the end of the dwell (φ = π + α) to the far extreme.
+
+    Returns (φ, ψ, ψ', ψ'') sampled on n points, ready for
+    :func:`mechlab.motion_laws.rise_invariants` (seed 001, chapter 2)."""
+    far = _far_extreme(mech, dwell)
+    start = np.pi + dwell / 2
+    end = far if far > start else far + TWO_PI
+    phi = np.linspace(start, end, n)
+    mo = mech.motion(phi)
+    return phi, mo.psi, mo.dpsi, mo.ddpsi
+
+
+__all__.append("rise_law")

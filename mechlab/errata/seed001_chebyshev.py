@@ -1,0 +1,108 @@
+"""Errata and undecodable passages of seed 001 (Kinitsky, thesis abstract, 1994), with evidence."""
+
+import numpy as np
+
+from ..chebyshev import (LambdaMechanism, SynthesisError, circle_guiding, classic_lambda, straight_guiding,
+                         thesis_iteration)
+from ..linkages import FourBar
+from ..motion_laws import law_invariants
+from . import Erratum
+
+DEG = np.pi / 180
+NB06 = "06_chebyshev_dwell_synthesis.ipynb"
+NB07 = "07_chebyshev_dwell_sixbars.ipynb"
+
+
+def _rotation():
+    # r = 0.5, a = 0.3 meets both printed conditions, but the frame is the shortest link
+    fb = FourBar(0.5, 1.0, 1.0, 0.3)
+    kind = fb.grashof().kind
+    assert 0.5 < 1 and 0.5 + 0.3 < 2 and kind == "double-crank"
+    ok = FourBar(0.25, 1.0, 1.0, 0.3).grashof().kind
+    assert ok == "crank-rocker"
+    return (f"r = 0.5, a = 0.3 satisfies r < 1 and r + a < 2, yet the four-bar (0.5, 1, 1, 0.3) is a "
+            f"{kind}; with r = 0.25 < a it is a {ok}")
+
+
+def _formulas():
+    # the relations that replace (2)-(11): |CA| = 2 sin(μ/2), |CD| = 2 sin((δ − μ)/2), ∠ACD = π − δ/2
+    m = LambdaMechanism(0.3, 0.9, 140 * DEG)
+    phi = np.linspace(0, 2 * np.pi, 721)
+    mo = m.motion(phi)
+    A, C, D = (mo.points[k].p for k in "ACD")
+    mu = mo.transmission
+    ca, cd = np.hypot(*(A - C).T), np.hypot(*(D - C).T)
+    ang = np.arccos(np.clip(((A - C) * (D - C)).sum(1) / (ca * cd), -1, 1))
+    e1 = np.abs(ca - 2 * np.sin(mu / 2)).max()
+    e2 = np.abs(cd - 2 * np.sin((m.delta - mu) / 2)).max()
+    e3 = np.abs(ang - (np.pi - m.delta / 2)).max()
+    assert max(e1, e2, e3) < 1e-12
+    return (f"over a turn of (r, a, δ) = (0.3, 0.9, 140°): max errors {e1:.1e}, {e2:.1e}, {e3:.1e} "
+            f"of |CA| = 2 sin(μ/2), |CD| = 2 sin((δ−μ)/2), ∠ACD = π − δ/2")
+
+
+def _iteration():
+    g = circle_guiding(150 * DEG, 0.9, 120 * DEG)
+    r, it, _ = thesis_iteration(150 * DEG, 0.9, 120 * DEG)
+    assert abs(r - g.r) < 1e-6
+    try:
+        thesis_iteration(150 * DEG, 0.9, 60 * DEG)
+    except SynthesisError:
+        failed = True
+    else:
+        failed = False
+    assert failed
+    g60 = circle_guiding(150 * DEG, 0.9, 60 * DEG)
+    return (f"δ = 150°, a = 0.9: 2α = 120° → r = {r:.6f} in {it} steps (scipy: {g.r:.6f}); "
+            f"2α = 60°: no convergence from r0 = a/4 (scipy: r = {g60.r:.6f})")
+
+
+def _cam(name, k, printed, digits=2):
+    def check():
+        got = law_invariants(name)[k]
+        assert round(got, digits) != printed and abs(got - printed) < 1.0
+        return f"{'BCD'[k]} of the {name} law = {got:.4f} (printed {printed:.2f})"
+    return check
+
+
+def _dh_power():
+    got = law_invariants("double harmonic").D
+    x = np.linspace(0, 1, 200001)
+    from ..motion_laws import LAWS
+    law = LAWS["double harmonic"]
+    absmax = np.abs(law.dy(x) * law.ddy(x)).max()
+    signed = (law.dy(x) * law.ddy(x)).max()
+    assert abs(got - absmax) < 1e-6 and abs(absmax - 7.00) > 0.5 and abs(signed - 7.00) > 0.5
+    return f"max |y'y''| = {absmax:.4f} (signed max {signed:.4f}); neither is 7.00"
+
+
+def _classic():
+    s = straight_guiding(np.pi, 0.8, np.pi)
+    m = classic_lambda()
+    x = m.axis_coordinates(np.pi + np.array([0.0, np.pi / 2]))[0]
+    assert abs(s.r - 0.4) < 1e-12 and np.allclose(x, 1.6, atol=1e-14)
+    return (f"Chebyshev's 1 : 2 : 2.5 : 5 lambda is the equal-ripple straight guide of 2α = 180°: "
+            f"r = {s.r:.12f}, x(0) = x(90°) = 1.6, E = {s.E:.6f}")
+
+
+ERRATA = [
+    Erratum("001", "text before Fig. 1 (full rotation)", "$l_{OA} < l$ and $l_{OC} + l_{OA} < 2l$",
+            "also $r < a$ (line PX of Fig. 2a): otherwise the frame is the shortest link and the base "
+            "four-bar is a double crank", _rotation, NB06),
+    Erratum("001", "formulas (2)-(11)", "illegible in the OCR (only (1), (5), (11), (13)-(15) readable)",
+            "re-derived: B is the circumcentre of A, C, D, so $|CA| = 2\\sin(\\mu/2)$, "
+            "$|CD| = 2\\sin((\\delta-\\mu)/2)$, $\\angle ACD = \\pi - \\delta/2$; synthesis by equal ripple",
+            _formulas, NB06),
+    Erratum("001", "iteration (12)-(13)", "halving $r_0 \\leftarrow (r_0 + r_1)/2$ from $r_0 = a/4$ converges",
+            "as reconstructed it converges only in part of the map; scipy root finding is used instead",
+            _iteration, NB06),
+    Erratum("001", "Chebyshev's lambda (note)", "dimensions 1 : 2 : 2.5 : 5 quoted without a dwell",
+            "they are exactly the straight-line synthesis for 2α = 180° (a = 0.8 → r = 0.4)", _classic, NB06),
+    Erratum("001", "table p. 21, cosine law", "C = 4.94", "C = π²/2 = 4.93", _cam("cosine", 1, 4.94), NB07),
+    Erratum("001", "table p. 21, sinusoidal (cycloidal) law", "D = 8.15", "D = 3√3π/2 = 8.16",
+            _cam("cycloidal (sine)", 2, 8.15), NB07),
+    Erratum("001", "table p. 21, double harmonic law", "C = 9.88", "C = π² = 9.87",
+            _cam("double harmonic", 1, 9.88), NB07),
+    Erratum("001", "table p. 21, double harmonic law", "D = 7.00", "D = 9.89 (max |y'y''|, the definition that reproduces the МЧВ1 rows; 7.75 for the signed max)",
+            _dh_power, NB07),
+]
