@@ -58,6 +58,9 @@ Analysis:
 * ``Kinetostatics(mechanism, model, loads, omega1, eps1, gravity)`` — a mechanism with
   its loads: ``.motion(phi)``/``.cycle(n)`` delegate to the mechanism, ``.forces(phi)``
   solves; :mod:`mechlab.draw.forces` draws it with reaction arrows (``animate`` works).
+* The chapter's examples: ``press(...)`` (a crank press, the resistance ``press_load(P,
+  work_fraction)`` on its slider) and ``rocker_drive(...)`` (a four-bar with a resisting
+  torque on the rocker), both returning a Kinetostatics; ``rpm_to_rad(rpm)``.
 
 Friction is solved by **fixed-point iteration**: the friction couples and forces are
 computed from the previous iterate's reactions and applied as known loads, and the
@@ -203,6 +206,8 @@ class Prismatic:
     def __post_init__(self):
         object.__setattr__(self, "friction", _friction(self.name, self.friction))
         object.__setattr__(self, "angle", float(self.angle))
+        if not np.isfinite(self.angle):
+            raise DimensionError(f"guide angle of {self.name} must be finite, got {self.angle}")
 
 
 @dataclass(frozen=True)
@@ -222,6 +227,10 @@ class HigherPair:
 
     def __post_init__(self):
         object.__setattr__(self, "friction", _friction(self.name, self.friction))
+        if not callable(self.normal):
+            object.__setattr__(self, "normal", float(self.normal))
+            if not np.isfinite(self.normal):
+                raise DimensionError(f"normal angle of {self.name} must be finite, got {self.normal}")
 
 
 Pair = Revolute | Prismatic | HigherPair

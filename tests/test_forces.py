@@ -321,3 +321,70 @@ def test_force_drawing_and_explorer_move_in_place():
     assert e.message == "" and e.result.iterations > 1
     e.angle.value = 123.0
     assert abs(np.degrees(e.result.phi[e.frame]) - 123.0) <= 3.0
+
+
+def test_exercises_have_the_right_answers():
+    from mechlab.exercises import check, solution
+    sc = SliderCrank(0.1, 0.4)
+    assert solution("09.1") == pytest.approx(1000.0 * sc.motion(np.radians(240.0)).ds[0], rel=1e-12)
+    fb = FourBar(0.1, 0.3, 0.3, 0.35)
+    mu = fb.motion(np.radians(90.0)).transmission[0]
+    assert solution("09.2") == pytest.approx(40.0 / (0.3 * np.sin(mu)), rel=1e-10)
+    assert solution("09.3") == pytest.approx(3000.0 * 0.25 * 0.2 * 90 / 60, rel=5e-3)
+    assert 0.5 < solution("09.4") < 1.0
+    for key in ("09.1", "09.2", "09.3", "09.4"):
+        assert check(key, solution(key), quiet=True)
+        assert not check(key, 1.1 * solution(key) + 1.0, quiet=True)
+
+
+def test_errata_checks_hold():
+    from mechlab.errata.seed003_forces import ERRATA
+    assert len(ERRATA) == 3
+    for e in ERRATA:
+        text = e.evidence()
+        assert e.notebook == "09_forces.ipynb" and any(ch.isdigit() for ch in text)
+
+
+def test_class_iv_group_solved_as_one():
+    """The class-IV six-bar's four-link group (12 equations, 12 unknowns) in one batch."""
+    from mechlab.sixbar import example
+    sb = example()
+    mo = sb.motion(sb.turn(91))
+    bodies = (Body("crank", "O", ("O", "A")), Body("l2", "Q", ("Q", "P"), mass=2.0, inertia=0.05, com=(0.3, -0.2)),
+              Body("l3", "R", ("R", "Q"), mass=0.5, inertia=0.003), Body("l5", "T", ("T", "P"), mass=1.0, inertia=0.06),
+              Body("l4", "E", ("E", "R"), mass=3.0, inertia=0.2, com=(0.4, 0.1)))
+    pairs = (Revolute("O", FRAME, "crank", "O"), Revolute("A", "crank", "l2", "A"), Revolute("Q", "l2", "l3", "Q"),
+             Revolute("P", "l2", "l5", "P"), Revolute("R", "l3", "l4", "R"), Revolute("T", "l5", "l4", "T"),
+             Revolute("E", FRAME, "l4", "E"))
+    model = ForceModel(bodies, pairs, (("l2", "l3", "l5", "l4"),), "crank", "O")
+    loads = [Torque("l4", lambda m: -20.0 * np.sign(m.dpsi))]
+    res = solve(model, mo, loads, omega1=10.0, eps1=-4.0)
+    vw = virtual_work_torque(model, mo, loads, omega1=10.0, eps1=-4.0)
+    assert np.max(np.abs(res.torque - vw)) <= 1e-9 * np.max(np.abs(vw)) and res.residual < 1e-12
+    rf = solve(model.with_friction(0.1, 0.02), mo, loads, omega1=10.0)
+    assert np.max(np.abs(rf.torque - rf.torque_power)) <= 1e-9 * np.max(np.abs(rf.torque))
+
+
+def test_geneva_wheel_as_a_one_link_group():
+    """Pin in a radial slot: M_b = (J ψ'' ω² + T sgn ψ') ψ' (the wheel's power balance)."""
+    from mechlab.geneva import ExternalGeneva
+    g = ExternalGeneva(5, 0.1)
+    s0 = g.engagement_half_angle
+    phi = np.pi + s0 * (1 - 1e-9) * np.linspace(-1, 1, 121)
+    mo = g.motion(phi)
+    J, T, w = 0.05, 5.0, 10.0
+    model = ForceModel((Body("crank", "O", ("O", "A")), Body("wheel", "W", ("W", "A"), inertia=J)),
+                       (Revolute("O", FRAME, "crank", "O"), HigherPair("pin", "wheel", "crank", "A"),
+                        Revolute("W", FRAME, "wheel", "W")), (("wheel",),), "crank", "O")
+    res = solve(model, mo, [Torque("wheel", lambda m: -T * np.sign(m.dpsi))], omega1=w, gravity=(0, 0))
+    ref = (J * mo.ddpsi * w**2 + T * np.sign(mo.dpsi)) * mo.dpsi
+    assert np.max(np.abs(res.torque - ref)) <= 1e-9 * np.max(np.abs(ref))
+    WA = np.hypot(*(mo.points["A"].p - mo.points["W"].p).T)
+    assert np.allclose(np.abs(res.reactions["pin"].normal) * WA, np.abs(ref / mo.dpsi), rtol=1e-9)
+
+
+def test_pair_angles_must_be_finite():
+    with pytest.raises(MechanismError, match="guide angle of g must be finite"):
+        Prismatic("g", FRAME, "s", "B", float("nan"))
+    with pytest.raises(MechanismError, match="normal angle of h must be finite"):
+        HigherPair("h", FRAME, "s", "B", float("inf"))
