@@ -85,6 +85,17 @@ def _classic():
             f"r = {s.r:.12f}, x(0) = x(90°) = 1.6, E = {s.E:.6f}")
 
 
+def _mchv1_row():
+    from ..chebyshev import mchv1, rise_law
+    from ..motion_laws import rise_invariants
+
+    g = circle_guiding(np.pi, 1.0, 100 * DEG)
+    inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG), g.dwell))
+    assert abs(inv.B - 2.16) < 0.01 and abs(inv.C / 12.32 - 1) < 0.01 and abs(inv.D - 16.67) > 2.5
+    return (f"δ = 180°, 2α = 100°, a = 1.0, K = 1, β_m = 20°: B = {inv.B:.2f}, C = {inv.C:.2f} agree with the "
+            f"printed 2.16, 12.32, but D = {inv.D:.2f}; the neighbouring rows agree within 4 %")
+
+
 ERRATA = [
     Erratum("001", "text before Fig. 1 (full rotation)", "$l_{OA} < l$ and $l_{OC} + l_{OA} < 2l$",
             "also $r < a$ (line PX of Fig. 2a): otherwise the frame is the shortest link and the base "
@@ -98,6 +109,8 @@ ERRATA = [
             _iteration, NB06),
     Erratum("001", "Chebyshev's lambda (note)", "dimensions 1 : 2 : 2.5 : 5 quoted without a dwell",
             "they are exactly the straight-line synthesis for 2α = 180° (a = 0.8 → r = 0.4)", _classic, NB06),
+    Erratum("001", "table p. 21, МЧВ1 row δ = 180°, α = 50°", "D = 16.67", "D = 13.67 (probably a misprint of one digit)",
+            _mchv1_row, NB07),
     Erratum("001", "table p. 21, cosine law", "C = 4.94", "C = π²/2 = 4.93", _cam("cosine", 1, 4.94), NB07),
     Erratum("001", "table p. 21, sinusoidal (cycloidal) law", "D = 8.15", "D = 3√3π/2 = 8.16",
             _cam("cycloidal (sine)", 2, 8.15), NB07),
