@@ -329,3 +329,12 @@ def test_rotating_link_dwells_at_a_pressure_angle_of_at_least_90_minus_arcsin():
         assert th.min() >= np.pi / 2 - np.arcsin(1 / lam) - 1e-12
     # λ < 1: the dwell arc has a point of zero pressure angle, at cos φ = -λ
     assert arc_pressure_angle(0.4, np.arccos(-0.4))[0] < 1e-12
+
+
+@pytest.mark.parametrize("tr", TRANSITIONS)
+def test_slot_curvature_is_continuous_at_the_joins_and_dwell_is_extreme(tr):
+    m = curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition=tr)
+    e = 1e-7
+    k = m.law.curvature(np.array([m.phi1 - e, m.phi1 + e, m.phi2 - e, m.phi2 + e]))
+    assert np.allclose(np.abs(k), 1 / m.crank, rtol=1e-5)
+    assert abs(m.motion(m.turn(721)).psi.max() - m.law.psi_dwell) < 1e-12
