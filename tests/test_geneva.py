@@ -322,6 +322,10 @@ def test_impact_detection_and_comparison():
     assert ext["dwell_fraction"] == pytest.approx(0.75, abs=2e-4) and ext["index_deg"] == pytest.approx(90.0)
     assert ext["max_dpsi"] == pytest.approx(np.sqrt(2) + 1, rel=1e-9)
     assert ext["Cv"] == pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3)
+    shifted = intermittency(ExternalGeneva(4, 1.0), n=14401, phase=0.3)
+    assert shifted["dwell_fraction"] == pytest.approx(0.75, abs=2e-4) and shifted["impact"] == "soft"
+    loose = intermittency(ExternalGeneva(4, 1.0), n=14401, dwell_tol=0.5)
+    assert loose["dwell_fraction"] > 0.8  # a loose tolerance counts the slow ends of the motion as dwell
     rows = compare({"external": ExternalGeneva(4, 1.0), "spherical": SphericalGeneva(40, 15, 4),
                     "whitworth": SlottedLink(2.0, 1.0)})
     assert [r["name"] for r in rows] == ["external", "spherical", "whitworth"]
@@ -423,6 +427,9 @@ def test_spherical_drawing_and_comparison_plot():
     axes = plot_comparison({"ext": ExternalGeneva(4, 1.0), "sph": g}, n=181)
     assert len(axes[0].lines) == 2 and len(axes[1].lines) == 2
     assert "impact: hard" in axes[0].lines[1].get_label()
+    axes = plot_comparison({"sph": g}, n=181, phase=0.1, dwell_tol={"sph": 0.5})
+    assert np.isclose(axes[0].lines[0].get_xdata()[0], np.degrees(0.1))
+    assert "dwell 0." in axes[0].lines[0].get_label()
     plt.close("all")
 
 

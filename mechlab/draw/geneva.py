@@ -191,17 +191,18 @@ class SphericalGenevaDrawing:
         self.ax.set_axis_off()
 
 
-def plot_comparison(mechanisms: dict, axes=None, n: int = 721):
-    """ψ' and ψ'' over one crank turn for each named mechanism, in the sense of its
-    index (the external Geneva's negative turn shown positive), with
-    :func:`mechlab.geneva.intermittency` in the legend."""
+def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.0, dwell_tol: dict | None = None):
+    """ψ' and ψ'' over one crank turn (from ``phase``) for each named mechanism, in the
+    sense of its index (the external Geneva's negative turn shown positive), with
+    :func:`mechlab.geneva.intermittency` in the legend (``dwell_tol`` per name, for
+    approximate dwells)."""
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5))
-    phi = np.linspace(0, 2 * np.pi, n)
+    phi = phase + np.linspace(0, 2 * np.pi, n)
     for name, m in mechanisms.items():
         mo = m.motion(phi)
         sense = np.sign(mo.psi[-1] - mo.psi[0])
-        inv = intermittency(m, n=2 * n)
+        inv = intermittency(m, n=2 * n, phase=phase, dwell_tol=(dwell_tol or {}).get(name, 1e-9))
         label = f"{name}: dwell {inv['dwell_fraction']:.2f}, impact: {inv['impact']}"
         axes[0].plot(np.degrees(phi), sense * mo.dpsi, label=label)
         axes[1].plot(np.degrees(phi), sense * mo.ddpsi, label=name)
