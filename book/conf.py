@@ -95,3 +95,4 @@ html_sourcelink_suffix = ""
 html_copy_source = True
 # pydata-sphinx-theme logs a console error when the colour mode is left empty
 html_context = {"default_mode": "light"}
+html_favicon = "_static/favicon.svg"  # a local icon: the browser would ask for /favicon.ico (a 404)

@@ -78,6 +78,7 @@ def test_page(browser, server, page_path):
     page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
     page.on("requestfailed", lambda r: failed.append(f"{r.url[:120]}: {r.failure}")
             if urlparse(r.url).hostname in LOCAL_HOSTS else None)
+    page.on("response", lambda r: failed.append(f"{r.url[:120]}: HTTP {r.status}") if r.status >= 400 else None)
 
     def route(r):
         url = urlparse(r.request.url)
