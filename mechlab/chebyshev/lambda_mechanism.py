@@ -343,7 +343,14 @@ def _continuation_guess(delta, a, alpha, eqs_at):
     start = _fifth_point(delta, a)
     if start is None:
         return None
-    a0 = min(alpha, np.radians(8.0))
+    for first in (25.0, 15.0, 8.0):  # the first step's size matters; try a few
+        x = _follow(eqs_at, start, alpha, min(alpha, np.radians(first)))
+        if x is not None:
+            return x
+    return None
+
+
+def _follow(eqs_at, start, alpha, a0):
     x = np.array([start[0], start[1], 0.5 * a0, np.sqrt(3) / 2 * a0])
     prev = a0
     for al in np.linspace(a0, alpha, max(2, int(np.ceil((alpha - a0) / np.radians(6.0))) + 1)):
@@ -408,7 +415,8 @@ def _solve_circle(delta, a, dwell, eqs, x0):
     return g, None
 
 
-def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None = None) -> CircleGuide:
+def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None = None,
+                   minimax: bool = True) -> CircleGuide:
     """Circle-guiding lambda mechanism for break angle δ, frame a and dwell 2α (radians).
 
     Finds r, the arc centre Q on the axis and R0, R1 such that ρ(t) = |D − Q| over the dwell
@@ -417,7 +425,8 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     the three free parameters r, c, R). Solved with scipy's ``root`` (hybr), started by
     continuation in α from the closed-form fifth-order contact (2α → 0, :func:`fifth_order_line`)
     or, failing that, from a minimax estimate (Nelder-Mead on (r, c)); ``guess`` =
-    (r, c, t3, t2) starts from a neighbouring solution instead.
+    (r, c, t3, t2) starts from a neighbouring solution instead; ``minimax=False`` skips the
+    (slow) Nelder-Mead fallback.
     Raises SynthesisError when no such design exists (outside the existence limits of Fig. 2a).
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
@@ -431,8 +440,9 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
             return np.full(4, 1e3)
         return [rho[0] - rho[2], rho[1] - rho[3], drho[1], drho[2]]
 
-    starts = [guess] if guess is not None else [lambda: _continuation_guess(delta, a, alpha, eqs),
-                                                lambda: _minimax_guess(delta, a, alpha)]
+    starts = [guess] if guess is not None else [lambda: _continuation_guess(delta, a, alpha, eqs)]
+    if guess is None and minimax:
+        starts.append(lambda: _minimax_guess(delta, a, alpha))
     for start in starts:
         x0 = start() if callable(start) else start
         if x0 is None:
@@ -626,15 +636,16 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
                   n: int = 25) -> dict:
     """Curves of Fig. 2a for break angle δ in the (r, a) plane.
 
-    ``rotation`` (r = a, r + a = 2), ``fifth`` (fifth-order contact), ``whole`` (the whole curve
-    within the band: 2α = 2π), one iso-dwell curve per requested dwell (key = dwell in degrees,
-    rounded) computed by continuation in a, and the transmission lines μ = 30°, 150°.
+    ``rotation`` (r = a, r + a = 2), ``fifth`` (fifth-order contact), one iso-dwell curve per
+    requested dwell (key = dwell in degrees, rounded) computed by continuation in a, and the
+    transmission lines μ = 30°, 150°. (The thesis' "whole curve within the band" line, 2α → 360°,
+    is not drawn: the equal-ripple solution is not followed reliably that far.)
     Each curve is a pair of arrays (r, a).
     """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     out = {"rotation": rotation_boundary(), "fifth": fifth_order_line(delta)[:2]}
     out.update(transmission_lines())
-    for key, dw in [("whole", 2 * np.pi)] + [(int(round(np.degrees(w))), w) for w in dwells]:
+    for key, dw in [(int(round(np.degrees(w))), w) for w in dwells]:
         out[key] = _iso_dwell(delta, dw, n)
     return out
 
@@ -646,10 +657,10 @@ def _iso_dwell(delta, dwell, n):
     guess = None
     for a in np.linspace(0.05, 1.95, n):
         try:
-            g = circle_guiding(delta, a, dwell, guess=guess)
+            g = circle_guiding(delta, a, dwell, guess=guess, minimax=False)
         except MechanismError:
             try:
-                g = circle_guiding(delta, a, dwell) if guess is not None else None
+                g = circle_guiding(delta, a, dwell, minimax=False) if guess is not None else None
             except MechanismError:
                 g = None
         if g is None:
