@@ -62,13 +62,18 @@ Analysis:
   work_fraction)`` on its slider) and ``rocker_drive(...)`` (a four-bar with a resisting
   torque on the rocker), both returning a Kinetostatics; ``rpm_to_rad(rpm)``.
 
-Friction is solved by **fixed-point iteration**: the friction couples and forces are
-computed from the previous iterate's reactions and applied as known loads, and the
-group-by-group pass is repeated until the reactions change by less than 1e-13 of
-their size (the map contracts with factor ≈ f·r/l for journals, ≈ f·tan(pressure
-angle) for sliders); no convergence within ``maxiter`` means the mechanism is near
-self-locking and raises :class:`SelfLockingError`. The sense of sliding comes from
-the analogs and the sign of ω1 (ω1 = 0 is treated as the start of a motion with ω1 > 0).
+Friction is solved by **linearisation and iteration on its senses**: with the direction
+ê of a journal's reaction R and the sign of a sliding pair's normal force N taken from
+the previous pass, the friction couple f·r·|R| = f·r·ê·R and the friction force
+f·|N| = f·sgn(N)·N are *linear* in the unknowns, so they go into each group's matrix
+and every pass is still a linear group-by-group solve (the first pass is frictionless).
+The passes stop when the linearisation is exact (ê·R = |R| to 1e-12, every sgn N
+consistent) — usually after 3-6 passes. A friction force that is less than a full
+pass behind would not converge where f·tan(pressure angle) > 1 even though a solution
+exists; this scheme does. Where no consistent senses exist (a sense keeps reversing)
+or the group's matrix with friction is singular, the mechanism is self-locking there:
+:class:`SelfLockingError` names the crank angle. The sense of sliding comes from the
+analogs and the sign of ω1 (ω1 = 0 is treated as the start of a motion with ω1 > 0).
 Prismatic friction is f·|N| with N the resultant normal force (edge pressures from
 the reaction couple are not modelled).
 
@@ -585,15 +590,15 @@ def _sliding(p, frames, P, nrm):
 
 
 def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1: float = 0.0,
-          gravity=(0.0, -G), *, maxiter: int = 200, tol: float = 1e-13) -> ForceResult:
+          gravity=(0.0, -G), *, maxiter: int = 100, tol: float = 1e-12) -> ForceResult:
     """Reactions in every pair and the balancing torque, group by group (seed 003's method).
 
     Groups are solved in ``model.groups`` order (output first), then the crank. Each
     group's 3k equilibrium equations (ΣF = 0, ΣM about each link's origin = 0) form a
     batch of linear systems in its unknown reactions, solved at every crank angle at
-    once. Friction (if any pair has f > 0) is iterated to a fixed point, see the module
-    docstring. Raises SingularityError where a group cannot carry its loads (a dead
-    point) and SelfLockingError if the friction iteration diverges.
+    once. Friction (if any pair has f > 0) is linearised and iterated on its senses, see
+    the module docstring. Raises SingularityError where a group cannot carry its loads (a dead
+    point) and SelfLockingError where friction locks the mechanism.
     """
     omega1, eps1 = float(omega1), float(eps1)
     if not (np.isfinite(omega1) and np.isfinite(eps1)):
@@ -614,9 +619,11 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
     spread = np.concatenate([P[p.name] for p in model.pairs])
     length = float(np.max(np.ptp(spread, axis=0))) or 1.0   # size of the mechanism
 
-    def pass_(fric):
-        """One group-by-group pass with the friction loads ``fric`` (pair → (force on b, couple on b))."""
-        force, couple, normal = {}, {}, {}   # pair → force/couple of a on b (without friction), N
+    def pass_(dirs):
+        """One group-by-group pass with friction linearised at ``dirs`` (pair → direction
+        ê of R for a journal, sign of N for a sliding pair): f·r·|R| ≈ f·r·ê·R and
+        f·|N| ≈ f·sgn(N)·N are linear in the unknowns, so each group stays a linear system."""
+        force, couple, normal, fric = {}, {}, {}, {}   # pair → force/couple of a on b, N, friction on b
         torque = None
         for group in (*model.groups, (model.crank,)):
             unknown = model._unknown_pairs(group, set(force))
@@ -629,24 +636,22 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
                 r = row[b]
                 rhs[:, r:r + 2] -= kl.force[b]
                 rhs[:, r + 2] -= kl.moment[b]
-            # known reactions (solved pairs) and friction loads acting on this group's links
-            for p in model.pairs:
-                parts = []
-                if p.name in force:
-                    parts.append((force[p.name], couple[p.name]))
-                if p.name in fric:
-                    parts.append(fric[p.name])
+            # known reactions and friction of solved pairs acting on this group's links
+            for name in force:
+                p = by_name[name]
+                parts = [(force[name], couple[name])] + ([fric[name]] if name in fric else [])
                 for F, C in parts:
                     for body, s in ((p.b, 1.0), (p.a, -1.0)):
                         if body in row:
                             r, o = row[body], frames[body].o.p
                             rhs[:, r:r + 2] -= s * F
-                            rhs[:, r + 2] -= s * (cross(P[p.name] - o, F) + C)
+                            rhs[:, r + 2] -= s * (cross(P[name] - o, F) + C)
             col = 0
             layout = []
             couple_cols = []
             for p in unknown:
                 layout.append((p, col))
+                rough_here = p.name in dirs
                 for body, s in ((p.b, 1.0), (p.a, -1.0)):
                     if body not in row:
                         continue
@@ -656,6 +661,10 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
                         A[:, r + 1, col + 1] += s
                         A[:, r + 2, col] += -s * d[:, 1]
                         A[:, r + 2, col + 1] += s * d[:, 0]
+                        if rough_here:   # friction couple on b: k·(ê·R), k = −f·r·sgn(ω_b − ω_a)
+                            k = fcoef[p.name]
+                            A[:, r + 2, col] += s * k * dirs[p.name][:, 0]
+                            A[:, r + 2, col + 1] += s * k * dirs[p.name][:, 1]
                     else:
                         e = nrm[p.name]
                         A[:, r, col] += s * e[:, 0]
@@ -663,6 +672,12 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
                         A[:, r + 2, col] += s * cross(d, e)
                         if isinstance(p, Prismatic):
                             A[:, r + 2, col + 1] += s
+                        if rough_here:   # friction force on b: k·sgn(N)·N·t, k = −f·sgn(slip)
+                            k = fcoef[p.name] * dirs[p.name]
+                            t = slip[p.name][1]
+                            A[:, r, col] += s * k * t[:, 0]
+                            A[:, r + 1, col] += s * k * t[:, 1]
+                            A[:, r + 2, col] += s * k * cross(d, t)
                 if isinstance(p, Prismatic):
                     couple_cols.append(col + 1)
                 col += p.n_unknowns
@@ -677,71 +692,97 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
             cond = np.linalg.cond(S)
             if np.any(~(cond < 1e12)):
                 i = int(np.argmax(~(cond < 1e12)))
+                at = f"at φ = {np.degrees(motion.phi[i]):.2f}°"
+                if dirs:
+                    raise SelfLockingError(
+                        f"group {group} locks {at}: with friction (f up to {f_max:g}) its equilibrium equations "
+                        f"are singular (condition number {cond[i]:.2e}) — no finite driving force moves it")
                 raise SingularityError(
-                    f"group {group} cannot carry its loads at φ = {np.degrees(motion.phi[i]):.2f}°: its equilibrium "
-                    f"equations are singular (condition number {cond[i]:.2e}), a dead point of the group")
+                    f"group {group} cannot carry its loads {at}: its equilibrium equations are singular "
+                    f"(condition number {cond[i]:.2e}), a dead point of the group")
             x = np.linalg.solve(A, rhs[..., None])[..., 0]
             for p, c in layout:
                 if isinstance(p, Revolute):
-                    force[p.name] = x[:, c:c + 2].copy()
+                    R = x[:, c:c + 2].copy()
+                    force[p.name] = R
                     couple[p.name] = np.zeros(n)
+                    if p.name in dirs:
+                        fric[p.name] = (np.zeros((n, 2)), fcoef[p.name] * dot(dirs[p.name], R))
                 else:
                     N = x[:, c].copy()
                     normal[p.name] = N
                     force[p.name] = N[:, None] * nrm[p.name]
                     couple[p.name] = x[:, c + 1].copy() if isinstance(p, Prismatic) else np.zeros(n)
+                    if p.name in dirs:
+                        fric[p.name] = ((fcoef[p.name] * dirs[p.name] * N)[:, None] * slip[p.name][1], np.zeros(n))
             if is_crank:
                 torque = x[:, col].copy()
-        return force, couple, normal, torque
+        return force, couple, normal, fric, torque
 
-    def friction_loads(force, normal):
-        fric, loss = {}, np.zeros(n)
+    def directions(force, normal, old):
+        """ê = R/|R| (journals) and sgn N (sliding pairs); where R = 0 the old direction stays."""
+        new = {}
         for p in rough:
-            rel, t = slip[p.name]
-            sgn = np.sign(rel * sense)
             if isinstance(p, Revolute):
-                R = np.hypot(force[p.name][:, 0], force[p.name][:, 1])
-                mag = p.friction * p.radius * R
-                fric[p.name] = (np.zeros((n, 2)), -mag * sgn)       # couple on b opposes ω_b − ω_a
+                R = force[p.name]
+                mag = np.hypot(R[:, 0], R[:, 1])
+                e = old[p.name].copy() if p.name in old else np.zeros((n, 2))
+                ok = mag > 0
+                e[ok] = R[ok] / mag[ok, None]
+                new[p.name] = e
             else:
-                mag = p.friction * np.abs(normal[p.name])
-                fric[p.name] = (-(mag * sgn)[:, None] * t, np.zeros(n))  # force on b opposes its slip
-            loss += mag * np.abs(rel)
-        return fric, loss
+                new[p.name] = np.sign(normal[p.name])
+        return new
 
-    fric, loss = {}, np.zeros(n)
-    force, couple, normal, torque = pass_(fric)
+    by_name = {p.name: p for p in model.pairs}
+    fcoef = {}
+    for p in rough:
+        rel, _ = slip[p.name]
+        sgn = np.sign(rel * sense)
+        fcoef[p.name] = -p.friction * (p.radius if isinstance(p, Revolute) else 1.0) * sgn
+    f_max = max((p.friction for p in rough), default=0.0)
+
+    force, couple, normal, fric, torque = pass_({})
     iterations = 1
     if rough:
-        f_max = max(p.friction for p in rough)
-
-        def per_angle(fs, tq):
-            return np.max(np.stack([np.max(np.abs(v), axis=1) for v in fs.values()] + [np.abs(tq)]), axis=0)
-
-        start = per_angle(force, torque) + 1e-300
+        dirs = directions(force, normal, {})
+        flips = {p.name: np.zeros(n, int) for p in rough}
         for iterations in range(2, maxiter + 2):
-            fric, loss = friction_loads(force, normal)
-            new = pass_(fric)
-            size = per_angle(new[0], new[3])
-            change = per_angle({k: new[0][k] - force[k] for k in force}, new[3] - torque)
-            force, couple, normal, torque = new
-            # the iteration diverges where friction outgrows the loads a million-fold: stop
-            # before anything overflows and name the crank angle
-            blown = ~(size < 1e6 * start)
-            if np.any(blown):
-                i = int(np.argmax(blown))
-                raise SelfLockingError(
-                    f"friction iteration diverges at φ = {np.degrees(motion.phi[i]):.2f}°: the reactions grow "
-                    f"without bound at f = {f_max:g} — the mechanism is self-locking there")
-            if np.all(change <= tol * size):
+            force, couple, normal, fric, torque = pass_(dirs)
+            # consistent when the linearisation is exact: ê·R = |R| and sgn(N)·N = |N|
+            bad = np.zeros(n, bool)
+            for p in rough:
+                if isinstance(p, Revolute):
+                    R = force[p.name]
+                    mag = np.hypot(R[:, 0], R[:, 1])
+                    bad |= mag - dot(dirs[p.name], R) > tol * (mag + np.abs(torque) / length + 1e-300)
+                else:
+                    bad |= (dirs[p.name] * normal[p.name] < 0) | ((dirs[p.name] == 0) & (normal[p.name] != 0))
+            if not np.any(bad):
                 break
-        else:
-            i = int(np.argmax(change / (size + 1e-300)))
+            new = directions(force, normal, dirs)
+            for name, d in new.items():   # a sense that keeps reversing: no consistent solution
+                flips[name] += (np.sum(d * dirs[name], axis=-1) if d.ndim == 2 else d * dirs[name]) < 0
+            dirs = new
+            stuck = np.any([v >= 3 for v in flips.values()], axis=0)
+            if np.any(stuck):
+                bad = stuck
+                break
+        if np.any(bad):
+            i = int(np.argmax(bad))
             raise SelfLockingError(
-                f"friction iteration did not converge in {maxiter} passes at φ = {np.degrees(motion.phi[i]):.2f}° "
-                f"(last change {change[i]:.3g} of {size[i]:.3g}): the mechanism is self-locking or nearly so "
-                f"at f = {f_max:g}")
-        fric, loss = friction_loads(force, normal)
+                f"friction has no consistent solution at φ = {np.degrees(motion.phi[i]):.2f}° after {iterations} "
+                f"passes (the senses of the friction forces keep reversing): the mechanism is self-locking "
+                f"there at f = {f_max:g}")
+
+    loss = np.zeros(n)
+    for p in rough:   # friction power per unit ω1: f·r·|R|·|ω_rel| + f·|N|·|v_rel|
+        rel, _ = slip[p.name]
+        if isinstance(p, Revolute):
+            mag = p.friction * p.radius * np.hypot(force[p.name][:, 0], force[p.name][:, 1])
+        else:
+            mag = p.friction * np.abs(normal[p.name])
+        loss += mag * np.abs(rel)
 
     reactions = {}
     for p in model.pairs:

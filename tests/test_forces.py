@@ -388,3 +388,43 @@ def test_pair_angles_must_be_finite():
         Prismatic("g", FRAME, "s", "B", float("nan"))
     with pytest.raises(MechanismError, match="normal angle of h must be finite"):
         HigherPair("h", FRAME, "s", "B", float("inf"))
+
+
+@pytest.mark.parametrize("f", [0.0, 0.1, 0.2])
+def test_guide_friction_against_hand_solution(f):
+    """Massless slider-crank, friction only in the guide. On the slider: rod thrust S·u, normal
+    N = −S·u_y, load (−P, 0), friction −f|N|·sgn(v) along x, so S = P/(u_x − f|u_y|·sgn v)
+    and M_b = S·(A × u). Self-locking where the denominator is ≤ 0, i.e. f·tan β ≥ 1."""
+    sc = SliderCrank(0.1, 0.105)
+    phi = np.radians(np.arange(3.0, 360.0, 6.0))
+    mo = sc.motion(phi)
+    P = 500.0
+    model = model_for(sc).with_friction(f, 0.0, pairs=["guide"])
+    u = (mo.points["B"].p - mo.points["A"].p) / sc.rod
+    den = u[:, 0] - f * np.abs(u[:, 1]) * np.sign(mo.ds)
+    res = solve(model, mo, [Force("slider", "B", (-P, 0.0))], omega1=7.0, gravity=(0.0, 0.0))
+    S = P / den
+    A = mo.points["A"].p
+    assert np.allclose(res.torque, S * (A[:, 0] * u[:, 1] - A[:, 1] * u[:, 0]), rtol=1e-10, atol=1e-10)
+    assert np.allclose(np.abs(res.reactions["guide"].normal), np.abs(S * u[:, 1]), rtol=1e-10, atol=1e-10)
+    assert np.allclose(res.losses, f * np.abs(S * u[:, 1]) * np.abs(mo.ds), rtol=1e-10, atol=1e-10)
+
+
+def test_guide_friction_self_locks_where_f_tan_beta_exceeds_one():
+    """tan β = 0.1/√(0.105² − 0.1²) = 3.12 at φ = ±90°; with f = 0.5, f·tan β = 1.56 > 1. At
+    φ = 270° the slider moves away from the crank (against the load): the denominator
+    u_x − f|u_y| < 0, no finite thrust moves it — locked. At φ = 90° it moves towards the crank,
+    friction then points away from it and S = P/(u_x + f|u_y|): a plain solution, which a naive
+    fixed-point iteration on the friction forces (factor f·tan β > 1) would miss."""
+    sc = SliderCrank(0.1, 0.105)
+    f, P = 0.5, 500.0
+    model = model_for(sc).with_friction(f, 0.0, pairs=["guide"])
+    load = [Force("slider", "B", (-P, 0.0))]
+    with pytest.raises(SelfLockingError, match="φ = 270.00°"):
+        solve(model, sc.motion(np.radians([270.0])), load, omega1=7.0, gravity=(0.0, 0.0))
+    mo = sc.motion(np.radians([90.0]))
+    res = solve(model, mo, load, omega1=7.0, gravity=(0.0, 0.0))
+    u = (mo.points["B"].p - mo.points["A"].p)[0] / sc.rod
+    assert mo.ds[0] < 0 and f * abs(u[1] / u[0]) > 1
+    S = P / (u[0] + f * abs(u[1]))
+    assert res.torque[0] == pytest.approx(S * (0.0 * u[1] - 0.1 * u[0]), rel=1e-12)
