@@ -18,9 +18,10 @@ with metres, kilograms and rad/s, forces come out in N and torques in N·m):
 * ``Body(name, origin, axis=0.0, mass=0, inertia=0, com=(0, 0), length=0)`` — a link.
   ``origin`` is a joint (a key of ``motion.points``) fixed on the link; ``axis`` is
   its x axis: a pair of joint names ``(P, Q)`` (direction P→Q, the two points need not
-  both lie on the link, the direction must be fixed in it) or a constant angle
-  (a translating link). ``com`` = centre of mass in link coordinates (along the axis,
-  to its left); ``inertia`` = moment of inertia J_S about the centre of mass.
+  both lie on the link, the direction must be fixed in it), a constant angle
+  (a translating link), or ``axis(motion) → (θ, θ', θ'')`` such as ``output_axis``.
+  ``com`` = centre of mass in link coordinates (along the axis, to its left);
+  ``inertia`` = moment of inertia J_S about the centre of mass.
 * ``Revolute(name, a, b, point, friction=0, radius=0)`` — turning pair at a joint;
   ``friction`` is Coulomb's f, ``radius`` the journal radius r (friction couple f·r·|R|).
 * ``Prismatic(name, a, b, point, angle=0, friction=0)`` — link b slides on link a
@@ -143,7 +144,9 @@ class Body:
     """A link: a joint fixed on it (``origin``), its axis, and its mass properties.
 
     ``axis`` = (P, Q): the link's x axis points from joint P to joint Q; a float: the
-    link translates with its axis at that constant angle (radians). ``com`` is the
+    link translates with its axis at that constant angle (radians); a callable
+    ``axis(motion) → (θ, θ', θ'')`` (e.g. :func:`output_axis`): any other link angle,
+    such as a curved-slot link's ψ. ``com`` is the
     centre of mass in link coordinates (ξ along the axis from the origin, η to its left).
     ``length`` is informational (a bar's length, for the default slender-bar inertia).
     """
@@ -166,7 +169,9 @@ class Body:
         if len(com) != 2 or not all(np.isfinite(com)):
             raise DimensionError(f"centre of mass of {self.name} must be two finite numbers, got {self.com!r}")
         object.__setattr__(self, "com", com)
-        if not isinstance(self.axis, tuple):
+        if callable(self.axis):
+            pass
+        elif not isinstance(self.axis, tuple):
             a = float(self.axis)
             if not np.isfinite(a):
                 raise DimensionError(f"axis angle of {self.name} must be finite, got {a}")
@@ -176,7 +181,7 @@ class Body:
 
     @property
     def translates(self) -> bool:
-        return not isinstance(self.axis, tuple)
+        return not isinstance(self.axis, tuple) and not callable(self.axis)
 
 
 @dataclass(frozen=True)
@@ -378,6 +383,11 @@ class _Frame:
         return self.o.d + self.dth[:, None] * perp(p - self.o.p)
 
 
+def output_axis(motion) -> tuple:
+    """The output angle ψ with ψ', ψ'' as a link axis (``Body(..., axis=output_axis)``)."""
+    return motion.psi, motion.dpsi, motion.ddpsi
+
+
 def _frames(model: ForceModel, motion: Motion) -> dict[str, _Frame]:
     n = len(motion)
     pts = motion.points
@@ -388,6 +398,12 @@ def _frames(model: ForceModel, motion: Motion) -> dict[str, _Frame]:
         if b.translates:
             z = np.zeros(n)
             frames[b.name] = _Frame(pts[b.origin], np.full(n, b.axis), z, z)
+        elif callable(b.axis):
+            got = tuple(np.asarray(v, dtype=float) for v in b.axis(motion))
+            if len(got) != 3 or not all(v.shape == (n,) and np.all(np.isfinite(v)) for v in got):
+                raise StructureError(f"axis of {b.name} must give finite (θ, θ', θ'') arrays of shape ({n},)")
+            th, d, dd = got
+            frames[b.name] = _Frame(pts[b.origin], th, d, dd)
         else:
             P, Q = b.axis
             ang = vector_angle(relative(pts[Q], pts[P]))
@@ -1065,7 +1081,7 @@ def _four_bar(crank, coupler, rocker, ground):
 __all__ = [
     "FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque",
     "Reaction", "ForceResult", "Drive", "Kinetostatics",
-    "solve", "virtual_work_torque", "model_for", "slender_bar", "drive", "cycle_mean",
+    "solve", "virtual_work_torque", "model_for", "slender_bar", "drive", "cycle_mean", "output_axis",
     "rpm_to_rad", "press_load", "press", "rocker_drive",
     "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError",
 ]

@@ -428,3 +428,38 @@ def test_guide_friction_self_locks_where_f_tan_beta_exceeds_one():
     assert mo.ds[0] < 0 and f * abs(u[1] / u[0]) > 1
     S = P / (u[0] + f * abs(u[1]))
     assert res.torque[0] == pytest.approx(S * (0.0 * u[1] - 0.1 * u[0]), rel=1e-12)
+
+
+def test_curved_slot_higher_pair_equals_the_equivalent_fourbar():
+    """Seed 000: the four-bar is a slotted link whose circular slot (radius l_AB about the
+    rocker's B) carries the pin. As a higher pair, the pin's push acts along the common normal
+    through the arc centre — the massless coupler's line — so with a torque on the link the
+    pin force, the pivot reaction and M_b equal the four-bar's (frame turned by π)."""
+    from mechlab.forces import output_axis
+    from mechlab.geometry import unit
+    from mechlab.linkages.curved_slot import CircleSlot, CurvedSlotLink
+    fb = FourBar(0.1, 0.3, 0.3, 0.35)
+    cs = CurvedSlotLink(fb.crank, fb.ground, CircleSlot((fb.rocker, 0.0), fb.coupler), start=1.0)
+    phi = cs.turn(91)
+    mo = cs.motion(phi)
+
+    def slot_normal(m):   # from the arc centre (carried by the link at l_BE along ψ) to the pin
+        return m.points["A"].p - (m.points["B"].p + fb.rocker * unit(m.psi))
+
+    model = ForceModel((Body("crank", "O", ("O", "A")), Body("link", "B", output_axis, mass=1.5, inertia=0.02,
+                                                                com=(0.1, 0.02))),
+                       (Revolute("O", FRAME, "crank", "O"), HigherPair("slot", "link", "crank", "A", slot_normal),
+                        Revolute("B", FRAME, "link", "B")), (("link",),), "crank", "O")
+    loads = [Torque("link", -40.0)]
+    res = solve(model, mo, loads, omega1=8.0, gravity=(0.0, 0.0))
+    vw = virtual_work_torque(model, mo, loads, omega1=8.0, gravity=(0.0, 0.0))
+    assert np.max(np.abs(res.torque - vw)) <= 1e-9 * np.max(np.abs(vw)) and res.residual < 1e-12
+    massless = model.with_body("link", mass=0.0, inertia=0.0)
+    r = solve(massless, mo, loads, gravity=(0.0, 0.0))
+    r4 = solve(model_for(fb), fb.motion(phi + np.pi), [Torque("rocker", -40.0)], gravity=(0.0, 0.0))
+    assert np.allclose(r.torque, r4.torque, rtol=1e-10, atol=1e-10)
+    assert np.allclose(np.abs(r.reactions["slot"].normal), r4.reactions["A"].magnitude, rtol=1e-10)
+    assert np.allclose(r.reactions["B"].magnitude, r4.reactions["E"].magnitude, rtol=1e-10)
+    with pytest.raises(StructureError, match="axis of link"):
+        solve(ForceModel((model.bodies[0], Body("link", "B", lambda m: (m.psi, m.dpsi))), model.pairs,
+                         model.groups, "crank", "O"), mo, loads)
