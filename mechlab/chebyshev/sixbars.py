@@ -190,7 +190,7 @@ def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1) -> Lambd
         raise InfeasibleDesignError(f"K = {K:g}, β_m = {np.degrees(swing):.4g}°: {err}") from None
     # the designed extreme must be the real far extreme of the simulated rocker
     rep = report(six, guide.dwell)
-    if abs(rep.far - phi_far % TWO_PI) > 1e-6 or abs(rep.swing - swing) > 0.25 * swing:
+    if abs((rep.far - phi_far + np.pi) % TWO_PI - np.pi) > 1e-6 or abs(rep.swing - swing) > 0.25 * swing:
         raise InfeasibleDesignError(
             f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the simulated rocker's far extreme is at "
             f"φ = {np.degrees(rep.far):.2f}°, not at the designed {np.degrees(phi_far % TWO_PI):.2f}°")
