@@ -21,11 +21,12 @@ import tempfile
 import time
 import urllib.request
 from pathlib import Path
+from urllib.parse import urlparse
 
 import pytest
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
-from conftest import ROOT, free_port
+from conftest import LOCAL_HOSTS, ROOT, free_port
 
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 SHOTS = ROOT / "book" / "_build" / "screenshots"
@@ -89,6 +90,11 @@ def lab():
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+# KNOWN, not fixed here: matplotlib's to_jshtml() output links Font Awesome from a CDN, so
+# offline the animation buttons of a notebook in JupyterLab have no icons (they still work).
+# The book strips it (book/_ext/mechbook.py); mechlab.draw should do the same for notebooks.
+KNOWN_REMOTE = "https://maxcdn.bootstrapcdn.com/font-awesome/4.4.0/css/font-awesome.min.css"
+
 _READY_JS = """() => {
   const w = window.jupyterapp && window.jupyterapp.shell.currentWidget;
   const k = w && w.sessionContext && w.sessionContext.session && w.sessionContext.session.kernel;
@@ -139,8 +145,19 @@ def test_notebooks_found():
 def test_notebook_in_jupyterlab(browser, lab, path):
     base, token, root = lab
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
-    page_errors = []
+    page_errors, remote = [], []
     page.on("pageerror", lambda e: page_errors.append(str(e)))
+
+    def route(r):  # the lab must not reach for the internet either (news, extension manager, CDNs)
+        url = urlparse(r.request.url)
+        if url.scheme in ("http", "https", "ws", "wss") and url.hostname not in LOCAL_HOSTS:
+            if r.request.url != KNOWN_REMOTE:
+                remote.append(r.request.url)
+            r.abort()
+        else:
+            r.continue_()
+
+    page.route("**/*", route)
     try:
         # ?reset: a fresh workspace, so the notebooks of earlier tests are not reopened
         page.goto(f"{base}/lab/tree/{path.name}?reset&token={token}", wait_until="domcontentloaded")
@@ -174,6 +191,7 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         SHOTS.mkdir(parents=True, exist_ok=True)
         page.screenshot(path=str(SHOTS / f"lab__{path.stem}.png"))
         assert not page_errors, f"{path.name}: page errors: {page_errors}"
+        assert not remote, f"{path.name}: requests to another host: {remote}"
     finally:
         try:  # free the kernel's memory and CPU for the next notebook
             page.evaluate("() => window.jupyterapp.shell.currentWidget.sessionContext.shutdown()")
