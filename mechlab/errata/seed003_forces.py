@@ -104,12 +104,12 @@ def _check_mean_torque() -> str:
 
 ERRATA = [
     Erratum(source="003", where="slider-crank with an additional link, formula (1)",
-            printed=r"$R_B^t = (G_2 h_2 \mu_l - F_{И2} h_{И4} \mu_l - M_{И2})/l_2$",
-            correct=r"$R_B^t = (G_2 h_2 \mu_l - F_{И2} h_{И2} \mu_l - M_{И2})/l_2$ (the arm of the rod's own inertia force, as in the moment equation above it)",
+            printed=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}4} \mu_l - M_{\text{И}2})/l_2$",
+            correct=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}2} \mu_l - M_{\text{И}2})/l_2$ (the arm of the rod's own inertia force, as in the moment equation above it)",
             check=_check_rod_tangential, notebook=NOTEBOOK),
     Erratum(source="003", where="slider-crank with an additional link, leading link (Fig. 5), moment equation about B",
-            printed=r"$M_{ур} = G_1 h_G \mu_l - R_A h_A \mu_l$",
-            correct=r"$M_{ур} = G_1 h_G \mu_l - R_A h_A \mu_l \pm F_{И1} h_{И1} \mu_l \pm M_{И1}$: the inertia force that the force equation includes also has a moment about B (zero only if ε1 = 0 and the centre of mass is on OB)",
+            printed=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l$",
+            correct=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l \pm F_{\text{И}1} h_{\text{И}1} \mu_l \pm M_{\text{И}1}$: the inertia force that the force equation includes also has a moment about B (zero only if ε1 = 0 and the centre of mass is on OB)",
             check=_check_crank_moment, notebook=NOTEBOOK),
     Erratum(source="004", where="last section, mean crank torque with friction losses",
             printed=r"$M_{cp} \approx n\,\eta^{-1} \sum P_i \rho_i \omega/\omega_{KP}$",

@@ -47,7 +47,7 @@ class ForceExplorer:
         style = {"description_width": "120px"}
         self.sliders = {name: W.FloatSlider(value=c.value, min=c.min, max=c.max, step=c.step,
                                             description=f"{c.label} ({c.unit})" if c.unit else c.label,
-                                            continuous_update=False, style=style, layout=W.Layout(width="380px"))
+                                            continuous_update=True, style=style, layout=W.Layout(width="380px"))
                         for name, c in controls.items()}
         self.angle = W.FloatSlider(value=30.0, min=0.0, max=360.0, step=1.0, description="crank φ (deg)",
                                    continuous_update=True, style=style, layout=W.Layout(width="380px"))
