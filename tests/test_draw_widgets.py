@@ -77,3 +77,16 @@ def test_live_explorer_blits_the_crank_and_redraws_on_new_lengths():
     ex.sliders["rocker"].value = 3.3
     canvas.draw()
     assert ex.message == "" and ex.mechanism.rocker == pytest.approx(3.3)
+
+
+def test_choice_controls_reach_the_factory():
+    from mechlab.widgets import Choice, Control, MechanismExplorer
+    seen = []
+
+    def factory(crank, assembly_kind):
+        seen.append(assembly_kind)
+        return FourBar(crank, 3, 3, 4, 1 if assembly_kind == "open" else -1)
+    ex = MechanismExplorer(factory, {"crank": Control("crank", 0.5, 1.5, 0.1, 1.0, "mm"),
+                                     "assembly_kind": Choice("branch", ("open", "crossed"), "open")}, live=True)
+    ex.sliders["assembly_kind"].value = "crossed"
+    assert seen[-1] == "crossed" and ex.mechanism.assembly == -1

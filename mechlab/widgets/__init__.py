@@ -42,6 +42,31 @@ class Control:
     unit: str = ""
 
 
+@dataclass(frozen=True)
+class Choice:
+    """A choice among a few options (toggle buttons for ≤ 3, else a drop-down).
+
+    ``options`` are the values handed to the factory, or (label, value) pairs.
+    """
+
+    label: str
+    options: tuple
+    value: object
+
+    def widget(self):
+        kind = W.ToggleButtons if len(self.options) <= 3 else W.Dropdown
+        return kind(options=list(self.options), value=self.value, description=self.label)
+
+
+def _control_widget(c):
+    if isinstance(c, Choice):
+        return c.widget()
+    return W.FloatSlider(value=c.value, min=c.min, max=c.max, step=c.step,
+                         description=f"{c.label} ({c.unit})" if c.unit else c.label,
+                         continuous_update=True, style={"description_width": "110px"},
+                         layout=W.Layout(width="380px"))
+
+
 def _fit(ax, bounds) -> bool:
     """Set the axes limits to ``bounds`` (x0, x1, y0, y1), with 10 % to spare so that small
     changes fit without a full redraw, unless the current limits already hold them without
@@ -65,8 +90,8 @@ def _uses_ipympl() -> bool:
 class MechanismExplorer:
     """Sliders → ``factory(**values)`` → drawing, output law and transmission angle.
 
-    ``controls`` maps the factory's keyword names to :class:`Control`; a control
-    named ``assembly`` becomes a ±1 toggle; the crank angle slider (degrees) is
+    ``controls`` maps the factory's keyword names to :class:`Control` (a slider) or
+    :class:`Choice` (buttons or a drop-down); ``assembly=True`` adds a ±1 toggle; the crank angle slider (degrees) is
     added by the explorer. ``trace`` names a joint whose path is drawn.
 
     ``live`` (default: whether the ipympl backend is active) draws on the figure's own
@@ -84,11 +109,7 @@ class MechanismExplorer:
         self.mechanism = None
         self.motion = None
         self.frame = 0
-        self.sliders = {name: W.FloatSlider(value=c.value, min=c.min, max=c.max, step=c.step,
-                                            description=f"{c.label} ({c.unit})" if c.unit else c.label,
-                                            continuous_update=True, style={"description_width": "110px"},
-                                            layout=W.Layout(width="380px"))
-                        for name, c in controls.items()}
+        self.sliders = {name: _control_widget(c) for name, c in controls.items()}
         if assembly:
             self.sliders["assembly"] = W.ToggleButtons(options=[("kc = +1", 1), ("kc = -1", -1)], value=1,
                                                        description="assembly")
@@ -142,7 +163,7 @@ class MechanismExplorer:
         out = {}
         for name, w in self.sliders.items():
             c = self.controls.get(name)
-            out[name] = np.radians(w.value) if c is not None and c.unit == "deg" else w.value
+            out[name] = np.radians(w.value) if isinstance(c, Control) and c.unit == "deg" else w.value
         return out
 
     def rebuild(self):
@@ -234,9 +255,7 @@ class MechanismExplorer:
 
     def _moving_artists(self):
         """Everything that changes with the crank angle or the dimensions (axes limits aside)."""
-        d = self.drawing
-        return [*d.link_lines, *d.extra_lines, d.trace_line, d.pivot_marks, d.joint_marks,
-                *self.law_lines.values(), self.law_marker]
+        return [*self.drawing.artists, *self.law_lines.values(), self.law_marker]
 
     def _capture_background(self, event):
         """After a full draw (which skips the animated artists): save it, then draw them."""

@@ -5,11 +5,10 @@ angle and the largest pressure angle."""
 
 from __future__ import annotations
 
-import ipywidgets as W
 import numpy as np
 
 from ..dwell import TRANSITIONS, curved_slot_dwell
-from . import Control, MechanismExplorer
+from . import Choice, Control, MechanismExplorer
 
 
 class DwellExplorer(MechanismExplorer):
@@ -24,18 +23,13 @@ class DwellExplorer(MechanismExplorer):
             "phi1": Control("φ1", 1.0, 179.0, 1.0, phi1_deg, "deg"),
             "phi2": Control("φ2", 1.0, 179.0, 1.0, phi2_deg, "deg"),
             "roller_radius": Control("roller ρ", 0.0, 0.5, 0.01, roller_radius, "mm"),
+            "transition": Choice("transition", TRANSITIONS, transition),
         }
-        self._transition = transition
         super().__init__(self._build, controls, n=n, title="Curved-slot dwell mechanism (seed 000 §3)")
-        dd = W.Dropdown(options=list(TRANSITIONS), value=transition, description="transition")
-        self.sliders["transition"] = dd
-        dd.observe(self._on_dimensions, names="value")
-        box = self.widget.children[0].children[0]
-        box.children = (*box.children, dd)
 
-    def _build(self, lam, pivot_distance, phi1, phi2, roller_radius, transition=None):
-        return curved_slot_dwell(lam, phi1, phi2, pivot_distance, transition or self._transition,
-                                 roller_radius=roller_radius)
+    @staticmethod
+    def _build(lam, pivot_distance, phi1, phi2, roller_radius, transition):
+        return curved_slot_dwell(lam, phi1, phi2, pivot_distance, transition, roller_radius=roller_radius)
 
     def rebuild(self):
         super().rebuild()

@@ -5,10 +5,8 @@ the peak analogs and the kind of impact instead of the (constant) transmission a
 
 from __future__ import annotations
 
-import ipywidgets as W
-
 from ..geneva import ExternalGeneva, InternalGeneva, SphericalGeneva
-from . import Control, MechanismExplorer
+from . import Choice, Control, MechanismExplorer
 
 
 def _planar(z, centre_distance, kind="external"):
@@ -19,21 +17,11 @@ class GenevaExplorer(MechanismExplorer):
     """MechanismExplorer with a Geneva status line (and, for the planar drive, a toggle
     between the external and the internal wheel)."""
 
-    def __init__(self, factory, controls, *, kinds: bool = False, **kw):
-        self.kind = None
+    def __init__(self, factory, controls, **kw):
         super().__init__(factory, controls, **kw)
         if self.drawing is not None and hasattr(self.drawing, "ax"):
             self.ax_mech = self.drawing.ax  # the spherical drawing puts a 3-D axes in its place
-        if kinds:
-            self.kind = W.ToggleButtons(options=["external", "internal"], value="external", description="wheel")
-            self.sliders["kind"] = self.kind
-            self.kind.observe(self._on_dimensions, names="value")
-            column = self.widget.children[0].children[0]
-            column.children = (*column.children, self.kind)
-
-    def _moving_artists(self):
-        # the drawing's own list (the spherical drawing has no link_lines/extra_lines)
-        return [*self.drawing.artists, *self.law_lines.values(), self.law_marker]
+        self.kind = self.sliders.get("kind")
 
     def rebuild(self):
         super().rebuild()
@@ -52,8 +40,9 @@ class GenevaExplorer(MechanismExplorer):
 
 def planar_geneva_explorer(z: int = 4, centre_distance: float = 100.0) -> GenevaExplorer:
     """Sliders for z and the centre distance C (mm), a toggle external/internal."""
-    controls = {"z": Control("slots z", 3, 12, 1, z), "centre_distance": Control("C", 20, 200, 1, centre_distance, "mm")}
-    return GenevaExplorer(_planar, controls, kinds=True, title="Planar Geneva drive")
+    controls = {"z": Control("slots z", 3, 12, 1, z), "centre_distance": Control("C", 20, 200, 1, centre_distance, "mm"),
+                "kind": Choice("wheel", ("external", "internal"), "external")}
+    return GenevaExplorer(_planar, controls, title="Planar Geneva drive")
 
 
 def spherical_geneva_explorer(R: float = 40.0, e: float = 15.0, z: int = 4) -> GenevaExplorer:
