@@ -118,7 +118,7 @@ class StructureError(MechanismError):
 
 
 class SelfLockingError(MechanismError):
-    """The friction iteration does not converge: the mechanism is (nearly) self-locking."""
+    """Friction admits no consistent solution (or makes a group singular): the mechanism locks."""
 
 
 def _nonneg(name: str, value, exc) -> float:
