@@ -105,20 +105,23 @@ def test_mchv1_forces_match_the_power_balance(guide):
 
 
 def test_drawings_move_in_place(guide):
-    import matplotlib
+    import matplotlib.pyplot as plt
 
-    matplotlib.use("Agg")
-    from mechlab.draw import animate
+    from mechlab.draw import drawing_class
 
     six = mchv1(guide, 1.0, 20 * DEG)
+    fig, ax = plt.subplots()
     for m in (guide.guided, six, mchv3_half_turn(straight_guiding(np.pi, 0.8, np.pi))):
-        anim = animate(m, n=12, trace="D")
-        d = anim.drawing
+        ax.clear()
+        d = drawing_class(m)(ax, m, trace="D", n=12)
         before = list(d.artists)
+        n_lines = len(ax.lines)
         d.set_frame(6)
-        assert d.artists == before
+        assert d.artists == before and len(ax.lines) == n_lines
     # the output is highlighted exactly in the dwell frames
-    d = animate(six, n=12).drawing
+    ax.clear()
+    d = drawing_class(six)(ax, six, n=12)
+    plt.close(fig)
     inside = [np.isfinite(d.extras(i)[1]).all() for i in range(12)]
     phi = d.motion.phi
     assert inside == [abs((p - np.pi + np.pi) % (2 * np.pi) - np.pi) <= guide.alpha for p in phi]
