@@ -48,8 +48,8 @@ Analysis:
   on b, couple, normal force), ``torque`` (balancing torque on the crank, from the
   groups), ``torque_power`` (the same from the power balance, computed independently),
   ``ideal_torque`` (without friction, by virtual work), ``losses`` (friction power per
-  unit ω1), ``residual`` (largest equilibrium residual of any link), ``efficiency()``,
-  ``cycle_efficiency(...)``.
+  unit ω1), ``residual`` (largest equilibrium residual of any link), ``verify(tol=1e-9)``
+  (both built-in checks, raises if either fails), ``efficiency()``, ``cycle_efficiency(...)``.
 * ``virtual_work_torque(model, motion, loads, omega1, eps1, gravity)`` — the frictionless
   balancing torque from the power balance alone: M_b = −Σ(F_i·v_i + M_i·ω_i)/ω1
   (Zhukovsky's lever in analytic form).
@@ -534,6 +534,21 @@ class ForceResult:
     def power(self) -> np.ndarray:
         """Driving power M_b·ω1."""
         return self.torque * self.omega1
+
+    @property
+    def power_gap(self) -> float:
+        """Largest |M_b(groups) − M_b(power balance)|, relative to the largest |M_b|."""
+        return float(np.max(np.abs(self.torque - self.torque_power)) / (np.max(np.abs(self.torque)) + 1e-300))
+
+    def verify(self, tol: float = 1e-9) -> str:
+        """The built-in checks: the balancing torque from the groups equals the power balance's
+        and every link is in equilibrium, both to ``tol``; returns a one-line summary and
+        raises MechanismError (with the numbers) otherwise."""
+        if not (self.power_gap <= tol and self.residual <= tol):
+            raise MechanismError(f"kinetostatics check failed: groups vs power balance {self.power_gap:.2e}, "
+                                 f"equilibrium residual {self.residual:.2e} (tolerance {tol:g})")
+        return (f"M_b from the groups = power balance to {self.power_gap:.1e}; every link in equilibrium "
+                f"to {self.residual:.1e}")
 
     def efficiency(self) -> np.ma.MaskedArray:
         """Instantaneous efficiency η = 1 − P_friction/P_drive = M_ideal/M_b (seed 001, ch. 3).

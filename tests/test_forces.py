@@ -463,3 +463,24 @@ def test_curved_slot_higher_pair_equals_the_equivalent_fourbar():
     with pytest.raises(StructureError, match="axis of link"):
         solve(ForceModel((model.bodies[0], Body("link", "B", lambda m: (m.psi, m.dpsi))), model.pairs,
                          model.groups, "crank", "O"), mo, loads)
+
+
+def test_verify_and_explorer_messages():
+    from mechlab.forces import ForceResult, press
+    from mechlab.widgets.forces import press_explorer, rocker_explorer
+    res = press(f=0.1).forces()
+    assert "power balance" in res.verify() and res.power_gap < 1e-12
+    bad = ForceResult(res.phi, res.omega1, res.eps1, res.reactions, res.torque * 1.01, res.torque_power,
+                      res.ideal_torque, res.losses, res.residual, res.iterations, res.model)
+    with pytest.raises(MechanismError, match="kinetostatics check failed"):
+        bad.verify()
+    e = press_explorer()
+    e.sliders["f"].value = 0.45
+    e.sliders["rod"].value = 0.11    # f·tan β ≈ 0.98 in the guide alone near φ = 270°, plus the journals
+    assert "self-locking" in e.message and "φ = 273.00°" in e.message
+    e.sliders["rod"].value = 0.40
+    assert e.message == ""
+    r = rocker_explorer()
+    assert r.message == "" and "cycle efficiency" in r.status.value
+    r.sliders["ground"].value = 0.55
+    assert "Grashof" in r.message
