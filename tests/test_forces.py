@@ -484,3 +484,21 @@ def test_verify_and_explorer_messages():
     assert r.message == "" and "cycle efficiency" in r.status.value
     r.sliders["ground"].value = 0.55
     assert "Grashof" in r.message
+
+
+def test_journal_friction_at_the_crank_pivot_by_hand():
+    """Friction only in the crank's journal O (radius r): the rod force S·u and hence
+    R_O = S·u are unchanged (a couple does not enter the force balance), and the crank needs
+    the extra f·r·|S| in the sense of its rotation: M_b = P·s' + f·r·|S|·sgn ω1."""
+    sc = SliderCrank(0.1, 0.4, 0.02)
+    phi = np.radians(np.arange(4.0, 360.0, 8.0))
+    mo = sc.motion(phi)
+    P, f, r = 800.0, 0.15, 0.012
+    load = [Force("slider", "B", (-P, 0.0))]
+    u = (mo.points["B"].p - mo.points["A"].p) / sc.rod
+    S = P / u[:, 0]
+    for w in (6.0, -6.0):
+        res = solve(model_for(sc).with_friction(f, r, pairs=["O"]), mo, load, omega1=w, gravity=(0.0, 0.0))
+        assert np.allclose(res.torque, P * mo.ds + f * r * np.abs(S) * np.sign(w), rtol=1e-12, atol=1e-12)
+        assert np.allclose(res.reactions["O"].force, S[:, None] * u, rtol=1e-12, atol=1e-12)
+        assert np.allclose(res.reactions["O"].couple, -f * r * np.abs(S) * np.sign(w), rtol=1e-12, atol=1e-12)
