@@ -144,3 +144,26 @@ def test_thesis_mchv1_rows_reproduced(delta, alpha):
         assert abs(inv.D - 13.67) < 0.1  # printed 16.67: an erratum of seed 001
     else:
         assert abs(inv.D / row[5] - 1) < 0.04  # a is printed to one decimal only
+
+
+def test_mchv3_full_turn_is_intermittent_and_adjustable():
+    from mechlab.chebyshev import dwell_extent, mchv3_full_turn
+
+    s = straight_guiding(np.pi, 0.8, np.pi)
+    dw = np.pi + np.linspace(-np.pi / 2, np.pi / 2, 2001) + 1e-6
+    residual = {}
+    for beyond in (0.0, 0.03, 0.06):
+        m = mchv3_full_turn(s, beyond, 0.05)
+        assert abs(m.turns) == 1
+        residual[beyond] = np.ptp(m.motion(dw).psi)
+    # moving the pivot away from the dwell part makes the dwell more accurate (≈ E / distance)
+    assert residual[0.0] > residual[0.03] > residual[0.06]
+    assert residual[0.06] < np.radians(2.5) and dwell_extent(m) > np.radians(180)
+    phi = m.turn(200001)  # ψ'' peaks sharply (≈ 276) where the pin passes close to the pivot
+    mo = m.motion(phi)
+    assert abs(mo.psi[-1] - mo.psi[0]) == pytest.approx(2 * np.pi, abs=1e-9)
+    h = phi[1] - phi[0]
+    assert np.allclose((mo.psi[2:] - mo.psi[:-2]) / (2 * h), mo.dpsi[1:-1], atol=1e-4 * np.abs(mo.dpsi).max())
+    assert np.allclose((mo.dpsi[2:] - mo.dpsi[:-2]) / (2 * h), mo.ddpsi[1:-1], atol=1e-4 * np.abs(mo.ddpsi).max())
+    with pytest.raises(InfeasibleDesignError, match="not inside the coupler curve"):
+        mchv3_full_turn(s, 0.12, 0.05)

@@ -12,11 +12,13 @@
   D drives a slotted link (straight slot, pin D) turning about a pivot P. With the slot
   through P (offset 0) and P on the line of the straight part of the curve, beyond the curve,
   the link oscillates with a dwell (МЧВ3-1М); with P on the straight part itself it turns
-  180° per crank turn with a dwell (МЧВ3-2М). The thesis' 360° variant МЧВ3-3М (pivot "in
-  the middle of the coupler curve", dwell adjusted by moving it) is not built: a straight slot
-  offset from the pivot is tangent to its circle during the dwell, so the slot angle moves by
-  ≈ √(4E/e) there (no real dwell), and a rod-and-crank dyad D-E-F with E at the arc centre
-  found no geometry that both closes over the turn and turns fully (scan of F around Q).
+  180° per crank turn with a dwell (МЧВ3-2М). The 360° variant МЧВ3-3М is reconstructed
+  (the abstract only says: pivot inside the curve, dwell adjusted by moving it): pivot inside
+  the curve just past the end of the straight part, slot offset from the pivot so that it lies
+  along the straight line — an approximate dwell whose residual motion is ≈ E/(distance of
+  the pivot's foot from the dwell part); moving the pivot along the line trades length against
+  accuracy. (With the pivot's foot inside the dwell part the slot is tangent to the offset
+  circle there and the residual grows to ≈ √(4E/e).)
 
 Frames and angles as in :mod:`mechlab.chebyshev.lambda_mechanism`: the dwell is centred on
 φ = π (A farthest from C); the crank turns counter-clockwise.
@@ -279,13 +281,15 @@ class LambdaSlottedSixBar(Mechanism):
 
     @cached_property
     def _turns(self):
-        """Branch data: period of the output (π for a slot through a pivot on the path, else 2π)
-        and its turns per crank turn."""
-        phi = np.linspace(0, TWO_PI, 4000, endpoint=False) + np.pi / 4000
-        th = self._angle(phi).theta
+        """Branch data: the output's period (π for a slot through a pivot on the path, else 2π),
+        the unwrapped angle on a fine grid over one turn (the reference branch) and the gain per turn."""
+        grid = np.linspace(0, TWO_PI, 4001)[:-1] + np.pi / 4000
+        th = self._angle(grid).theta
         period = np.pi if self.offset == 0 and self._through_pivot else TWO_PI
         lifted = np.unwrap(th, period=period)
-        return period, lifted[0], round((lifted[-1] - lifted[0]) / period)
+        step = lifted[1] - lifted[0]
+        gain = period * round((lifted[-1] + step - lifted[0]) / period)
+        return period, grid, lifted, gain
 
     @cached_property
     def _through_pivot(self) -> bool:
@@ -314,8 +318,13 @@ class LambdaSlottedSixBar(Mechanism):
         phi = as_angles(phi)
         mo = self.base.motion(phi)
         ang = self._angle(phi)
-        period, start, turns = self._turns
-        ref = start + turns * period * (phi - np.pi / 4000) / TWO_PI
+        period, grid, lifted, gain = self._turns
+        k = np.floor((phi - grid[0]) / TWO_PI)
+        local = phi - TWO_PI * k
+        # the reference branch interpolated on the fine grid (periodic: + gain per crank turn)
+        ext_phi = np.concatenate([grid, [grid[0] + TWO_PI]])
+        ext_th = np.concatenate([lifted, [lifted[0] + gain]])
+        ref = np.interp(local, ext_phi, ext_th) + gain * k
         psi = ref + ((ang.theta - ref + period / 2) % period - period / 2)
         pts = dict(mo.points)
         pts["P"] = fixed_point(self.P, len(phi))
@@ -325,8 +334,7 @@ class LambdaSlottedSixBar(Mechanism):
     @property
     def turns(self) -> float:
         """Output rotation per crank turn in revolutions (0 for an oscillating link)."""
-        period, _, k = self._turns
-        return k * period / TWO_PI
+        return self._turns[3] / TWO_PI
 
 
 def _line_frame(guide: StraightGuide):
@@ -368,3 +376,59 @@ def rise_law(mech, dwell: float, n: int = 4001):
 
 
 __all__.append("rise_law")
+
+
+def mchv3_full_turn(guide: StraightGuide, beyond: float = 0.06, depth: float = 0.05, side: int = 1) -> LambdaSlottedSixBar:
+    """МЧВ3-3М (as reconstructed): 360° per crank turn with an approximate dwell.
+
+    The pivot P sits inside the coupler curve, ``beyond`` past one end of the dwell part of the
+    straight line (``side`` ±1 picks the end) and ``depth`` into the curve; the slot is offset
+    from P by ``depth``, so on the straight part it lies along the line itself. As D runs along
+    the line the slot stays put up to ≈ E/s (s = D's distance from the foot of P on the line,
+    ≥ ``beyond``): the residual motion is of order E/beyond, and moving P along the line trades
+    the dwell's length for its accuracy (the thesis' adjustable dwell). The defaults suit
+    Chebyshev's lambda (2α = 180°). Raises InfeasibleDesignError if P is not inside the curve.
+    """
+    m, e, foot = _line_frame(guide)
+    beyond = check_length("beyond", beyond, allow_zero=True)
+    depth = check_length("depth", depth)
+    side = check_sign("side", side)
+    along = np.array([-e[1], e[0]])
+    half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
+    P = foot + side * (half + beyond) * along + depth * e
+    best = None
+    for off in (depth, -depth):
+        try:
+            cand = LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), off, guide.dwell)
+        except MechanismError:
+            continue
+        if abs(cand.turns) != 1:
+            continue
+        res = np.ptp(cand.motion(np.pi + np.linspace(-0.3, 0.3, 7) * guide.dwell / 2).psi)
+        if best is None or res < best[0]:
+            best = (res, cand)
+    if best is None:
+        raise InfeasibleDesignError(
+            f"beyond = {beyond:g}, depth = {depth:g}: the pivot is not inside the coupler curve (or the slot "
+            f"cannot reach the pin), so the link does not turn once per crank turn")
+    return best[1]
+
+
+def dwell_extent(mech, tol: float = 0.02, n: int = 2881) -> float:
+    """Crank angle around φ = π over which |ψ'| stays below tol·max|ψ'| (the usable dwell)."""
+    phi = mech.cycle(n)
+    d = np.abs(mech.motion(phi).dpsi)
+    still = d <= tol * d.max()
+    i0 = int(np.argmin(np.abs(phi - np.pi)))
+    if not still[i0]:
+        return 0.0
+    lo = i0
+    while lo > 0 and still[lo - 1]:
+        lo -= 1
+    hi = i0
+    while hi < len(phi) - 1 and still[hi + 1]:
+        hi += 1
+    return float(phi[hi] - phi[lo])
+
+
+__all__ += ["mchv3_full_turn", "dwell_extent"]
