@@ -150,3 +150,43 @@ def test_existence_map_curves():
     assert len(r) >= 4 and np.all(r < np.minimum(a, 2 - a))
     r5, a5 = em["fifth"]
     assert np.all((r5 > 0) & (r5 < a5) & (r5 + a5 < 2))
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.floats(100.0, 260.0), st.floats(0.2, 1.4), st.floats(30.0, 300.0))
+def test_circle_guiding_is_valid_or_a_named_error(delta, a, dwell):
+    try:
+        g = circle_guiding(delta * DEG, a, dwell * DEG)
+    except SynthesisError as err:
+        assert "no circle-guiding lambda mechanism" in str(err)
+        return
+    assert 0 < g.r < min(a, 2 - a) and 0 < g.t3 < g.t2 < g.alpha
+    t = np.linspace(-g.alpha, g.alpha, 6001)
+    dev = g.deviation(np.pi + t)
+    assert np.max(np.abs(dev)) <= g.E * (1 + 1e-5)
+    assert len(band_touches(dev, g.E, rtol=1e-4)) >= 5
+
+
+def test_widgets_exercises_and_errata():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from mechlab.errata import table
+    from mechlab.errata.seed001_chebyshev import ERRATA
+    from mechlab.exercises import check, solution
+    from mechlab.widgets.chebyshev import lambda_explorer, mchv1_explorer
+
+    ex = lambda_explorer()
+    assert ex.message == "" and ex.mechanism is not None
+    ex.sliders["a"].value = 1.58  # outside the existence map: the reason is shown, the widget survives
+    assert "no circle-guiding" in ex.message
+    ex.sliders["a"].value = 0.9
+    assert ex.message == ""
+    six = mchv1_explorer()
+    assert six.message == "" and "transmission" in six.status.value
+    for key in ("06.1", "06.2", "06.3", "07.1", "07.2", "07.3"):
+        assert check(key, solution(key), quiet=True)
+        assert not check(key, 1.1 * solution(key) + 0.01, quiet=True)
+    for e in ERRATA:
+        assert e.source == "001" and e.evidence()
+    assert table(notebook="06_chebyshev_dwell_synthesis.ipynb").count("\n| 001") == 4

@@ -2,6 +2,8 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from mechlab.chebyshev import (InfeasibleDesignError, LambdaRockerSixBar, LambdaSlottedSixBar, circle_guiding,
                                mchv1, mchv3_half_turn, mchv3_oscillating, report, straight_guiding,
@@ -167,3 +169,15 @@ def test_mchv3_full_turn_is_intermittent_and_adjustable():
     assert np.allclose((mo.dpsi[2:] - mo.dpsi[:-2]) / (2 * h), mo.ddpsi[1:-1], atol=1e-4 * np.abs(mo.ddpsi).max())
     with pytest.raises(InfeasibleDesignError, match="not inside the coupler curve"):
         mchv3_full_turn(s, 0.12, 0.05)
+
+
+@settings(max_examples=20, deadline=None)
+@given(K=st.floats(0.6, 1.8), swing=st.floats(5.0, 60.0), side=st.sampled_from([1, -1]))
+def test_mchv1_random_requests_are_met_or_refused(guide, K, swing, side):
+    try:
+        six = mchv1(guide, K, swing * DEG, side=side)
+    except InfeasibleDesignError:
+        return
+    rep = report(six, guide.dwell)
+    assert abs(rep.K - K) < 1e-8
+    assert abs(rep.swing - swing * DEG) < 0.02 * swing * DEG + 3 * guide.E / six.rocker
