@@ -21,9 +21,10 @@ angle −(π − δ/2) and a scaling that depends on |CA| only:
     D − C = [sin((δ − μ)/2) / sin(μ/2)] · Rot(−(π − δ/2)) (A − C).          (*)
 
 Since A(π + t) and A(π − t) are mirror images in the line OC with the same |CA|, D(π + t)
-and D(π − t) are mirror images in the line through C that makes π − δ/2 with the ray C→O
-(and δ/2 with the ray C→… on the other side): the coupler curve is symmetric about that
-axis, as the thesis states, and the time on the curve is symmetric about φ = π too.
+and D(π − t) are mirror images in the line through C whose ray C→D0 makes π − δ/2 with the
+ray C→O (D0 = D(π)): the coupler curve is symmetric about that axis, as the thesis states,
+and the motion along it is symmetric in time about φ = π too. (For δ > π the coupler is bent
+the other way; the same formulas hold, and the thesis' table uses δ up to 270°.)
 The distance of D from any point Q = C + c·e on the axis is then a function of μ alone.
 """
 
