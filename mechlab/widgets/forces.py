@@ -14,59 +14,33 @@ from __future__ import annotations
 
 from typing import Callable
 
-import ipywidgets as W
-import matplotlib.pyplot as plt
 import numpy as np
-from IPython.display import display
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
 
 from ..draw import drawing_class
 from ..errors import MechanismError
 from ..forces import drive, press, rocker_drive
-from . import Control, _uses_ipympl
+from . import Control, Explorer
 
 
-class ForceExplorer:
+class ForceExplorer(Explorer):
     """Sliders → ``factory(**values)`` (a Kinetostatics) → force plan, M_b(φ), η(φ).
 
     ``controls`` maps the factory's keyword names to :class:`~mechlab.widgets.Control`
     ("deg" controls reach the factory in radians). ``pairs`` restricts the arrows.
     """
 
+    blit = False  # the arrows are many small artists: redraw the figure
+
     def __init__(self, factory: Callable, controls: dict[str, Control], *, n: int = 121, title: str = "",
                  pairs=None):
-        self.factory = factory
-        self.controls = controls
-        self.n = n
+        super().__init__(factory, controls, n=n, title=title, figsize=(10, 4.2), dpi=72, angle=30.0)
         self.pairs = pairs
-        self.message = ""
         self.system = None
         self.result = None
-        self.frame = 0
-        style = {"description_width": "120px"}
-        self.sliders = {name: W.FloatSlider(value=c.value, min=c.min, max=c.max, step=c.step,
-                                            description=f"{c.label} ({c.unit})" if c.unit else c.label,
-                                            continuous_update=True, style=style, layout=W.Layout(width="380px"))
-                        for name, c in controls.items()}
-        self.angle = W.FloatSlider(value=30.0, min=0.0, max=360.0, step=1.0, description="crank φ (deg)",
-                                   continuous_update=True, style=style, layout=W.Layout(width="380px"))
-        self.status = W.HTML()
-        ipympl = _uses_ipympl()
-        if ipympl:
-            with plt.ioff():
-                self.fig = plt.figure(figsize=(10, 4.2))
-        else:
-            self.fig = Figure(figsize=(10, 4.2), dpi=72)
-            FigureCanvasAgg(self.fig)
         grid = self.fig.add_gridspec(2, 2, width_ratios=[1.2, 1])
         self.ax_mech = self.fig.add_subplot(grid[:, 0])
         self.ax_torque = self.fig.add_subplot(grid[0, 1])
         self.ax_eta = self.fig.add_subplot(grid[1, 1], sharex=self.ax_torque)
-        if title:
-            self.fig.suptitle(title)
-        self.error_text = self.fig.text(0.5, 0.5, "", ha="center", va="center", wrap=True, color="#b00020",
-                                        fontsize=12, bbox=dict(fc="#fff0f0", ec="#b00020"))
         self.lines = {"groups": self.ax_torque.plot([], [], lw=2, label="M_b, groups")[0],
                       "power": self.ax_torque.plot([], [], "k--", lw=1, label="M_b, power balance")[0],
                       "ideal": self.ax_torque.plot([], [], ":", color="0.4", lw=1, label="M_b, no friction")[0],
@@ -81,21 +55,7 @@ class ForceExplorer:
         for ax in (self.ax_torque, self.ax_eta):
             ax.grid(True, alpha=0.3)
         self.drawing = None
-        self.output = None if ipympl else W.Output()
-        canvas = self.fig.canvas if ipympl else self.output
-        for w in self.sliders.values():
-            w.observe(lambda change: self.rebuild(), names="value")
-        self.angle.observe(self._on_angle, names="value")
-        self.widget = W.VBox([W.HBox([W.VBox(list(self.sliders.values())), W.VBox([self.angle, self.status])]),
-                              canvas])
-        self.rebuild()
-
-    def values(self) -> dict:
-        out = {}
-        for name, w in self.sliders.items():
-            c = self.controls[name]
-            out[name] = np.radians(w.value) if c.unit == "deg" else w.value
-        return out
+        self._finish()
 
     def rebuild(self):
         """Build and solve from the sliders; show a MechanismError's message instead of plots."""
@@ -136,41 +96,22 @@ class ForceExplorer:
         self._set_visible(True)
         self._on_angle()
 
-    def _on_angle(self, change=None):
-        if self.result is None:
-            return
+    def _select_frame(self):
         phi = np.degrees(self.result.phi)
-        target = self.angle.value
-        self.frame = int(np.argmin(np.abs((phi - target + 180.0) % 360.0 - 180.0)))
+        self.frame = self.nearest_frame(self.result.phi)
         self.drawing.set_frame(self.frame)
         eta = self.result.efficiency().filled(np.nan)
         self.m_marker.set_data([phi[self.frame]], [self.result.torque[self.frame]])
         self.e_marker.set_data([phi[self.frame]], [eta[self.frame]])
-        self._redraw()
 
-    def _show_error(self, text: str):
-        self.message = text
+    def _axes(self):
+        return (self.ax_mech, self.ax_torque, self.ax_eta)
+
+    def _forget(self):
         self.system = self.result = None
-        self._set_visible(False)
-        self.error_text.set_text(text)
-        self.status.value = f"<span style='color:#b00020'>{text}</span>"
-        self._redraw()
 
-    def _set_visible(self, ok: bool):
-        for ax in (self.ax_mech, self.ax_torque, self.ax_eta):
-            ax.set_visible(ok)
-        self.error_text.set_visible(not ok)
-
-    def _redraw(self):
-        if self.output is None:
-            self.fig.canvas.draw_idle()
-        else:
-            with self.output:
-                self.output.clear_output(wait=True)
-                display(self.fig)
-
-    def _ipython_display_(self):
-        display(self.widget)
+    def _ready(self) -> bool:
+        return self.result is not None
 
 
 def press_explorer(**initial) -> ForceExplorer:
