@@ -38,7 +38,7 @@ exactly, for any e. The seed's cos γ = cos α·sin ψ (11) is exact as well: it
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
@@ -523,7 +523,7 @@ class SphericalGeneva(Mechanism):
         with analogs from the projection of A, A', A'' on the equator plane."""
         al = as_angles(alpha)
         p, e, R = self.cone_angle, self.e, self.R
-        sp_, cp = np.sin(p), np.cos(p)
+        sp_ = np.sin(p)
         d = self.pin_direction(al)
         d1 = np.stack([np.zeros_like(al), sp_ * np.cos(al), -sp_ * np.sin(al)], axis=-1)
         d2 = np.stack([np.zeros_like(al), -sp_ * np.sin(al), -sp_ * np.cos(al)], axis=-1)

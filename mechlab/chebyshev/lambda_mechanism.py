@@ -30,7 +30,7 @@ The distance of D from any point Q = C + c·e on the axis is then a function of 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import cached_property
 from typing import NamedTuple
 

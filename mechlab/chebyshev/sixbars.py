@@ -34,7 +34,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import MechanismError
-from ..geometry import (AnglePath, PointPath, as_angles, check_length, check_sign, cross, dot, dyad_rpr, dyad_rrr,
+from ..geometry import (AnglePath, as_angles, check_length, check_sign, cross, dot, dyad_rpr, dyad_rrr,
                         fixed_point, relative, vector_angle)
 from ..linkages.base import TWO_PI, Mechanism
 from ..motion import AngularMotion
@@ -298,7 +298,6 @@ class LambdaSlottedSixBar(Mechanism):
 
     def _angle(self, phi) -> AnglePath:
         D = self.base.motion(phi).points["D"]
-        v = relative(D, fixed_point(self.P, len(phi)))
         ang, rho = dyad_rpr(D, fixed_point(self.P, len(phi)))
         if np.any(rho.theta < 1e-9):
             i = int(np.argmin(rho.theta))

@@ -83,7 +83,7 @@ from ..geometry import (AnglePath, PointPath, as_angles, check_length, cross, cr
                         lift)
 from ..motion import AngularMotion, LinearMotion
 from .base import FULL_TURN, Mechanism, arc_set, fmt_ranges
-from .slotted import SineMechanism, SlottedLink
+from .slotted import PivotedSlot, SineMechanism, SlottedLink
 
 # Samples of the curve used to find the working segment and the Newton brackets.
 _TABLE = 4097
@@ -312,7 +312,7 @@ def _fmt_deg(x):
 # the oscillating / rotating curved slotted link
 # ---------------------------------------------------------------------------------------------
 @dataclass(frozen=True, eq=False)
-class CurvedSlotLink(Mechanism):
+class CurvedSlotLink(PivotedSlot, Mechanism):
     """Crank O-A (radius ``crank``) driving a link pivoted at B = (-pivot_distance, 0) whose
     slot ``slot`` (a curve in the link frame, origin at B) carries the pin A.
 
@@ -330,30 +330,15 @@ class CurvedSlotLink(Mechanism):
     output = "angle"
 
     def __post_init__(self):
-        object.__setattr__(self, "crank", check_length("crank", self.crank))
-        object.__setattr__(self, "pivot_distance", check_length("pivot_distance", self.pivot_distance))
         if not isinstance(self.slot, SlotCurve):
             raise DimensionError(f"slot must be a CircleSlot, ParametricSlot or SampledSlot, got {type(self.slot).__name__}")
-        if abs(self.lam - 1.0) <= 1e-12:
-            raise DimensionError(
-                f"λ = crank / pivot_distance = {self.crank:g} / {self.pivot_distance:g} = 1: the pin "
-                f"passes through the pivot B at φ = 180°, where the slot direction is undefined")
+        self._check_crank_and_pivot()
         if isinstance(self.slot, CircleSlot):
             self._circle_setup()
         else:
             self._segment  # noqa: B018 - validate now (raises with the numbers)
 
     # -- basic quantities ---------------------------------------------------------------------
-    @property
-    def lam(self) -> float:
-        """λ = l_OA / l_OB (seed 000, before formula (18))."""
-        return self.crank / self.pivot_distance
-
-    @property
-    def rotates(self) -> bool:
-        """λ > 1: the base mechanism's link turns fully (and so does this one, if the crank turns)."""
-        return self.lam > 1.0
-
     def base(self) -> SlottedLink:
         """The base mechanism: straight slot through the pivot, same crank and pivot (seed 000 Fig. 5)."""
         return SlottedLink(self.crank, self.pivot_distance)

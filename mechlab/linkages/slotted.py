@@ -22,22 +22,14 @@ from ..motion import AngularMotion, LinearMotion
 from .base import Mechanism
 
 
-@dataclass(frozen=True)
-class SlottedLink(Mechanism):
-    """Crank O-A (radius ``crank``) driving a slotted link pivoted at B = (-pivot_distance, 0).
-
-    Raises DimensionError for bad lengths and for λ = crank / pivot_distance = 1,
-    where the pin passes through the pivot and the slot's direction is undefined.
-    """
+class PivotedSlot:
+    """What every slotted link pivoted at B = (-pivot_distance, 0) shares (seed 000 frame):
+    its λ, whether it turns fully, and the check of its crank and pivot distance."""
 
     crank: float
     pivot_distance: float
 
-    links = (("O", "A"),)
-    pivots = ("O", "B")
-    output = "angle"
-
-    def __post_init__(self):
+    def _check_crank_and_pivot(self):
         object.__setattr__(self, "crank", check_length("crank", self.crank))
         object.__setattr__(self, "pivot_distance", check_length("pivot_distance", self.pivot_distance))
         if abs(self.lam - 1.0) <= 1e-12:
@@ -52,8 +44,27 @@ class SlottedLink(Mechanism):
 
     @property
     def rotates(self) -> bool:
-        """True for λ > 1, where the slotted link turns fully."""
+        """λ > 1: the slotted link (of the base mechanism) turns fully."""
         return self.lam > 1.0
+
+
+@dataclass(frozen=True)
+class SlottedLink(PivotedSlot, Mechanism):
+    """Crank O-A (radius ``crank``) driving a slotted link pivoted at B = (-pivot_distance, 0).
+
+    Raises DimensionError for bad lengths and for λ = crank / pivot_distance = 1,
+    where the pin passes through the pivot and the slot's direction is undefined.
+    """
+
+    crank: float
+    pivot_distance: float
+
+    links = (("O", "A"),)
+    pivots = ("O", "B")
+    output = "angle"
+
+    def __post_init__(self):
+        self._check_crank_and_pivot()
 
     def motion(self, phi) -> AngularMotion:
         """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, seed 000 frame)."""

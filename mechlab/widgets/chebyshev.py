@@ -6,7 +6,6 @@ outside the existence map shows its SynthesisError message in place of the drawi
 
 from __future__ import annotations
 
-import numpy as np
 
 from ..chebyshev import circle_guiding, mchv1
 from . import Control, MechanismExplorer
