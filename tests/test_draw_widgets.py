@@ -26,11 +26,13 @@ def test_frames_move_the_same_artists(mech):
     plt.close(fig)
 
 
-def test_animation_plays_as_javascript():
+def test_animation_plays_as_javascript_and_loads_nothing_remote():
     anim = animate(FourBar(1, 3, 3, 4), n=6, trace="B")
     html = anim.to_jshtml()
     assert html.count("data:image/png;base64") == 6 or "frames[5]" in html
-    assert "anim" in html
+    assert "//" not in html.replace("data:image", "").split("<script")[0]  # no remote stylesheet before the script
+    assert "font-awesome" not in html and 'class="fa ' not in html
+    assert 'class="mechlab-icon mechlab-play"' in html and ".mechlab-play::before" in html
 
 
 def test_draw_and_plot_law():

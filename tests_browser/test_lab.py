@@ -90,10 +90,6 @@ def lab():
         shutil.rmtree(tmp, ignore_errors=True)
 
 
-# KNOWN, not fixed here: matplotlib's to_jshtml() output links Font Awesome from a CDN, so
-# offline the animation buttons of a notebook in JupyterLab have no icons (they still work).
-# The book strips it (book/_ext/mechbook.py); mechlab.draw should do the same for notebooks.
-KNOWN_REMOTE = "https://maxcdn.bootstrapcdn.com/font-awesome/4.4.0/css/font-awesome.min.css"
 
 _READY_JS = """() => {
   const w = window.jupyterapp && window.jupyterapp.shell.currentWidget;
@@ -151,8 +147,7 @@ def test_notebook_in_jupyterlab(browser, lab, path):
     def route(r):  # the lab must not reach for the internet either (news, extension manager, CDNs)
         url = urlparse(r.request.url)
         if url.scheme in ("http", "https", "ws", "wss") and url.hostname not in LOCAL_HOSTS:
-            if r.request.url != KNOWN_REMOTE:
-                remote.append(r.request.url)
+            remote.append(r.request.url)
             r.abort()
         else:
             r.continue_()

@@ -4,8 +4,8 @@
   the notebook's list of cells), so the Errata page can link to the very cell that
   demonstrates a mistake.
 * matplotlib's ``to_jshtml()`` links a Font Awesome stylesheet from a CDN for its
-  buttons; the link is removed and the icons become local classes that
-  ``_static/mechbook.css`` draws with plain Unicode glyphs.
+  buttons; mechlab's animations already come without it, and any other animation on a
+  page goes through the same :func:`mechlab.draw.local_animation_controls`.
 * The execution cache (``nb_execution_cache_path``) is keyed by the notebooks' text
   only; a page's outputs also depend on the library. A hash of ``mechlab/``,
   ``book/_ext/`` and ``environment.txt`` is kept next to the cache: when it changes the
@@ -28,10 +28,11 @@ from pathlib import Path
 from docutils import nodes
 from sphinx.util import logging
 
+# the same clean-up mechlab's own animations get, applied to any to_jshtml() output of a page
+from mechlab.draw import local_animation_controls
+
 logger = logging.getLogger(__name__)
 
-_REMOTE_FONT_AWESOME = re.compile(r'<link[^>]*href="(?:https?:)?//[^"]*font-awesome[^"]*"[^>]*>\s*', re.I)
-_FA_CLASS = re.compile(r'class="fa fa-([a-z-]+)(?: fa-flip-horizontal)?"')
 
 # A fetch from another host: <script src>, <link href> (stylesheet, icon, preload, font),
 # <img|source|iframe|video|audio|embed src>, CSS url() and @import.
@@ -40,23 +41,6 @@ _REMOTE_TAG = re.compile(
     r'|<link\b(?=[^>]*\brel\s*=\s*["\']?(?:stylesheet|icon|shortcut icon|preload|prefetch|modulepreload|'
     r'manifest|apple-touch-icon)\b)[^>]*\bhref\s*=\s*["\']?((?:https?:)?//[^"\'\s>]+)', re.I)
 _REMOTE_CSS = re.compile(r'(?:url\(\s*["\']?|@import\s+["\'])((?:https?:)?//[^"\')\s]+)', re.I)
-
-
-def local_animation_controls(html: str) -> str:
-    """Drop matplotlib's remote Font Awesome link and rename its icon classes to local ones.
-
-    ``<i class="fa fa-play fa-flip-horizontal">`` (play backwards) becomes
-    ``mechbook-icon mechbook-play-backwards``; the others keep their icon name.
-    """
-    html = _REMOTE_FONT_AWESOME.sub("", html)
-
-    def rename(match: re.Match) -> str:
-        name = match.group(1)
-        if "fa-flip-horizontal" in match.group(0):
-            name = "play-backwards"
-        return f'class="mechbook-icon mechbook-{name}"'
-
-    return _FA_CLASS.sub(rename, html)
 
 
 def remote_fetches(text: str, css: bool = False) -> list[str]:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
+import re
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -27,6 +28,38 @@ TRACE_STYLE = dict(color="#d62728", lw=1, alpha=0.8, zorder=1)
 EXTRA_STYLE = dict(color="#2a7f62", lw=2.5, zorder=2)
 
 _REGISTRY: dict[type, type] = {}
+
+# matplotlib's to_jshtml() links Font Awesome from a CDN for its buttons; the course loads
+# nothing from another host, so the link goes and the icons become Unicode glyphs.
+_REMOTE_FONT_AWESOME = re.compile(r'<link[^>]*href="(?:https?:)?//[^"]*font-awesome[^"]*"[^>]*>\s*', re.I)
+_FA_CLASS = re.compile(r'class="fa fa-([a-z-]+)(?: fa-flip-horizontal)?"')
+ICON_GLYPHS = {"minus": "\u2212", "fast-backward": "\u21e4", "step-backward": "\u2759\u25c0",
+               "play-backwards": "\u25c0", "pause": "\u2759\u2759", "play": "\u25b6",
+               "step-forward": "\u25b6\u2759", "fast-forward": "\u21e5", "plus": "+"}
+_ICON_STYLE = ("<style>.animation .mechlab-icon{font-style:normal;font-family:'DejaVu Sans',system-ui,sans-serif}"
+               ".animation button{min-width:2.2em}"
+               + "".join(f'.animation .mechlab-{k}::before{{content:"{v}"}}' for k, v in ICON_GLYPHS.items())
+               + "</style>\n")
+
+
+def local_animation_controls(html: str) -> str:
+    """matplotlib's animation HTML without the remote Font Awesome stylesheet: the buttons'
+    icons become ``mechlab-icon mechlab-<name>`` classes drawn by an inline style."""
+    if not _REMOTE_FONT_AWESOME.search(html) and not _FA_CLASS.search(html):
+        return html
+
+    def rename(match: re.Match) -> str:
+        name = "play-backwards" if "fa-flip-horizontal" in match.group(0) else match.group(1)
+        return f'class="mechlab-icon mechlab-{name}"'
+
+    return _ICON_STYLE + _FA_CLASS.sub(rename, _REMOTE_FONT_AWESOME.sub("", html))
+
+
+class Animation(FuncAnimation):
+    """A FuncAnimation whose ``to_jshtml()`` (and HTML display) loads nothing from another host."""
+
+    def to_jshtml(self, *args, **kwargs) -> str:
+        return local_animation_controls(super().to_jshtml(*args, **kwargs))
 
 
 def register(mechanism_type: type):
@@ -193,7 +226,7 @@ def draw(mechanism, phi: float = 0.0, ax=None, trace: str | None = None):
 
 
 def animate(mechanism, n: int = 72, interval: int = 50, trace: str | None = None, ax=None,
-            figsize=(5, 4)) -> FuncAnimation:
+            figsize=(5, 4)) -> Animation:
     """A FuncAnimation of one cycle in n frames (its figure is closed, so only the
     animation is shown); play it in a page with ``HTML(anim.to_jshtml())``."""
     if ax is None:
@@ -202,7 +235,7 @@ def animate(mechanism, n: int = 72, interval: int = 50, trace: str | None = None
         fig = ax.figure
     drawing = drawing_class(mechanism)(ax, mechanism, trace=trace, n=n)
     drawing.autoscale()
-    anim = FuncAnimation(fig, drawing.set_frame, frames=n, interval=interval, blit=False)
+    anim = Animation(fig, drawing.set_frame, frames=n, interval=interval, blit=False)
     anim.drawing = drawing
     plt.close(fig)
     return anim

@@ -10,10 +10,9 @@ from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.animation import FuncAnimation
 
 from ..centres import Antiparallelogram, Centrodes, EllipticTrammel, InstantCentres, centrodes
-from . import LinkageDrawing, drawing_class, register
+from . import Animation, LinkageDrawing, drawing_class, register
 
 FIXED_STYLE = dict(color="#8c564b", lw=1.6, zorder=1)
 MOVING_STYLE = dict(color="#9467bd", lw=1.6, ls="--", zorder=2)
@@ -143,7 +142,7 @@ def draw_centres(ic: InstantCentres, i: int = 0, ax=None, lines: bool = True):
 
 
 def animate_centrodes(mechanism, link: str, reference: str = "frame", n: int = 36, interval: int = 80,
-                      clip: float | None = None, figsize=(4.4, 4.0), dpi: int = 65) -> FuncAnimation:
+                      clip: float | None = None, figsize=(4.4, 4.0), dpi: int = 65) -> Animation:
     """An animation of the linkage with the two centrodes of ``link`` relative to
     ``reference`` rolling on each other (n frames over the cycle, the curves sampled
     about 360 times); play it with ``HTML(anim.to_jshtml())``."""
@@ -168,7 +167,7 @@ def animate_centrodes(mechanism, link: str, reference: str = "frame", n: int = 3
     def frame(i):
         return drawing.set_frame(i * k) + overlay.set_frame(i * k)
 
-    anim = FuncAnimation(fig, frame, frames=n, interval=interval, blit=False)
+    anim = Animation(fig, frame, frames=n, interval=interval, blit=False)
     anim.drawing, anim.overlay, anim.step = drawing, overlay, k
     plt.close(fig)
     return anim

@@ -9,12 +9,11 @@ from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.animation import FuncAnimation
 
 from ..equivalence import EquivalentSlot, base_law, equivalent_slot, relative_path
 from ..linkages.curved_slot import CurvedSlotLink, TranslatingCurvedSlot
 from ..sixbar import SixBarIV
-from . import EXTRA_STYLE, LinkageDrawing, drawing_class, register
+from . import EXTRA_STYLE, Animation, LinkageDrawing, drawing_class, register
 
 SLOT_STYLE = dict(color="#2a7f62", lw=5, alpha=0.45, solid_capstyle="round", zorder=2)
 ARM_STYLE = dict(EXTRA_STYLE)
@@ -94,7 +93,7 @@ class SixBarDrawing(LinkageDrawing):
     """Links 2 and 4 are triangles (ternary links); the rest as in a four-bar."""
 
 
-def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9, 3.2), dpi: int = 55) -> FuncAnimation:
+def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9, 3.2), dpi: int = 55) -> Animation:
     """Three panels moving together: the linkage, its curved-slot twin (seed 000 §1, Fig. 1-4),
     and the pin's relative path in the output link's frame with the pin on it."""
     twin = equivalent_slot(mechanism)
@@ -130,7 +129,7 @@ def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9,
         pin.set_data([rel[i, 0]], [rel[i, 1]])
         return [*left.set_frame(i), *right.set_frame(i), pin]
 
-    anim = FuncAnimation(fig, frame, frames=n, interval=interval, blit=False)
+    anim = Animation(fig, frame, frames=n, interval=interval, blit=False)
     anim.drawings = (left, right)
     plt.close(fig)
     return anim
