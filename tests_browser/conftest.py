@@ -11,6 +11,7 @@ import os
 import shutil
 import socket
 from pathlib import Path
+from urllib.parse import urlparse
 
 import pytest
 
@@ -22,6 +23,23 @@ CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networki
                  "--disable-dev-shm-usage", "--disable-default-apps", "--disable-extensions",
                  "--no-default-browser-check", "--metrics-recording-only", "--mute-audio"]
 LOCAL_HOSTS = {"127.0.0.1", "localhost", "[::1]", "::1"}
+
+
+def block_remote(page) -> list[str]:
+    """Abort every request of ``page`` to a host other than this machine; returns the list
+    the aborted URLs are collected in (the course loads nothing from the internet)."""
+    remote: list[str] = []
+
+    def route(r):
+        url = urlparse(r.request.url)
+        if url.scheme in ("http", "https", "ws", "wss") and url.hostname not in LOCAL_HOSTS:
+            remote.append(r.request.url)
+            r.abort()
+        else:
+            r.continue_()
+
+    page.route("**/*", route)
+    return remote
 
 
 def free_port() -> int:

@@ -14,7 +14,7 @@ from urllib.parse import urlparse
 
 import pytest
 
-from conftest import LOCAL_HOSTS, ROOT
+from conftest import LOCAL_HOSTS, ROOT, block_remote
 
 HTML = ROOT / "book" / "_build" / "html"
 SHOTS = ROOT / "book" / "_build" / "screenshots"
@@ -72,22 +72,14 @@ def test_pages_found():
 def test_page(browser, server, page_path):
     context = browser.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
-    errors, failed, remote = [], [], []
+    errors, failed = [], []
     page.on("console", lambda m: errors.append(f"console {m.type}: {m.text}") if m.type == "error" else None)
     page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
     page.on("requestfailed", lambda r: failed.append(f"{r.url[:120]}: {r.failure}")
             if urlparse(r.url).hostname in LOCAL_HOSTS else None)
     page.on("response", lambda r: failed.append(f"{r.url[:120]}: HTTP {r.status}") if r.status >= 400 else None)
 
-    def route(r):
-        url = urlparse(r.request.url)
-        if url.scheme in ("http", "https", "ws", "wss") and url.hostname not in LOCAL_HOSTS:
-            remote.append(r.request.url)
-            r.abort()
-        else:
-            r.continue_()
-
-    page.route("**/*", route)
+    remote = block_remote(page)
     try:
         response = page.goto(f"{server}/{page_path}", wait_until="networkidle")
         assert response is not None and response.ok, f"{page_path}: HTTP {response and response.status}"

@@ -21,12 +21,11 @@ import tempfile
 import time
 import urllib.request
 from pathlib import Path
-from urllib.parse import urlparse
 
 import pytest
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
-from conftest import LOCAL_HOSTS, ROOT, free_port
+from conftest import ROOT, block_remote, free_port
 
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 SHOTS = ROOT / "book" / "_build" / "screenshots"
@@ -141,18 +140,10 @@ def test_notebooks_found():
 def test_notebook_in_jupyterlab(browser, lab, path):
     base, token, root = lab
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
-    page_errors, remote = [], []
+    page_errors = []
     page.on("pageerror", lambda e: page_errors.append(str(e)))
 
-    def route(r):  # the lab must not reach for the internet either (news, extension manager, CDNs)
-        url = urlparse(r.request.url)
-        if url.scheme in ("http", "https", "ws", "wss") and url.hostname not in LOCAL_HOSTS:
-            remote.append(r.request.url)
-            r.abort()
-        else:
-            r.continue_()
-
-    page.route("**/*", route)
+    remote = block_remote(page)  # the lab must not reach for the internet either (news, extensions, CDNs)
     try:
         # ?reset: a fresh workspace, so the notebooks of earlier tests are not reopened
         page.goto(f"{base}/lab/tree/{path.name}?reset&token={token}", wait_until="domcontentloaded")
