@@ -15,6 +15,8 @@ the constraint equations analytically (no finite differences):
 
 from __future__ import annotations
 
+import os
+from concurrent.futures import ThreadPoolExecutor
 from typing import NamedTuple
 
 import numpy as np
@@ -25,12 +27,41 @@ from .errors import AssemblyError, DimensionError, SingularityError
 DEAD_POINT_TOL = 1e-12
 
 
-class PointPath(NamedTuple):
-    """Positions ``p`` of a point and its analogs ``d`` = dp/dφ, ``dd`` = d²p/dφ²."""
+class PointPath:
+    """Positions ``p`` of a point and its analogs ``d`` = dp/dφ, ``dd`` = d²p/dφ².
 
-    p: np.ndarray
-    d: np.ndarray
-    dd: np.ndarray
+    An analog may be given as a function of no arguments: it is evaluated on first
+    use and kept, so a motion costs only what is read of it (a four-bar's ψ, ψ', ψ''
+    need neither B' nor B''). Unpacks like the tuple ``(p, d, dd)``.
+    """
+
+    __slots__ = ("_d", "_dd", "p")
+
+    def __init__(self, p: np.ndarray, d, dd):
+        self.p, self._d, self._dd = p, d, dd
+
+    @property
+    def d(self) -> np.ndarray:
+        if callable(self._d):
+            self._d = self._d()
+        return self._d
+
+    @property
+    def dd(self) -> np.ndarray:
+        if callable(self._dd):
+            self._dd = self._dd()
+        return self._dd
+
+    def __iter__(self):
+        return iter((self.p, self.d, self.dd))
+
+    def rows(self, sl: slice):
+        """x, y, x', y', x'', y'' of rows ``sl`` (views where possible)."""
+        p, d, dd = self.p[sl], self.d[sl], self.dd[sl]
+        return p[:, 0], p[:, 1], d[:, 0], d[:, 1], dd[:, 0], dd[:, 1]
+
+    def __repr__(self) -> str:
+        return f"PointPath(n={len(self.p)})"
 
 
 class AnglePath(NamedTuple):
@@ -153,8 +184,12 @@ def unit_complex(phi: np.ndarray) -> np.ndarray:
     n = len(phi)
     if n >= 4096:
         h = (phi[-1] - phi[0]) / (n - 1)
-        k = np.arange(n, dtype=float)
-        if np.max(np.abs(phi - (phi[0] + k * h))) <= 8 * np.finfo(float).eps * (1.0 + np.abs(phi).max()):
+        gap = np.arange(n, dtype=float)
+        gap *= h
+        gap += phi[0]
+        gap -= phi
+        # on a uniform grid the largest |φ| is at an end; elsewhere the test fails anyway
+        if np.abs(gap, out=gap).max() <= 8 * np.finfo(float).eps * (1.0 + max(abs(phi[0]), abs(phi[-1]))):
             m = int(np.sqrt(n)) + 1
             fine = np.exp(1j * h * np.arange(m))
             coarse = np.exp(1j * (phi[0] + h * m * np.arange((n + m - 1) // m)))
@@ -162,12 +197,40 @@ def unit_complex(phi: np.ndarray) -> np.ndarray:
     return np.exp(1j * phi)
 
 
-def crank_point(radius: float, phi: np.ndarray, centre=(0.0, 0.0)) -> PointPath:
-    """The pin of a crank of given radius at angles φ about ``centre``: p' = i·(p - centre), p'' = -(p - centre)."""
-    r = unit_complex(phi)
-    r *= radius
+class CrankPath(PointPath):
+    """The pin of a crank turning about ``centre``: p' = i·(p - centre), p'' = -(p - centre).
+
+    The analogs are derived from the positions when read; :meth:`rows` derives them
+    for a block of rows without building the full arrays.
+    """
+
+    __slots__ = ("centre",)
+
+    def __init__(self, p: np.ndarray, centre: complex):
+        self.centre = centre
+        z = as_complex(p)
+        super().__init__(p, lambda: as_xy(1j * (z - centre)), lambda: as_xy((z - centre) * -1.0))
+
+    def rows(self, sl: slice):
+        p = self.p[sl]
+        x, y = p[:, 0], p[:, 1]
+        rx, ry = (x - self.centre.real, y - self.centre.imag) if self.centre else (x, y)
+        minus_rx, minus_ry = rx * -1.0, ry * -1.0
+        return x, y, minus_ry, rx, minus_rx, minus_ry
+
+
+def crank_point(radius: float, phi: np.ndarray, centre=(0.0, 0.0)) -> CrankPath:
+    """The pin of a crank of given radius at angles φ about ``centre`` (built in blocks)."""
     c = complex(centre[0], centre[1])
-    return PointPath(as_xy(r + c if c else r), as_xy(1j * r), as_xy(-r))
+    z = np.empty(len(phi), dtype=complex)
+
+    def kernel(sl):
+        np.multiply(unit_complex(phi[sl]), radius, out=z[sl])
+        if c:
+            z[sl] += c
+
+    for_blocks(len(phi), kernel)
+    return CrankPath(as_xy(z), c)
 
 
 def relative(q: PointPath, p: PointPath) -> PointPath:
@@ -213,8 +276,8 @@ def _raise_distance_error(d2, r1: float, r2: float, tol: float, phi, what: str):
         f"{'r1 + r2' if abs(d - hi) <= tol else '|r1 - r2|'}; the analogs are unbounded there")
 
 
-def _circle_circle_z(z1, r1: float, z2, r2: float, sign: int, phi, what: str):
-    """Complex core of :func:`circle_circle`."""
+def _circle_offset(z1, r1: float, z2, r2: float, sign: int, phi, what: str):
+    """u = X - z1 for the intersection X of circle (z1, r1) with circle (z2, r2), and v = z2 - z1."""
     v = z2 - z1
     d2 = np.atleast_1d(_abs2(v))
     tol = DEAD_POINT_TOL * (r1 + r2)
@@ -222,10 +285,53 @@ def _circle_circle_z(z1, r1: float, z2, r2: float, sign: int, phi, what: str):
     if not (d2.min() > (abs(r1 - r2) + tol) ** 2 and d2.max() < (r1 + r2 - tol) ** 2):
         _raise_distance_error(d2, r1, r2, tol, phi, what)
     d = np.sqrt(d2)
-    a = (r1 * r1 - r2 * r2 + d2) / (2.0 * d)
-    h = np.sqrt(np.maximum(r1 * r1 - a * a, 0.0))
+    a = d2
+    a += r1 * r1 - r2 * r2
+    a /= 2.0 * d
+    h = np.maximum(r1 * r1 - a * a, 0.0)
+    np.sqrt(h, out=h)
     # the point a along the unit vector v/d and h to its left (sign +1) or right
-    return z1 + v * ((a + (1j * sign) * h) / d)
+    q = np.empty(len(a), dtype=complex)
+    q.real, q.imag = a, h if sign > 0 else -h
+    q /= d
+    q *= v
+    return q, v
+
+
+def _circle_circle_z(z1, r1: float, z2, r2: float, sign: int, phi, what: str):
+    """Complex core of :func:`circle_circle`."""
+    return z1 + _circle_offset(z1, r1, z2, r2, sign, phi, what)[0]
+
+
+# Rows per block of the long-array dyad solvers: a block's temporaries stay in the
+# processor's cache and are recycled by the allocator, where whole-length temporaries
+# would each be freshly mapped (page-faulted) memory; at 360,000 angles that is 3× faster.
+BLOCK = 16384
+# Threads sharing the blocks of one long call (numpy releases the GIL inside its loops).
+THREADS = min(len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1, 4)
+_pool: ThreadPoolExecutor | None = None
+
+
+def blocks(n: int) -> list[slice]:
+    """Consecutive slices of at most BLOCK rows covering range(n)."""
+    return [slice(lo, min(lo + BLOCK, n)) for lo in range(0, n, BLOCK)]
+
+
+def for_blocks(n: int, kernel) -> None:
+    """Call ``kernel(sl)`` on every block of range(n); long inputs are split into one run
+    of consecutive blocks per thread. An exception from the earliest failing block is raised."""
+    global _pool
+    sls = blocks(n)
+    if THREADS < 2 or len(sls) < 2 * THREADS:
+        for sl in sls:
+            kernel(sl)
+        return
+    if _pool is None:
+        _pool = ThreadPoolExecutor(THREADS, thread_name_prefix="mechlab")
+    k = -(-len(sls) // THREADS)
+    runs = [_pool.submit(lambda part: [kernel(sl) for sl in part], sls[i:i + k]) for i in range(0, len(sls), k)]
+    for run in runs:
+        run.result()
 
 
 def circle_circle(c1: np.ndarray, r1: float, c2: np.ndarray, r2: float, sign: int,
@@ -265,26 +371,83 @@ def dyad_rrr(A: PointPath, E: PointPath, la: float, le: float, sign: int,
 
 
 def rocker_dyad(A: PointPath, E, la: float, le: float, sign: int, phi: np.ndarray | None = None,
-                what: str = "the RRR dyad", reference: float = 0.0) -> tuple[PointPath, AnglePath]:
+                what: str = "the RRR dyad", reference=0.0) -> tuple[PointPath, AnglePath]:
     """An RRR dyad whose outer joint E is fixed (a rocker E-B and a coupler A-B).
 
     Returns the path of B and the rocker's angle ψ (the branch within π of
-    ``reference``, an angle or an array of angles) with its analogs. With u = B - A,
-    w = B - E, D = u × w: B' = iwψ' gives ψ' = -(u·A')/D, and differentiating once more
-    ψ'' = -(u·A'' - |B' - A'|² + ψ'²·(u·w))/D, B'' = iwψ'' - wψ'².
+    ``reference``, an angle or an array of angles) with its analogs. With v = E - A at
+    distance d, B = A + u where u = v·(α + iβ), α = 1/2 + (la² - le²)/(2d²),
+    β = ±√(la²/d² - α²); w = B - E = u - v and D = u × w = βd². B' = iwψ' gives
+    ψ' = -(u·A')/D, and differentiating once more
+    ψ'' = -(u·A'' - |B' - A'|² + ψ'²·(u·w))/D with u·w = la² - αd²;
+    B'' = iwψ'' - wψ'². B' and B'' are built when read. Solved in blocks of rows
+    (see :func:`for_blocks`) into one output buffer, in real arithmetic.
     """
-    zA, zE = as_complex(A.p), complex(*np.asarray(E, dtype=float))
-    B = _circle_circle_z(zA, la, zE, le, sign, phi, what)
-    u, w = B - zA, B - zE
-    D = _im_conj(u, w)
-    w1 = -_re_conj(u, as_complex(A.d)) / D
-    iw = 1j * w
-    dB = iw * w1
-    w2 = -(_re_conj(u, as_complex(A.dd)) - _abs2(dB - as_complex(A.d)) + w1 * w1 * _re_conj(u, w)) / D
-    ddB = iw * w2 - w * (w1 * w1)
-    turn = np.exp(-1j * np.asarray(reference)) if np.any(reference) else 1.0
-    psi = np.angle(w * turn) + reference
-    return PointPath(as_xy(B), as_xy(dB), as_xy(ddB)), AnglePath(psi, w1, w2)
+    ex, ey = (float(c) for c in np.asarray(E, dtype=float))
+    n = len(A.p)
+    buf = np.empty(5 * n)  # B, ψ, ψ', ψ'': one allocation for all outputs
+    Bxy = buf[:2 * n].reshape(n, 2)
+    psi, w1, w2 = buf[2 * n:3 * n], buf[3 * n:4 * n], buf[4 * n:]
+    ref = np.asarray(reference, dtype=float)
+    cos_r, sin_r = np.cos(reference), np.sin(reference)
+    la2, half_k, tol = la * la, 0.5 * (la * la - le * le), DEAD_POINT_TOL * (la + le)
+
+    def kernel(sl):
+        ax, ay, dax, day, ddax, dday = A.rows(sl)
+        vx, vy = ex - ax, ey - ay
+        d2 = vx * vx
+        d2 += vy * vy
+        # two reductions decide the usual case: every row assembles away from a dead point
+        if not (d2.min() > (abs(la - le) + tol) ** 2 and d2.max() < (la + le - tol) ** 2):
+            _raise_distance_error(d2, la, le, tol, None if phi is None else phi[sl], what)
+        alpha = half_k / d2
+        alpha += 0.5
+        beta = la2 / d2
+        beta -= alpha * alpha
+        np.sqrt(np.maximum(beta, 0.0, out=beta), out=beta)
+        if sign < 0:
+            beta *= -1.0
+        ux, uy = alpha * vx, alpha * vy
+        ux -= beta * vy
+        uy += beta * vx
+        np.add(ax, ux, out=Bxy[sl, 0])
+        np.add(ay, uy, out=Bxy[sl, 1])
+        wx, wy = ux - vx, uy - vy
+        D = beta * d2
+        d1 = ux * dax
+        d1 += uy * day
+        np.divide(d1, D, out=d1)
+        d1 *= -1.0
+        w1[sl] = d1
+        rel_x, rel_y = wy * d1, wx * d1  # B' - A' = iwψ' - A'
+        rel_x += dax
+        rel_y -= day
+        num = rel_x * rel_x
+        num += rel_y * rel_y
+        num -= ux * ddax
+        num -= uy * dday
+        alpha *= d2
+        alpha -= la2  # -(u·w)
+        alpha *= d1
+        alpha *= d1
+        num += alpha
+        np.divide(num, D, out=w2[sl])
+        if ref.ndim:  # ψ on the branch of a moving reference
+            np.arctan2(wy, wx, out=psi[sl])
+            psi[sl] = lift(psi[sl], ref[sl])
+        else:  # w turned by -reference, so that its angle lies within π of it
+            rx = wx * cos_r
+            rx += wy * sin_r
+            wy *= cos_r
+            wy -= wx * sin_r
+            np.arctan2(wy, rx, out=psi[sl])
+            psi[sl] += reference
+
+    for_blocks(n, kernel)
+    zE = complex(ex, ey)
+    wE = lambda: as_complex(Bxy) - zE
+    B = PointPath(Bxy, lambda: as_xy(1j * wE() * w1), lambda: as_xy(wE() * (1j * w2 - w1 * w1)))
+    return B, AnglePath(psi, w1, w2)
 
 
 def line_circle(p0: np.ndarray, u: np.ndarray, c: np.ndarray, r: float, sign: int,

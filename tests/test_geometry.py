@@ -4,8 +4,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab import AssemblyError, DimensionError, SingularityError
-from mechlab.geometry import (as_angles, check_length, circle_circle, cross, crank_point, dyad_rrp, dyad_rrr,
-                              dyad_rpr, fixed_point, line_circle, wrap)
+from mechlab.geometry import (PointPath, as_angles, check_length, circle_circle, crank_point, cross, dyad_rpr,
+                              dyad_rrp, dyad_rrr, fixed_point, line_circle, wrap)
 from mechlab.linkages.base import FULL_TURN, arc_set
 
 coords = st.floats(-5, 5)
@@ -156,3 +156,48 @@ def test_rocker_dyad_agrees_with_the_general_dyad_and_with_differences(sign):
         assert np.max(np.abs(a - b)) < 1e-12
     assert np.max(np.abs(psi.d - ang.d)) < 1e-12 and np.max(np.abs(psi.dd - ang.dd)) < 1e-11
     assert np.all(np.abs(psi.theta - 1.0) <= np.pi) and np.allclose(wrap(psi.theta - ang.theta), 0, atol=1e-14)
+
+
+@pytest.mark.parametrize("threads", [1, 2, 3])
+def test_long_inputs_split_into_blocks_and_threads_give_the_same_numbers(monkeypatch, threads):
+    """rocker_dyad and crank_point over many blocks (several threads) equal the row-by-row
+    small-call results, and the lazy analogs B', B'' equal those of the general dyad."""
+    import mechlab.geometry as G
+    monkeypatch.setattr(G, "BLOCK", 1000)
+    monkeypatch.setattr(G, "THREADS", threads)
+    phi = np.linspace(-1.0, 9.0, 12_345)  # 13 blocks, the last one short
+    A = crank_point(0.7, phi, centre=(0.2, -0.1))
+    ref = 0.3 + 0.5 * phi  # a moving reference branch, as for a rotating output
+    B, psi = G.rocker_dyad(A, (2.0, 0.5), 1.9, 1.6, -1, phi, reference=ref)
+    single = [crank_point(0.7, phi[i:i + 1], centre=(0.2, -0.1)) for i in (0, 4_321, 12_344)]
+    for a, i in zip(single, (0, 4_321, 12_344)):
+        assert np.array_equal(a.p[0], A.p[i])
+        b, p = G.rocker_dyad(a, (2.0, 0.5), 1.9, 1.6, -1, reference=ref[i])
+        assert np.allclose([b.p[0], b.d[0], b.dd[0]], [B.p[i], B.d[i], B.dd[i]], atol=1e-13, rtol=0)
+        assert np.allclose([p.theta[0], p.d[0], p.dd[0]], [psi.theta[i], psi.d[i], psi.dd[i]], atol=1e-13, rtol=0)
+    general = dyad_rrr(PointPath(A.p, np.array(A.d), np.array(A.dd)), fixed_point((2.0, 0.5), len(phi)), 1.9, 1.6, -1)
+    for a, b in zip(B, general):
+        assert np.max(np.abs(a - b)) < 1e-12
+    assert np.all(np.abs(psi.theta - ref) <= np.pi)
+
+
+def test_the_first_failing_block_names_the_angle(monkeypatch):
+    import mechlab.geometry as G
+    monkeypatch.setattr(G, "BLOCK", 100)
+    monkeypatch.setattr(G, "THREADS", 2)
+    phi = np.linspace(0.0, 2 * np.pi, 2_000)
+    A = crank_point(1.0, phi)
+    # |A - E| runs over [1, 3]: the dyad (1.5, 0.6) reaches only [0.9, 2.1]
+    with pytest.raises(AssemblyError, match=r"at φ = (\d+\.\d+)°") as err:
+        G.rocker_dyad(A, (2.0, 0.0), 1.5, 0.6, 1, phi)
+    first = phi[np.argmax(np.abs(2.0 - np.exp(1j * phi)) > 2.1)]
+    assert err.value.args[0].count(f"{np.degrees(first):.2f}°") == 1
+
+
+def test_point_path_analogs_may_be_lazy_and_unpack_like_a_tuple():
+    calls = []
+    p = PointPath(np.zeros((3, 2)), lambda: calls.append("d") or np.ones((3, 2)), np.full((3, 2), 2.0))
+    assert calls == []
+    _, d, dd = p
+    assert calls == ["d"] and np.array_equal(d, np.ones((3, 2))) and p.d is d and calls == ["d"]
+    assert np.array_equal(dd, np.full((3, 2), 2.0))
