@@ -190,3 +190,60 @@ def test_widgets_exercises_and_errata():
     for e in ERRATA:
         assert e.source == "001" and e.evidence()
     assert table(notebook="06_chebyshev_dwell_synthesis.ipynb").count("\n| 001") == 4
+
+
+@pytest.mark.parametrize("delta,a", [(150, 1.15), (180, 1.3), (240, 1.6)])
+def test_whole_turn_line_band_spans_the_turn_and_iso_dwells_converge_to_it(delta, a):
+    from mechlab.chebyshev import whole_turn_guiding
+
+    g = whole_turn_guiding(delta * DEG, a)
+    assert g.dwell == 2 * np.pi and 0 < g.r < min(a, 2 - a)
+    phi = np.linspace(0, 2 * np.pi, 40000, endpoint=False)
+    dev = g.deviation(phi)
+    assert np.max(np.abs(dev)) <= g.E * (1 + 1e-6)
+    k = band_touches(np.r_[dev, dev[0]], g.E, rtol=1e-5)[:-1]  # close the loop: φ = 0 is t = ±π
+    # six alternating touches round the closed curve: t = π, ±t3, ±t2, 0
+    assert len(k) == 6 and np.all(np.diff(np.sign(dev[k])) != 0)
+    assert np.allclose(np.sort(np.abs(phi[k] - np.pi)), np.sort([0, g.t3, g.t3, g.t2, g.t2, np.pi]), atol=1e-3)
+    # just inside: the ordinary synthesis at 2α → 360° tends to this r (quadratically in 360° − 2α)
+    # (started from the line's solution: the default start from the fifth-order contact does not
+    # reach 350° for every δ, e.g. δ = 90°)
+    gaps, x = [], (g.r, g.c, g.t3, g.t2)
+    for dw in (359, 355, 350):
+        h = circle_guiding(delta * DEG, a, dw * DEG, guess=x)
+        x = (h.r, h.c, h.t3, h.t2)
+        gaps.insert(0, abs(h.r - g.r))
+    assert gaps[0] > gaps[1] > gaps[2] and gaps[2] < 1e-3 * max(g.r, 0.1)
+    assert 15 < gaps[1] / gaps[2] < 35  # (5/1)² = 25
+
+
+def test_whole_turn_line_meets_the_fifth_order_line_at_A_and_ends_on_the_rotation_limit():
+    from mechlab.chebyshev import existence_region, whole_turn_line
+
+    for delta in (90, 150, 180, 240):
+        d = delta * DEG
+        wt = whole_turn_line(d)
+        r5, a5, _ = fifth_order_line(d, 4000)
+        A = 2 * np.sin(d / 4)
+        # both lines start at A = (r → 0, a = 2 sin(δ/4))
+        assert abs(wt.a[0] - A) < 0.01 and wt.r[0] < 0.01
+        i = np.argmax(a5)
+        assert abs(a5[i] - A) < 1e-3 and r5[i] < 1e-3
+        # the other end: r = a for δ < 120°, r + a = 2 for δ > 120°
+        end = (wt.a[-1] - wt.r[-1]) if delta < 120 else (2 - wt.a[-1] - wt.r[-1])
+        assert 0 < end < 0.03
+        assert np.all(wt.c > 0) and np.all(np.diff(wt.r) > 0)
+    # δ = 120°: the whole-turn line is a = 1 exactly, with the band's centre at c = 1
+    wt = whole_turn_line(120 * DEG)
+    assert np.allclose(wt.a, 1, atol=1e-9) and np.allclose(wt.c, 1, atol=1e-9) and wt.r[-1] > 0.99
+    r, a = existence_region(150 * DEG)
+    assert (r[0], a[0]) == pytest.approx((0, 0), abs=1e-3) and (r[-1], a[-1]) == (0.0, 0.0)
+    assert np.all(r <= np.minimum(a, 2 - a) + 1e-12)
+    # an iso-dwell point lies inside the region, a point beyond the whole-turn line outside
+    from matplotlib.path import Path
+
+    poly = Path(np.c_[r, a])
+    g = circle_guiding(150 * DEG, 1.1, 300 * DEG)
+    assert poly.contains_point((g.r, 1.1)) and not poly.contains_point((0.5, 1.3))
+    with pytest.raises(SynthesisError, match="no circle-guiding"):
+        circle_guiding(150 * DEG, 1.3, 120 * DEG)

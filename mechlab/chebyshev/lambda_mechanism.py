@@ -46,7 +46,8 @@ from ..motion import AngularMotion
 __all__ = [
     "SynthesisError", "LambdaMechanism", "GuidedLambda", "CircleGuide", "StraightGuide", "circle_guiding",
     "straight_guiding", "thesis_iteration", "fifth_order_line", "existence_map",
-    "rotation_boundary", "transmission_lines", "classic_lambda", "band_touches",
+    "rotation_boundary", "transmission_lines", "classic_lambda", "band_touches", "WholeTurnLine",
+    "whole_turn_line", "whole_turn_guiding", "existence_region",
 ]
 
 
@@ -633,18 +634,141 @@ def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray
     return r[ok], a[ok], (p * a)[ok]
 
 
+class WholeTurnLine(NamedTuple):
+    """Points of the whole-turn boundary (2α = 360°) in the (r, a) plane, with the band's centre
+    offset c (Q = C + c·e) and the touch angles t3 < t2 of each point (arrays)."""
+
+    r: np.ndarray
+    a: np.ndarray
+    c: np.ndarray
+    t3: np.ndarray
+    t2: np.ndarray
+
+
+def _whole_turn_eqs(delta):
+    """Equal ripple over the whole turn, unknowns y = (r, a, κ, t3, t2) with κ = 1/c.
+
+    ρ² about Q = C + e/κ is |w|² − 2x/κ + 1/κ² (w = D − C, x = w·e), so ρ(u) = ρ(v) ⇔
+    κ(|w(u)|² − |w(v)|²) − 2(x(u) − x(v)) = 0 and ρ'(t) = 0 ⇔ κ·(|w|²)' − 2x' = 0: smooth through
+    κ = 0 (a straight band), unlike the (r, c) form used for shorter dwells. The touches are
+    ρ(0) = ρ(t2) = R0, ρ(t3) = ρ(π) = R1 with ρ'(t3) = ρ'(t2) = 0; ρ'(π) = 0 by symmetry."""
+    def eqs(y):
+        r, a, k, t3, t2 = y
+        try:
+            m = _make(r, a, delta)
+            D = m.motion(np.pi + np.array([0.0, t3, t2, np.pi])).points["D"]
+        except MechanismError:
+            return np.full(4, 1e3)
+        w, e = D.p - m.C, m.axis
+        P, dP, X, dX = (w * w).sum(1), 2 * (w * D.d).sum(1), w @ e, D.d @ e
+        return np.array([k * (P[0] - P[2]) - 2 * (X[0] - X[2]), k * (P[1] - P[3]) - 2 * (X[1] - X[3]),
+                         k * dP[1] - 2 * dX[1], k * dP[2] - 2 * dX[2]])
+    return eqs
+
+
+def whole_turn_line(delta: float, ds: float = 0.02, r_start: float = 0.005) -> WholeTurnLine:
+    """The boundary "the whole coupler curve approximated by a circle", α = π (seed 001, text
+    before (12), boundary 2, lines KU and AP of Fig. 2a).
+
+    On it the equal-ripple circle fit of :func:`circle_guiding` spans the whole crank turn: ρ
+    touches R0 at t = 0 and ±t2, R1 at ±t3 and at t = π (6 alternating touches round the closed
+    curve). The generic solver cannot get there (continuation in α from the fifth-order contact
+    collapses to r → 0 as 2α → 360°), so this is a dedicated solve (:func:`_whole_turn_eqs`),
+    traced by pseudo-arclength continuation (step ``ds`` in (r, a, κ, t3, t2)) from r = ``r_start``
+    near the point A = (r → 0, a → 2 sin(δ/4)), where it meets the fifth-order line (found
+    numerically: there κ → 1/a, t3 → 60°, t2 → 120°), until it leaves the crank-rocker region:
+    on r = a for δ < 120°, at (1, 1) for δ = 120° and on r + a = 2 for δ > 120°.
+    For a < 1 beyond that end the iso-dwell lines crowd onto r = a instead (2α → 360° as r → a).
+    """
+    delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
+    eqs = _whole_turn_eqs(delta)
+    a0 = 2 * np.sin(delta / 4)
+    pts, guess = [], np.array([a0, 1 / a0, np.pi / 3, 2 * np.pi / 3])
+    for r in (r_start, 2 * r_start):
+        sol = root(lambda z, r=r: eqs([r, *z]), guess, method="hybr", options=dict(xtol=1e-13))
+        if np.max(np.abs(eqs([r, *sol.x]))) > 1e-10:
+            raise SynthesisError(f"no whole-turn circle-guiding line found for δ = {np.degrees(delta):.4g}° "
+                                 f"near r = 0, a = 2 sin(δ/4) = {a0:.4g}")
+        guess = sol.x
+        pts.append(np.r_[r, sol.x])
+    for _ in range(2000):
+        tan = pts[-1] - pts[-2]
+        tan /= np.linalg.norm(tan)
+
+        def aug(y, tan=tan, y0=pts[-1]):
+            return [*eqs(y), (y - y0) @ tan - ds]
+
+        y = root(aug, pts[-1] + ds * tan, method="hybr", options=dict(xtol=1e-13)).x
+        r, a, k, t3, t2 = y
+        if (np.max(np.abs(aug(y))) > 1e-10 or not 0 < t3 < t2 < np.pi or not 1e-3 < r < min(a, 2 - a)
+                or k <= 0):
+            break
+        pts.append(y)
+    y = np.array(pts)
+    return WholeTurnLine(y[:, 0], y[:, 1], 1 / y[:, 2], y[:, 3], y[:, 4])
+
+
+def whole_turn_guiding(delta: float, a: float) -> CircleGuide:
+    """The circle-guiding design with 2α = 360° for frame a: the point of :func:`whole_turn_line`
+    at that a, polished by a solve at fixed a; a CircleGuide with dwell = 2π whose band holds D over
+    the whole turn (checked on 4001 points). SynthesisError if the line misses a."""
+    delta, a, _ = _check_inputs(delta, a, 2 * np.pi, "whole-turn circle guiding")
+    line = whole_turn_line(delta)
+    i = np.nonzero(np.sign(line.a[1:] - a) * np.sign(line.a[:-1] - a) <= 0)[0]
+    if len(i) == 0:
+        raise SynthesisError(
+            f"no whole-turn circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}: the "
+            f"line 2α = 360° spans a ∈ [{line.a.min():.4g}, {line.a.max():.4g}]")
+    i = i[0]
+    w = (a - line.a[i]) / (line.a[i + 1] - line.a[i])
+    x0 = [(1 - w) * v[i] + w * v[i + 1] for v in (line.r, 1 / line.c, line.t3, line.t2)]
+    eqs = _whole_turn_eqs(delta)
+    sol = root(lambda z: eqs([z[0], a, *z[1:]]), x0, method="hybr", options=dict(xtol=1e-14))
+    r, k, t3, t2 = (float(v) for v in sol.x)
+    if np.max(np.abs(eqs([r, a, k, t3, t2]))) > 1e-10 or not 0 < t3 < t2 < np.pi:
+        raise SynthesisError(f"the whole-turn solve did not converge for δ = {np.degrees(delta):.4g}°, a = {a:.4g}")
+    c = 1 / k
+    rho, _ = _rho(r, c, a, delta, [0.0, t3])
+    g = CircleGuide(delta, a, 2 * np.pi, r, c, float(rho[0]), float(rho[1]), t3, t2)
+    dense = g.deviation(np.linspace(0, 2 * np.pi, 4001))
+    if np.max(np.abs(dense)) > g.E * (1 + 1e-6):
+        raise SynthesisError(f"δ = {np.degrees(delta):.4g}°, a = {a:.4g}: the whole-turn fit leaves its band "
+                             f"(max |ρ − R| = {np.max(np.abs(dense)):.3g} > E = {g.E:.3g})")
+    return g
+
+
+def existence_region(delta: float) -> tuple[np.ndarray, np.ndarray]:
+    """Closed polygon (r, a) of the existence region of Fig. 2a for break angle δ: from O along the
+    fifth-order line (2α → 0) to A, along the whole-turn line (2α = 360°) to the rotation limit, then
+    along the rotation limit (r + a = 2 to (1, 1) if it ends there, r = a) back to O. Every circle-
+    guiding design with 0 < 2α < 360° lies inside (for the δ the map is drawn for)."""
+    r5, a5 = fifth_order_line(delta, 200)[:2]
+    wt = whole_turn_line(delta)
+    r, a = list(r5), list(a5)
+    r += list(wt.r)
+    a += list(wt.a)
+    if wt.a[-1] > 1:  # ends on r + a = 2: along it to the corner (1, 1)
+        r.append(1.0)
+        a.append(1.0)
+    r.append(0.0)
+    a.append(0.0)  # along r = a back to O
+    return np.array(r), np.array(a)
+
+
 def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radians(180), np.radians(240)),
                   n: int = 25) -> dict:
     """Curves of Fig. 2a for break angle δ in the (r, a) plane.
 
     ``rotation`` (r = a, r + a = 2), ``fifth`` (fifth-order contact), one iso-dwell curve per
     requested dwell (key = dwell in degrees, rounded) computed by continuation in a, and the
-    transmission lines μ = 30°, 150°. (The thesis' "whole curve within the band" line, 2α → 360°,
-    is not drawn: the equal-ripple solution is not followed reliably that far.)
+    transmission lines μ = 30°, 150°, the whole-turn line ``whole`` (2α = 360°, :func:`whole_turn_line`)
+    and the closed outline ``region`` of the existence region (:func:`existence_region`).
     Each curve is a pair of arrays (r, a).
     """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     out = {"rotation": rotation_boundary(), "fifth": fifth_order_line(delta)[:2]}
+    out["whole"] = whole_turn_line(delta)[:2]
+    out["region"] = existence_region(delta)
     out.update(transmission_lines())
     for key, dw in [(int(round(np.degrees(w))), w) for w in dwells]:
         out[key] = _iso_dwell(delta, dw, n)
