@@ -9,6 +9,7 @@ step_fast() at 360,000 crank positions; one widget update ≤ 16 ms.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import sys
 import time
@@ -18,12 +19,22 @@ import matplotlib
 matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 
-from mechlab import FourBar  # noqa: E402
+from mechlab import FourBar, geometry  # noqa: E402
 
 CRANK, COUPLER, ROCKER, GROUND = 1.0, 3.0, 3.0, 4.0
 
 
-def best_of(fn, repeat=5):
+@contextlib.contextmanager
+def single_thread():
+    """mechlab's long calls on one thread only."""
+    threads, geometry.THREADS = geometry.THREADS, 1
+    try:
+        yield
+    finally:
+        geometry.THREADS = threads
+
+
+def best_of(fn, repeat=9):
     """Best wall time of ``repeat`` calls (seconds) and the last result."""
     best, out = math.inf, None
     for _ in range(repeat):
@@ -62,7 +73,11 @@ def main():
     for n in (3_600, 360_000):
         phi = np.arange(1, n + 1) * (2 * math.pi / n)
         t_ml, mo = best_of(lambda: fb.motion(phi))
-        row = {"n": n, "mechlab": t_ml}
+        with single_thread():
+            t_one, _ = best_of(lambda: fb.motion(phi))
+        # B' and B'' are built when first read: time them too, for an honest total
+        t_all, _ = best_of(lambda: [fb.motion(phi).points[k].dd for k in "AB"])
+        row = {"n": n, "mechlab": t_ml, "one_thread": t_one, "with_point_analogs": t_all}
         if have_pylinkage:
             link, crank, B = pylinkage_fourbar(n)
             link.compile()
@@ -81,8 +96,10 @@ def main():
         rows.append(row)
 
     print(f"FourBar({CRANK:g}, {COUPLER:g}, {ROCKER:g}, {GROUND:g}): motion(phi) = positions + ψ, ψ', ψ''")
+    print(f"mechlab with {geometry.THREADS} thread(s); [one thread; with A', A'', B', B'' read as well]")
     for r in rows:
-        line = f"n = {r['n']:>7,d}: mechlab {1e3 * r['mechlab']:8.2f} ms"
+        line = (f"n = {r['n']:>7,d}: mechlab {1e3 * r['mechlab']:6.2f} ms [{1e3 * r['one_thread']:6.2f}; "
+                f"{1e3 * r['with_point_analogs']:6.2f}]")
         if "step" in r:
             line += (f" | pylinkage step() {1e3 * r['step']:9.1f} ms ({r['step'] / r['mechlab']:6.0f}×)"
                      f" | step_fast() {1e3 * r['step_fast']:7.2f} ms ({r['step_fast'] / r['mechlab']:5.1f}×)"

@@ -209,7 +209,8 @@ class CrankPath(PointPath):
     def __init__(self, p: np.ndarray, centre: complex):
         self.centre = centre
         z = as_complex(p)
-        super().__init__(p, lambda: as_xy(1j * (z - centre)), lambda: as_xy((z - centre) * -1.0))
+        super().__init__(p, built_in_blocks(len(z), lambda sl: 1j * (z[sl] - centre)),
+                         built_in_blocks(len(z), lambda sl: (z[sl] - centre) * -1.0))
 
     def rows(self, sl: slice):
         p = self.p[sl]
@@ -312,6 +313,15 @@ THREADS = min(len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") e
 _pool: ThreadPoolExecutor | None = None
 
 
+def _forget_pool():
+    global _pool
+    _pool = None
+
+
+if hasattr(os, "register_at_fork"):  # a forked child has none of the parent's threads
+    os.register_at_fork(after_in_child=_forget_pool)
+
+
 def blocks(n: int) -> list[slice]:
     """Consecutive slices of at most BLOCK rows covering range(n)."""
     return [slice(lo, min(lo + BLOCK, n)) for lo in range(0, n, BLOCK)]
@@ -368,6 +378,21 @@ def dyad_rrr(A: PointPath, E: PointPath, la: float, le: float, sign: int,
     c2 = _re_conj(w, ddE) - _abs2(dB - dE)
     ddB = 1j * (c2 * u - c1 * w) / D
     return PointPath(as_xy(B), as_xy(dB), as_xy(ddB))
+
+
+def built_in_blocks(n: int, rows):
+    """A function of no arguments that builds the (n, 2) array of points whose rows ``sl``
+    are the complex numbers ``rows(sl)``, block by block (a lazy analog of a PointPath)."""
+    def build() -> np.ndarray:
+        z = np.empty(n, dtype=complex)
+
+        def kernel(sl):
+            z[sl] = rows(sl)
+
+        for_blocks(n, kernel)
+        return as_xy(z)
+
+    return build
 
 
 def rocker_dyad(A: PointPath, E, la: float, le: float, sign: int, phi: np.ndarray | None = None,
@@ -444,9 +469,9 @@ def rocker_dyad(A: PointPath, E, la: float, le: float, sign: int, phi: np.ndarra
             psi[sl] += reference
 
     for_blocks(n, kernel)
-    zE = complex(ex, ey)
-    wE = lambda: as_complex(Bxy) - zE
-    B = PointPath(Bxy, lambda: as_xy(1j * wE() * w1), lambda: as_xy(wE() * (1j * w2 - w1 * w1)))
+    zB, zE = as_complex(Bxy), complex(ex, ey)
+    B = PointPath(Bxy, built_in_blocks(n, lambda sl: 1j * (zB[sl] - zE) * w1[sl]),
+                  built_in_blocks(n, lambda sl: (zB[sl] - zE) * (1j * w2[sl] - w1[sl] * w1[sl])))
     return B, AnglePath(psi, w1, w2)
 
 

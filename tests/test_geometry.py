@@ -1,3 +1,5 @@
+import os
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -201,3 +203,19 @@ def test_point_path_analogs_may_be_lazy_and_unpack_like_a_tuple():
     _, d, dd = p
     assert calls == ["d"] and np.array_equal(d, np.ones((3, 2))) and p.d is d and calls == ["d"]
     assert np.array_equal(dd, np.full((3, 2), 2.0))
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
+def test_a_forked_child_solves_long_inputs_too(monkeypatch):
+    """The thread pool does not survive a fork: the child must build its own, not wait forever."""
+    import multiprocessing
+
+    import mechlab.geometry as G
+    monkeypatch.setattr(G, "BLOCK", 1000)
+    monkeypatch.setattr(G, "THREADS", 2)
+    phi = np.linspace(0.0, 6.0, 10_000)
+    G.crank_point(1.0, phi)  # the parent's pool exists now
+    child = multiprocessing.get_context("fork").Process(target=G.crank_point, args=(1.0, phi))
+    child.start()
+    child.join(timeout=60)
+    assert child.exitcode == 0
