@@ -708,12 +708,13 @@ def whole_turn_line(delta: float, ds: float = 0.02, r_start: float = 0.005) -> W
     return WholeTurnLine(y[:, 0], y[:, 1], 1 / y[:, 2], y[:, 3], y[:, 4])
 
 
-def whole_turn_guiding(delta: float, a: float) -> CircleGuide:
+def whole_turn_guiding(delta: float, a: float, line: WholeTurnLine | None = None) -> CircleGuide:
     """The circle-guiding design with 2α = 360° for frame a: the point of :func:`whole_turn_line`
     at that a, polished by a solve at fixed a; a CircleGuide with dwell = 2π whose band holds D over
-    the whole turn (checked on 4001 points). SynthesisError if the line misses a."""
+    the whole turn (checked on 4001 points). SynthesisError if the line misses a. ``line``: the
+    already traced :func:`whole_turn_line` of this δ (saves tracing it again)."""
     delta, a, _ = _check_inputs(delta, a, 2 * np.pi, "whole-turn circle guiding")
-    line = whole_turn_line(delta)
+    line = whole_turn_line(delta) if line is None else line
     i = np.nonzero(np.sign(line.a[1:] - a) * np.sign(line.a[:-1] - a) <= 0)[0]
     if len(i) == 0:
         raise SynthesisError(
@@ -737,13 +738,13 @@ def whole_turn_guiding(delta: float, a: float) -> CircleGuide:
     return g
 
 
-def existence_region(delta: float) -> tuple[np.ndarray, np.ndarray]:
+def existence_region(delta: float, line: WholeTurnLine | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Closed polygon (r, a) of the existence region of Fig. 2a for break angle δ: from O along the
     fifth-order line (2α → 0) to A, along the whole-turn line (2α = 360°) to the rotation limit, then
     along the rotation limit (r + a = 2 to (1, 1) if it ends there, r = a) back to O. Every circle-
     guiding design with 0 < 2α < 360° lies inside (for the δ the map is drawn for)."""
     r5, a5 = fifth_order_line(delta, 200)[:2]
-    wt = whole_turn_line(delta)
+    wt = whole_turn_line(delta) if line is None else line
     r, a = list(r5), list(a5)
     r += list(wt.r)
     a += list(wt.a)
@@ -762,13 +763,15 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
     ``rotation`` (r = a, r + a = 2), ``fifth`` (fifth-order contact), one iso-dwell curve per
     requested dwell (key = dwell in degrees, rounded) computed by continuation in a, and the
     transmission lines μ = 30°, 150°, the whole-turn line ``whole`` (2α = 360°, :func:`whole_turn_line`)
-    and the closed outline ``region`` of the existence region (:func:`existence_region`).
+    (all of :class:`WholeTurnLine` under ``whole_line``) and the closed outline ``region`` of the existence region (:func:`existence_region`).
     Each curve is a pair of arrays (r, a).
     """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     out = {"rotation": rotation_boundary(), "fifth": fifth_order_line(delta)[:2]}
-    out["whole"] = whole_turn_line(delta)[:2]
-    out["region"] = existence_region(delta)
+    line = whole_turn_line(delta)
+    out["whole"] = line[:2]
+    out["whole_line"] = line
+    out["region"] = existence_region(delta, line)
     out.update(transmission_lines())
     for key, dw in [(int(round(np.degrees(w))), w) for w in dwells]:
         out[key] = _iso_dwell(delta, dw, n)
