@@ -43,7 +43,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .errors import DimensionError, MechanismError
+from .errors import DimensionError
+from .forces import Drive, DriveError  # noqa: F401  (DriveError re-exported: mechlab.geneva.DriveError)
+from .forces import drive as _drive
 from .geometry import (AnglePath, PointPath, as_angles, check_length, crank_point, fixed_point, lift,
                        relative, vector_angle)
 from .linkages.base import Mechanism
@@ -58,10 +60,6 @@ class SlotCountError(DimensionError):
 
 class OffsetError(DimensionError):
     """The spherical Geneva's offset e does not satisfy 0 ≤ e < R."""
-
-
-class DriveError(MechanismError):
-    """Inadmissible drive data (efficiency outside (0, 1], overload < 1, …)."""
 
 
 def check_slots(z) -> int:
@@ -665,58 +663,49 @@ def table1_comparison(R: float = 40.0, e: float = 15.0) -> list[Cell]:
 # ----------------------------------------------------------------------------------
 # drive: crank torque from the power balance (seed 004, last section)
 # ----------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Drive:
-    """Crank torque and power over one turn at constant crank speed ω1.
+def crank_torque(mechanism, phi, *, inertia: float, omega1: float, resisting_torque: float = 0.0) -> np.ndarray:
+    """Crank torque M1(φ) of a Geneva drive at constant crank speed ω1, from the power balance.
 
-    ``torque`` M1(φ) from the power balance M1·ω1 = (J ε2 + M_r)·ω2 (friction through
-    the efficiency η: the motor supplies M1/η where it drives and gets M1·η back where
-    the wheel drives the crank); ``mean_torque``, ``mean_power`` = M̄1·ω1,
-    ``peak_power``, ``motor_power`` = max(N̄, N_peak/k) with overload factor k.
-    """
-
-    phi: np.ndarray
-    torque: np.ndarray
-    mean_torque: float
-    mean_power: float
-    peak_power: float
-    motor_power: float
-
-
-def drive(mechanism, *, inertia: float, omega1: float, resisting_torque: float = 0.0,
-          efficiency: float = 1.0, overload: float = 2.0, n: int = 7201) -> Drive:
-    """Geneva drive torque through the power balance (kept small; the general
-    drive-torque API belongs to mechlab.forces).
-
-    Wheel side: J (``inertia``, reduced to the wheel, seed's I_П) and a resisting
-    torque M_r opposing the wheel's motion while it moves (seed's M_П + M_C). With
-    ψ', ψ'' from ``mechanism.motion``: T2 = J ψ'' ω1² + M_r sign(ψ'), M1 = T2·ψ'.
-    The impact at a velocity jump (spherical Geneva) is not included.
-    The mean over the turn uses the trapezoidal rule on n samples.
+    Wheel side (seed 004, last section): the moment of inertia J (``inertia``, reduced to
+    the wheel, the seed's I_П) and a resisting torque M_r against the wheel's motion while
+    it moves (the seed's M_П + M_C). With ω2 = ψ'ω1 and ε2 = ψ''ω1² from
+    ``mechanism.motion``, M1·ω1 = (J ε2 + M_r sgn ω2)·ω2, so M1 = (J ψ'' ω1² + M_r sgn ψ')·ψ'
+    (zero while the wheel is locked). The impulse of a velocity jump (the spherical
+    Geneva's hard impact) is not included.
     """
     J = check_length("inertia", inertia, allow_zero=True)
     w1 = check_length("omega1", omega1)
     Mr = check_length("resisting_torque", resisting_torque, allow_zero=True)
-    eta = float(efficiency)
-    if not 0.0 < eta <= 1.0:
-        raise DriveError(f"the efficiency must lie in (0, 1], got η = {efficiency!r}")
-    k = float(overload)
-    if not k >= 1.0:
-        raise DriveError(f"the overload factor must be ≥ 1, got {overload!r}")
+    mo = mechanism.motion(phi)
+    return (J * mo.ddpsi * w1**2 + Mr * np.sign(mo.dpsi)) * mo.dpsi
 
-    def crank_torque(phi):
-        mo = mechanism.motion(phi)
-        M1 = (J * mo.ddpsi * w1**2 + Mr * np.sign(mo.dpsi)) * mo.dpsi
-        return np.where(M1 > 0.0, M1 / eta, M1 * eta)
 
-    phi = np.linspace(0.0, TWO_PI, n)
-    M1 = crank_torque(phi)
-    # the torque vanishes during the dwell and is smooth while engaged: integrate there
+def drive_angles(mechanism, n: int = 7201) -> np.ndarray:
+    """Crank angles over one turn [0, 2π]: n samples on the engaged interval π ± σ0, where
+    the torque lives, its ends taken just inside (σ0·(1 - 1e-13)), and the dwell sampled
+    at spacing ≈ 2π/(n - 1) from just outside. The torque's jumps at entry and exit then
+    fall between two samples a few 1e-13 apart and the trapezoidal rule integrates each
+    smooth piece on its own (error O(h²), h = 2σ0/(n - 1))."""
+    n = int(n)
+    if n < 16:
+        raise DimensionError(f"n must be ≥ 16 samples of the engaged interval, got {n}")
     s0 = mechanism.engagement_half_angle
-    on = np.pi + s0 * (1.0 - 1e-13) * np.linspace(-1.0, 1.0, n)  # ends just inside despite rounding
-    mean = float(np.trapezoid(crank_torque(on), on) / TWO_PI)
-    peak = float(max(np.max(M1), np.max(crank_torque(on))) * w1)
-    return Drive(phi, M1, mean, mean * w1, peak, max(mean * w1, peak / k))
+    k_off = max(int(np.ceil((np.pi - s0) / (TWO_PI / (n - 1)))), 1) + 1
+    on = np.pi + s0 * (1.0 - 1e-13) * np.linspace(-1.0, 1.0, n)
+    before = np.linspace(0.0, np.pi - s0 * (1.0 + 1e-13), k_off)
+    after = np.linspace(np.pi + s0 * (1.0 + 1e-13), TWO_PI, k_off)
+    return np.concatenate([before, on, after])
+
+
+def drive(mechanism, *, inertia: float, omega1: float, resisting_torque: float = 0.0,
+          efficiency: float = 1.0, overload: float = 2.0, n: int = 7201) -> Drive:
+    """The motor of a Geneva drive: :func:`crank_torque` sampled by :func:`drive_angles`
+    (n samples while the wheel moves, the engagement ends resolved), then the course's one rule,
+    :func:`mechlab.forces.drive` (motor torque M1/η where it drives and M1·η where the
+    wheel drives the crank back; mean power; nominal torque max(rms, peak/k))."""
+    phi = drive_angles(mechanism, n)
+    M1 = crank_torque(mechanism, phi, inertia=inertia, omega1=omega1, resisting_torque=resisting_torque)
+    return _drive(M1, phi, omega1, overload=overload, efficiency=efficiency)
 
 
 # ----------------------------------------------------------------------------------

@@ -6,7 +6,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab import FourBar, MechanismError, SineMechanism, SliderCrank, SlottedLink
-from mechlab.forces import (FRAME, Body, Force, ForceModel, FrictionError, HigherPair, Kinetostatics, LoadError,
+from mechlab.forces import (FRAME, Body, DriveError, Force, ForceModel, FrictionError, HigherPair, Kinetostatics,
+                            LoadError,
                             MassError, Prismatic, Revolute, SelfLockingError, StructureError, Torque, cycle_mean,
                             drive, model_for, slender_bar, solve, virtual_work_torque)
 from strategies import revolving_fourbars, revolving_slider_cranks
@@ -237,24 +238,117 @@ def test_group_that_cannot_carry_its_load_is_a_singularity():
         solve(bad, sl.motion(sl.turn(5)), [Torque("link", 1.0)])
 
 
-def test_drive_summary_and_motor_choice():
+def _quad_drive(f, a, b, eta, sense=1.0):
+    """Mean, rms of the motor torque m(f) = f/η where f·sense > 0, f·η elsewhere, by quad on
+    [a, b] split at the roots of f (found by brentq on a fine grid); peak by bounded search."""
+    from scipy.integrate import quad
+    from scipy.optimize import brentq, minimize_scalar
+    x = np.linspace(a, b, 2001)
+    y = f(x)
+    edges = [a, *[brentq(f, u, v, xtol=1e-15) for u, v, fu, fv in zip(x, x[1:], y, y[1:]) if fu * fv < 0], b]
+
+    def m(t):
+        v = f(t)
+        return v / eta if v * sense > 0 else v * eta
+
+    mean = sum(quad(m, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0] for u, v in zip(edges, edges[1:])) / (b - a)
+    sq = sum(quad(lambda t: m(t) ** 2, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0]
+             for u, v in zip(edges, edges[1:])) / (b - a)
+    i = int(np.argmax(np.abs([m(t) for t in x])))
+    lo, hi = x[max(i - 1, 0)], x[min(i + 1, len(x) - 1)]
+    peak = max(-minimize_scalar(lambda t: -abs(m(t)), bounds=(lo, hi), method="bounded",
+                                options={"xatol": 1e-12}).fun, abs(m(x[i])))
+    return mean, float(np.sqrt(sq)), peak
+
+
+def test_drive_one_rule_by_hand():
+    """M = 10 + 30 sin φ N·m at ω1 = 10 rad/s through η = 0.8: the motor supplies M/η where
+    M > 0 and gets M·η back where M < 0. With φ1 = π + asin(1/3), φ2 = 2π - asin(1/3) the
+    roots, ∫(10 + 30 sin φ) over [φ1, φ2] = 10(φ2 - φ1) - 60 cos(asin(1/3)) = -A < 0, so
+    2π·⟨M_m⟩ = (20π + A)/η - A·η (closed form); peak = 40/η = 50; rms and the rule by quad."""
     phi = np.linspace(0, 2 * np.pi, 3601)
     M = 10.0 + 30.0 * np.sin(phi)
     d = drive(M, phi, omega1=10.0, overload=2.0, efficiency=0.8)
-    assert d.mean_torque == pytest.approx(10.0, rel=1e-9)
-    assert d.peak_torque == pytest.approx(40.0, rel=1e-6)
-    assert d.rms_torque == pytest.approx(np.sqrt(100 + 450), rel=1e-9)
-    assert d.mean_power == pytest.approx(10.0 * 10 / 0.8, rel=1e-9)
-    assert d.nominal_torque == pytest.approx(np.sqrt(550) / 0.8, rel=1e-9) and d.governing == "rms"
-    assert drive(M, phi, 10.0, overload=1.2).governing == "peak"
+    s = np.arcsin(1 / 3)
+    A = -(10 * (np.pi - 2 * s) - 60 * np.cos(s))
+    mean = ((20 * np.pi + A) / 0.8 - A * 0.8) / (2 * np.pi)
+    assert d.mean_torque == pytest.approx(mean, rel=1e-6)
+    q_mean, q_rms, q_peak = _quad_drive(lambda t: 10.0 + 30.0 * np.sin(t), 0.0, 2 * np.pi, 0.8)
+    assert q_mean == pytest.approx(mean, rel=1e-10)
+    assert d.rms_torque == pytest.approx(q_rms, rel=1e-6)
+    assert d.peak_torque == pytest.approx(50.0, rel=1e-6) and q_peak == pytest.approx(50.0, rel=1e-9)
+    assert d.mean_power == pytest.approx(mean * 10.0, rel=1e-6)
+    assert d.peak_power == pytest.approx(500.0, rel=1e-6)
+    assert d.nominal_torque == pytest.approx(q_rms, rel=1e-6) and d.governing == "rms"   # rms 29.9 > 50/2
+    assert d.nominal_power == pytest.approx(10.0 * q_rms, rel=1e-6)
+    tight = drive(M, phi, 10.0, overload=1.2, efficiency=0.8)
+    assert tight.governing == "peak" and tight.nominal_torque == pytest.approx(50.0 / 1.2, rel=1e-6)
+    assert np.array_equal(d.torque, M) and np.allclose(d.motor_torque, np.where(M > 0, M / 0.8, M * 0.8))
+    # the crank turning the other way with the opposite torque is the same drive
+    r = drive(-M, phi, omega1=-10.0, overload=2.0, efficiency=0.8)
+    assert r.mean_power == pytest.approx(d.mean_power, rel=1e-12) and r.mean_torque == pytest.approx(-d.mean_torque)
+    assert r.nominal_power == pytest.approx(d.nominal_power, rel=1e-12) and r.governing == d.governing
     assert d.choose([100, 250, 300, 400]) == 300
     with pytest.raises(MechanismError, match="no motor"):
         d.choose([10, 20])
-    with pytest.raises(MechanismError, match="overload factor"):
-        drive(M, phi, 10.0, overload=0.5)
-    with pytest.raises(MechanismError, match="efficiency"):
-        drive(M, phi, 10.0, efficiency=1.5)
+    for kw, msg in (({"overload": 0.5}, "overload factor"), ({"efficiency": 1.5}, "efficiency"),
+                    ({"efficiency": 0.0}, "efficiency")):
+        with pytest.raises(DriveError, match=msg):
+            drive(M, phi, 10.0, **kw)
+    with pytest.raises(DriveError, match="ω1 must be finite and non-zero"):
+        drive(M, phi, 0.0)
+    with pytest.raises(DriveError, match="same length"):
+        drive(M[:-1], phi, 10.0)
+    with pytest.raises(DriveError, match="finite"):
+        drive(np.where(phi > 1, np.nan, M), phi, 10.0)
+    with pytest.raises(DriveError, match="phi must increase"):
+        drive(M, phi[::-1], 10.0)
+    assert issubclass(DriveError, MechanismError)
     assert cycle_mean(np.cos(phi) ** 2, phi) == pytest.approx(0.5, rel=1e-9)
+
+
+def test_drive_integrates_a_jump_exactly_with_both_one_sided_samples():
+    """A press-like step: P on [a, b], 0 elsewhere. Sampled with both one-sided values at a and
+    b the trapezoidal rule is exact: ⟨M⟩ = P(b - a)/2π, ⟨M²⟩ = P²(b - a)/2π."""
+    a, b, P = 1.0, 2.5, 7.0
+    phi = np.concatenate([np.linspace(0, a, 5), np.linspace(a, b, 9), np.linspace(b, 2 * np.pi, 7)])
+    M = np.concatenate([np.zeros(5), np.full(9, P), np.zeros(7)])
+    d = drive(M, phi, 3.0, overload=3.0)
+    assert d.mean_torque == pytest.approx(P * (b - a) / (2 * np.pi), rel=1e-14)
+    assert d.rms_torque == pytest.approx(P * np.sqrt((b - a) / (2 * np.pi)), rel=1e-14)
+    assert d.peak_torque == P and d.governing == "rms"
+
+
+coefficients = st.lists(st.floats(-10.0, 10.0), min_size=3, max_size=7)
+
+
+@given(coefficients, st.floats(0.3, 1.0), st.floats(1.0, 4.0), st.floats(0.5, 50.0), st.sampled_from([1.0, -1.0]))
+@settings(max_examples=60, deadline=None)
+def test_drive_rule_on_random_torques_against_quad(c, eta, k, w, sense):
+    """Random trigonometric torques M(φ) = c0 + Σ (c_2j-1 cos jφ + c_2j sin jφ): the sampled
+    rule against quad; rms ≥ |mean| (Cauchy–Schwarz: the thermal figure never below the
+    energy figure); with η < 1 the mean power is never below the lossless one."""
+    def f(t):
+        out = c[0] + 0.0 * t
+        for j in range(1, (len(c) - 1) // 2 + 1):
+            out = out + c[2 * j - 1] * np.cos(j * t) + c[2 * j] * np.sin(j * t)
+        return out
+
+    phi = np.linspace(0.0, 2 * np.pi, 20001)
+    M = f(phi)
+    d = drive(M, phi, sense * w, overload=k, efficiency=eta)
+    mean, rms, peak = _quad_drive(f, 0.0, 2 * np.pi, eta, sense)
+    size = max(np.max(np.abs(M)), 1e-3)
+    assert d.mean_torque == pytest.approx(mean, abs=1e-6 * size)
+    assert d.rms_torque == pytest.approx(rms, abs=1e-6 * size)
+    assert d.peak_torque == pytest.approx(peak, abs=1e-6 * size) and d.peak_torque <= peak + 1e-12 * size
+    assert d.nominal_torque == max(d.rms_torque, d.peak_torque / k)
+    assert d.nominal_power == pytest.approx(d.nominal_torque * w, rel=1e-14)
+    assert d.mean_power == pytest.approx(d.mean_torque * sense * w, rel=1e-14)
+    assert d.rms_torque >= abs(d.mean_torque) * (1 - 1e-12)
+    lossless = drive(M, phi, sense * w, overload=k)
+    assert d.mean_power >= lossless.mean_power - 1e-12 * size * w
+    assert lossless.mean_power == pytest.approx(cycle_mean(M, phi) * sense * w, rel=1e-12, abs=1e-12 * size * w)
 
 
 def test_kinetostatics_wrapper_and_slender_bar():

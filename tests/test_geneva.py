@@ -8,8 +8,10 @@ from hypothesis import strategies as st
 
 from mechlab.errors import DimensionError, MechanismError
 from mechlab.geneva import (TABLE1_PRINTED, DriveError, ExternalGeneva, InternalGeneva, OffsetError,
-                            SlotCountError, SphericalGeneva, compare, detect_impacts, drive, impact_kind,
+                            SlotCountError, SphericalGeneva, compare, crank_torque, detect_impacts, drive,
+                            drive_angles, impact_kind,
                             intermittency, spherical_table, table1_comparison)
+from mechlab.forces import drive as fdrive
 from mechlab.linkages import FourBar, SlottedLink
 
 H = 1e-5
@@ -286,28 +288,128 @@ def test_table1_reproduces_and_documents_differences():
 
 
 # -- drive --------------------------------------------------------------------------------------
-@pytest.mark.parametrize("g", [ExternalGeneva(4, 100.0), InternalGeneva(6, 100.0), SphericalGeneva(40, 15, 4)],
-                         ids=["external", "internal", "spherical"])
-def test_drive_power_balance(g):
-    # pure resisting torque: work per turn M_r·|Δψ| → mean crank torque M_r·(2π/z)/(2π)
-    d = drive(g, inertia=0.0, omega1=3.0, resisting_torque=2.0)
-    assert d.mean_torque == pytest.approx(2.0 / g.z, rel=1e-6)
-    assert d.mean_power == pytest.approx(3.0 * 2.0 / g.z, rel=1e-6)
-    # pure inertia with η = 1: kinetic energy given back, mean torque 0
-    d = drive(g, inertia=0.5, omega1=3.0)
-    assert abs(d.mean_torque) < 1e-6 * np.max(np.abs(d.torque))
-    mo = g.motion(d.phi)
-    assert np.allclose(d.torque, 0.5 * mo.ddpsi * 9.0 * mo.dpsi)
-    # efficiency: the motor supplies more where it drives; motor power with overload
-    d1 = drive(g, inertia=0.5, omega1=3.0, resisting_torque=1.0, efficiency=0.8, overload=2.0)
-    d0 = drive(g, inertia=0.5, omega1=3.0, resisting_torque=1.0)
-    assert d1.mean_torque > d0.mean_torque
-    assert d1.peak_power == pytest.approx(d0.peak_power / 0.8, rel=1e-9)
-    assert d1.motor_power == pytest.approx(max(d1.mean_power, d1.peak_power / 2.0))
+def _wheel_law(g):
+    """β(σ) of the wheel (magnitude) as a sympy expression and the engagement half-angle,
+    written here from the geometry, independently of mechlab.geneva:
+    planar — the pin at a = C·λ from O (λ = sin(π/z)), the wheel centre at C: tan β =
+    λ sin σ/(1 + κλ cos σ) (κ = -1 external: the pin between O and W at σ = 0), σ0 = π/2 + κπ/z;
+    spherical — tan β = tan ψ sin α, ψ = atan(ρ0/(R cos(π/z))), ρ0 = √(e² + R² sin²(π/z)),
+    α0 = arccos(e/ρ0) (seed 004 (1)-(3), (18))."""
+    s = sp.Symbol("s")
+    if isinstance(g, SphericalGeneva):
+        rho0 = np.hypot(g.e, g.R * np.sin(np.pi / g.z))
+        t = rho0 / (g.R * np.cos(np.pi / g.z))
+        return sp.atan(t * sp.sin(s)), float(np.arccos(g.e / rho0)), s
+    k = -1 if isinstance(g, ExternalGeneva) else 1
+    lam = sp.sin(sp.pi / g.z)
+    return sp.atan2(lam * sp.sin(s), 1 + k * lam * sp.cos(s)), float(np.pi / 2 + k * np.pi / g.z), s
+
+
+def _reference_drive(g, J, w, Mr, eta, k):
+    """Mean, rms and peak motor torque of the one rule, by scipy.integrate.quad and a bounded
+    maximisation on the closed-form wheel law (no sampling grid)."""
+    from scipy.integrate import quad
+    from scipy.optimize import brentq, minimize_scalar
+    beta, s0, s = _wheel_law(g)
+    d1 = sp.lambdify(s, sp.diff(beta, s), "numpy")
+    d2 = sp.lambdify(s, sp.diff(beta, s, 2), "numpy")
+
+    def M1(x):   # crank torque from the wheel's power balance; β' > 0 inside the engagement
+        return (J * d2(x) * w**2 + Mr) * d1(x)
+
+    def Mm(x):
+        m = M1(x)
+        return m / eta if m > 0 else m * eta
+
+    grid = np.linspace(-s0, s0, 4001)[1:-1]
+    vals = np.array([M1(x) for x in grid])
+    roots = [brentq(M1, a, b, xtol=1e-15) for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:]) if fa * fb < 0]
+    edges = [-s0, *roots, s0]
+    mean = sum(quad(Mm, a, b, epsabs=0, epsrel=1e-12, limit=200)[0] for a, b in zip(edges, edges[1:])) / (2 * np.pi)
+    sq = sum(quad(lambda x: Mm(x) ** 2, a, b, epsabs=0, epsrel=1e-12, limit=200)[0]
+             for a, b in zip(edges, edges[1:])) / (2 * np.pi)
+    i = int(np.argmax(np.abs(vals)))
+    lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+    peak = max(-minimize_scalar(lambda x: -abs(Mm(x)), bounds=(lo, hi), method="bounded",
+                                options={"xatol": 1e-12}).fun, abs(Mm(grid[i])), abs(Mm(-s0)), abs(Mm(s0)))
+    return mean, np.sqrt(sq), peak, M1, s0
+
+
+GENEVAS = [ExternalGeneva(4, 100.0), ExternalGeneva(6, 0.1), InternalGeneva(6, 100.0), SphericalGeneva(40, 15, 4),
+           SphericalGeneva(40, 15, 8)]
+
+
+@pytest.mark.parametrize("g", GENEVAS, ids=["external4", "external6", "internal6", "spherical4", "spherical8"])
+@pytest.mark.parametrize("J, Mr, eta, k", [(0.0, 2.0, 1.0, 2.0), (0.5, 0.0, 0.8, 2.0), (0.02, 1.5, 0.85, 2.0),
+                                           (0.02, 1.5, 0.85, 8.0)])
+def test_drive_is_the_one_rule_against_quad(g, J, Mr, eta, k):
+    w = 2 * np.pi
+    d = drive(g, inertia=J, omega1=w, resisting_torque=Mr, efficiency=eta, overload=k)
+    mean, rms, peak, M1, s0 = _reference_drive(g, J, w, Mr, eta, k)
+    scale = max(abs(mean), rms)
+    assert d.mean_torque == pytest.approx(mean, rel=1e-6, abs=1e-9 * scale)
+    assert d.rms_torque == pytest.approx(rms, rel=1e-6)
+    assert d.peak_torque == pytest.approx(peak, rel=1e-5)   # the largest sample: O(h²) below the true peak
+    assert d.peak_torque <= peak * (1 + 1e-12)
+    # the rule: mean power for the energy, nominal torque max(rms, peak/k) for heating and overload
+    assert d.mean_power == pytest.approx(mean * w, rel=1e-6, abs=1e-9 * scale * w)
+    assert d.nominal_torque == max(d.rms_torque, d.peak_torque / k)
+    assert d.nominal_power == pytest.approx(max(rms, peak / k) * w, rel=1e-5)
+    assert d.governing == ("peak" if peak / k > rms else "rms")
+    assert d.rms_torque >= abs(d.mean_torque)
+    # the sampled crank torque is the power balance's, and zero while the wheel is locked
+    sigma = d.phi - np.pi
+    on = np.abs(sigma) < s0
+    ref = np.array([M1(x) for x in sigma[on]])
+    assert np.max(np.abs(d.torque[on] - ref)) <= 1e-9 * np.max(np.abs(ref))
+    assert np.all(d.torque[~on] == 0.0)
+    assert np.all(np.diff(d.phi) > 0) and d.phi[0] == 0.0 and d.phi[-1] == 2 * np.pi
+
+
+@pytest.mark.parametrize("g", GENEVAS, ids=["external4", "external6", "internal6", "spherical4", "spherical8"])
+def test_drive_closed_form_integrals(g):
+    """Closed forms of the Geneva's torque integrals. Resisting torque alone: the work per
+    turn is M_r·2π/z, so ⟨M_m⟩ = M_r/(zη), and the peak is M_r·max β'/η. Inertia alone: the
+    wheel gains J ω²(β'max² - β'end²)/2 of kinetic energy (the motor supplies it / η) and
+    gives it back (× η): ⟨M_m⟩ = J ω² (β'max² - β'end²)(1/η - η)/(4π), zero for η = 1."""
+    beta, s0, s = _wheel_law(g)
+    d1 = sp.lambdify(s, sp.diff(beta, s), "numpy")
+    vmax, vend = d1(0.0), d1(s0)
+    w, eta = 3.0, 0.8
+    d = drive(g, inertia=0.0, omega1=w, resisting_torque=2.0, efficiency=eta)
+    assert d.mean_torque == pytest.approx(2.0 / (g.z * eta), rel=1e-6)
+    assert d.peak_torque == pytest.approx(2.0 * vmax / eta, rel=1e-6)
+    J = 0.5
+    d = drive(g, inertia=J, omega1=w, efficiency=eta)
+    assert d.mean_torque == pytest.approx(J * w**2 * (vmax**2 - vend**2) * (1 / eta - eta) / (4 * np.pi), rel=1e-5)
+    d = drive(g, inertia=J, omega1=w)
+    assert abs(d.mean_torque) <= 1e-9 * d.peak_torque and d.rms_torque > 0.1 * d.peak_torque
+    # efficiency costs where the motor drives; η = 1 is the power balance itself
+    d1_, d0_ = (drive(g, inertia=J, omega1=w, resisting_torque=1.0, efficiency=e) for e in (0.8, 1.0))
+    assert d1_.mean_torque > d0_.mean_torque and d1_.peak_torque > d0_.peak_torque
     with pytest.raises(DriveError, match="efficiency"):
         drive(g, inertia=1.0, omega1=1.0, efficiency=1.5)
     with pytest.raises(DriveError, match="overload"):
         drive(g, inertia=1.0, omega1=1.0, overload=0.5)
+    with pytest.raises(DimensionError, match="inertia"):
+        drive(g, inertia=-1.0, omega1=1.0)
+    with pytest.raises(DimensionError, match="n must be"):
+        drive(g, inertia=1.0, omega1=1.0, n=5)
+
+
+def test_drive_resolves_the_hard_impact_jump():
+    """The spherical Geneva's torque jumps at entry (β' ≠ 0 there): on a plain uniform grid the
+    trapezoidal rule smears the jump over one step (error O(h)); drive_angles puts samples a
+    few 1e-13 apart on both sides, so the mean is right to O(h²)."""
+    g = SphericalGeneva(40, 15, 4)
+    mean = _reference_drive(g, 0.0, 1.0, 2.0, 0.8, 2.0)[0]
+    phi = drive_angles(g, 721)
+    fine = fdrive(crank_torque(g, phi, inertia=0.0, omega1=1.0, resisting_torque=2.0), phi, 1.0, efficiency=0.8)
+    uniform = np.linspace(0, 2 * np.pi, 721)
+    plain = fdrive(crank_torque(g, uniform, inertia=0.0, omega1=1.0, resisting_torque=2.0), uniform, 1.0,
+                   efficiency=0.8)
+    assert abs(fine.mean_torque / mean - 1) < 1e-5 < abs(plain.mean_torque / mean - 1)
+    assert drive(g, inertia=0.0, omega1=1.0, resisting_torque=2.0, efficiency=0.8, n=721).mean_torque == fine.mean_torque
 
 
 # -- comparison ---------------------------------------------------------------------------------
