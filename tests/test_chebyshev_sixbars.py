@@ -20,7 +20,7 @@ def guide():
 
 @pytest.mark.parametrize("K,swing,side", [(1.0, 20, 1), (1.25, 20, -1), (0.8, 30, -1), (1.5, 15, 1)])
 def test_mchv1_achieves_K_and_swing(guide, K, swing, side):
-    six = mchv1(guide, K, swing * DEG, side=side)
+    six = mchv1(guide, K, swing * DEG, side=side, mu_min=None)  # some of these leave 30°…150°
     rep = report(six, guide.dwell)
     assert abs(rep.K - K) < 1e-9
     # the swing is designed from the arc centre Q; E sits within ~E of Q in the dwell
@@ -44,6 +44,22 @@ def test_mchv1_analogs_and_closure(guide):
     assert np.allclose((mo.psi[2:] - mo.psi[:-2]) / (2 * h), mo.dpsi[1:-1], atol=1e-6)
     assert np.allclose((mo.dpsi[2:] - mo.dpsi[:-2]) / (2 * h), mo.ddpsi[1:-1], atol=1e-5)
     assert abs(mo.psi[-1] - mo.psi[0]) < 1e-12  # a rocker: back where it started
+
+
+def test_mchv1_refuses_a_dyad_outside_the_transmission_range_unless_asked(guide):
+    with pytest.raises(InfeasibleDesignError, match=r"transmission angle D-E-F reaches 28.8°, outside 30°…150°"):
+        mchv1(guide, 1.25, 20 * DEG, side=-1)
+    six = mchv1(guide, 1.25, 20 * DEG, side=-1, mu_min=None)
+    rep = report(six, guide.dwell)
+    assert abs(np.degrees(rep.mu2_min) - 28.8) < 0.05
+    # the limit is the one asked for: 25° admits this design, and every accepted design respects its limit
+    assert mchv1(guide, 1.25, 20 * DEG, side=-1, mu_min=25 * DEG) == six
+    ok = mchv1(guide, 1.0, 20 * DEG)
+    r1 = report(ok, guide.dwell)
+    assert 30 * DEG <= r1.mu2_min and r1.mu2_max <= 150 * DEG
+    with pytest.raises(InfeasibleDesignError, match="outside 45°…135°"):
+        mchv1(guide, 1.0, 20 * DEG, mu_min=45 * DEG) if r1.mu2_min < 45 * DEG or r1.mu2_max > 135 * DEG else \
+            mchv1(guide, 1.25, 20 * DEG, side=-1, mu_min=45 * DEG)
 
 
 def test_far_extreme_angle_formula():
@@ -181,3 +197,4 @@ def test_mchv1_random_requests_are_met_or_refused(guide, K, swing, side):
     rep = report(six, guide.dwell)
     assert abs(rep.K - K) < 1e-8
     assert abs(rep.swing - swing * DEG) < 0.02 * swing * DEG + 3 * guide.E / six.rocker
+    assert 30 * DEG <= rep.mu2_min and rep.mu2_max <= 150 * DEG  # the default mu_min

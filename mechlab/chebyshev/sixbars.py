@@ -146,11 +146,15 @@ class SixBarReport(NamedTuple):
     mu2_max: float
 
 
-def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1) -> LambdaRockerSixBar:
+def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1,
+          mu_min: float | None = np.radians(30)) -> LambdaRockerSixBar:
     """МЧВ1 from a circle-guiding design, a time ratio K and a swing β_m (radians) — Fig. 3.
 
     ``side`` picks F on one or the other side of the chord Q-E1. Raises InfeasibleDesignError
-    (naming the condition) when K, β_m or the geometry admit no mechanism.
+    (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
+    ``mu_min`` is None — when the transmission angle D-E-F of the attached dyad leaves the working
+    range [μ_min, 180° − μ_min] over the turn (seed 001, §1.8: 30° ≤ μ ≤ 150°, the figure "cnm"
+    of Fig. 2a); pass ``mu_min=None`` to get such a design anyway.
     """
     if not isinstance(guide, CircleGuide):
         raise TypeError("mchv1 needs a CircleGuide from circle_guiding(...)")
@@ -196,6 +200,14 @@ def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1) -> Lambd
         raise InfeasibleDesignError(
             f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the simulated rocker's far extreme is at "
             f"φ = {np.degrees(rep.far):.2f}°, not at the designed {np.degrees(phi_far % TWO_PI):.2f}°")
+    if mu_min is not None:
+        lo = _angle("mu_min", mu_min, 0.0, np.pi / 2)
+        if rep.mu2_min < lo or rep.mu2_max > np.pi - lo:
+            bad = rep.mu2_min if rep.mu2_min < lo else rep.mu2_max
+            raise InfeasibleDesignError(
+                f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the transmission angle D-E-F reaches "
+                f"{np.degrees(bad):.1f}°, outside {np.degrees(lo):g}°…{180 - np.degrees(lo):g}° (mu_min); "
+                f"pass mu_min=None to accept it")
     return six
 
 
@@ -307,6 +319,11 @@ class LambdaSlottedSixBar(Mechanism):
         if e == 0.0:
             return ang
         s = e / rho.theta
+        if np.any(np.abs(s) > 1):  # between the samples of the constructor's check
+            i = int(np.argmax(np.abs(s)))
+            raise InfeasibleDesignError(
+                f"the pin D comes within {rho.theta[i]:.4g} of the pivot at φ = {np.degrees(phi[i]):.4f}°, inside "
+                f"the slot offset |e| = {abs(e):.4g}: the slot cannot reach it")
         ds = -e * rho.d / rho.theta**2
         dds = -e * (rho.dd * rho.theta - 2 * rho.d**2) / rho.theta**3
         q = np.sqrt(1 - s * s)
