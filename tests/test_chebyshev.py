@@ -184,6 +184,10 @@ def test_widgets_exercises_and_errata():
     assert ex.message == ""
     six = mchv1_explorer()
     assert six.message == "" and "transmission" in six.status.value
+    six.sliders["K"].value = 0.8  # the dyad's transmission angle reaches 28.8° < 30°: refused, reason shown
+    assert "transmission angle D-E-F reaches 28.8°, outside 30°…150°" in six.message
+    six.sliders["mu_min"].value = 0.0  # no limit: the design is shown
+    assert six.message == ""
     for key in ("06.1", "06.2", "06.3", "07.1", "07.2", "07.3"):
         assert check(key, solution(key), quiet=True)
         assert not check(key, 1.1 * solution(key) + 0.01, quiet=True)

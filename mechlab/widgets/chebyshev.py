@@ -25,18 +25,20 @@ def lambda_explorer(delta=150.0, a=0.9, dwell=120.0, n=121) -> MechanismExplorer
     return MechanismExplorer(_guided, controls, trace="D", n=n, title="Chebyshev lambda mechanism, circle guiding")
 
 
-def _mchv1(delta, a, dwell, K, swing):
-    return mchv1(circle_guiding(delta, a, dwell), K, swing)
+def _mchv1(delta, a, dwell, K, swing, mu_min):
+    return mchv1(circle_guiding(delta, a, dwell), K, swing, mu_min=mu_min if mu_min > 0 else None)
 
 
-def mchv1_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.0, swing=20.0, n=121) -> MechanismExplorer:
-    """МЧВ1 six-bar synthesised from δ, a, 2α, the time ratio K and the swing β_m."""
+def mchv1_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.0, swing=20.0, mu_min=30.0, n=121) -> MechanismExplorer:
+    """МЧВ1 six-bar synthesised from δ, a, 2α, the time ratio K and the swing β_m; a design whose
+    dyad transmission angle leaves [μ_min, 180° − μ_min] shows the reason instead (μ_min = 0: no limit)."""
     controls = {
         "delta": Control("break δ", 90.0, 180.0, 1.0, delta, "deg"),
         "a": Control("frame a = OC/l", 0.2, 1.6, 0.01, a),
         "dwell": Control("dwell 2α", 20.0, 300.0, 2.0, dwell, "deg"),
         "K": Control("time ratio K", 0.5, 2.0, 0.05, K),
         "swing": Control("swing β_m", 5.0, 90.0, 1.0, swing, "deg"),
+        "mu_min": Control("dyad μ ≥ (0: any)", 0.0, 45.0, 1.0, mu_min, "deg"),
     }
     return MechanismExplorer(_mchv1, controls, trace="D", n=n, title="МЧВ1: lambda mechanism + rocker")
 
