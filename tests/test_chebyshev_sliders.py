@@ -36,7 +36,8 @@ def dwell_angles(g, n=801):
 
 
 def residual_bound(g, six):
-    """2 max|s| over the dwell, |s| ≤ |ρ² − R²| / |(D − Q)·u| (s² − 2s(D−Q)·u + ρ² − R² = 0, near root)."""
+    """2 max|s| over the dwell: |s| ≤ |ρ² − R²| / |(D − Q)·u| for the near root of
+    s² − 2s(D − Q)·u + ρ² − R² = 0."""
     D = g.mechanism.coupler_point(dwell_angles(g)) - g.centre
     return 2 * np.max(np.abs((D**2).sum(1) - g.R**2)) / np.min(np.abs(D @ six.u))
 
@@ -291,3 +292,75 @@ def test_exercises():
     for key in ("07.s1", "07.s2"):
         assert check(key, solution(key), quiet=True)
         assert not check(key, 1.01 * solution(key), quiet=True)
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(h=st.floats(0.25, 0.9), side=st.sampled_from([1, -1]))
+def test_mchv2_random_strokes_met_or_refused(guide, h, side):
+    try:
+        six = mchv2_stroke(guide, h, side)
+    except InfeasibleDesignError as err:
+        assert f"{h:.6g}" in str(err) or "K = " in str(err)
+        return
+    K = slider_report(six).K
+    assert (K - 1) * side >= 0
+    assert abs(np.hypot(*(mchv2_far_position(guide, K)[2] - guide.centre)) - h) < 1e-8
+
+
+@settings(max_examples=40, deadline=None)
+@given(r=st.floats(0.1, 0.6), a=st.floats(0.7, 1.3), delta=st.floats(60, 270), slot=st.floats(-180, 180),
+       turn=st.floats(5, 175), px=st.floats(-1, 1), py=st.floats(-1, 1))
+def test_translating_slot_on_random_geometry(r, a, delta, slot, turn, px, py):
+    """Any lambda, any slot and guide: D on the slot through E, E on the guide, s′ the projection of D′."""
+    try:
+        m5 = LambdaTranslatingSlot(r, a, delta * DEG, px, py, slot * DEG, (slot + turn) * DEG)
+    except MechanismError:
+        return  # a lambda whose crank cannot turn: refused by name
+    phi = np.linspace(0, 2 * np.pi, 97)
+    mo = m5.motion(phi)
+    v, w = np.array([np.cos(m5.slot), np.sin(m5.slot)]), np.array([np.cos(m5.guide), np.sin(m5.guide)])
+    D, E = mo.points["D"], mo.points["E"]
+    scale = 1 / abs(np.sin(turn * DEG))
+    assert np.abs((D.p - E.p) @ np.array([-v[1], v[0]])).max() < 1e-12 * scale * 10
+    assert np.abs((E.p - m5.P) @ np.array([-w[1], w[0]])).max() < 1e-12 * scale * 10
+    # velocities: the block's velocity relative to the link is along the slot
+    assert np.abs((D.d - E.d) @ np.array([-v[1], v[0]])).max() < 1e-11 * scale
+    assert np.abs((D.dd - E.dd) @ np.array([-v[1], v[0]])).max() < 1e-11 * scale
+    assert abs(m5.motion(1.0).s[0] - m5.motion(np.array([1.0, 2.0])).s[0]) < 1e-15  # scalar or array
+
+
+@settings(max_examples=12, deadline=None)
+@given(delta=st.floats(120, 180), a=st.floats(0.8, 1.0), dwell=st.floats(60, 120), K=st.floats(0.8, 1.25))
+def test_mchv2_on_random_circle_guides(delta, a, dwell, K):
+    """Designs from random (δ, a, 2α) and K: built with K and the dwell met, or refused by name."""
+    try:
+        g = circle_guiding(delta * DEG, a, dwell * DEG, minimax=False)
+        six = mchv2(g, K)
+    except MechanismError as err:
+        assert str(err)
+        return
+    rep = slider_report(six)
+    assert abs(rep.K - K) < 1e-8
+    assert rep.residual <= residual_bound(g, six)
+
+
+def test_explorers_show_designs_and_refusals():
+    matplotlib.use("Agg")
+    from mechlab.widgets.chebyshev_sliders import mchv2_explorer, mchv5_explorer
+
+    ex = mchv2_explorer()
+    assert ex.message == "" and isinstance(ex.mechanism, LambdaSliderSixBar)
+    assert "transmission angle μ: 22.9°" in ex.status.value  # μ2′ of K = 1.25
+    ex.sliders["min_transmission"].value = 30.0
+    assert "μ2′ of the slider dyad falls to 22.90°, below the allowed 30°" in ex.message
+    ex.sliders["min_transmission"].value = 0.0
+    ex.sliders["K"].value = 2.0
+    assert "turns across QD during the dwell" in ex.message
+    ex.sliders["K"].value = 1.0
+    assert ex.message == ""
+    ex5 = mchv5_explorer()
+    assert ex5.message == "" and isinstance(ex5.mechanism, LambdaTranslatingSlot)
+    ex5.sliders["gamma"].value = 30.0
+    assert abs(ex5.mechanism.transmission_angle - 60 * DEG) < 1e-12
+    ex5.sliders["dwell"].value = 120.0  # no straight-line design there: the reason is shown
+    assert "no straight-line lambda mechanism" in ex5.message

@@ -200,7 +200,7 @@ def mchv2(guide: CircleGuide, K: float = 1.0, *, min_transmission: float = 0.0) 
         raise InfeasibleDesignError(f"K = {K:g}: the guide is perpendicular to QD0, the rod stands across it "
                                     f"in the middle of the dwell")
     asm = -1 if along > 0 else 1  # the root of the RRP dyad near s = 0 while |DQ| ≈ R
-    # |s| = |ρ² − R²| / (|(D−Q)·u| + √(((D−Q)·u)² − ρ² + R²)) holds E near Q only while (D−Q)·u keeps its sign
+    # dwell: |s| = |ρ² − R²| / (|w| + √(w² − ρ² + R²)), w = (D − Q)·u, small if w keeps its sign
     al = (m.coupler_point(np.pi + np.linspace(-guide.alpha, guide.alpha, 801)) - Q) @ u
     if al.min() * al.max() <= 0:
         raise InfeasibleDesignError(

@@ -1,0 +1,46 @@
+"""Sliders for the translating-output lambda six-bars МЧВ2 and МЧВ5 (seed 001, Fig. 1 в, д).
+
+Each move re-runs the synthesis (circle_guiding + mchv2, straight_guiding + mchv5), so an
+infeasible request shows its InfeasibleDesignError / SynthesisError message in place of the drawing.
+"""
+
+from __future__ import annotations
+
+from ..chebyshev import circle_guiding, straight_guiding
+from ..chebyshev.sliders import mchv2, mchv5
+from . import Control, MechanismExplorer
+
+
+def _mchv2(delta, a, dwell, K, min_transmission):
+    return mchv2(circle_guiding(delta, a, dwell, minimax=False), K, min_transmission=min_transmission)
+
+
+def mchv2_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.25, min_transmission=0.0, n=121) -> MechanismExplorer:
+    """МЧВ2 from δ, a, the dwell 2α, the time ratio K (the guide through Q and E1) and the least
+    transmission angle μ2′ accepted (degrees; 0 = any)."""
+    controls = {
+        "delta": Control("break δ", 90.0, 180.0, 1.0, delta, "deg"),
+        "a": Control("frame a = OC/l", 0.2, 1.6, 0.01, a),
+        "dwell": Control("dwell 2α", 20.0, 200.0, 2.0, dwell, "deg"),
+        "K": Control("time ratio K", 0.5, 2.0, 0.05, K),
+        "min_transmission": Control("least μ2′", 0.0, 60.0, 1.0, min_transmission, "deg"),
+    }
+    return MechanismExplorer(_mchv2, controls, trace="D", n=n, title="МЧВ2: lambda mechanism + rod + slider")
+
+
+def _mchv5(delta, a, dwell, gamma):
+    return mchv5(straight_guiding(delta, a, dwell), guide_angle=gamma)
+
+
+def mchv5_explorer(delta=180.0, a=0.8, dwell=180.0, gamma=0.0, n=121) -> MechanismExplorer:
+    """МЧВ5 from δ, a, the straight part's 2α and the guide's angle γ to the slot normal."""
+    controls = {
+        "delta": Control("break δ", 90.0, 180.0, 1.0, delta, "deg"),
+        "a": Control("frame a = OC/l", 0.2, 1.6, 0.01, a),
+        "dwell": Control("dwell 2α", 20.0, 200.0, 2.0, dwell, "deg"),
+        "gamma": Control("guide angle γ", -60.0, 60.0, 1.0, gamma, "deg"),
+    }
+    return MechanismExplorer(_mchv5, controls, trace="D", n=n, title="МЧВ5: lambda mechanism + translating slot")
+
+
+__all__ = ["mchv2_explorer", "mchv5_explorer"]
