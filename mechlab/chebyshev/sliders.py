@@ -18,8 +18,10 @@ farthest out where the rod lies on the normal n-n to D's path (s' = (E−D)·D'/
 the crank angle t = α + φ_n after the dwell centre, φ_n = 2K(π − α)/(1 + K) (14)-(15); so for a
 time ratio K the far position is E1 = D1 + R·n and the guide is the line Q-E1: the stroke is
 h = |QE1| (:func:`mchv2`). K = 1 puts the guide on the symmetry axis and gives the smallest stroke,
-h = R − |QD(0)| (≈ |D0D1|, the axis chord of the coupler curve, as the seed says for S at K = 1);
-a larger stroke needs K ≠ 1 (:func:`mchv2_stroke`). The transmission angle of the dyad, μ2′, is
+h = R − |QD(0)|; the seed's "S = |D0D1| at K = 1" (text after (15)) holds to E: |D0D1| = R0 − |QD(0)|
+= h + (R0 − R). A larger stroke needs K ≠ 1 (:func:`mchv2_stroke`); h(K) = h(1/K) (mirror guides).
+The dwell holds while (D − Q)·u keeps its sign over the dwell, and then the residual is bounded by
+2·max|ρ² − R²| / min|(D − Q)·u| (≈ 2E/cos β; → 2E as the dwell shrinks). The transmission angle of the dyad, μ2′, is
 defined as for a slider-crank: the angle between the rod D-E and the normal to the guide,
 μ2′ = π/2 − β with sin β = (distance of D from the guide)/R; the slider's pressure angle is β.
 
