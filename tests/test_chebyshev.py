@@ -193,7 +193,7 @@ def test_widgets_exercises_and_errata():
         assert not check(key, 1.1 * solution(key) + 0.01, quiet=True)
     for e in ERRATA:
         assert e.source == "001" and e.evidence()
-    assert table(notebook="06_chebyshev_dwell_synthesis.ipynb").count("\n| 001") == 4
+    assert table(notebook="06_chebyshev_dwell_synthesis.ipynb").count("\n| 001") == 5
 
 
 @pytest.mark.parametrize("delta,a", [(150, 1.15), (180, 1.3), (240, 1.6)])

@@ -145,7 +145,9 @@ def test_drawings_move_in_place(guide):
     assert inside == [abs((p - np.pi + np.pi) % (2 * np.pi) - np.pi) <= guide.alpha for p in phi]
 
 
-REPRODUCED = [(120, 25), (180, 25), (180, 50), (180, 100), (240, 25), (240, 50), (240, 100)]
+REPRODUCED = [(120, 25), (180, 25), (180, 50), (180, 100), (240, 25), (240, 50), (240, 100), (270, 25), (270, 50),
+              (120, 50), (120, 75), (270, 100)]
+DECODED_A = {(120, 50): 0.75, (120, 75): 0.75, (270, 100): 1.43}  # printed 0.8, 0.8, 1.6 (errata)
 
 
 @pytest.mark.parametrize("delta,alpha", REPRODUCED)
@@ -154,7 +156,7 @@ def test_thesis_mchv1_rows_reproduced(delta, alpha):
     from mechlab.motion_laws import rise_invariants, thesis_mchv1_rows
 
     row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
-    g = circle_guiding(delta * DEG, row[2], 2 * alpha * DEG)
+    g = circle_guiding(delta * DEG, DECODED_A.get((delta, alpha), row[2]), 2 * alpha * DEG)
     inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG), g.dwell))
     assert abs(inv.B / row[3] - 1) < 0.02
     assert abs(inv.C / row[4] - 1) < 0.02
@@ -162,6 +164,22 @@ def test_thesis_mchv1_rows_reproduced(delta, alpha):
         assert abs(inv.D - 13.67) < 0.1  # printed 16.67: an erratum of seed 001
     else:
         assert abs(inv.D / row[5] - 1) < 0.04  # a is printed to one decimal only
+
+
+def test_thesis_mchv1_rows_that_do_not_reproduce():
+    from mechlab.errata.seed001_chebyshev import _row_fit
+
+    # with the printed a the decoded rows miss by more than 10 %
+    for (delta, alpha), a in DECODED_A.items():
+        assert _row_fit(delta, alpha, a)[0] < 0.015
+        printed = {0.75: 0.8, 1.43: 1.6}[a]
+        assert _row_fit(delta, alpha, printed)[0] > 0.1
+    # the two 2α = 250° rows: 180° comes within 2.7 % only at a ≈ 1.12, 240° nowhere within 7 %
+    from mechlab.errata.seed001_chebyshev import _best_a
+
+    w180, a180 = _best_a(180, 125, 1.1)
+    w240, _ = _best_a(240, 125, 1.4)
+    assert 0.02 < w180 < 0.035 and abs(a180 - 1.12) < 0.01 and w240 > 0.07
 
 
 def test_mchv3_full_turn_is_intermittent_and_adjustable():

@@ -96,6 +96,76 @@ def _mchv1_row():
             f"printed 2.16, 12.32, but D = {inv.D:.2f}; the neighbouring rows agree within 4 %")
 
 
+def _row_fit(delta, alpha, a):
+    """Worst relative mismatch of (B, C, D) of МЧВ1 (K = 1, β_m = 20°) against the printed row."""
+    from ..chebyshev import mchv1, rise_law
+    from ..motion_laws import rise_invariants, thesis_mchv1_rows
+
+    row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
+    g = circle_guiding(delta * DEG, a, 2 * alpha * DEG)
+    inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG, mu_min=None), g.dwell))
+    return max(abs(inv.B / row[3] - 1), abs(inv.C / row[4] - 1), abs(inv.D / row[5] - 1)), inv
+
+
+def _rows_120():
+    out = []
+    for alpha in (50, 75):
+        w75, inv = _row_fit(120, alpha, 0.75)
+        w80, _ = _row_fit(120, alpha, 0.8)
+        assert w75 < 0.015 and w80 > 0.12
+        out.append(f"2α = {2 * alpha}°: a = 0.75 gives B, C, D = {inv.B:.2f}, {inv.C:.2f}, {inv.D:.2f} (worst "
+                   f"{100 * w75:.1f} %), a = 0.8 misses by {100 * w80:.0f} %")
+    return "δ = 120°: " + "; ".join(out)
+
+
+def _row_270_100():
+    w, inv = _row_fit(270, 100, 1.43)
+    w16, _ = _row_fit(270, 100, 1.6)
+    assert w < 0.015 and w16 > 0.1
+    return (f"a = 1.43: B, C, D = {inv.B:.2f}, {inv.C:.2f}, {inv.D:.2f} (printed 1.45, 4.95, 3.51; worst "
+            f"{100 * w:.1f} %); the printed a = 1.6 misses by {100 * w16:.0f} % (C = 4.39)")
+
+
+def _best_a(delta, alpha, a0, span=0.2, step=0.025):
+    """(worst mismatch, a) minimised over a near the printed a0: a scan, then a bounded 1-D search."""
+    from scipy.optimize import minimize_scalar
+
+    from ..errors import MechanismError
+
+    fits = []
+    for a in a0 + np.arange(-span, span + 1e-9, step):
+        try:
+            fits.append((_row_fit(delta, alpha, a)[0], a))
+        except MechanismError:  # no design at this a (outside the map, or F cannot be placed)
+            continue
+    w, a = min(fits)
+    res = minimize_scalar(lambda x: _row_fit(delta, alpha, x)[0], bounds=(a - step, a + step), method="bounded",
+                          options=dict(xatol=1e-4))
+    return (float(res.fun), float(res.x)) if res.fun < w else (w, a)
+
+
+def _rows_125():
+    w180, a180 = _best_a(180, 125, 1.1, step=0.05)
+    w240, a240 = _best_a(240, 125, 1.4, step=0.05)
+    inv = _row_fit(180, 125, a180)[1]
+    assert 0.02 < w180 < 0.035 and abs(a180 - 1.12) < 0.01 and w240 > 0.07
+    return (f"2α = 250°, K = 1, β_m = 20°: δ = 180° is closest at a = {a180:.3f} (B, C, D = {inv.B:.2f}, {inv.C:.2f}, "
+            f"{inv.D:.2f}; worst {100 * w180:.1f} %); δ = 240° at best {100 * w240:.1f} % off (a = {a240:.3f}, "
+            f"B ≈ 1.40 for every a)")
+
+
+def _whole_turn():
+    from ..chebyshev import whole_turn_line
+
+    wt = whole_turn_line(150 * DEG)
+    g = circle_guiding(150 * DEG, 0.3, 347 * DEG)
+    assert abs(wt.a[0] - 2 * np.sin(150 * DEG / 4)) < 0.01 and abs(wt.r[-1] + wt.a[-1] - 2) < 0.03
+    assert g.r / 0.3 > 0.97
+    return (f"δ = 150°: one 360° line from (r, a) = ({wt.r[0]:.3f}, {wt.a[0]:.4f}) ≈ (0, 2 sin(δ/4)) to "
+            f"({wt.r[-1]:.3f}, {wt.a[-1]:.3f}) on r + a = 2; for a < 1 the dwell → 360° only as r → a "
+            f"(a = 0.3, 2α = 347°: r = {g.r:.4f})")
+
+
 ERRATA = [
     Erratum("001", "text before Fig. 1 (full rotation)", "$l_{OA} < l$ and $l_{OC} + l_{OA} < 2l$",
             "also $r < a$ (line PX of Fig. 2a): otherwise the frame is the shortest link and the base "
@@ -118,4 +188,18 @@ ERRATA = [
             _cam("double harmonic", 1, 9.88), NB07),
     Erratum("001", "table p. 21, double harmonic law", "D = 7.00", "D = 9.89 (max |y'y''|, the definition that reproduces the МЧВ1 rows; 7.75 for the signed max)",
             _dh_power, NB07),
+    Erratum("001", "table p. 21, МЧВ1 rows δ = 120°, α = 50° and 75°", "a = 0.8",
+            "a = 0.75 (printed rounded up to one decimal); with 0.8 C comes out 13–15 % low", _rows_120, NB07),
+    Erratum("001", "table p. 21, МЧВ1 row δ = 270°, α = 100°", "a = 1.6",
+            "a ≈ 1.43 (the row's B, C, D are those of a = 1.43; 1.6 is probably a misprint of 1.4)",
+            _row_270_100, NB07),
+    Erratum("001", "table p. 21, МЧВ1 rows δ = 180° and 240°, α = 125°", "B, C, D = 1.43, 4.70, 3.58 and 1.30, 3.50, 2.43",
+            "180°: nearly, with a ≈ 1.12 (2.7 %, B 3 % high); 240°: undecodable — no a within ±0.2 comes closer "
+            "than 7.6 % (a wider search over K 0.9–1.1, β_m 15–25° and both sides of F: 6.1 % at best)",
+            _rows_125, NB07),
+    Erratum("001", "text before (12), boundary 2 (lines KU and AP of Fig. 2a)",
+            "two lines where the whole coupler curve is near a circle, α = π",
+            "computed: one line per δ, from A = (0, 2 sin(δ/4)) on the fifth-order line to the rotation limit; "
+            "for a < 1 the 360° limit is r = a itself (which letters are which is not decodable)",
+            _whole_turn, NB06),
 ]
