@@ -81,8 +81,16 @@ def _finite(name: str, value) -> float:
 # --------------------------------------------------------------------------------------------
 # МЧВ2: rod D-E and a slider E on a straight guide through the arc centre
 # --------------------------------------------------------------------------------------------
+class _OnLambda(Mechanism):
+    """A six-bar on the lambda mechanism (r, a, δ): its base four-bar with the coupler point D."""
+
+    @cached_property
+    def base(self) -> LambdaMechanism:
+        return LambdaMechanism(self.r, self.a, self.delta)
+
+
 @dataclass(frozen=True)
-class LambdaSliderSixBar(Mechanism):
+class LambdaSliderSixBar(_OnLambda):
     """МЧВ2 (seed 001, Fig. 1 в): lambda mechanism (r, a, δ) + rod D-E (``rod``) + slider E on the
     fixed line through Q = (``qx``, ``qy``) at angle ``theta`` (radians, from +x).
 
@@ -120,10 +128,6 @@ class LambdaSliderSixBar(Mechanism):
                 f"the slider dyad D-E does not work over the whole turn: at φ = {np.degrees(_CHECK[i]):.2f}° "
                 f"D is {off[i]:.6g} from the guide, not less than the rod DE = {self.rod:.6g} (the rod would "
                 f"stand across the guide)")
-
-    @cached_property
-    def base(self) -> LambdaMechanism:
-        return LambdaMechanism(self.r, self.a, self.delta)
 
     @property
     def Q(self) -> np.ndarray:
@@ -266,7 +270,7 @@ def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float 
 # МЧВ5: block at D in the straight slot of a translating output
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class LambdaTranslatingSlot(Mechanism):
+class LambdaTranslatingSlot(_OnLambda):
     """МЧВ5 (seed 001, Fig. 1 д): lambda mechanism (r, a, δ) + block at D sliding in a straight slot
     (direction angle ``slot``) of an output link translating along the fixed direction ``guide``.
 
@@ -299,10 +303,6 @@ class LambdaTranslatingSlot(Mechanism):
                 f"the output's guide ({np.degrees(self.guide):.4g}°) is parallel to its slot "
                 f"({np.degrees(self.slot):.4g}°) to within {np.degrees(np.arcsin(min(abs(self._sin), 1))):.3g}° "
                 f"(needs at least 0.057°): the block cannot push the link along the guide")
-
-    @cached_property
-    def base(self) -> LambdaMechanism:
-        return LambdaMechanism(self.r, self.a, self.delta)
 
     @property
     def P(self) -> np.ndarray:
