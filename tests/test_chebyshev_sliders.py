@@ -364,3 +364,18 @@ def test_explorers_show_designs_and_refusals():
     assert abs(ex5.mechanism.transmission_angle - 60 * DEG) < 1e-12
     ex5.sliders["dwell"].value = 120.0  # no straight-line design there: the reason is shown
     assert "no straight-line lambda mechanism" in ex5.message
+
+
+def test_mchv2_outer_normal_when_the_inner_one_is_not_reached():
+    """On (120°, 0.8, 60°) with K = 1.7 the rod toward Q (МЧВ1's choice) is on the other assembly; the rod
+    on the outer normal is reached, and the design meets K."""
+    g = circle_guiding(120 * DEG, 0.8, 60 * DEG)
+    with pytest.raises(InfeasibleDesignError, match="E1 lies on the other assembly"):
+        mchv2(g, 1.7, normal=1)
+    six = mchv2(g, 1.7)
+    phi_far, D1, E1 = mchv2_far_position(g, 1.7, normal=-1)
+    assert abs(six.motion(np.array([phi_far])).s[0] - np.hypot(*(E1 - g.centre))) < 1e-12
+    # E1 − D1 is along the outward normal: away from Q
+    assert (E1 - D1) @ (g.centre - D1) < 0
+    rep = slider_report(six)
+    assert abs(rep.K - 1.7) < 1e-9 and rep.residual <= residual_bound(g, six)

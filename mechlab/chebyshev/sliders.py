@@ -160,10 +160,11 @@ class LambdaSliderSixBar(_OnLambda):
         return LinearMotion(phi, pts, mu2, s.theta, s.d, s.dd)
 
 
-def mchv2_far_position(guide: CircleGuide, K: float):
+def mchv2_far_position(guide: CircleGuide, K: float, normal: int = 1):
     """The far crank angle φ_far = π + α + φ_n and the far position E1 = D1 + R·n of the slider
-    for a time ratio K (n the unit normal to D's path at D1, on the side of Q; Fig. 3 applied to МЧВ2).
-    Returns (φ_far, D1, E1)."""
+    for a time ratio K (n the unit normal to D's path at D1, on the side of Q for ``normal`` = +1 as
+    in МЧВ1's Fig. 3, on the other side for −1). Returns (φ_far, D1, E1)."""
+    normal = check_sign("normal", normal)
     if not isinstance(guide, CircleGuide):
         raise TypeError("МЧВ2 needs a CircleGuide from circle_guiding(...)")
     try:
@@ -179,20 +180,35 @@ def mchv2_far_position(guide: CircleGuide, K: float):
     n = np.array([-v[1], v[0]])
     if n @ (Q - D1.p[0]) < 0:
         n = -n
-    return phi_far, D1.p[0], D1.p[0] + guide.R * n
+    return phi_far, D1.p[0], D1.p[0] + normal * guide.R * n
 
 
-def mchv2(guide: CircleGuide, K: float = 1.0, *, min_transmission: float = 0.0) -> LambdaSliderSixBar:
+def mchv2(guide: CircleGuide, K: float = 1.0, *, normal: int | None = None,
+          min_transmission: float = 0.0) -> LambdaSliderSixBar:
     """МЧВ2 for a circle-guiding design and a time ratio K: rod DE = R, guide through Q and E1.
 
     The slider's stroke is then h = |QE1| (:func:`mchv2_far_position`); K = 1 gives the guide along
-    the symmetry axis. The assembly is the one that keeps E at Q during the dwell. Raises
-    InfeasibleDesignError with the numbers when the design does not work: the guide turns across
-    QD during the dwell ((D − Q)·u changes sign, so the slider leaves Q), the rod would stand across
-    the guide somewhere, the simulated far extreme is not the designed one, or the transmission
-    angle μ2′ falls below ``min_transmission`` (radians; the thesis' working limit is 30°).
+    the symmetry axis. The assembly is the one that keeps E at Q during the dwell. At the far
+    extreme the rod lies on the normal to D's path, on Q's side (``normal`` = +1, as in МЧВ1) or on
+    the other (−1; for some designs only this one is reached on the dwell's assembly); None tries
+    +1, then −1. Raises InfeasibleDesignError with the numbers when the design does not work: the
+    guide turns across QD during the dwell ((D − Q)·u changes sign, so the slider leaves Q), the rod
+    would stand across the guide somewhere, the simulated far extreme is not the designed one, or the
+    transmission angle μ2′ falls below ``min_transmission`` (radians; the thesis' working limit is 30°).
     """
-    phi_far, D1, E1 = mchv2_far_position(guide, K)
+    if normal is not None:
+        return _mchv2(guide, K, normal, min_transmission)
+    try:
+        return _mchv2(guide, K, 1, min_transmission)
+    except InfeasibleDesignError as inner:
+        try:
+            return _mchv2(guide, K, -1, min_transmission)
+        except InfeasibleDesignError as outer:
+            raise InfeasibleDesignError(f"{inner}; with the rod on the outer normal instead: {outer}") from None
+
+
+def _mchv2(guide: CircleGuide, K: float, normal: int, min_transmission: float) -> LambdaSliderSixBar:
+    phi_far, D1, E1 = mchv2_far_position(guide, K, normal)
     Q, R = guide.centre, guide.R
     h = float(np.hypot(*(E1 - Q)))
     if h < 1e-9:
@@ -233,20 +249,21 @@ def mchv2(guide: CircleGuide, K: float = 1.0, *, min_transmission: float = 0.0) 
     return six
 
 
-def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float = 20.0, *,
+def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float = 20.0, *, normal: int = 1,
                  min_transmission: float = 0.0) -> LambdaSliderSixBar:
     """МЧВ2 with a requested stroke h = |QE1| (units of l): the time ratio K is solved for.
 
     h(K) is smallest at K = 1 (guide on the axis) and, with the mirror symmetry, h(K) = h(1/K);
     ``side`` = +1 returns the solution with K ≥ 1, −1 the one with K ≤ 1. The smallest K on that
-    side with h(K) = h is found by a scan of K ∈ [1, ``K_max``] and brentq. Raises
+    side with h(K) = h is found by a scan of K ∈ [1, ``K_max``] and brentq (``normal`` as in
+    :func:`mchv2`, here fixed: h(K) depends on it). Raises
     InfeasibleDesignError naming the achievable range when h cannot be met.
     """
     h = check_length("stroke h", stroke)
     side = check_sign("side", side)
 
     def gap(k):  # k ≥ 1; K = k or 1/k
-        _, _, E1 = mchv2_far_position(guide, k if side > 0 else 1 / k)
+        _, _, E1 = mchv2_far_position(guide, k if side > 0 else 1 / k, normal)
         return float(np.hypot(*(E1 - guide.centre))) - h
 
     ks = np.geomspace(1.0, K_max, 121)
@@ -263,7 +280,7 @@ def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float 
             f"for K in [1/{K_max:g}, {K_max:g}]")
     i = int(up[0])
     k = brentq(gap, ks[i], ks[i + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps)
-    return mchv2(guide, k if side > 0 else 1 / k, min_transmission=min_transmission)
+    return mchv2(guide, k if side > 0 else 1 / k, normal=normal, min_transmission=min_transmission)
 
 
 # --------------------------------------------------------------------------------------------
