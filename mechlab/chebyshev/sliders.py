@@ -418,7 +418,7 @@ class _AsAngle:
 
     def motion(self, phi) -> AngularMotion:
         mo = self.mech.motion(phi)
-        return AngularMotion(mo.phi, mo.points, mo._transmission, mo.s, mo.ds, mo.dds)
+        return AngularMotion(mo.phi, mo.points, lambda _: mo.transmission, mo.s, mo.ds, mo.dds)
 
 
 class SliderReport(NamedTuple):
