@@ -216,3 +216,30 @@ def test_mchv1_random_requests_are_met_or_refused(guide, K, swing, side):
     assert abs(rep.K - K) < 1e-8
     assert abs(rep.swing - swing * DEG) < 0.02 * swing * DEG + 3 * guide.E / six.rocker
     assert 30 * DEG <= rep.mu2_min and rep.mu2_max <= 150 * DEG  # the default mu_min
+
+
+def test_mchv3_full_turn_residual_is_first_order_h_over_s_and_inherent_for_180_degrees():
+    from mechlab.chebyshev.sixbars import (dwell_extent, mchv3_full_turn, mchv3_full_turn_best,
+                                           slot_residual_first_order)
+
+    s = straight_guiding(np.pi, 0.8, np.pi)
+    dw = np.pi + np.linspace(-np.pi / 2, np.pi / 2, 2001) + 1e-6
+    m = mchv3_full_turn(s, 0.06, 0.05)
+    psi = m.motion(dw).psi
+    pred = slot_residual_first_order(m, s, dw)
+    # the simulated slot angle follows h/s (up to the sign of the slot's direction) to 2 % of its range
+    sign = np.sign(np.corrcoef(psi, pred)[0, 1])
+    assert np.max(np.abs((psi - psi[1000]) - sign * (pred - pred[1000]))) < 0.02 * np.ptp(psi)
+    assert abs(np.degrees(np.ptp(psi)) - 2.15) < 0.01
+    # no pivot inside the curve farther than 0.07 l past the dwell end: the ~2° cannot be designed away
+    for depth in np.arange(0.005, 0.2, 0.005):
+        with pytest.raises(InfeasibleDesignError):
+            mchv3_full_turn(s, 0.07, depth)
+    best, res = mchv3_full_turn_best(s)
+    mo = best.motion(best.turn(20001))
+    assert abs(best.turns) == 1 and np.abs(mo.dpsi).max() <= 15.0
+    assert np.radians(1.9) < res < np.ptp(psi) and res == pytest.approx(np.ptp(best.motion(dw).psi), rel=1e-9)
+    # a guide designed for a shorter dwell leaves room for the pivot: a much smaller residual
+    s140 = straight_guiding(np.pi, 0.8, 140 * DEG)
+    b140, r140 = mchv3_full_turn_best(s140)
+    assert r140 < np.radians(0.6) and dwell_extent(b140) > 140 * DEG

@@ -404,6 +404,13 @@ def mchv3_full_turn(guide: StraightGuide, beyond: float = 0.06, depth: float = 0
     ≥ ``beyond``): the residual motion is of order E/beyond, and moving P along the line trades
     the dwell's length for its accuracy (the thesis' adjustable dwell). The defaults suit
     Chebyshev's lambda (2α = 180°). Raises InfeasibleDesignError if P is not inside the curve.
+
+    The residual is not caused by the pivot being inside the curve: for D exactly on the line the
+    slot *is* the line (it is tangent to the offset circle), so an exact straight segment would dwell
+    exactly; to first order the slot turns by h/s (:func:`slot_residual_first_order`; h = D's distance
+    from the line, ≤ E). With 2α = 180° the curve leaves ≤ 0.065 l for the pivot past the dwell end, so
+    over the full 180° the defaults give 2.15° and the best pivot 2.01° (:func:`mchv3_full_turn_best`):
+    ~2° is inherent there; a guide designed for a shorter dwell does better (160°: 0.94°, 140°: 0.55°).
     """
     m, e, foot = _line_frame(guide)
     beyond = check_length("beyond", beyond, allow_zero=True)
@@ -447,4 +454,78 @@ def dwell_extent(mech, tol: float = 0.02, n: int = 2881) -> float:
     return float(phi[hi] - phi[lo])
 
 
-__all__ += ["mchv3_full_turn", "dwell_extent"]
+def slot_residual_first_order(mech: LambdaSlottedSixBar, guide: StraightGuide, phi) -> np.ndarray:
+    """First-order turn of the МЧВ3-3М slot away from the guide's line L at crank angles φ (radians).
+
+    Derivation: the slot is the tangent from the pin D to the circle of radius |e| about P; P sits
+    at distance |e| from L, so for D exactly on L that tangent *is* L, whatever D's position on it —
+    an exact straight segment would give an exact dwell, the pivot inside the curve costs nothing.
+    With D off L by h = x − Y (x: D's coordinate along the axis) and at s = y − y_P along L from
+    the foot of P (the tangent point), the tangent turns about that point by atan(h/s) ≈ h/s. So the
+    residual motion over the dwell is ≈ ptp(h/s): the straightness E of the guide divided by D's
+    distance from the pivot's foot, worst at the dwell end nearest the pivot (E/beyond).
+    Returns h/s (compare differences: the simulated ψ − ψ(φ0) ≈ ±(h/s − (h/s)(φ0)))."""
+    m = mech.base
+    x, y = m.axis_coordinates(as_angles(phi))
+    e = m.axis
+    yP = (mech.P - m.C) @ np.array([-e[1], e[0]])
+    return (x - guide.Y) / (y - yP)
+
+
+def mchv3_full_turn_best(guide: StraightGuide, side: int = 1, max_speed: float | None = 15.0,
+                         beyonds=np.arange(0.0, 0.5001, 0.005), depths=np.arange(0.005, 0.2001, 0.005)):
+    """МЧВ3-3М with the pivot placed for the smallest residual over the guide's dwell.
+
+    Scans the pivot's position (``beyonds`` past the dwell end × ``depths`` into the curve) with the
+    first-order residual ptp(h/s) of :func:`slot_residual_first_order` (no dyad solve), keeping pivots
+    inside the coupler curve (winding number ±1: the link turns once per crank turn) whose offset
+    circle the pin's path clears; candidates are tried best first, built by :func:`mchv3_full_turn`
+    and simulated, until one whose peak |ψ'| over the turn (fine grid) is ≤ ``max_speed`` (None: no
+    limit). The bound matters: the smallest residuals come with the pin grazing the offset circle,
+    where the link whips round (ψ' ≈ 96, ψ'' ≈ 13 000 for the 180° optimum without it).
+    Returns (mechanism, simulated residual = range of ψ over the guide's dwell).
+
+    Findings (δ = 180°, a = 0.8, :func:`straight_guiding`; residual over the guide's dwell): for
+    Chebyshev's 2α = 180° no pivot inside the curve lies farther than ≈ 0.065 l past the dwell end, so
+    the residual cannot drop much below E/0.065 ≈ 1.7°: the best found is 2.01° (pivot 0.065 l past,
+    0.04 l deep; peak ψ' 13.9, ψ'' 758) against the reconstruction's default (0.06, 0.05) with 2.15°
+    (ψ' 13.4, ψ'' 276); without the speed bound 2.03° with ψ' ≈ 96. A free Nelder-Mead over P and e
+    at the default's clearance gives 2.12°. So the ~2° is inherent to a 180° straight part, not a poor
+    choice of pivot. Shorter dwells leave the pivot room: a guide for 2α = 160° gives 0.94°, 140° 0.55°.
+    """
+    m, e, foot = _line_frame(guide)
+    side = check_sign("side", side)
+    half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
+    xc, yc = m.axis_coordinates(np.linspace(0, TWO_PI, 2881))
+    t = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 241) + 1e-6
+    xd, yd = m.axis_coordinates(t)
+    h = xd - guide.Y
+    beyonds = np.asarray(beyonds, dtype=float)
+    yP = side * (half + beyonds)
+    cands = []
+    for depth in np.asarray(depths, dtype=float):
+        dx, dy = xc[None, :] - (guide.Y + depth), yc[None, :] - yP[:, None]
+        ang = np.unwrap(np.arctan2(dy, dx), axis=1)
+        winding = np.round((ang[:, -1] - ang[:, 0]) / TWO_PI)
+        gap = np.hypot(dx, dy).min(axis=1) - depth
+        with np.errstate(divide="ignore", invalid="ignore"):
+            res = np.ptp(h[None, :] / (yd[None, :] - yP[:, None]), axis=1)
+        ok = (winding != 0) & (gap > 1e-4)
+        cands += [(res[i], beyonds[i], depth) for i in np.nonzero(ok)[0]]
+    cands.sort()
+    phi = np.linspace(0, TWO_PI, 20001) + 1e-6
+    dwell = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 2001) + 1e-6
+    for _, beyond, depth in cands[:400]:
+        try:
+            mech = mchv3_full_turn(guide, float(beyond), float(depth), side)
+            if max_speed is not None and np.abs(mech.motion(phi).dpsi).max() > max_speed:
+                continue
+        except MechanismError:
+            continue
+        return mech, float(np.ptp(mech.motion(dwell).psi))
+    raise InfeasibleDesignError(
+        f"no pivot inside the coupler curve gives a full-turn link with peak |ψ'| ≤ {max_speed} for the dwell "
+        f"2α = {np.degrees(guide.dwell):.4g}°")
+
+
+__all__ += ["mchv3_full_turn", "dwell_extent", "slot_residual_first_order", "mchv3_full_turn_best"]
