@@ -20,7 +20,7 @@ import functools
 import numpy as np
 import pytest
 import sympy as sp
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq, fsolve, least_squares, minimize_scalar
 
@@ -299,6 +299,11 @@ def any_fourbar(draw):
 
 @SETTINGS
 @given(any_fourbar())
+@example(ml.FourBar(1, 3, 3, 4, 1))          # crank-rocker
+@example(ml.FourBar(3, 4, 3.5, 1, -1))       # double-crank
+@example(ml.FourBar(3, 4, 1, 3.5, 1))        # rocker-crank (the crank rocks)
+@example(ml.FourBar(2.5, 1.0, 3.0, 3.2, -1))  # double-rocker: two crank ranges
+@example(ml.FourBar(3, 3, 3, 5, 1))          # triple-rocker
 def test_fourbar_positions_analogs_transmission(fb):
     a, c, r, g, k = fb.crank, fb.coupler, fb.rocker, fb.ground, fb.assembly
     for start, end in fb.crank_ranges():
@@ -504,32 +509,45 @@ def circle_slot_links(draw):
     D = draw(st.floats(0.1, 6.0))
     ang = draw(st.floats(-np.pi, np.pi))
     rho = draw(st.floats(0.2, 8.0))
-    # the circle's distances from B, [|D - ρ|, D + ρ], must strictly contain the pin's, [|a - d|, a + d]
-    assume(abs(D - rho) < abs(a - dist) - 0.05 and D + rho > a + dist + 0.05)
+    # the circle's distances from B, [|D - ρ|, D + ρ], must overlap the pin's, [|a - d|, a + d]
+    lo, hi = max(abs(D - rho), abs(a - dist)), min(D + rho, a + dist)
+    assume(hi - lo > 0.1 * (a + dist))
+    # no coincident extremes (the slot tangent to the pin's circle exactly at φ = 0 or π)
+    ends = np.array([abs(D - rho), D + rho])
+    assume(np.min(np.abs(ends[:, None] - np.array([abs(a - dist), a + dist])[None, :])) > 0.05 * (a + dist))
     side = draw(SIGN)
     return a, dist, (D * np.cos(ang), D * np.sin(ang)), rho, side
 
 
-@SETTINGS
+def _circle_point(S, cx, cy, rho, side):
+    """The point of the circle at distance S from B on the side `side` of the line B→centre."""
+    D = np.hypot(cx, cy)
+    gam = np.arccos(np.clip((S * S + D * D - rho * rho) / (2 * S * D), -1, 1))
+    th = np.arctan2(cy, cx) + side * gam
+    return S * np.array([np.cos(th), np.sin(th)])
+
+
+@FEW
 @given(circle_slot_links())
 def test_curved_slot_link_circle(case):
+    """Full-turn and rocking circular slots: the pin's side of B→centre fixed by `start`."""
     a, dist, (cx, cy), rho, side = case
-    # the pin at φ = 0 is a + d from B: the two points of the circle there, pick the one on `side`
-    S = a + dist
     D = np.hypot(cx, cy)
-    gam = np.arccos((S * S + D * D - rho * rho) / (2 * S * D))
-    p = S * np.array([np.cos(np.arctan2(cy, cx) + side * gam), np.sin(np.arctan2(cy, cx) + side * gam)])
-    t0 = np.arctan2(p[1] - cy, p[0] - cx)
-    m = ml.CurvedSlotLink(a, dist, ml.CircleSlot((cx, cy), rho), start=t0)
-    assert m.can_turn
-    phis = np.linspace(0, 2 * np.pi, 61)
-    # the pin in the link frame is p at ψ = 0 only if ... solve ψ too: ψ = -(polar angle of p)
-    x, d, dd = circle_slot_loop().follow((-np.arctan2(p[1], p[0]), t0), phis, (a, dist, cx, cy, rho))
-    mo = m.motion(phis)
-    scale = max(1.0, np.max(np.abs(d[:, 0])) ** 2, np.max(np.abs(dd[:, 0])))
-    _cmp_angle(mo.psi, x[:, 0], 1e-8, "ψ (circular slot)")
-    _cmp(mo.dpsi, d[:, 0], 1e-8 * scale, "ψ' (circular slot)")
-    _cmp(mo.ddpsi, dd[:, 0], 1e-7 * scale, "ψ'' (circular slot)")
+    pick = _circle_point(np.clip(a + dist, abs(D - rho) + 1e-9, D + rho - 1e-9), cx, cy, rho, side)
+    m = ml.CurvedSlotLink(a, dist, ml.CircleSlot((cx, cy), rho), start=np.arctan2(pick[1] - cy, pick[0] - cx))
+    for start, end in m.crank_ranges():
+        w = end - start
+        phis = np.linspace(0, 2 * np.pi, 61) if w >= 2 * np.pi else np.linspace(start + 0.03 * w, end - 0.03 * w, 61)
+        S = np.hypot(a * np.cos(phis[0]) + dist, a * np.sin(phis[0]))
+        p = _circle_point(S, cx, cy, rho, side)
+        A0 = np.array([a * np.cos(phis[0]) + dist, a * np.sin(phis[0])])  # A - B
+        x0 = (np.arctan2(A0[1], A0[0]) - np.arctan2(p[1], p[0]), np.arctan2(p[1] - cy, p[0] - cx))
+        x, d, dd = circle_slot_loop().follow(x0, phis, (a, dist, cx, cy, rho))
+        mo = m.motion(phis)
+        scale = max(1.0, np.max(np.abs(d[:, 0])) ** 2, np.max(np.abs(dd[:, 0])))
+        _cmp_angle(mo.psi, x[:, 0], 1e-8, "ψ (circular slot)")
+        _cmp(mo.dpsi, d[:, 0], 1e-8 * scale, "ψ' (circular slot)")
+        _cmp(mo.ddpsi, dd[:, 0], 1e-7 * scale, "ψ'' (circular slot)")
 
 
 @SETTINGS
@@ -601,6 +619,83 @@ def test_sixbar_iv_against_own_newton(eps):
     _cmp(mo.psi[-1] - mo.psi[0], x[-1, 1] - x[0, 1], 1e-8, "ψ gained over one turn")
 
 
+@FEW
+@given(st.floats(0.2, 5.0), st.floats(0.2, 5.0))
+def test_antiparallelogram_crossed_branch(a, g):
+    """The crossed branch: on each half turn, the four-bar root with ψ ≠ φ (not the parallelogram)."""
+    assume(abs(a - g) > 0.05 * max(a, g))
+    m = ml.Antiparallelogram(a, g)
+    for lo, hi in ((0.05, np.pi - 0.05), (np.pi + 0.05, 2 * np.pi - 0.05)):
+        phis = np.linspace(lo, hi, 31)
+        sols = [my_fourbar(a, g, a, g, k, phis) for k in (1, -1)]
+        crossed = [s_ for s_ in sols if np.all(np.abs(wrap(s_[0][:, 1] - phis)) > 1e-6)]
+        assert len(crossed) == 1
+        x, d, dd = crossed[0]
+        mo = m.motion(phis)
+        scale = max(1.0, np.max(np.abs(dd[:, 1])))
+        _cmp(wrap(mo.psi - x[:, 1]), 0 * phis, 1e-9, "antiparallelogram ψ")
+        _cmp(mo.dpsi, d[:, 1], 1e-8 * scale, "antiparallelogram ψ'")
+        _cmp(mo.ddpsi, dd[:, 1], 1e-7 * scale, "antiparallelogram ψ''")
+
+
+# ------------------------------------------------------------------------------------------
+# 5b. long inputs, many turns, unsorted angles, documented mirror relations
+# ------------------------------------------------------------------------------------------
+@FEW
+@given(revolving())
+def test_fourbar_long_grid_many_turns_unsorted(fb):
+    a, c, r, g, k = fb.crank, fb.coupler, fb.rocker, fb.ground, fb.assembly
+    # long uniform grid over three turns, backwards from 2π: blocks, threads and the fast exp(iφ) table
+    phis = np.linspace(2 * np.pi, -4 * np.pi, 60001)
+    mo = fb.motion(phis)
+    idx = np.arange(0, 60001, 1000)
+    x, d, dd = my_fourbar(a, c, r, g, k, phis[idx])
+    scale = max(1.0, np.max(np.abs(dd[:, 1])))
+    _cmp_angle(mo.psi[idx], x[:, 1], 1e-9, "ψ on a long grid")
+    _cmp(mo.dpsi[idx], d[:, 1], 1e-8 * scale, "ψ' on a long grid")
+    _cmp(mo.ddpsi[idx], dd[:, 1], 1e-7 * scale, "ψ'' on a long grid")
+    step = np.max(np.abs(np.diff(mo.psi)))
+    assert step <= 1.01 * np.max(np.abs(mo.dpsi)) * abs(phis[1] - phis[0])  # no branch jump anywhere
+    # unsorted input gives the same numbers per angle
+    perm = np.random.default_rng(1).permutation(idx)
+    _cmp(fb.motion(phis[perm]).psi, mo.psi[perm], 1e-12, "unsorted ψ")
+    # documented mirror relation: ψ₋(φ) = -ψ₊(-φ), ψ'₋(φ) = ψ'₊(-φ), ψ''₋(φ) = -ψ''₊(-φ)
+    q = np.linspace(0, 2 * np.pi, 37)
+    p_, m_ = ml.FourBar(a, c, r, g, 1).motion(q), ml.FourBar(a, c, r, g, -1).motion(-q)
+    _cmp(wrap(p_.psi + m_.psi), 0 * q, 1e-12, "mirror ψ")
+    _cmp(p_.dpsi, m_.dpsi, 1e-12 * scale, "mirror ψ'")
+    _cmp(p_.ddpsi, -m_.ddpsi, 1e-11 * scale, "mirror ψ''")
+
+
+@FEW
+@given(any_slider())
+def test_slider_crank_documented_mirror(m):
+    """s₋(φ; e) = -s₊(π - φ; e) (slider_crank module docstring)."""
+    other = ml.SliderCrank(m.crank, m.rod, m.offset, -m.assembly)
+    start, end = m.crank_ranges()[0]
+    w = end - start
+    q = np.linspace(start + 0.03 * w, end - 0.03 * w, 37) if w < 2 * np.pi else np.linspace(0, 2 * np.pi, 37)
+    _cmp(m.motion(q).s, -other.motion(np.pi - q).s, 1e-12, "mirror s", scale=m.crank + m.rod)
+
+
+@FEW
+@given(revolving(), st.floats(-2, 2), st.floats(-2, 2))
+def test_instant_centres_kennedy_equals_velocity_method(fb, u, v):
+    phis = np.linspace(0.05, 2 * np.pi - 0.05, 37)
+    try:
+        k1 = ml.instant_centres(fb, phis)
+        k2 = ml.instant_centres(fb, phis, method="velocity")
+    except MechanismError:
+        assume(False)
+    for key, c1 in k1.centres.items():
+        c2 = k2.centres[key]
+        both = c1.finite & c2.finite
+        assert np.array_equal(c1.finite, c2.finite) or not np.any(~both & (c1.finite | c2.finite))
+        if both.any():
+            sc = max(1.0, np.max(np.abs(c1.xy[both])))
+            _cmp(c1.xy[both], c2.xy[both], 1e-7 * sc, f"centre {key}")
+
+
 # ------------------------------------------------------------------------------------------
 # 6. Geneva
 # ------------------------------------------------------------------------------------------
@@ -660,6 +755,20 @@ def test_planar_geneva_from_the_pin_geometry(cls, kappa, z, C):
     # the jump at entry: |ψ''| = tan(π/z)
     assert abs(abs(ddb(-s0, lam)) - np.tan(np.pi / z)) < 1e-10
     assert abs(m.entry_acceleration() - np.tan(np.pi / z)) < 1e-12
+    cf = m.closed_form(sig)
+    _cmp(cf.theta, wrap(b(sig, lam) - np.pi), 1e-11, "closed_form β")
+    _cmp(cf.d, db(sig, lam), 1e-11, "closed_form β'")
+    _cmp(cf.dd, ddb(sig, lam), 1e-10 * max(1, np.max(np.abs(cf.dd))), "closed_form β''")
+    imp = m.impacts()
+    _cmp([imp.entry_velocity_jump, imp.exit_velocity_jump], [db(-s0, lam), -db(s0, lam)], 1e-12, "velocity jumps")
+    _cmp([imp.entry_acceleration_jump, imp.exit_acceleration_jump], [ddb(-s0, lam), -ddb(s0, lam)], 1e-10,
+         "acceleration jumps")
+    assert imp.kind == "soft"
+    # over several turns, forwards and backwards: ψ accumulates κ·2π/z per turn, continuously
+    many = np.linspace(-3 * 2 * np.pi, 3 * 2 * np.pi, 6 * 400 + 1)
+    mo = m.motion(many)
+    assert np.max(np.abs(np.diff(mo.psi))) < 2 * np.max(np.abs(db(fine, lam))) * (many[1] - many[0])
+    assert abs(mo.psi[-1] - mo.psi[0] - 6 * kappa * 2 * np.pi / z) < 1e-10
 
 
 def test_external_geneva_classical_table():
@@ -827,6 +936,53 @@ def test_non_assemblable_slider_crank(a, l, e):
     assert abs(e) - a < l
     mo = m.motion(m.cycle(41))
     assert np.all(np.isfinite(mo.s)) and np.all(np.isfinite(mo.ds)) and np.all(np.isfinite(mo.dds))
+
+
+ERROR_CASES = {
+    "circle slot centred on the pivot": lambda: ml.CurvedSlotLink(0.5, 1, ml.CircleSlot((0, 0), 1.0)),
+    "circle centre nan": lambda: ml.CircleSlot((np.nan, 0), 1.0),
+    "slot is a string": lambda: ml.CurvedSlotLink(0.5, 1, "circle"),
+    "parametric slot returns NaN": lambda: ml.CurvedSlotLink(0.5, 1, ml.ParametricSlot(
+        lambda t: np.full((len(t), 2), np.nan), lambda t: np.ones((len(t), 2)), lambda t: np.ones((len(t), 2)), 0, 1)),
+    "parametric slot wrong shape": lambda: ml.CurvedSlotLink(0.5, 1, ml.ParametricSlot(
+        lambda t: t, lambda t: t, lambda t: t, 0, 1)),
+    "parametric t1 < t0": lambda: ml.ParametricSlot(lambda t: t, lambda t: t, lambda t: t, 1, 0),
+    "sampled slot, 3 points": lambda: ml.SampledSlot(np.ones((3, 2))),
+    "sampled slot, repeated point": lambda: ml.SampledSlot(np.array([[0, 0], [0, 0], [1, 1], [2, 2.0]])),
+    "translating circle out of reach": lambda: ml.TranslatingCurvedSlot(1, ml.CircleSlot((0.0, 5.0), 1.0)),
+    "curved slot, unreachable angle": lambda: ml.CurvedSlotLink(0.5, 1, ml.CircleSlot((0.3, 0.5), 0.6)).motion([0.0]),
+    "slider-crank, unreachable angle": lambda: ml.SliderCrank(1, 1.2, 0.5).motion([-np.pi / 2]),
+    "slider-crank, turn() of a rocking crank": lambda: ml.SliderCrank(1, 1.2, 0.5).turn(),
+    "slider-crank out of reach": lambda: ml.SliderCrank(1, 1, 2.5),
+    "slotted link, λ = 1": lambda: ml.SlottedLink(1, 1),
+    "Geneva roller too large": lambda: ml.ExternalGeneva(4, 1.0, roller_radius=0.5),
+    "Geneva roller negative": lambda: ml.InternalGeneva(4, 1.0, roller_radius=-0.1),
+    "Geneva roller nan": lambda: ml.InternalGeneva(4, 1.0, roller_radius=np.nan),
+    "spherical Geneva e ≥ R": lambda: ml.SphericalGeneva(1.0, 1.5, 4),
+    "SixBarIV joint nan": lambda: ml.SixBarIV(0.25, 1.04, (np.nan, 0.45), (1.35, 0.15), 0.25, 0.85, 0.9, (0.2, -0.55)),
+    "SixBarIV R = T": lambda: ml.SixBarIV(0.25, 1.04, (0.5, 0.5), (0.5, 0.5), 0.25, 0.85, 0.9, (0.2, -0.55)),
+    "SixBarIV crank too long": lambda: ml.SixBarIV(5, 1.04, (0.55, 0.45), (1.35, 0.15), 0.25, 0.85, 0.9, (0.2, -0.55)),
+    "SixBarIV link too short": lambda: ml.SixBarIV(0.25, 1.04, (0.55, 0.45), (1.35, 0.15), 0.25, 0.1, 0.9,
+                                                   (0.2, -0.55)),
+    "SixBarIV length is a string": lambda: ml.SixBarIV("a", 1.04, (0.55, 0.45), (1.35, 0.15), 0.25, 0.85, 0.9,
+                                                       (0.2, -0.55)),
+    "lambda δ = 0": lambda: ml.LambdaMechanism(0.4, 0.8, 0.0),
+    "lambda δ = 2π": lambda: ml.LambdaMechanism(0.4, 0.8, 2 * np.pi),
+    "lambda r > a": lambda: ml.LambdaMechanism(0.9, 0.8, 1.0),
+    "lambda r + a ≥ 2": lambda: ml.LambdaMechanism(0.7, 1.4, 1.0),
+    "four-bar assembly 0": lambda: ml.FourBar(1, 3, 3, 4, 0),
+    "four-bar assembly nan": lambda: ml.FourBar(1, 3, 3, 4, np.nan),
+    "four-bar length is an array": lambda: ml.FourBar(np.array([1.0, 2.0]), 3, 3, 4),
+    "four-bar length complex": lambda: ml.FourBar(1 + 1j, 3, 3, 4),
+    "antiparallelogram rhombus": lambda: ml.Antiparallelogram(1.0, 1.0),
+}
+
+
+@pytest.mark.parametrize("case", sorted(ERROR_CASES))
+def test_invalid_input_raises_mechanism_error(case):
+    with pytest.raises(MechanismError) as exc:
+        ERROR_CASES[case]()
+    assert len(str(exc.value)) > 20
 
 
 MECHS = {
