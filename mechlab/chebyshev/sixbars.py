@@ -496,8 +496,8 @@ def mchv3_full_turn_best(guide: StraightGuide, side: int = 1, max_speed: float |
     m, e, foot = _line_frame(guide)
     side = check_sign("side", side)
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
-    xc, yc = m.axis_coordinates(np.linspace(0, TWO_PI, 2881))
-    t = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 241) + 1e-6
+    xc, yc = m.axis_coordinates(np.linspace(0, TWO_PI, 1441))
+    t = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 121) + 1e-6
     xd, yd = m.axis_coordinates(t)
     h = xd - guide.Y
     beyonds = np.asarray(beyonds, dtype=float)

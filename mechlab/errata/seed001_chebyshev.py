@@ -96,13 +96,15 @@ def _mchv1_row():
             f"printed 2.16, 12.32, but D = {inv.D:.2f}; the neighbouring rows agree within 4 %")
 
 
-def _row_fit(delta, alpha, a):
-    """Worst relative mismatch of (B, C, D) of МЧВ1 (K = 1, β_m = 20°) against the printed row."""
+def _row_fit(delta, alpha, a, guess=None):
+    """Worst relative mismatch of (B, C, D) of МЧВ1 (K = 1, β_m = 20°) against the printed row
+    (and the invariants, and the circle-guiding design as a start for a neighbouring a)."""
     from ..chebyshev import mchv1, rise_law
     from ..motion_laws import rise_invariants, thesis_mchv1_rows
 
     row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
-    g = circle_guiding(delta * DEG, a, 2 * alpha * DEG)
+    g = circle_guiding(delta * DEG, a, 2 * alpha * DEG, guess=guess) if guess else \
+        circle_guiding(delta * DEG, a, 2 * alpha * DEG)
     inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG, mu_min=None), g.dwell))
     return max(abs(inv.B / row[3] - 1), abs(inv.C / row[4] - 1), abs(inv.D / row[5] - 1)), inv
 
@@ -127,7 +129,8 @@ def _row_270_100():
 
 
 def _best_a(delta, alpha, a0, span=0.2, step=0.025):
-    """(worst mismatch, a) minimised over a near the printed a0: a scan, then a bounded 1-D search."""
+    """(worst mismatch, a) minimised over a near the printed a0: a scan, then a bounded 1-D search
+    (each circle-guiding solve started from the scan's best design)."""
     from scipy.optimize import minimize_scalar
 
     from ..errors import MechanismError
@@ -139,14 +142,22 @@ def _best_a(delta, alpha, a0, span=0.2, step=0.025):
         except MechanismError:  # no design at this a (outside the map, or F cannot be placed)
             continue
     w, a = min(fits)
-    res = minimize_scalar(lambda x: _row_fit(delta, alpha, x)[0], bounds=(a - step, a + step), method="bounded",
-                          options=dict(xatol=1e-4))
+    g = circle_guiding(delta * DEG, a, 2 * alpha * DEG)
+    guess = (g.r, g.c, g.t3, g.t2)
+
+    def worst(x):
+        try:
+            return _row_fit(delta, alpha, x, guess)[0]
+        except MechanismError:
+            return 1.0
+
+    res = minimize_scalar(worst, bounds=(a - step, a + step), method="bounded", options=dict(xatol=1e-3))
     return (float(res.fun), float(res.x)) if res.fun < w else (w, a)
 
 
 def _rows_125():
-    w180, a180 = _best_a(180, 125, 1.1, step=0.05)
-    w240, a240 = _best_a(240, 125, 1.4, step=0.05)
+    w180, a180 = _best_a(180, 125, 1.1, step=0.1)
+    w240, a240 = _best_a(240, 125, 1.4, step=0.1)
     inv = _row_fit(180, 125, a180)[1]
     assert 0.02 < w180 < 0.035 and abs(a180 - 1.12) < 0.01 and w240 > 0.07
     return (f"2α = 250°, K = 1, β_m = 20°: δ = 180° is closest at a = {a180:.3f} (B, C, D = {inv.B:.2f}, {inv.C:.2f}, "
