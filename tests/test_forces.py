@@ -596,3 +596,194 @@ def test_journal_friction_at_the_crank_pivot_by_hand():
         assert np.allclose(res.torque, P * mo.ds + f * r * np.abs(S) * np.sign(w), rtol=1e-12, atol=1e-12)
         assert np.allclose(res.reactions["O"].force, S[:, None] * u, rtol=1e-12, atol=1e-12)
         assert np.allclose(res.reactions["O"].couple, -f * r * np.abs(S) * np.sign(w), rtol=1e-12, atol=1e-12)
+
+
+# -- audit: the solver against mechanics written out independently in this file ----------------
+# Links as model_for documents them (origin joint, x axis), the kinematics by 5-point central
+# differences of the joint positions (no analogs from mechlab), loads in link coordinates.
+LINKS = {FourBar: {"crank": ("O", ("O", "A")), "coupler": ("A", ("A", "B")), "rocker": ("E", ("E", "B"))},
+         SliderCrank: {"crank": ("O", ("O", "A")), "rod": ("A", ("A", "B")), "slider": ("B", None)}}
+FD_H = 1e-3
+
+
+def _fd(mech, phi):
+    """Joint positions p and their first and second derivatives in φ by 5-point stencils."""
+    k = np.arange(-2, 3)
+    mos = [mech.motion(phi + j * FD_H) for j in k]
+    out = {}
+    for name in mos[0].points:
+        P = np.stack([m.points[name].p for m in mos])            # (5, n, 2)
+        d1 = (P[0] - 8 * P[1] + 8 * P[3] - P[4]) / (12 * FD_H)
+        d2 = (-P[0] + 16 * P[1] - 30 * P[2] + 16 * P[3] - P[4]) / (12 * FD_H**2)
+        out[name] = (P[2], d1, d2)
+    return out
+
+
+def _bodies(mech, phi, model):
+    """Per link: origin, angle θ, θ', θ'' and a function giving a point in link coordinates
+    with its φ-derivatives — all by finite differences of positions."""
+    k = np.arange(-2, 3)
+    mos = [mech.motion(phi + j * FD_H) for j in k]
+    out = {}
+    for name, (origin, axis) in LINKS[type(mech)].items():
+        O = np.stack([m.points[origin].p for m in mos])
+        if axis is None:
+            th = np.zeros((5, len(phi)))
+        else:
+            v = np.stack([m.points[axis[1]].p - m.points[axis[0]].p for m in mos])
+            th = np.unwrap(np.arctan2(v[..., 1], v[..., 0]), axis=0)
+        body = model.body(name)
+
+        def at(local, O=O, th=th):
+            c, s = np.cos(th), np.sin(th)
+            P = O + np.stack([local[0] * c - local[1] * s, local[0] * s + local[1] * c], axis=-1)
+            return _stencil(P)
+
+        out[name] = {"O": _stencil(O), "th": _stencil(th), "at": at, "body": body}
+    return out
+
+
+def _stencil(X):
+    return (X[2], (X[0] - 8 * X[1] + 8 * X[3] - X[4]) / (12 * FD_H),
+            (-X[0] + 16 * X[1] - 30 * X[2] + 16 * X[3] - X[4]) / (12 * FD_H**2))
+
+
+def _applied(links, loads, w, e, g):
+    """Per link: resultant applied force (gravity, −m·a_S, external forces), its moment about
+    the link's origin (with −J_S·ε and external couples) and its power per unit ω1."""
+    out = {}
+    for name, L in links.items():
+        b = L["body"]
+        o = L["O"][0]
+        th, dth, ddth = L["th"]
+        S, dS, ddS = L["at"](b.com)
+        F = b.mass * (np.asarray(g) - (ddS * w * w + dS * e))
+        M = _cross(S - o, F) - b.inertia * (ddth * w * w + dth * e)
+        P = np.sum(F * dS, axis=1) - b.inertia * (ddth * w * w + dth * e) * dth
+        for ld in loads:
+            if ld.body != name:
+                continue
+            if isinstance(ld, Force):
+                Q, dQ, _ = L["at"](ld.at)
+                Fx = np.broadcast_to(np.asarray(ld.value, float), F.shape)
+                F = F + Fx
+                M = M + _cross(Q - o, Fx)
+                P = P + np.sum(Fx * dQ, axis=1)
+            else:
+                M = M + ld.value
+                P = P + ld.value * dth
+        out[name] = (F, M, P)
+    return out
+
+
+def _cross(a, b):
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+@given(st.data(), st.one_of(revolving_fourbars(), revolving_slider_cranks()))
+@settings(max_examples=80, deadline=None)
+def test_audit_torque_by_power_balance_and_reactions_by_newton_euler(data, mech):
+    """Independent of mechlab.forces: (1) the crank torque from the power balance
+    M_b = −Σ(F·v_S + M·ω)/ω1 with velocities from finite differences; (2) every reaction and
+    M_b from the 9 Newton–Euler equations of the three links, assembled here and solved per
+    angle. Both against solve()."""
+    model, loads, w, e = loaded(data.draw, mech)
+    loads = [ld for ld in loads]
+    g = (0.0, -9.81)
+    phi = mech.turn(37)[:-1] + 0.01
+    res = solve(model, mech.motion(phi), loads, omega1=w, eps1=e, gravity=g)
+    links = _bodies(mech, phi, model)
+    app = _applied(links, loads, w, e, g)
+    power = sum(P for _, _, P in app.values())
+    crank_dth = links["crank"]["th"][1]
+    Mb = -power / crank_dth
+    scale = max(np.max(np.abs(Mb)), max(np.max(np.abs(F)) for F, _, _ in app.values()) * mech.crank, 1e-9)
+    assert np.max(np.abs(res.torque - Mb)) <= 1e-6 * scale
+    # Newton–Euler, unknowns x = [R_O, R_A, R_B, R_E or (N, C), M_b]; R_X = force of pair X's a on b
+    n = len(phi)
+    pos = {k: v[0] for k, v in _fd(mech, phi).items()}
+    A = np.zeros((n, 9, 9))
+    rhs = np.zeros((n, 9))
+    names = list(LINKS[type(mech)])
+    for i, name in enumerate(names):
+        F, M, _ = app[name]
+        rhs[:, 3 * i:3 * i + 2] = -F
+        rhs[:, 3 * i + 2] = -M
+    o = {name: links[name]["O"][0] for name in names}
+
+    def put(link, col, point, s):   # an unknown force (cols col, col+1) acting with sign s on link at point
+        i = names.index(link)
+        d = pos[point] - o[link]
+        A[:, 3 * i, col] += s
+        A[:, 3 * i + 1, col + 1] += s
+        A[:, 3 * i + 2, col] += -s * d[:, 1]
+        A[:, 3 * i + 2, col + 1] += s * d[:, 0]
+
+    put("crank", 0, "O", 1.0)                       # frame on crank
+    put("crank", 2, "A", -1.0)
+    put(names[1], 2, "A", 1.0)                      # crank on coupler / rod
+    put(names[1], 4, "B", -1.0)
+    put(names[2], 4, "B", 1.0)                      # coupler on rocker / rod on slider
+    if isinstance(mech, FourBar):
+        put("rocker", 6, "E", 1.0)                  # frame on rocker
+    else:
+        A[:, 7, 6] = 1.0                            # guide normal N along +y on the slider (guide ∥ x)
+        A[:, 8, 7] = 1.0                            # guide couple on the slider (N acts through B, its origin)
+    A[:, 2, 8] = 1.0                                # M_b on the crank
+    x = np.linalg.solve(A, rhs[..., None])[..., 0]
+    assert np.max(np.abs(x[:, 8] - res.torque)) <= 1e-6 * scale
+    force_scale = max(np.max(np.abs(x[:, :6])), 1e-9)
+    for col, pair in ((0, "O"), (2, "A"), (4, "B")):
+        assert np.max(np.abs(res.reactions[pair].force - x[:, col:col + 2])) <= 1e-6 * force_scale
+    if isinstance(mech, FourBar):
+        assert np.max(np.abs(res.reactions["E"].force - x[:, 6:8])) <= 1e-6 * force_scale
+    else:
+        assert np.max(np.abs(res.reactions["guide"].normal - x[:, 6])) <= 1e-6 * force_scale
+        assert np.max(np.abs(res.reactions["guide"].couple - x[:, 7])) <= 1e-6 * force_scale * mech.rod
+
+
+@given(st.data(), st.one_of(revolving_fourbars(), revolving_slider_cranks()))
+@settings(max_examples=40, deadline=None)
+def test_audit_friction_vanishes_linearly_and_efficiency_tends_to_one(data, mech):
+    """With friction f in every pair (journal radius r): η ≤ 1, and as f → 0 the losses per
+    unit f tend to Σ r·|R0|·|ω_rel| + |N0|·|v_rel| computed here from the frictionless
+    reactions and finite-difference relative velocities; the torque tends to the ideal one
+    and the cycle efficiency to 1, both linearly in f."""
+    model, loads, w, e = loaded(data.draw, mech)
+    phi = mech.turn(37)[:-1] + 0.01
+    mo = mech.motion(phi)
+    r = 0.1 * mech.crank
+    ideal = solve(model, mo, loads, omega1=w, eps1=e)
+    links = _bodies(mech, phi, model)
+    names = list(LINKS[type(mech)])
+    dth = {k: links[k]["th"][1] for k in names}
+    rel = {"O": dth["crank"], "A": dth[names[1]] - dth["crank"], "B": dth[names[2]] - dth[names[1]]}
+    if isinstance(mech, FourBar):
+        rel["E"] = dth["rocker"]
+    lead = sum(r * ideal.reactions[p].magnitude * np.abs(v) for p, v in rel.items())
+    if isinstance(mech, SliderCrank):
+        lead = lead + np.abs(ideal.reactions["guide"].normal) * np.abs(_fd(mech, phi)["B"][1][:, 0])
+    results = {}
+    for f in (1e-3, 1e-4):
+        try:
+            results[f] = solve(model.with_friction(f, r), mo, loads, omega1=w, eps1=e)
+        except SelfLockingError:   # cannot happen at these f unless a dead point is within reach
+            raise AssertionError(f"self-locking at f = {f} on {mech}")
+    for f, res in results.items():
+        eta = res.efficiency()
+        assert np.all(eta.filled(0.0) <= 1.0 + 1e-12)
+        assert np.all(res.losses >= 0)
+        tol = 20 * f * np.max(lead) + 1e-9 * np.max(np.abs(ideal.torque))
+        assert np.max(np.abs(res.losses / f - lead)) <= tol
+    d3 = np.max(np.abs(results[1e-3].torque - ideal.torque))
+    d4 = np.max(np.abs(results[1e-4].torque - ideal.torque))
+    assert d4 <= 0.11 * d3 + 1e-12 * np.max(np.abs(ideal.torque))
+    # cycle: drive work = useful work W + friction work A(f), A(f) = f·∫lead·(1 + O(f)), so the
+    # loss ratio (1 - η)/η = A/W falls tenfold from f = 1e-3 to 1e-4 (η = 1 - A/(W + A) → 1)
+    work = np.trapezoid(ideal.torque * np.sign(w), phi)
+    if work > 1e-3 * np.trapezoid(np.abs(ideal.torque), phi):
+        c3, c4 = (1 - results[f].cycle_efficiency(how="work") for f in (1e-3, 1e-4))
+        assert 0 <= c4 <= c3 <= 1
+        q3, q4 = c3 / (1 - c3), c4 / (1 - c4)
+        assert q3 == pytest.approx(1e-3 * np.trapezoid(lead, phi) / work, rel=0.05)
+        assert q4 == pytest.approx(0.1 * q3, rel=0.05)
