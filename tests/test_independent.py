@@ -589,6 +589,51 @@ def test_translating_circular_slot(a, x0, yfrac, over, side):
 
 
 @FEW
+@given(st.floats(0.2, 1.5), st.floats(-0.8, 0.8), st.floats(-1.0, 1.0), st.floats(-3, 3))
+def test_translating_parametric_slot(a, k, w, x0):
+    """Slot x = x0 + k·y² + w·sin y (a graph over y): s = a cos φ - x(a sin φ) by hand; the
+    library solves y_α(t) = a sin φ on the curve."""
+    f = lambda t: np.stack([x0 + k * t**2 + w * np.sin(t), t], -1)  # noqa: E731
+    df = lambda t: np.stack([2 * k * t + w * np.cos(t), np.ones_like(t)], -1)  # noqa: E731
+    ddf = lambda t: np.stack([2 * k - w * np.sin(t), np.zeros_like(t)], -1)  # noqa: E731
+    m = ml.TranslatingCurvedSlot(a, ml.ParametricSlot(f, df, ddf, -2 * a - 1, 2 * a + 1))
+    phis = np.linspace(0, 2 * np.pi, 61)
+    y, dy, ddy = a * np.sin(phis), a * np.cos(phis), -a * np.sin(phis)
+    x, xy, xyy = x0 + k * y**2 + w * np.sin(y), 2 * k * y + w * np.cos(y), 2 * k - w * np.sin(y)
+    mo = m.motion(phis)
+    _cmp(mo.s, a * np.cos(phis) - x, 1e-9, "s", scale=a + abs(x0) + 4)
+    _cmp(mo.ds, -a * np.sin(phis) - xy * dy, 1e-8, "s'")
+    _cmp(mo.dds, -a * np.cos(phis) - (xyy * dy**2 + xy * ddy), 1e-7, "s''")
+
+
+@FEW
+@given(st.one_of(st.floats(0.2, 0.9), st.floats(1.15, 3.0)), st.floats(0.2, 1.2), st.floats(0.2, 1.0),
+       st.sampled_from(["cubic", "quintic", "sextic"]))
+def test_curved_slot_dwell_is_a_dwell(lam, p1, span, transition):
+    """Through the designed slot: ψ constant on [φ1, φ2]; ψ(0) = 0 and ψ'(0) = ψ_K'(0) = λ/(1 + λ)
+    (base law tan ψ_K = λ sin φ / (1 + λ cos φ)); C² at the joins; ψ(-φ) = ψ(φ) - 2ψ_K(φ) (slot passed
+    twice at the same point); cubic: the dwell value is ψ_B = λφ1/(3(λ + 1)) (from ψ = ψ_B + a1(φ1 - φ)³,
+    ψ(0) = 0, ψ'(0) = λ/(1 + λ))."""
+    p2 = min(p1 + span, np.pi - 0.3)
+    assume(p2 - p1 > 0.15)
+    m = ml.curved_slot_dwell(lam, p1, p2, transition=transition)
+    dw = m.motion(np.linspace(p1, p2, 31))
+    assert np.ptp(dw.psi) < 1e-10 and np.max(np.abs(dw.dpsi)) < 1e-9 and np.max(np.abs(dw.ddpsi)) < 1e-8
+    m0 = m.motion([0.0])
+    assert abs(m0.psi[0]) < 1e-12 and abs(m0.dpsi[0] - lam / (1 + lam)) < 1e-9
+    h = 1e-7
+    for f in (p1, p2):
+        lo, hi = m.motion([f - h]), m.motion([f + h])
+        assert abs(lo.psi[0] - hi.psi[0]) < 1e-9 and abs(lo.dpsi[0] - hi.dpsi[0]) < 1e-7
+        assert abs(lo.ddpsi[0] - hi.ddpsi[0]) < 1e-5
+    q = np.linspace(0.05, np.pi - 0.05, 23)
+    psiK = np.arctan2(lam * np.sin(q), 1 + lam * np.cos(q))
+    _cmp(m.motion(-q).psi, m.motion(q).psi - 2 * psiK, 1e-9, "half-turn relation")
+    if transition == "cubic":
+        assert abs(dw.psi[0] - lam * p1 / (3 * (lam + 1))) < 1e-10
+
+
+@FEW
 @given(st.lists(st.floats(-0.04, 0.04), min_size=8, max_size=8))
 def test_sixbar_iv_against_own_newton(eps):
     from mechlab.sixbar import SixBarIV, example
@@ -812,6 +857,10 @@ def test_lambda_coupler_point_from_own_fourbar(m):
     mo = m.motion(phis)
     _cmp(mo.points["D"].p, D, 1e-9, "D")
     _cmp(m.coupler_point(phis), D, 1e-9, "D by the closed form (*)")
+    # D' = B' + Rot(δ)(A' - B') from the independent analogs (B' = θ'·perp(B - A) + A')
+    dA = m.r * np.stack([-np.sin(phis), np.cos(phis)], -1)
+    dB = dA + d[:, 0, None] * np.stack([-(B - A)[:, 1], (B - A)[:, 0]], -1)
+    _cmp(mo.points["D"].d, dB + _rot(m.assembly * m.delta, dA - dB), 1e-8 * max(1, np.max(np.abs(d))), "D'")
     # D is equidistant (1) from B; the curve is symmetric about the axis through C at assembly·δ/2
     e = np.array([np.cos(m.axis_angle), np.sin(m.axis_angle)])
     Dm = my_fourbar(m.r, 1.0, 1.0, m.a, m.assembly, 2 * np.pi - phis)
