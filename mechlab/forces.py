@@ -1096,28 +1096,34 @@ def rpm_to_rad(rpm: float) -> float:
 
 def press_load(P: float, work_fraction: float = 0.3) -> Callable:
     """Technological resistance of a press: a force P against the slider while it moves
-    towards its outer dead point (s' > 0) in the last ``work_fraction`` of its stroke.
+    towards its outer dead point in the last ``work_fraction`` of its stroke.
 
-    Returns ``load(motion) → (n, 2)`` for :class:`Force` on the slider.
+    Returns ``load(motion) → (n, 2)`` for :class:`Force` on the slider of a slider-crank
+    motion (points O, A, B; guide parallel to x). The outer dead point and the stroke come
+    from the dimensions (crank a = |OA|, rod l = |AB|, offset e = y of B): the slider is
+    sqrt((l + a)² − e²) from O along the guide there, on the side where B is ahead of A,
+    so the load at a crank angle does not depend on which other angles are sampled.
     """
     P = _nonneg("press force P", P, LoadError)
     if not 0 < work_fraction <= 1:
         raise LoadError(f"work_fraction must satisfy 0 < fraction ≤ 1, got {work_fraction}")
 
     def load(motion):
-        s_max = float(np.max(np.abs(motion.s)))  # outer dead point of a centred slider-crank: crank + rod
-        return np.stack([np.where((motion.ds > 0) & (motion.s >= s_max - work_fraction * _stroke(motion)),
-                                  -P, 0.0), np.zeros(len(motion))], axis=1)
+        crank, rod, offset, side = _slider_crank_dimensions(motion)
+        outer = float(np.sqrt((rod + crank) ** 2 - offset**2))
+        stroke = outer - float(np.sqrt((rod - crank) ** 2 - offset**2))
+        working = (motion.ds * side > 0) & (motion.s * side >= outer - work_fraction * stroke)
+        return np.stack([np.where(working, -side * P, 0.0), np.zeros(len(motion))], axis=1)
     return load
 
 
-def _stroke(motion) -> float:
+def _slider_crank_dimensions(motion) -> tuple[float, float, float, float]:
+    """Crank, rod, offset and the side (+1: B ahead of A along x) of a slider-crank motion."""
     pts = motion.points
     A, B = pts["A"].p, pts["B"].p
     crank = float(np.hypot(*A[0]))
     rod = float(np.hypot(*(B[0] - A[0])))
-    offset = float(B[0, 1])
-    return float(np.sqrt((rod + crank) ** 2 - offset**2) - np.sqrt((rod - crank) ** 2 - offset**2))
+    return crank, rod, float(B[0, 1]), float(np.sign(B[0, 0] - A[0, 0]) or 1.0)
 
 
 def press(crank: float = 0.10, rod: float = 0.40, *, rpm: float = 120.0, P: float = 2000.0,
