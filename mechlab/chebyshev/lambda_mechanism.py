@@ -608,7 +608,7 @@ def transmission_lines(mu_min: float = np.radians(30), mu_max: float = np.radian
 
 
 def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Fifth-order contact of the coupler curve with a circle at D0 (2α → 0, E = 0; line AM of Fig. 2a).
+    """Fifth-order contact of the coupler curve with a circle at D0 (2α → 0, E = 0; line AN of Fig. 2a).
 
     ρ² about Q = C + c·e is F(μ) = ρ_C² + c² − (c/a)(ρ_C d + k ρ_C/d) with d = 2 sin(μ/2),
     ρ_C = 2 sin((δ − μ)/2), k = a² − r². As μ − μ0 ∝ t² near t = 0, six-point contact at
@@ -741,8 +741,9 @@ def whole_turn_guiding(delta: float, a: float, line: WholeTurnLine | None = None
 def existence_region(delta: float, line: WholeTurnLine | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Closed polygon (r, a) of the existence region of Fig. 2a for break angle δ: from O along the
     fifth-order line (2α → 0) to A, along the whole-turn line (2α = 360°) to the rotation limit, then
-    along the rotation limit (r + a = 2 to (1, 1) if it ends there, r = a) back to O. Every circle-
-    guiding design with 0 < 2α < 360° lies inside (for the δ the map is drawn for)."""
+    along the rotation limit (r + a = 2 to (1, 1) if it ends there, r = a) back to O. Checked for
+    δ = 150° (the iso-dwell lines 60°…330° lie inside, 2α → 360° converges onto the whole-turn line);
+    for δ = 90° :func:`circle_guiding` does not reach long dwells near that line, so it is unchecked."""
     r5, a5 = fifth_order_line(delta, 200)[:2]
     wt = whole_turn_line(delta) if line is None else line
     r, a = list(r5), list(a5)
