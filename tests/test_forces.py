@@ -610,13 +610,7 @@ def _fd(mech, phi):
     """Joint positions p and their first and second derivatives in φ by 5-point stencils."""
     k = np.arange(-2, 3)
     mos = [mech.motion(phi + j * FD_H) for j in k]
-    out = {}
-    for name in mos[0].points:
-        P = np.stack([m.points[name].p for m in mos])            # (5, n, 2)
-        d1 = (P[0] - 8 * P[1] + 8 * P[3] - P[4]) / (12 * FD_H)
-        d2 = (-P[0] + 16 * P[1] - 30 * P[2] + 16 * P[3] - P[4]) / (12 * FD_H**2)
-        out[name] = (P[2], d1, d2)
-    return out
+    return {name: _stencil(np.stack([m.points[name].p for m in mos])) for name in mos[0].points}
 
 
 def _bodies(mech, phi, model):
@@ -644,6 +638,7 @@ def _bodies(mech, phi, model):
 
 
 def _stencil(X):
+    """Centre value and 5-point first and second differences of samples at φ + (-2…2)·h."""
     return (X[2], (X[0] - 8 * X[1] + 8 * X[3] - X[4]) / (12 * FD_H),
             (-X[0] + 16 * X[1] - 30 * X[2] + 16 * X[3] - X[4]) / (12 * FD_H**2))
 
@@ -688,7 +683,6 @@ def test_audit_torque_by_power_balance_and_reactions_by_newton_euler(data, mech)
     M_b from the 9 Newton–Euler equations of the three links, assembled here and solved per
     angle. Both against solve()."""
     model, loads, w, e = loaded(data.draw, mech)
-    loads = [ld for ld in loads]
     g = (0.0, -9.81)
     phi = mech.turn(37)[:-1] + 0.01
     res = solve(model, mech.motion(phi), loads, omega1=w, eps1=e, gravity=g)
