@@ -906,6 +906,33 @@ def test_lambda_coupler_point_from_own_fourbar(m):
     _cmp(refl, Dmir, 1e-9, "symmetry of the coupler curve about the axis")
 
 
+def _my_D(r, a, delta, phis):
+    x, _, _ = my_fourbar(r, 1.0, 1.0, a, 1, phis)
+    A = r * np.stack([np.cos(phis), np.sin(phis)], -1)
+    B = A + np.stack([np.cos(x[:, 0]), np.sin(x[:, 0])], -1)
+    return B + _rot(delta, A - B)
+
+
+@settings(max_examples=6, deadline=None)
+@given(st.floats(110, 180), st.floats(0.7, 1.0), st.floats(60, 180))
+def test_circle_guiding_is_equal_ripple_on_own_solve(delta_deg, a, dwell_deg):
+    """circle_guiding's design checked on D from the independent four-bar: over the dwell
+    |D − Q| stays in [min(R0, R1), max(R0, R1)], equals R0 at t = 0 and ±t2, R1 at ±t3 and ±α."""
+    try:
+        g = ml.circle_guiding(np.radians(delta_deg), a, np.radians(dwell_deg))
+    except MechanismError:
+        assume(False)
+    al = g.dwell / 2
+    t = np.concatenate([np.linspace(-al, al, 401), [0.0, g.t2, -g.t2, g.t3, -g.t3]])
+    D = _my_D(g.r, g.a, g.delta, np.pi + t)
+    rho = np.hypot(*(D - g.centre).T)
+    lo, hi = min(g.R0, g.R1), max(g.R0, g.R1)
+    tol = 1e-9 + 1e-6 * g.E
+    assert rho[:401].min() > lo - tol and rho[:401].max() < hi + tol
+    _cmp(rho[[0, 400, 404, 405]], g.R1, tol, "ρ = R1 at ±α, ±t3")
+    _cmp(rho[[401, 402, 403]], g.R0, tol, "ρ = R0 at 0, ±t2")
+
+
 def test_classic_chebyshev_lambda_straight_line():
     """1 : 2 : 2.5 : 5 (crank : ground : links : coupler point), in units of the 2.5 links.
 
@@ -940,6 +967,9 @@ def test_classic_chebyshev_lambda_straight_line():
     dense = m.motion(np.linspace(np.pi / 2, 3 * np.pi / 2, 4001)).points["D"].p[:, 1] - 1.6
     assert dense.min() > -1e-12 and abs(dense.max() - dev[0]) < 1e-7
     assert dev[0] / 1.6 < 0.01
+    # straight_guiding(δ = π, a = 0.8, 2α = π) finds the classic r = 0.4 with ripple E = dev/2
+    sg = ml.straight_guiding(np.pi, 0.8, np.pi)
+    assert abs(sg.r - 0.4) < 1e-9 and abs(sg.E - dev[0] / 2) < 1e-7 and abs(sg.Y - (1.6 + dev[0] / 2)) < 1e-7
 
 
 # ------------------------------------------------------------------------------------------
