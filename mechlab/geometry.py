@@ -100,7 +100,12 @@ def wrap(angle):
 
 def as_angles(phi) -> np.ndarray:
     """Crank angles as a 1-D float array; a scalar becomes an array of one."""
-    arr = np.atleast_1d(np.asarray(phi, dtype=float))
+    try:
+        if phi is None:
+            raise TypeError
+        arr = np.atleast_1d(np.asarray(phi, dtype=float))
+    except (TypeError, ValueError):
+        raise DimensionError(f"crank angles must be real numbers (radians), got {phi!r}") from None
     if arr.ndim != 1:
         raise DimensionError(f"crank angles must be a scalar or a 1-D array, got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
@@ -108,17 +113,36 @@ def as_angles(phi) -> np.ndarray:
     return arr
 
 
-def check_length(name: str, value, *, allow_zero: bool = False) -> float:
-    """Return ``value`` as a float, raising DimensionError if it is not a positive finite number."""
+# Lengths beyond these would overflow or underflow in the squares and products of the solvers.
+LENGTH_RANGE = (1e-100, 1e100)
+
+
+def check_number(name: str, value) -> float:
+    """Return ``value`` as a finite float, raising DimensionError otherwise."""
     try:
         x = float(value)
     except (TypeError, ValueError):
         raise DimensionError(f"{name} must be a number, got {value!r}") from None
     if not np.isfinite(x):
         raise DimensionError(f"{name} must be finite, got {x}")
+    if abs(x) > LENGTH_RANGE[1]:
+        _out_of_range(name, x)
+    return x
+
+
+def _out_of_range(name: str, x: float):
+    raise DimensionError(f"{name} = {x:g} lies outside the supported magnitudes "
+                         f"[{LENGTH_RANGE[0]:g}, {LENGTH_RANGE[1]:g}] (use mm or lengths relative to one link)")
+
+
+def check_length(name: str, value, *, allow_zero: bool = False) -> float:
+    """Return ``value`` as a float, raising DimensionError if it is not a positive finite number."""
+    x = check_number(name, value)
     if x < 0 or (x == 0 and not allow_zero):
         bound = "≥ 0" if allow_zero else "> 0"
         raise DimensionError(f"{name} must be {bound}, got {x:g}")
+    if 0 < x < LENGTH_RANGE[0] and not allow_zero:  # a quantity that may be 0 is never a divisor
+        _out_of_range(name, x)
     return x
 
 
@@ -135,7 +159,7 @@ def as_complex(a):
     a = np.asarray(a, dtype=float)
     if a.ndim == 1:
         return complex(a[0], a[1])
-    if a.strides[0] == 0:
+    if a.strides[0] == 0 and len(a):
         return complex(a[0, 0], a[0, 1])
     if not a.flags.c_contiguous:
         a = np.ascontiguousarray(a)

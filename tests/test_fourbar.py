@@ -124,7 +124,9 @@ def test_errors_name_the_condition_and_the_numbers():
         FourBar(2, 2, 3, 4).motion(np.pi)
     # the crank rocks until |AE| = coupler + rocker: cos φ = (2² + 4² - 5²) / (2·2·4)
     limit = np.arccos(-5 / 16)
-    assert np.allclose(FourBar(2, 2, 3, 4).crank_ranges(), [(-limit, limit)], atol=1e-15, rtol=0)
+    # (the bounds on cos φ are pulled in by TOUCH = 1e-12: the range shrinks by 1e-12 / sin(limit))
+    assert np.allclose(FourBar(2, 2, 3, 4).crank_ranges(), [(-limit, limit)], atol=2e-12, rtol=0)
+    assert FourBar(2, 2, 3, 4).crank_ranges()[0][1] < limit
 
 
 def test_rocking_crank_cycle_stays_inside_its_range():
@@ -149,3 +151,27 @@ def test_physical_values_follow_the_chain_rule():
     num_e = (psi(t + dt) - 2 * psi(t) + psi(t - dt)) / dt**2
     assert np.allclose(mo.velocity(omega1), num_w, atol=1e-8)
     assert np.allclose(mo.acceleration(omega1, e1), num_e, atol=1e-4)
+
+
+@pytest.mark.parametrize("dims", [(1, 2, 2, 1), (1, 3, 3, 1), (1, 1, 3, 3), (3, 1, 3, 1), (2, 3, 4, 5)])
+def test_change_point_four_bars_rock_between_dead_points_and_their_cycle_is_finite(dims):
+    """A linkage folding flat at one crank angle (s + l = p + q) does not turn fully, and
+    cycle() stops far enough short of its dead points, also where |AE| is stationary there."""
+    fb = FourBar(*dims)
+    assert fb.grashof().kind == "change-point" and not fb.can_turn
+    with pytest.raises(RotationError, match="change-point"):
+        fb.turn()
+    mo = fb.motion(fb.cycle(41))
+    assert all(np.all(np.isfinite(x)) for x in (mo.psi, mo.dpsi, mo.ddpsi))
+
+
+def test_lengths_of_unusable_magnitude_and_angles_that_are_not_numbers_are_named():
+    with pytest.raises(DimensionError, match=r"crank = 1e-200 lies outside the supported magnitudes"):
+        FourBar(1e-200, 3e-200, 3e-200, 4e-200)
+    with pytest.raises(DimensionError, match=r"outside the supported magnitudes"):
+        FourBar(1e160, 3e160, 3e160, 4e160)
+    fb = FourBar(1, 3, 3, 4)
+    for bad in ("a", 1j, None, [1.0, "x"]):
+        with pytest.raises(DimensionError, match="crank angles must be real numbers"):
+            fb.motion(bad)
+    assert FourBar(1e-90, 3e-90, 3e-90, 4e-90).motion([0.3]).psi == pytest.approx(fb.motion([0.3]).psi, abs=1e-12)

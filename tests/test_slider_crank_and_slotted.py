@@ -107,3 +107,18 @@ def test_sine_mechanism(r):
     assert np.allclose(mo.ds, -r * np.sin(phi), atol=1e-14 * r)
     assert np.allclose(mo.dds, -r * np.cos(phi), atol=1e-14 * r)
     assert np.allclose(mo.points["K"].p[:, 0], mo.points["A"].p[:, 0])
+
+
+@pytest.mark.parametrize("offset", ["x", None, float("nan"), [1.0]])
+def test_an_offset_that_is_not_a_finite_number_is_named(offset):
+    with pytest.raises(DimensionError, match="offset must be"):
+        SliderCrank(1.0, 3.0, offset)
+
+
+def test_no_crank_angles_give_empty_laws():
+    from mechlab import ExternalGeneva
+    for mech in (SlottedLink(0.5, 1.0), SlottedLink(2.0, 1.0), SliderCrank(1.0, 3.0), SineMechanism(1.0),
+                 ExternalGeneva(4, 1.0)):
+        mo = mech.motion(np.array([]))
+        out = (mo.psi, mo.dpsi, mo.ddpsi) if hasattr(mo, "psi") else (mo.s, mo.ds, mo.dds)
+        assert all(x.shape == (0,) for x in out)

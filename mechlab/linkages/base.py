@@ -12,14 +12,19 @@ from ..motion import Motion
 
 TWO_PI = 2.0 * np.pi
 FULL_TURN = ((0.0, TWO_PI),)
+# cos(φ - phase) this close to a bound counts as reaching it (the dyads' dead-point tolerance)
+TOUCH = 1e-12
 
 
 def arc_set(lo: float, hi: float, phase: float = 0.0) -> tuple[tuple[float, float], ...]:
     """The crank angles φ with lo < cos(φ - phase) < hi, as open intervals (radians).
 
     Returns ``FULL_TURN`` when every angle qualifies, ``()`` when none does, else one
-    or two intervals ``(start, end)`` with ``start < end``.
+    or two intervals ``(start, end)`` with ``start < end``. A bound reached to within
+    TOUCH (a linkage folding flat at one angle, e.g. a change-point four-bar) excludes
+    that angle and its rounding neighbourhood: such a crank does not turn fully.
     """
+    lo, hi = lo + TOUCH, hi - TOUCH
     if lo >= 1.0 or hi <= -1.0 or lo >= hi:
         return ()
     if lo < -1.0 and hi > 1.0:
@@ -75,12 +80,14 @@ class Mechanism:
         """n crank angles over a full turn, or strictly inside the first reachable range.
 
         A crank that cannot turn rocks between two dead points, where the analogs are
-        unbounded; the samples stop short of them.
+        unbounded; the samples stop short of them by 1e-4 of the range (where a joint
+        distance is stationary at a dead point, as at φ = 0 or π, it moves away from the
+        dead point only with the square of the margin).
         """
         if self.can_turn:
             return self.turn(n)
         start, end = self.crank_ranges()[0]
-        margin = 1e-6 * (end - start)
+        margin = 1e-4 * (end - start)
         return np.linspace(start + margin, end - margin, n)
 
     def check_reachable(self, phi: np.ndarray) -> None:

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
-from ..geometry import as_angles, check_length, check_sign, crank_point, dyad_rrp, fixed_point
+from ..geometry import as_angles, check_length, check_number, check_sign, crank_point, dyad_rrp, fixed_point
 from ..motion import LinearMotion
 from .base import Mechanism, arc_set, fmt_ranges
 
@@ -39,11 +39,7 @@ class SliderCrank(Mechanism):
     def __post_init__(self):
         object.__setattr__(self, "crank", check_length("crank", self.crank))
         object.__setattr__(self, "rod", check_length("rod", self.rod))
-        e = float(self.offset)
-        if not np.isfinite(e):
-            from ..errors import DimensionError
-            raise DimensionError(f"offset must be finite, got {e}")
-        object.__setattr__(self, "offset", e)
+        object.__setattr__(self, "offset", check_number("offset", self.offset))
         object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
         if not self.crank_ranges():
             raise AssemblyError(
