@@ -9,13 +9,16 @@ in :mod:`mechlab.widgets`.
 from . import forces, motion_laws
 from .centres import (Antiparallelogram, Centre, CentreAtInfinity, EllipticTrammel, IndeterminateCentre,
                       centrodes, instant_centres)
-from .chebyshev import (InfeasibleDesignError, LambdaMechanism, SynthesisError, circle_guiding, mchv1,
-                        mchv3_full_turn, straight_guiding)
+from .chebyshev import (InfeasibleDesignError, LambdaMechanism, LambdaRockerSixBar, LambdaSlottedSixBar,
+                        LambdaSliderSixBar, LambdaTranslatingSlot, SynthesisError, circle_guiding, existence_map,
+                        existence_region, mchv1, mchv2, mchv2_stroke, mchv3_full_turn, mchv3_full_turn_best, mchv5,
+                        slider_invariants, slider_report, slot_residual_first_order, straight_guiding,
+                        whole_turn_guiding, whole_turn_line)
 from .dwell import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError, DwellSlotMechanism,
                     compare_transitions, curved_slot_dwell, dwell_limit, two_branch_slot)
 from .equivalence import assembly_symmetry, base_law, base_mechanism, equivalent_slot, relative_path
 from .errors import AssemblyError, DimensionError, MechanismError, RotationError, SingularityError
-from .forces import (Body, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute, SelfLockingError,
+from .forces import (Body, DriveError, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute, SelfLockingError,
                      Torque, model_for)
 from .geneva import (ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, SphericalGeneva, compare,
                      intermittency, spherical_table)
@@ -47,10 +50,13 @@ __all__ = [
     "two_branch_slot", "DwellError", "DwellIntervalError", "DwellRatioError",
     "slot_profile", "write_csv", "write_dxf",
     # Chebyshev
-    "circle_guiding", "straight_guiding", "mchv1", "mchv3_full_turn", "SynthesisError", "InfeasibleDesignError",
+    "circle_guiding", "straight_guiding", "whole_turn_line", "whole_turn_guiding", "existence_map",
+    "existence_region", "LambdaRockerSixBar", "LambdaSlottedSixBar", "LambdaSliderSixBar", "LambdaTranslatingSlot",
+    "mchv1", "mchv2", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best", "slot_residual_first_order", "mchv5",
+    "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError",
     # Geneva
     "spherical_table", "compare", "intermittency", "SlotCountError", "OffsetError",
     # forces
     "forces", "motion_laws", "Kinetostatics", "ForceModel", "Body", "Revolute", "Prismatic", "HigherPair",
-    "Force", "Torque", "model_for", "SelfLockingError",
+    "Force", "Torque", "model_for", "SelfLockingError", "DriveError",
 ]

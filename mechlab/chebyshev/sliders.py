@@ -54,7 +54,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import MechanismError
-from ..geometry import PointPath, as_angles, check_length, check_sign, cross, dyad_rrp, unit
+from ..geometry import PointPath, as_angles, check_length, check_number, check_sign, cross, dyad_rrp, unit
 from ..linkages.base import TWO_PI, Mechanism
 from ..motion import AngularMotion, LinearMotion
 from ..motion_laws import Invariants, rise_invariants
@@ -66,16 +66,6 @@ __all__ = ["LambdaSliderSixBar", "LambdaTranslatingSlot", "mchv2", "mchv2_stroke
 
 # samples of a turn on which the closure of the attached dyad is checked at construction
 _CHECK = np.linspace(0.0, TWO_PI, 2881)
-
-
-def _finite(name: str, value) -> float:
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise MechanismError(f"{name} must be a number, got {value!r}") from None
-    if not np.isfinite(x):
-        raise MechanismError(f"{name} must be finite, got {x}")
-    return x
 
 
 # --------------------------------------------------------------------------------------------
@@ -119,7 +109,7 @@ class LambdaSliderSixBar(_OnLambda):
         object.__setattr__(self, "rod", check_length("rod DE", self.rod))
         object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
         for k in ("qx", "qy", "theta"):
-            object.__setattr__(self, k, _finite(k, getattr(self, k)))
+            object.__setattr__(self, k, check_number(k, getattr(self, k)))
         self.base  # validates r, a, δ (the crank turns fully)
         off = np.abs(self.offsets(_CHECK))
         i = int(np.argmax(off))
@@ -313,7 +303,7 @@ class LambdaTranslatingSlot(_OnLambda):
 
     def __post_init__(self):
         for k in ("px", "py", "slot", "guide"):
-            object.__setattr__(self, k, _finite(k, getattr(self, k)))
+            object.__setattr__(self, k, check_number(k, getattr(self, k)))
         self.base
         if abs(self._sin) < 1e-3:
             raise MechanismError(
