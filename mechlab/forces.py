@@ -1023,8 +1023,9 @@ def drive(torque, phi, omega1: float, *, overload: float = 2.0, efficiency: floa
         raise DriveError(f"the efficiency must satisfy 0 < η ≤ 1, got η = {efficiency}")
     Mm = motor_torque(M, omega1, efficiency)
     mean = cycle_mean(Mm, phi)
-    rms = float(np.sqrt(cycle_mean(Mm * Mm, phi)))
     peak = float(np.max(np.abs(Mm)))
+    # scaled by the peak, so that M² neither underflows nor overflows
+    rms = peak * float(np.sqrt(cycle_mean((Mm / peak) ** 2, phi))) if peak > 0 else 0.0
     w = abs(omega1)
     by_peak = peak / overload
     nominal = max(rms, by_peak)

@@ -800,3 +800,15 @@ def test_press_load_does_not_depend_on_the_sampling(offset, assembly):
     stroke = np.sqrt(0.5**2 - offset**2) - np.sqrt(0.3**2 - offset**2)
     assert np.trapezoid(F[:, 0] * mo.ds, phi) == pytest.approx(-2000.0 * 0.3 * stroke, rel=2e-3)
     assert np.all(F[:, 0] * assembly <= 0) and np.all(F[:, 1] == 0)
+
+
+@pytest.mark.parametrize("scale", [1e-250, 1e-160, 1.0, 1e160, 1e250])
+def test_drive_rule_is_scale_free(scale):
+    """M² of a torque of 1e-160 underflows and of 1e160 overflows: the figures scale with M all the same."""
+    phi = np.linspace(0.0, 2 * np.pi, 2001)
+    M = 2.0 + 3.0 * np.sin(phi)
+    ref = drive(M, phi, 4.0, overload=2.5, efficiency=0.8)
+    d = drive(scale * M, phi, 4.0, overload=2.5, efficiency=0.8)
+    for name in ("mean_torque", "rms_torque", "peak_torque", "nominal_torque"):
+        assert getattr(d, name) == pytest.approx(scale * getattr(ref, name), rel=1e-12, abs=0)
+    assert d.governing == ref.governing
