@@ -289,7 +289,7 @@ def test_drawings_highlight_the_dwell(guide, line):
 
 
 def test_exercises():
-    for key in ("07.s1", "07.s2"):
+    for key in ("07.4", "07.5"):
         assert check(key, solution(key), quiet=True)
         assert not check(key, 1.01 * solution(key), quiet=True)
 

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from mechlab import FourBar, SineMechanism, SliderCrank, SlottedLink
-from mechlab.draw import animate, draw, drawing_class, plot_law
+from mechlab.draw import animate, animate_together, draw, drawing_class, plot_law
 from mechlab.widgets import fourbar_explorer
 
 MECHANISMS = [FourBar(1, 3, 3, 4), FourBar(3, 3, 3, 4, -1), SliderCrank(1, 3, 0.4), SlottedLink(0.5, 1.0),
@@ -33,6 +33,19 @@ def test_animation_plays_as_javascript_and_loads_nothing_remote():
     assert "//" not in html.replace("data:image", "").split("<script")[0]  # no remote stylesheet before the script
     assert "font-awesome" not in html and 'class="fa ' not in html
     assert 'class="mechlab-icon mechlab-play"' in html and ".mechlab-play::before" in html
+
+
+def test_animate_together_moves_each_panel_to_the_same_crank_angle():
+    mechs = [FourBar(1, 3, 3, 4), SliderCrank(1, 3), FourBar(1, 3, 3, 4, assembly=-1)]
+    anim = animate_together(mechs, titles=["+1", "slider", "-1"], n=8)
+    assert [d.mechanism for d in anim.drawings] == mechs
+    assert [d.ax.get_title() for d in anim.drawings] == ["+1", "slider", "-1"]
+    anim._func(3)
+    for d in anim.drawings:
+        xs, ys = d.link_lines[0].get_data()  # the crank of every panel at frame 3
+        assert np.allclose([xs[-1], ys[-1]], d.motion.points["A"].p[3])
+        assert d.motion.phi[3] == anim.drawings[0].motion.phi[3]
+    assert anim.to_jshtml().count("mechlab-play") >= 1
 
 
 def test_draw_and_plot_law():

@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from mechlab import FourBar, MechanismError, SineMechanism, SliderCrank, SlottedLink
@@ -254,10 +254,13 @@ def _quad_drive(f, a, b, eta, sense=1.0):
     mean = sum(quad(m, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0] for u, v in zip(edges, edges[1:])) / (b - a)
     sq = sum(quad(lambda t: m(t) ** 2, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0]
              for u, v in zip(edges, edges[1:])) / (b - a)
-    i = int(np.argmax(np.abs([m(t) for t in x])))
-    lo, hi = x[max(i - 1, 0)], x[min(i + 1, len(x) - 1)]
-    peak = max(-minimize_scalar(lambda t: -abs(m(t)), bounds=(lo, hi), method="bounded",
-                                options={"xatol": 1e-12}).fun, abs(m(x[i])))
+    # every local maximum of |m| on the grid is refined: near-equal peaks may swap order
+    am = np.abs([m(t) for t in x])
+    peak = float(am.max())
+    for i in np.flatnonzero((am >= np.roll(am, 1)) & (am >= np.roll(am, -1))):
+        lo, hi = x[max(i - 1, 0)], x[min(i + 1, len(x) - 1)]
+        peak = max(peak, -minimize_scalar(lambda t: -abs(m(t)), bounds=(lo, hi), method="bounded",
+                                          options={"xatol": 1e-12}).fun)
     return mean, float(np.sqrt(sq)), peak
 
 
@@ -324,6 +327,7 @@ coefficients = st.lists(st.floats(-10.0, 10.0), min_size=3, max_size=7)
 
 @given(coefficients, st.floats(0.3, 1.0), st.floats(1.0, 4.0), st.floats(0.5, 50.0), st.sampled_from([1.0, -1.0]))
 @settings(max_examples=60, deadline=None)
+@example(c=[0.0, 0.0, 0.0, 0.0, 1e-05, 0.0, 2.0], eta=1.0, k=1.0, w=1.0, sense=1.0)  # three peaks within 1e-5
 def test_drive_rule_on_random_torques_against_quad(c, eta, k, w, sense):
     """Random trigonometric torques M(φ) = c0 + Σ (c_2j-1 cos jφ + c_2j sin jφ): the sampled
     rule against quad; rms ≥ |mean| (Cauchy–Schwarz: the thermal figure never below the

@@ -352,13 +352,18 @@ def _continuation_guess(delta, a, alpha, eqs_at):
     return None
 
 
+def _merged(t3, t2, alpha) -> bool:
+    """Touches closer than 0.1 % of α are one touch: a degenerate solution, not equal ripple."""
+    return min(t3, t2 - t3, alpha - t2) < 1e-3 * alpha
+
+
 def _follow(eqs_at, start, alpha, a0):
     x = np.array([start[0], start[1], 0.5 * a0, np.sqrt(3) / 2 * a0])
     prev = a0
     for al in np.linspace(a0, alpha, max(2, int(np.ceil((alpha - a0) / np.radians(6.0))) + 1)):
         x[2:] *= al / prev  # keep the touch angles in proportion to the dwell
         sol = root(lambda y: eqs_at(y, al), x, method="hybr", options=dict(xtol=1e-13))
-        if not np.all(np.isfinite(sol.x)) or not 0 < sol.x[2] < sol.x[3] < al:
+        if not np.all(np.isfinite(sol.x)) or not 0 < sol.x[2] < sol.x[3] < al or _merged(sol.x[2], sol.x[3], al):
             return None
         x, prev = sol.x, al
     return tuple(x)
@@ -405,12 +410,17 @@ def _solve_circle(delta, a, dwell, eqs, x0):
         return None, f"the crank degenerates (r = {r:.3g})"
     if not 0.0 < t3 < t2 < alpha:
         return None, f"the touch points are out of order (t3 = {np.degrees(t3):.3g}°, t2 = {np.degrees(t2):.3g}°)"
+    if _merged(t3, t2, alpha):
+        return None, (f"the touch points merge (t3 = {np.degrees(t3):.6g}°, t2 = {np.degrees(t2):.6g}°, "
+                      f"α = {np.degrees(alpha):.6g}°)")
     try:
         rho, _ = _rho(r, c, a, delta, [0.0, t3])
         g = CircleGuide(delta, a, dwell, r, c, float(rho[0]), float(rho[1]), t3, t2)
         dense = g.deviation(np.pi + np.linspace(-alpha, alpha, 4001))
     except MechanismError as err:
         return None, str(err)
+    if np.max(np.abs(eqs(sol.x)[:2])) > 1e-3 * g.E:  # the radii equal to far less than the ripple
+        return None, f"the equations are not solved finely enough to resolve the band E = {g.E:.3g}"
     if np.max(np.abs(dense)) > g.E * (1 + 1e-6) + 1e-12:
         return None, (f"the best circle leaves the band inside the dwell (max |ρ − R| = "
                       f"{np.max(np.abs(dense)):.3g} > E = {g.E:.3g})")

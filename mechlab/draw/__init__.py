@@ -26,6 +26,11 @@ JOINT_STYLE = dict(ls="none", marker="o", ms=6, mfc="white", mec="#1f4e79", mew=
 PIVOT_STYLE = dict(ls="none", marker="^", ms=11, color="#555555", zorder=2)
 TRACE_STYLE = dict(color="#d62728", lw=1, alpha=0.8, zorder=1)
 EXTRA_STYLE = dict(color="#2a7f62", lw=2.5, zorder=2)
+# a moving output drawn as an extra (a slotted bar, a block), a fixed guide, and the output
+# re-drawn over itself while it dwells: green then means "standing still"
+OUTPUT_STYLE = dict(color="#1f4e79", lw=2, solid_capstyle="round", zorder=3)
+GUIDE_STYLE = dict(color="#555555", lw=1.5, zorder=2)
+HIGHLIGHT_STYLE = dict(color="#2a7f62", lw=4.5, alpha=0.9, solid_capstyle="round", zorder=5)
 
 _REGISTRY: dict[type, type] = {}
 
@@ -95,6 +100,7 @@ class LinkageDrawing:
     """
 
     n_extras = 0
+    extra_styles: dict[int, dict] = {}  # the style of extra k when it is not EXTRA_STYLE
 
     def __init__(self, ax, mechanism: Mechanism, trace: str | None = None, n: int = 361):
         self.ax = ax
@@ -102,7 +108,7 @@ class LinkageDrawing:
         self.n = n
         ax.set_aspect("equal")
         self.link_lines = []
-        self.extra_lines = [ax.plot([], [], **EXTRA_STYLE)[0] for _ in range(self.n_extras)]
+        self.extra_lines = [ax.plot([], [], **self.extra_styles.get(k, EXTRA_STYLE))[0] for k in range(self.n_extras)]
         (self.trace_line,) = ax.plot([], [], **TRACE_STYLE)
         (self.pivot_marks,) = ax.plot([], [], **PIVOT_STYLE)
         (self.joint_marks,) = ax.plot([], [], **JOINT_STYLE)
@@ -237,6 +243,31 @@ def animate(mechanism, n: int = 72, interval: int = 50, trace: str | None = None
     drawing.autoscale()
     anim = Animation(fig, drawing.set_frame, frames=n, interval=interval, blit=False)
     anim.drawing = drawing
+    plt.close(fig)
+    return anim
+
+
+def animate_together(mechanisms, titles=(), n: int = 24, interval: int = 150, trace: str | None = None,
+                     figsize=None, dpi: int = 50) -> Animation:
+    """One animation of several mechanisms side by side, frame i of each at the same fraction
+    of its cycle (the same crank angle for mechanisms whose crank turns fully), so that their
+    motions can be compared; one panel per mechanism, ``titles`` above them."""
+    mechanisms = list(mechanisms)
+    fig, axes = plt.subplots(1, len(mechanisms), figsize=figsize or (3.2 * len(mechanisms), 3.0), dpi=dpi,
+                             squeeze=False)
+    drawings = []
+    for ax, mech, title in zip(axes[0], mechanisms, list(titles) + [None] * len(mechanisms)):
+        drawing = drawing_class(mech)(ax, mech, trace=trace, n=n)
+        drawing.autoscale()
+        if title:
+            ax.set_title(title, fontsize=9)
+        drawings.append(drawing)
+
+    def frame(i):
+        return [artist for drawing in drawings for artist in drawing.set_frame(i)]
+
+    anim = Animation(fig, frame, frames=n, interval=interval, blit=False)
+    anim.drawings = drawings
     plt.close(fig)
     return anim
 

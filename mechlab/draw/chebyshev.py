@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..chebyshev import GuidedLambda, LambdaMechanism, LambdaRockerSixBar, LambdaSlottedSixBar
-from . import LinkageDrawing, register
+from . import HIGHLIGHT_STYLE, OUTPUT_STYLE, LinkageDrawing, register
 
 _CIRCLE = np.linspace(0.0, 2 * np.pi, 241)
 
@@ -62,6 +62,7 @@ class RockerSixBarDrawing(LinkageDrawing):
     """МЧВ1: the dwell part of D's path and the output rocker highlighted during the dwell."""
 
     n_extras = 2
+    extra_styles = {1: HIGHLIGHT_STYLE}
 
     def extras(self, i):
         m, mo = self.mechanism, self.motion
@@ -76,6 +77,7 @@ class SlottedSixBarDrawing(LinkageDrawing):
     """МЧВ3: the slotted link (a bar through the pivot along the slot), highlighted in the dwell."""
 
     n_extras = 3
+    extra_styles = {0: OUTPUT_STYLE, 2: HIGHLIGHT_STYLE}
 
     def extras(self, i):
         m, mo = self.mechanism, self.motion

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..chebyshev.sliders import LambdaSliderSixBar, LambdaTranslatingSlot
-from . import LinkageDrawing, register
+from . import GUIDE_STYLE, HIGHLIGHT_STYLE, OUTPUT_STYLE, LinkageDrawing, register
 from .chebyshev import _dwell_path, _in_dwell
 
 _NAN = np.full((2, 2), np.nan)
@@ -29,6 +29,7 @@ class SliderSixBarDrawing(LinkageDrawing):
     """МЧВ2: the guide through Q, the slider block at E (highlighted in the dwell), D's dwell path."""
 
     n_extras = 4
+    extra_styles = {0: GUIDE_STYLE, 1: OUTPUT_STYLE, 3: HIGHLIGHT_STYLE}
 
     def extras(self, i):
         m, mo = self.mechanism, self.motion
@@ -47,6 +48,7 @@ class TranslatingSlotDrawing(LinkageDrawing):
     in the dwell), the block at D and D's dwell path."""
 
     n_extras = 5
+    extra_styles = {0: GUIDE_STYLE, 1: OUTPUT_STYLE, 2: OUTPUT_STYLE, 4: HIGHLIGHT_STYLE}
 
     def extras(self, i):
         m, mo = self.mechanism, self.motion

@@ -3,10 +3,11 @@
 import numpy as np
 
 from ..chebyshev import circle_guiding, straight_guiding
-from ..chebyshev.sliders import mchv2, mchv5, slider_report
+from ..chebyshev import mchv2, mchv5, slider_report
 from . import exercise
 
 DEG = np.pi / 180
+
 
 def _mchv2_stroke_k1() -> float:
     # the slider's far position at φ = 0 (K = 1: the far extreme is opposite the dwell centre)
@@ -15,7 +16,7 @@ def _mchv2_stroke_k1() -> float:
 
 
 exercise(
-    "07.s1",
+    "07.4",
     "Stroke h = |QE1| (units of l) of МЧВ2 on circle_guiding(150°, 0.9, 120°) with K = 1.",
     _mchv2_stroke_k1,
     rtol=1e-6,
@@ -23,7 +24,7 @@ exercise(
 )
 
 exercise(
-    "07.s2",
+    "07.5",
     "МЧВ5 on Chebyshev's lambda (straight_guiding(180°, 0.8, 180°)): the angle γ, in degrees, between the "
     "output's guide and the slot normal that gives the stroke h = 0.5.",
     lambda: float(np.degrees(np.arccos(slider_report(mchv5(straight_guiding(np.pi, 0.8, np.pi))).stroke / 0.5))),
