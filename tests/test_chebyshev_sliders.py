@@ -46,7 +46,7 @@ def residual_bound(g, six):
 # МЧВ2
 # --------------------------------------------------------------------------------------------
 def test_mchv2_closure_and_analogs(guide):
-    six = mchv2(guide, 1.25)
+    six = mchv2(guide, 1.25, mu_min=None)
     phi = np.linspace(0, 2 * np.pi, 4001)
     mo = six.motion(phi)
     D, E = mo.points["D"].p, mo.points["E"].p
@@ -70,7 +70,7 @@ def test_mchv2_closure_and_analogs(guide):
 
 def test_mchv2_slider_equals_an_independent_circle_line_solve(guide):
     """E from brentq on |Q + s·u − D(φ)| = R per angle, D from the closed form (*) of the lambda module."""
-    six = mchv2(guide, 0.8)
+    six = mchv2(guide, 0.8, mu_min=None)
     phi = np.array([0.3, 1.7, np.pi - 0.4, np.pi, 4.0, 5.9])
     D = guide.mechanism.coupler_point(phi)
     got = six.motion(phi).s
@@ -85,7 +85,7 @@ def test_mchv2_slider_equals_an_independent_circle_line_solve(guide):
 
 @pytest.mark.parametrize("K", [0.8, 1.0, 1.1, 1.25, 1.4])
 def test_mchv2_achieves_K_stroke_and_dwell(guide, K):
-    six = mchv2(guide, K)
+    six = mchv2(guide, K, mu_min=None)
     rep = slider_report(six)
     phi_far, D1, E1 = mchv2_far_position(guide, K)
     h = np.hypot(*(E1 - guide.centre))
@@ -104,7 +104,7 @@ def test_mchv2_residual_vanishes_with_E():
     res, Es = [], []
     for dwell in (120, 90, 60, 40):
         g = circle_guiding(150 * DEG, 0.9, dwell * DEG)
-        rep = slider_report(mchv2(g, 1.0))
+        rep = slider_report(mchv2(g, 1.0, mu_min=None))
         res.append(rep.residual)
         Es.append(g.E)
         # |s| ≈ |ρ − R|·R/|(D − Q)·u| with (D − Q)·u → R as the dwell shrinks: residual → 2E
@@ -113,7 +113,7 @@ def test_mchv2_residual_vanishes_with_E():
 
 
 def test_mchv2_K1_is_on_the_axis_with_the_smallest_stroke(guide):
-    six = mchv2(guide, 1.0)
+    six = mchv2(guide, 1.0, mu_min=None)
     m = guide.mechanism
     assert abs(np.cos(six.theta - m.axis_angle) - 1) < 1e-12
     rho = np.hypot(*(m.coupler_point(np.array([0.0]))[0] - guide.centre))
@@ -130,7 +130,7 @@ def test_mchv2_K1_is_on_the_axis_with_the_smallest_stroke(guide):
 
 
 def test_mchv2_transmission_angle_is_rod_to_guide_normal(guide):
-    six = mchv2(guide, 1.25)
+    six = mchv2(guide, 1.25, mu_min=None)
     mo = six.motion(np.linspace(0, 2 * np.pi, 721))
     rod = mo.points["D"].p - mo.points["E"].p
     beta = np.arccos(np.clip(np.abs(rod @ six.u) / six.rod, 0, 1))  # acute angle rod–guide
@@ -140,7 +140,7 @@ def test_mchv2_transmission_angle_is_rod_to_guide_normal(guide):
 
 def test_mchv2_stroke_synthesis(guide):
     for h, side in ((0.4, 1), (0.4, -1), (0.45, 1)):
-        six = mchv2_stroke(guide, h, side)
+        six = mchv2_stroke(guide, h, side, mu_min=None)
         rep = slider_report(six)
         far = mchv2_far_position(guide, rep.K)[2]
         assert abs(np.hypot(*(far - guide.centre)) - h) < 1e-9
@@ -149,20 +149,20 @@ def test_mchv2_stroke_synthesis(guide):
 
 def test_mchv2_infeasible_requests_name_the_numbers(guide):
     with pytest.raises(InfeasibleDesignError, match=r"turns across QD during the dwell.*-0\.39"):
-        mchv2(guide, 2.0)
+        mchv2(guide, 2.0, mu_min=None)
     with pytest.raises(InfeasibleDesignError, match=r"below the smallest stroke.*0\.3216"):
-        mchv2_stroke(guide, 0.2)
+        mchv2_stroke(guide, 0.2, mu_min=None)
     with pytest.raises(InfeasibleDesignError, match=r"exceeds the largest stroke"):
-        mchv2_stroke(guide, 5.0)
+        mchv2_stroke(guide, 5.0, mu_min=None)
     with pytest.raises(InfeasibleDesignError, match=r"μ2′ .* falls to 22\.9\d°, below the allowed 30°"):
-        mchv2(guide, 1.25, min_transmission=30 * DEG)
+        mchv2(guide, 1.25)  # the default limit, as mchv1's
     with pytest.raises(InfeasibleDesignError, match="K must be > 0"):
-        mchv2(guide, -1.0)
+        mchv2(guide, -1.0, mu_min=None)
     with pytest.raises(TypeError):
-        mchv2(straight_guiding(np.pi, 0.8, np.pi), 1.0)
+        mchv2(straight_guiding(np.pi, 0.8, np.pi), 1.0, mu_min=None)
     g2 = circle_guiding(120 * DEG, 0.8, 60 * DEG)
     with pytest.raises(InfeasibleDesignError, match="E1 lies on the other assembly"):
-        mchv2(g2, 2.0)
+        mchv2(g2, 2.0, mu_min=None)
 
 
 def test_slider_six_bar_validates_its_dimensions(guide):
@@ -182,7 +182,7 @@ def test_slider_six_bar_validates_its_dimensions(guide):
 @given(K=st.floats(0.55, 1.8))
 def test_mchv2_random_K_met_or_refused(guide, K):
     try:
-        six = mchv2(guide, K)
+        six = mchv2(guide, K, mu_min=None)
     except InfeasibleDesignError as err:
         assert f"K = {K:g}" in str(err)
         return
@@ -256,7 +256,7 @@ def test_invariants_of_the_rise(line, guide):
     # a guide turned by γ scales s by 1/cos γ: the normalised invariants do not change
     i0, i1 = slider_invariants(mchv5(line)), slider_invariants(mchv5(line, guide_angle=35 * DEG))
     assert np.allclose(i0, i1, rtol=1e-9)
-    six = mchv2(guide, 1.25)
+    six = mchv2(guide, 1.25, mu_min=None)
     phi, s, ds, dds = slider_rise(six)
     assert abs(phi[0] - (np.pi + guide.alpha)) < 1e-12 and abs(ds[-1]) < 1e-9
     inv = slider_invariants(six)
@@ -273,7 +273,7 @@ def test_drawings_highlight_the_dwell(guide, line):
     import matplotlib.pyplot as plt
 
     from mechlab.draw import drawing_class
-    for mech in (mchv2(guide, 1.25), mchv5(line, guide_angle=0.3)):
+    for mech in (mchv2(guide, 1.25, mu_min=None), mchv5(line, guide_angle=0.3)):
         fig, ax = plt.subplots()
         d = drawing_class(mech)(ax, mech, trace="D", n=24)
         d.autoscale()
@@ -298,7 +298,7 @@ def test_exercises():
 @given(h=st.floats(0.25, 0.9), side=st.sampled_from([1, -1]))
 def test_mchv2_random_strokes_met_or_refused(guide, h, side):
     try:
-        six = mchv2_stroke(guide, h, side)
+        six = mchv2_stroke(guide, h, side, mu_min=None)
     except InfeasibleDesignError as err:
         assert f"{h:.6g}" in str(err) or "K = " in str(err)
         return
@@ -335,7 +335,7 @@ def test_mchv2_on_random_circle_guides(delta, a, dwell, K):
     """Designs from random (δ, a, 2α) and K: built with K and the dwell met, or refused by name."""
     try:
         g = circle_guiding(delta * DEG, a, dwell * DEG, minimax=False)
-        six = mchv2(g, K)
+        six = mchv2(g, K, mu_min=None)
     except MechanismError as err:
         assert str(err)
         return
@@ -350,10 +350,10 @@ def test_explorers_show_designs_and_refusals():
 
     ex = mchv2_explorer()
     assert ex.message == "" and isinstance(ex.mechanism, LambdaSliderSixBar)
-    assert "transmission angle μ: 22.9°" in ex.status.value  # μ2′ of K = 1.25
-    ex.sliders["min_transmission"].value = 30.0
+    ex.sliders["K"].value = 1.25
     assert "μ2′ of the slider dyad falls to 22.90°, below the allowed 30°" in ex.message
-    ex.sliders["min_transmission"].value = 0.0
+    ex.sliders["mu_min"].value = 0.0
+    assert ex.message == "" and "transmission angle μ: 22.9°" in ex.status.value  # μ2′ of K = 1.25
     ex.sliders["K"].value = 2.0
     assert "turns across QD during the dwell" in ex.message
     ex.sliders["K"].value = 1.0
@@ -371,8 +371,8 @@ def test_mchv2_outer_normal_when_the_inner_one_is_not_reached():
     on the outer normal is reached, and the design meets K."""
     g = circle_guiding(120 * DEG, 0.8, 60 * DEG)
     with pytest.raises(InfeasibleDesignError, match="E1 lies on the other assembly"):
-        mchv2(g, 1.7, normal=1)
-    six = mchv2(g, 1.7)
+        mchv2(g, 1.7, normal=1, mu_min=None)
+    six = mchv2(g, 1.7, mu_min=None)
     phi_far, D1, E1 = mchv2_far_position(g, 1.7, normal=-1)
     assert abs(six.motion(np.array([phi_far])).s[0] - np.hypot(*(E1 - g.centre))) < 1e-12
     # E1 − D1 is along the outward normal: away from Q

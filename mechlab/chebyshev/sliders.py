@@ -174,7 +174,7 @@ def mchv2_far_position(guide: CircleGuide, K: float, normal: int = 1):
 
 
 def mchv2(guide: CircleGuide, K: float = 1.0, *, normal: int | None = None,
-          min_transmission: float = 0.0) -> LambdaSliderSixBar:
+          mu_min: float | None = np.radians(30)) -> LambdaSliderSixBar:
     """МЧВ2 for a circle-guiding design and a time ratio K: rod DE = R, guide through Q and E1.
 
     The slider's stroke is then h = |QE1| (:func:`mchv2_far_position`); K = 1 gives the guide along
@@ -184,20 +184,21 @@ def mchv2(guide: CircleGuide, K: float = 1.0, *, normal: int | None = None,
     +1, then −1. Raises InfeasibleDesignError with the numbers when the design does not work: the
     guide turns across QD during the dwell ((D − Q)·u changes sign, so the slider leaves Q), the rod
     would stand across the guide somewhere, the simulated far extreme is not the designed one, or the
-    transmission angle μ2′ falls below ``min_transmission`` (radians; the thesis' working limit is 30°).
+    transmission angle μ2′ falls below ``mu_min`` (radians; by default the thesis' working limit 30°,
+    as for :func:`mchv1`; ``mu_min=None`` accepts any).
     """
     if normal is not None:
-        return _mchv2(guide, K, normal, min_transmission)
+        return _mchv2(guide, K, normal, mu_min)
     try:
-        return _mchv2(guide, K, 1, min_transmission)
+        return _mchv2(guide, K, 1, mu_min)
     except InfeasibleDesignError as inner:
         try:
-            return _mchv2(guide, K, -1, min_transmission)
+            return _mchv2(guide, K, -1, mu_min)
         except InfeasibleDesignError as outer:
             raise InfeasibleDesignError(f"{inner}; with the rod on the outer normal instead: {outer}") from None
 
 
-def _mchv2(guide: CircleGuide, K: float, normal: int, min_transmission: float) -> LambdaSliderSixBar:
+def _mchv2(guide: CircleGuide, K: float, normal: int, mu_min: float | None) -> LambdaSliderSixBar:
     phi_far, D1, E1 = mchv2_far_position(guide, K, normal)
     Q, R = guide.centre, guide.R
     h = float(np.hypot(*(E1 - Q)))
@@ -232,21 +233,21 @@ def _mchv2(guide: CircleGuide, K: float, normal: int, min_transmission: float) -
         raise InfeasibleDesignError(
             f"K = {K:g}: the simulated slider's far extreme is at φ = {np.degrees(rep.far):.2f}°, not at the "
             f"designed {np.degrees(phi_far % TWO_PI):.2f}° (stroke {rep.stroke:.4g} instead of {h:.4g})")
-    if rep.mu2_min < min_transmission:
+    if mu_min is not None and rep.mu2_min < mu_min:
         raise InfeasibleDesignError(
             f"K = {K:g}: the transmission angle μ2′ of the slider dyad falls to {np.degrees(rep.mu2_min):.2f}°, "
-            f"below the allowed {np.degrees(min_transmission):.4g}°")
+            f"below the allowed {np.degrees(mu_min):.4g}°")
     return six
 
 
 def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float = 20.0, *, normal: int = 1,
-                 min_transmission: float = 0.0) -> LambdaSliderSixBar:
+                 mu_min: float | None = np.radians(30)) -> LambdaSliderSixBar:
     """МЧВ2 with a requested stroke h = |QE1| (units of l): the time ratio K is solved for.
 
     h(K) is smallest at K = 1 (guide on the axis) and, with the mirror symmetry, h(K) = h(1/K);
     ``side`` = +1 returns the solution with K ≥ 1, −1 the one with K ≤ 1. The smallest K on that
     side with h(K) = h is found by a scan of K ∈ [1, ``K_max``] and brentq (``normal`` as in
-    :func:`mchv2`, here fixed: h(K) depends on it). Raises
+    :func:`mchv2`, here fixed: h(K) depends on it; ``mu_min`` as there). Raises
     InfeasibleDesignError naming the achievable range when h cannot be met.
     """
     h = check_length("stroke h", stroke)
@@ -270,7 +271,7 @@ def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float 
             f"for K in [1/{K_max:g}, {K_max:g}]")
     i = int(up[0])
     k = brentq(gap, ks[i], ks[i + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps)
-    return mchv2(guide, k if side > 0 else 1 / k, normal=normal, min_transmission=min_transmission)
+    return mchv2(guide, k if side > 0 else 1 / k, normal=normal, mu_min=mu_min)
 
 
 # --------------------------------------------------------------------------------------------

@@ -7,23 +7,23 @@ infeasible request shows its InfeasibleDesignError / SynthesisError message in p
 from __future__ import annotations
 
 from ..chebyshev import circle_guiding, straight_guiding
-from ..chebyshev.sliders import mchv2, mchv5
+from ..chebyshev import mchv2, mchv5
 from . import Control, MechanismExplorer
 
 
-def _mchv2(delta, a, dwell, K, min_transmission):
-    return mchv2(circle_guiding(delta, a, dwell, minimax=False), K, min_transmission=min_transmission)
+def _mchv2(delta, a, dwell, K, mu_min):
+    return mchv2(circle_guiding(delta, a, dwell, minimax=False), K, mu_min=mu_min if mu_min > 0 else None)
 
 
-def mchv2_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.25, min_transmission=0.0, n=121) -> MechanismExplorer:
+def mchv2_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.0, mu_min=30.0, n=121) -> MechanismExplorer:
     """МЧВ2 from δ, a, the dwell 2α, the time ratio K (the guide through Q and E1) and the least
-    transmission angle μ2′ accepted (degrees; 0 = any)."""
+    transmission angle μ2′ accepted (degrees; 0 = any), as :func:`mchv1_explorer` does for МЧВ1."""
     controls = {
         "delta": Control("break δ", 90.0, 180.0, 1.0, delta, "deg"),
         "a": Control("frame a = OC/l", 0.2, 1.6, 0.01, a),
         "dwell": Control("dwell 2α", 20.0, 200.0, 2.0, dwell, "deg"),
         "K": Control("time ratio K", 0.5, 2.0, 0.05, K),
-        "min_transmission": Control("least μ2′", 0.0, 60.0, 1.0, min_transmission, "deg"),
+        "mu_min": Control("dyad μ2′ ≥ (0: any)", 0.0, 45.0, 1.0, mu_min, "deg"),
     }
     return MechanismExplorer(_mchv2, controls, trace="D", n=n, title="МЧВ2: lambda mechanism + rod + slider")
 
