@@ -332,8 +332,20 @@ def _circle_circle_z(z1, r1: float, z2, r2: float, sign: int, phi, what: str):
 # processor's cache and are recycled by the allocator, where whole-length temporaries
 # would each be freshly mapped (page-faulted) memory; at 360,000 angles that is 3× faster.
 BLOCK = 16384
+
+
+def _threads() -> int:
+    """MECHLAB_THREADS if set (e.g. 1 on a shared server), else the cores available, at most 4."""
+    value = os.environ.get("MECHLAB_THREADS")
+    if value is None:
+        return min(len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1, 4)
+    if not value.strip().isdigit() or int(value) < 1:
+        raise DimensionError(f"MECHLAB_THREADS must be a whole number ≥ 1, got {value!r}")
+    return int(value)
+
+
 # Threads sharing the blocks of one long call (numpy releases the GIL inside its loops).
-THREADS = min(len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1, 4)
+THREADS = _threads()
 _pool: ThreadPoolExecutor | None = None
 
 
