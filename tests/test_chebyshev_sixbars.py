@@ -6,7 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab.chebyshev import (InfeasibleDesignError, LambdaRockerSixBar, LambdaSlottedSixBar, circle_guiding,
-                               mchv1, mchv3_half_turn, mchv3_oscillating, report, straight_guiding,
+                               mchv1, mchv3_full_turn, mchv3_half_turn, mchv3_oscillating, report, straight_guiding,
                                time_ratio_far_angle)
 from mechlab.errors import MechanismError
 
@@ -143,6 +143,27 @@ def test_drawings_move_in_place(guide):
     inside = [np.isfinite(d.extras(i)[1]).all() for i in range(12)]
     phi = d.motion.phi
     assert inside == [abs((p - np.pi + np.pi) % (2 * np.pi) - np.pi) <= guide.alpha for p in phi]
+
+
+@pytest.mark.parametrize("side", [1, -1, 0])
+def test_drawn_slot_passes_through_the_pin(side):
+    """The slotted bar of МЧВ3 is drawn where the kinematics puts the slot: through D in every
+    frame, also when the slot is offset from the pivot (it once sat on the mirror side, 2|e| off)."""
+    import matplotlib.pyplot as plt
+
+    from mechlab.draw import drawing_class
+
+    line = straight_guiding(np.pi, 0.8, np.pi)
+    m = mchv3_full_turn(line, 0.06, 0.05, side=side) if side else mchv3_half_turn(line)
+    assert abs(m.offset) == (0.05 if side else 0.0)
+    fig, ax = plt.subplots()
+    d = drawing_class(m)(ax, m, n=24)
+    plt.close(fig)
+    for i in range(24):
+        bar, D = d.extras(i)[0], d.motion.points["D"].p[i]
+        start, end = bar[-2], bar[-1]  # the slot: the bar's last segment
+        t = (end - start) / np.hypot(*(end - start))
+        assert abs(t[0] * (D - start)[1] - t[1] * (D - start)[0]) < 1e-12
 
 
 REPRODUCED = [(120, 25), (180, 25), (180, 50), (180, 100), (240, 25), (240, 50), (240, 100), (270, 25), (270, 50),

@@ -7,9 +7,12 @@ analogs by implicit differentiation of the same closure (J·x' = -F_φ and
 J·x'' = -(d/dφ of J·x' + F_φ at fixed x'), sympy-generated). Geometries are drawn at
 random by hypothesis with strategies of this file (not tests/strategies.py), and the
 library is compared with the re-implementation; a self-check compares the
-re-implementation's analogs with central differences of its own positions.
+re-implementation's analogs with central differences of its own positions. The lambda
+six-bars (МЧВ1, МЧВ2, МЧВ3, МЧВ5) take D from the independent four-bar and their outputs from
+formulas written here from the classes' docstrings (dyad, slot line, RRP, projection), with
+the analogs by five-point differences.
 
-Slow part (about 35 s in all on 2 cores): the per-angle fsolve loops, a few thousand solves per test; kept to
+Slow part (about 45 s in all on 2 cores): the per-angle fsolve loops, a few thousand solves per test; kept to
 ≤ 60 hypothesis examples per test and ~60-120 angles per example.
 """
 
@@ -970,6 +973,138 @@ def test_classic_chebyshev_lambda_straight_line():
     # straight_guiding(δ = π, a = 0.8, 2α = π) finds the classic r = 0.4 with ripple E = dev/2
     sg = ml.straight_guiding(np.pi, 0.8, np.pi)
     assert abs(sg.r - 0.4) < 1e-9 and abs(sg.E - dev[0] / 2) < 1e-7 and abs(sg.Y - (1.6 + dev[0] / 2)) < 1e-7
+
+
+# ------------------------------------------------------------------------------------------
+# 7b. the six-bars on the lambda mechanism: outputs from D of the independent four-bar
+# ------------------------------------------------------------------------------------------
+H = 1e-3  # longest step of the five-point differences for the outputs' analogs
+
+
+def _outputs_at_steps(six, phis, output, h):
+    """The output from the independent D at φ + k·h, k = −2…2 (continuation over that list);
+    returns the value and the five-point differences for the first and second analogs (error O(h⁴))."""
+    grid = (phis[:, None] + h[:, None] * np.arange(-2, 3)).ravel()
+    D = _my_D(six.r, six.a, six.delta, grid)
+    y = output(D).reshape(len(phis), 5)
+    if np.ptp(y, axis=1).max() > np.pi:  # an angle wrapped inside a stencil
+        y = np.unwrap(y, axis=1)
+    d1 = (-y[:, 4] + 8 * y[:, 3] - 8 * y[:, 1] + y[:, 0]) / (12 * h)
+    d2 = (-y[:, 4] + 16 * y[:, 3] - 30 * y[:, 2] + 16 * y[:, 1] - y[:, 0]) / (12 * h ** 2)
+    return y[:, 2], d1, d2
+
+
+def _check_sixbar(six, output, angular, phis=None):
+    phis = np.linspace(0, 2 * np.pi, 25)[:-1] + 0.0123 if phis is None else phis
+    mo = six.motion(phis)
+    lib = (mo.psi, mo.dpsi, mo.ddpsi) if angular else (mo.s, mo.ds, mo.dds)
+    # a fast output (a pin grazing the slotted link's pivot) needs a shorter step: ≤ 0.004 of output per step
+    h = np.minimum(H, 0.004 / np.maximum(1.0, np.abs(lib[1])))
+    y, dy, ddy = _outputs_at_steps(six, phis, lambda D: output(D, np.repeat(lib[0], 5)), h)
+    if angular:
+        _cmp(wrap(lib[0] - y), 0.0, 1e-9, "output angle")
+    else:
+        _cmp(lib[0], y, 1e-9, "output position")
+    _cmp(lib[1], dy, 1e-5, "first analog", scale=np.max(np.abs(dy)))
+    _cmp(lib[2], ddy, 1e-4, "second analog", scale=np.max(np.abs(ddy)))
+
+
+def _circle_meet(P1, r1, P2, r2, side):
+    """The point at r1 from P1 and r2 from P2, on the left (+1) or right (−1) of P1→P2."""
+    d = P2 - P1
+    L = np.hypot(*d.T)[:, None]
+    along = (r1 ** 2 - r2 ** 2 + L ** 2) / (2 * L)
+    h = np.sqrt(r1 ** 2 - along ** 2)
+    u = d / L
+    return P1 + along * u + side * h * np.stack([-u[:, 1], u[:, 0]], -1)
+
+
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(st.floats(130, 180), st.floats(0.7, 1.0), st.floats(80, 160), st.floats(0.7, 1.4), st.floats(10, 40),
+       st.sampled_from([1, -1]))
+def test_mchv1_output_from_own_dyad(delta_deg, a, dwell_deg, K, swing_deg, side):
+    try:
+        six = ml.mchv1(ml.circle_guiding(np.radians(delta_deg), a, np.radians(dwell_deg), minimax=False), K,
+                       np.radians(swing_deg), side=side, mu_min=None)
+    except MechanismError:
+        assume(False)
+    F = np.array([six.fx, six.fy])
+
+    def rocker_angle(D, _):
+        # E on the left of D→F for assembly +1 (the class docstring)
+        E = _circle_meet(D, six.rod, np.broadcast_to(F, D.shape), six.rocker, six.assembly)
+        return np.arctan2(E[:, 1] - F[1], E[:, 0] - F[0])
+
+    _check_sixbar(six, rocker_angle, angular=True)
+
+
+def _slot_angle(six):
+    """The slot's direction ψ from the class docstring's u × (D − P) = e: |D − P|·sin(θ_w − ψ) = e,
+    ψ = θ_w − asin(e/ρ) or θ_w − π + asin(e/ρ) (the two lines through D tangent to the circle of
+    radius |e| about P); the one nearer the library's ψ — the other has the slot the other way round."""
+    P, e = np.array([six.px, six.py]), six.offset
+
+    def angle(D, psi_lib):
+        w = D - P
+        th, rho = np.arctan2(w[:, 1], w[:, 0]), np.hypot(*w.T)
+        c1, c2 = th - np.arcsin(e / rho), th - np.pi + np.arcsin(e / rho)
+        pick = np.abs(wrap(c1 - psi_lib)) <= np.abs(wrap(c2 - psi_lib))
+        return np.where(pick, c1, c2)
+
+    return angle
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(st.floats(150, 180), st.floats(0.75, 0.9), st.sampled_from(["oscillating", "half", "full"]),
+       st.floats(0.02, 0.3))
+def test_mchv3_slot_angle_from_own_slot_line(delta_deg, a, kind, x):
+    try:
+        g = ml.straight_guiding(np.radians(delta_deg), a, np.pi)
+        six = {"oscillating": lambda: ml.chebyshev.mchv3_oscillating(g, x),
+               "half": lambda: ml.chebyshev.mchv3_half_turn(g),
+               "full": lambda: ml.mchv3_full_turn(g, x / 5, 0.05)}[kind]()
+    except MechanismError:
+        assume(False)
+    _check_sixbar(six, _slot_angle(six), angular=True)
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(st.floats(130, 180), st.floats(0.7, 1.0), st.floats(80, 160), st.floats(0.6, 1.6))
+def test_mchv2_slider_from_own_rrp(delta_deg, a, dwell_deg, K):
+    try:
+        six = ml.mchv2(ml.circle_guiding(np.radians(delta_deg), a, np.radians(dwell_deg), minimax=False), K,
+                       mu_min=None)
+    except MechanismError:
+        assume(False)
+    Q, u = np.array([six.qx, six.qy]), np.array([np.cos(six.theta), np.sin(six.theta)])
+
+    def slider(D, s_lib):
+        w = D - Q
+        along, off = w @ u, cross2(u, w)
+        root = np.sqrt(six.rod ** 2 - off ** 2)
+        # E = Q + s·u at distance R from D: two roots; the library keeps one branch over the turn
+        s1, s2 = along + root, along - root
+        return np.where(np.abs(s1 - s_lib) <= np.abs(s2 - s_lib), s1, s2)
+
+    _check_sixbar(six, slider, angular=False)
+    mo = six.motion(np.linspace(0, 2 * np.pi, 2001))
+    assert np.all(np.abs(np.hypot(*(mo.points["E"].p - mo.points["D"].p).T) - six.rod) < 1e-12)
+
+
+@settings(max_examples=6, deadline=None)
+@given(st.floats(150, 180), st.floats(0.75, 0.9), st.floats(-50, 50))
+def test_mchv5_output_from_own_projection(delta_deg, a, gamma_deg):
+    try:
+        six = ml.mchv5(ml.straight_guiding(np.radians(delta_deg), a, np.pi), guide_angle=np.radians(gamma_deg))
+    except MechanismError:
+        assume(False)
+    P = np.array([six.px, six.py])
+    v, w = np.array([np.cos(six.slot), np.sin(six.slot)]), np.array([np.cos(six.guide), np.sin(six.guide)])
+
+    def position(D, _):  # the slot line through P + s·w, direction v, contains D
+        return cross2(v, D - P) / cross2(v, w)
+
+    _check_sixbar(six, position, angular=False)
 
 
 # ------------------------------------------------------------------------------------------

@@ -34,7 +34,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import MechanismError
-from ..geometry import (AnglePath, as_angles, check_length, check_sign, cross, dot, dyad_rpr, dyad_rrr,
+from ..geometry import (AnglePath, as_angles, check_length, check_number, check_sign, cross, dot, dyad_rpr, dyad_rrr,
                         fixed_point, relative, vector_angle)
 from ..linkages.base import TWO_PI, Mechanism
 from ..motion import AngularMotion
@@ -83,8 +83,7 @@ class LambdaRockerSixBar(Mechanism):
         object.__setattr__(self, "rocker", check_length("rocker EF", self.rocker))
         object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
         for k in ("fx", "fy"):
-            if not np.isfinite(float(getattr(self, k))):
-                raise MechanismError(f"pivot coordinate {k} must be finite")
+            object.__setattr__(self, k, check_number(f"pivot coordinate {k}", getattr(self, k)))
         self.base  # validates r, a, δ (full rotation)
         # the dyad D-E-F must close over the whole turn
         D = self.base.coupler_point(np.linspace(0, TWO_PI, 1441))
@@ -248,9 +247,10 @@ def report(mech, dwell: float) -> SixBarReport:
 @dataclass(frozen=True)
 class LambdaSlottedSixBar(Mechanism):
     """Lambda mechanism (r, a, δ) whose coupler point D slides in the straight slot of a link
-    turning about P = (``px``, ``py``); the slot runs at signed distance ``offset`` from P
-    (to the right of the slot direction). Output ψ: the slot's direction (continuous, so a
-    link that turns fully gains 2π, or π for a slot through a pivot on the path, per turn).
+    turning about P = (``px``, ``py``); the slot line runs at signed distance ``offset`` from P,
+    on the left of P looking along the slot direction u for offset > 0: u × (D − P) = offset.
+    Output ψ: the slot's direction (continuous, so a link that turns fully gains 2π, or π for
+    a slot through a pivot on the path, per turn).
     """
 
     r: float
@@ -268,8 +268,7 @@ class LambdaSlottedSixBar(Mechanism):
     def __post_init__(self):
         self.base
         for k in ("px", "py", "offset"):
-            if not np.isfinite(float(getattr(self, k))):
-                raise MechanismError(f"{k} must be finite")
+            object.__setattr__(self, k, check_number(k, getattr(self, k)))
         D = self.base.coupler_point(np.linspace(0, TWO_PI, 2881))
         rho = np.hypot(*(D - self.P).T)
         if abs(self.offset) > 0 and rho.min() <= abs(self.offset):

@@ -83,8 +83,7 @@ class SlottedSixBarDrawing(LinkageDrawing):
         m, mo = self.mechanism, self.motion
         P = mo.points["P"].p[i]
         u = np.array([np.cos(mo.psi[i]), np.sin(mo.psi[i])])
-        n = np.array([u[1], -u[0]])
-        base = P + m.offset * n
+        base = P + m.offset * np.array([-u[1], u[0]])  # the slot is on the left of P for offset > 0
         reach = 1.2 * np.max(np.hypot(*(mo.points["D"].p - P).T))
         bar = np.array([P, base, base + reach * u]) if m.offset else np.array([P - reach * u, P + reach * u])
         hl = bar if _in_dwell(mo.phi[i], m.dwell) else np.full((2, 2), np.nan)
