@@ -18,8 +18,8 @@ from .dwell import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, Dwell
                     compare_transitions, curved_slot_dwell, dwell_limit, two_branch_slot)
 from .equivalence import assembly_symmetry, base_law, base_mechanism, equivalent_slot, relative_path
 from .errors import AssemblyError, DimensionError, MechanismError, RotationError, SingularityError
-from .forces import (Body, DriveError, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute, SelfLockingError,
-                     Torque, model_for)
+from .forces import (Body, DriveError, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute,
+                     SelfLockingError, Torque, model_for)
 from .geneva import (ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, SphericalGeneva, compare,
                      intermittency, spherical_table)
 from .halfturn import base_peaks, limit_theorem, other_half

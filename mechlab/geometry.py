@@ -101,11 +101,11 @@ def wrap(angle):
 def as_angles(phi) -> np.ndarray:
     """Crank angles as a 1-D float array; a scalar becomes an array of one."""
     try:
-        if phi is None:
-            raise TypeError
         arr = np.atleast_1d(np.asarray(phi, dtype=float))
     except (TypeError, ValueError):
-        raise DimensionError(f"crank angles must be real numbers (radians), got {phi!r}") from None
+        arr = None
+    if arr is None or phi is None:  # None would pass as a NaN
+        raise DimensionError(f"crank angles must be real numbers (radians), got {phi!r}")
     if arr.ndim != 1:
         raise DimensionError(f"crank angles must be a scalar or a 1-D array, got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
@@ -118,7 +118,8 @@ LENGTH_RANGE = (1e-100, 1e100)
 
 
 def check_number(name: str, value) -> float:
-    """Return ``value`` as a finite float, raising DimensionError otherwise."""
+    """Return ``value`` as a finite float of magnitude ≤ 1e100 (``LENGTH_RANGE``), raising
+    DimensionError naming ``name`` otherwise."""
     try:
         x = float(value)
     except (TypeError, ValueError):

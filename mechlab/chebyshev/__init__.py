@@ -2,7 +2,8 @@
 
 :mod:`.lambda_mechanism` — the symmetric lambda mechanism, circle/straight-line guiding
 synthesis and the existence map; :mod:`.sixbars` — МЧВ1 (rocker) and МЧВ3 (slotted link)
-six-bars; :mod:`.sliders` — МЧВ2 (rod and slider) and МЧВ5 (translating slotted link); :mod:`.forces` — their loads, reactions and efficiency.
+six-bars; :mod:`.sliders` — МЧВ2 (rod and slider) and МЧВ5 (translating slotted link);
+:mod:`.forces` — their loads, reactions and efficiency.
 """
 
 from .lambda_mechanism import *  # noqa: F401,F403

@@ -2,8 +2,7 @@
 
 import numpy as np
 
-from ..chebyshev import circle_guiding, straight_guiding
-from ..chebyshev import mchv2, mchv5, slider_report
+from ..chebyshev import circle_guiding, mchv2, mchv5, slider_report, straight_guiding
 from . import exercise
 
 DEG = np.pi / 180

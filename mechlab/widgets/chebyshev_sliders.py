@@ -6,8 +6,7 @@ infeasible request shows its InfeasibleDesignError / SynthesisError message in p
 
 from __future__ import annotations
 
-from ..chebyshev import circle_guiding, straight_guiding
-from ..chebyshev import mchv2, mchv5
+from ..chebyshev import circle_guiding, mchv2, mchv5, straight_guiding
 from . import Control, MechanismExplorer
 
 
