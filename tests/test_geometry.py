@@ -1,4 +1,6 @@
 import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -221,12 +223,10 @@ def test_a_forked_child_solves_long_inputs_too(monkeypatch):
     assert child.exitcode == 0
 
 
-@pytest.mark.parametrize("value, expect", [("1", "1"), ("3", "3"), ("0", "MECHLAB_THREADS must be a whole number ≥ 1, got '0'"),
+@pytest.mark.parametrize("value, expect", [("1", "1"), ("3", "3"),
+                                           ("0", "MECHLAB_THREADS must be a whole number ≥ 1, got '0'"),
                                            ("two", "MECHLAB_THREADS must be a whole number ≥ 1, got 'two'")])
 def test_threads_from_the_environment(value, expect):
-    import subprocess
-    import sys
-
     code = "import mechlab.geometry as g; print(g.THREADS)"
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          env={**os.environ, "MECHLAB_THREADS": value})
