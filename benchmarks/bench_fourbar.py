@@ -19,7 +19,8 @@ import matplotlib
 matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 
-from mechlab import FourBar, geometry  # noqa: E402
+from mechlab import FourBar
+from mechlab import geometry
 
 CRANK, COUPLER, ROCKER, GROUND = 1.0, 3.0, 3.0, 4.0
 

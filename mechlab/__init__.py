@@ -6,28 +6,31 @@ Computation never imports plotting: drawings live in :mod:`mechlab.draw`, contro
 in :mod:`mechlab.widgets`.
 """
 
-from . import forces, motion_laws
-from .centres import (Antiparallelogram, Centre, CentreAtInfinity, EllipticTrammel, IndeterminateCentre,
-                      centrodes, instant_centres)
-from .chebyshev import (InfeasibleDesignError, LambdaMechanism, LambdaRockerSixBar, LambdaSlottedSixBar,
-                        LambdaSliderSixBar, LambdaTranslatingSlot, SynthesisError, circle_guiding, existence_map,
-                        existence_region, mchv1, mchv2, mchv2_stroke, mchv3_full_turn, mchv3_full_turn_best, mchv5,
-                        slider_invariants, slider_report, slot_residual_first_order, straight_guiding,
-                        whole_turn_guiding, whole_turn_line)
-from .dwell import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError, DwellSlotMechanism,
-                    compare_transitions, curved_slot_dwell, dwell_limit, two_branch_slot)
-from .equivalence import assembly_symmetry, base_law, base_mechanism, equivalent_slot, relative_path
-from .errors import AssemblyError, DimensionError, MechanismError, RotationError, SingularityError
-from .forces import (Body, DriveError, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute,
-                     SelfLockingError, Torque, model_for)
-from .geneva import (ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, SphericalGeneva, compare,
-                     intermittency, spherical_table)
-from .halfturn import base_peaks, limit_theorem, other_half
-from .linkages import FourBar, Grashof, Mechanism, SineMechanism, SliderCrank, SlottedLink
-from .linkages.curved_slot import CircleSlot, CurvedSlotLink, ParametricSlot, SampledSlot, TranslatingCurvedSlot
+from . import kinetostatics as forces
+from .analysis import motion_laws
+from .analysis.centres import Centre, CentreAtInfinity, IndeterminateCentre, centrodes, instant_centres
+from .analysis.equivalence import assembly_symmetry, base_law, base_mechanism, equivalent_slot, relative_path
+from .analysis.half_turn import base_peaks, limit_theorem, other_half
+from .analysis.intermittency import compare, intermittency
+from .errors import (AssemblyError, DimensionError, InfeasibleDesignError, MechanismError, RotationError,
+                     SingularityError, SynthesisError)
+from .kinetostatics import (Body, DriveError, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute,
+                            SelfLockingError, Torque, model_for)
+from .mechanisms import (Antiparallelogram, CircleSlot, CurvedSlotLink, EllipticTrammel, ExternalGeneva, FourBar,
+                         Grashof, InternalGeneva, LambdaMechanism, LambdaRockerSixBar, LambdaSlottedSixBar,
+                         LambdaSliderSixBar, LambdaTranslatingSlot, Mechanism, ParametricSlot, SampledSlot,
+                         SineMechanism, SixBarIV, SliderCrank, SlottedLink, SphericalGeneva, TranslatingCurvedSlot)
+from .mechanisms.geneva import OffsetError, SlotCountError
 from .motion import AngularMotion, LinearMotion, Motion
-from .sixbar import SixBarIV
-from .slot_export import slot_profile, write_csv, write_dxf
+from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
+                                   DwellSlotMechanism, compare_transitions, curved_slot_dwell, dwell_limit,
+                                   two_branch_slot)
+from .synthesis.geneva import spherical_table
+from .synthesis.lambda_guiding import (circle_guiding, existence_map, existence_region, straight_guiding,
+                                       whole_turn_guiding, whole_turn_line)
+from .synthesis.lambda_sixbars import mchv1, mchv3_full_turn, mchv3_full_turn_best, slot_residual_first_order
+from .synthesis.lambda_sliders import mchv2, mchv2_stroke, mchv5, slider_invariants, slider_report
+from .synthesis.slot_export import slot_profile, write_csv, write_dxf
 
 __version__ = "0.1.0"
 

@@ -24,3 +24,12 @@ class RotationError(MechanismError):
 
 class SingularityError(MechanismError):
     """A dead point: the analogs are unbounded (transmission angle 0 or 180°)."""
+
+
+class SynthesisError(MechanismError):
+    """A requested lambda-mechanism design does not exist (outside the existence limits)."""
+
+
+class InfeasibleDesignError(SynthesisError):
+    """A six-bar requested by K, β_m (or a pivot position) cannot be built."""
+

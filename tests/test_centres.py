@@ -10,10 +10,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab import AssemblyError, DimensionError, FourBar, MechanismError, SineMechanism, SliderCrank, SlottedLink
-from mechlab.centres import (Antiparallelogram, Centre, CentreAtInfinity, EllipticTrammel, IndeterminateCentre,
-                             centre_count, centrodes, instant_centres, kennedy, rolling_speeds, segments, separation)
-from mechlab.centres.homogeneous import at_infinity, finite, in_frame, line_through, meet
-from mechlab.centres.kennedy import five_link_higher_pair
+from mechlab.mechanisms.antiparallelogram import Antiparallelogram
+from mechlab.analysis.centres.homogeneous import Centre, CentreAtInfinity, IndeterminateCentre, segments, separation
+from mechlab.mechanisms.trammel import EllipticTrammel
+from mechlab.analysis.centres.kennedy import centre_count
+from mechlab.analysis.centres.instant import instant_centres
+from mechlab.analysis.centres.centrodes import rolling_speeds
+from mechlab.analysis.centres import centrodes
+from mechlab.analysis.centres import kennedy
+from mechlab.analysis.centres.homogeneous import at_infinity, finite, in_frame, line_through, meet
+from mechlab.analysis.centres.kennedy import five_link_higher_pair
 from mechlab.geometry import relative, vector_angle
 from strategies import central_difference, fourbars, revolving_fourbars, revolving_slider_cranks
 
@@ -180,7 +186,7 @@ def test_five_link_check_line_of_the_seed():
     rng = np.random.default_rng(7)
     args = [rng.normal(size=(50, 2)) for _ in range(7)]
     by_k, _, _ = five_link_higher_pair(*args)
-    from mechlab.centres.homogeneous import line_through as lt
+    from mechlab.analysis.centres.homogeneous import line_through as lt
     L = lt(by_k[(1, 2)], by_k[(2, 4)])
     h = by_k[(1, 4)].h
     assert np.abs(np.sum(L * h / np.linalg.norm(h, axis=1)[:, None], axis=1)).max() < 1e-9
@@ -412,8 +418,8 @@ def test_explorers_follow_sliders_and_show_errors():
 
 
 def test_exercises_and_errata():
-    from mechlab.errata import seed002_centres
-    from mechlab.exercises import check, solution
+    from mechlab.course.errata import seed002_centres
+    from mechlab.course.exercises import check, solution
 
     # 04.1: P13 = AB ∩ frame line, by hand
     mo = FourBar(1.0, 3.0, 3.0, 4.0).motion(np.radians([60.0]))
@@ -444,7 +450,7 @@ def test_point_velocities_from_the_centres():
 
 
 def test_pole_at_infinity_in_the_seed_formulas_and_the_change_point_free_cycle():
-    from mechlab.centres import pole_from_two_points
+    from mechlab.analysis.centres.centrodes import pole_from_two_points
 
     z = np.array([0.0 + 0j, 1.0 + 0j])
     with pytest.raises(CentreAtInfinity, match="translates"):   # equal velocities: a translation

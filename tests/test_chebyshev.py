@@ -5,9 +5,9 @@ import pytest
 from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
-from mechlab.chebyshev import (LambdaMechanism, SynthesisError, band_touches, circle_guiding, classic_lambda,
-                               existence_map, fifth_order_line, rotation_boundary, straight_guiding,
-                               thesis_iteration, transmission_lines)
+from mechlab.mechanisms.lambda_mechanism import LambdaMechanism, classic_lambda
+from mechlab.errors import SynthesisError
+from mechlab.synthesis.lambda_guiding import band_touches, circle_guiding, existence_map, fifth_order_line, rotation_boundary, straight_guiding, thesis_iteration, transmission_lines
 from mechlab.errors import DimensionError, MechanismError, RotationError
 
 DEG = np.pi / 180
@@ -173,9 +173,9 @@ def test_widgets_exercises_and_errata():
     import matplotlib
 
     matplotlib.use("Agg")
-    from mechlab.errata import table
-    from mechlab.errata.seed001_chebyshev import ERRATA
-    from mechlab.exercises import check, solution
+    from mechlab.course.errata import table
+    from mechlab.course.errata.seed001_chebyshev import ERRATA
+    from mechlab.course.exercises import check, solution
     from mechlab.widgets.chebyshev import lambda_explorer, mchv1_explorer
 
     ex = lambda_explorer()
@@ -200,7 +200,7 @@ def test_widgets_exercises_and_errata():
 
 @pytest.mark.parametrize("delta,a", [(150, 1.15), (180, 1.3), (240, 1.6)])
 def test_whole_turn_line_band_spans_the_turn_and_iso_dwells_converge_to_it(delta, a):
-    from mechlab.chebyshev import whole_turn_guiding
+    from mechlab.synthesis.lambda_guiding import whole_turn_guiding
 
     g = whole_turn_guiding(delta * DEG, a)
     assert g.dwell == 2 * np.pi and 0 < g.r < min(a, 2 - a)
@@ -224,7 +224,7 @@ def test_whole_turn_line_band_spans_the_turn_and_iso_dwells_converge_to_it(delta
 
 
 def test_whole_turn_line_meets_the_fifth_order_line_at_A_and_ends_on_the_rotation_limit():
-    from mechlab.chebyshev import existence_region, whole_turn_line
+    from mechlab.synthesis.lambda_guiding import existence_region, whole_turn_line
 
     for delta in (90, 150, 180, 240):
         d = delta * DEG

@@ -5,9 +5,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.chebyshev import (InfeasibleDesignError, LambdaRockerSixBar, LambdaSlottedSixBar, circle_guiding,
-                               mchv1, mchv3_full_turn, mchv3_half_turn, mchv3_oscillating, report, straight_guiding,
-                               time_ratio_far_angle)
+from mechlab.errors import InfeasibleDesignError
+from mechlab.mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
+from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
+from mechlab.synthesis.lambda_sixbars import mchv1, mchv3_full_turn, mchv3_half_turn, mchv3_oscillating, report, time_ratio_far_angle
 from mechlab.errors import MechanismError
 
 DEG = np.pi / 180
@@ -103,7 +104,7 @@ def test_mchv3_oscillating_and_half_turn():
 
 
 def test_mchv1_forces_match_the_power_balance(guide):
-    from mechlab.chebyshev.forces import mchv1_forces
+    from mechlab.kinetostatics.lambda_sixbars import mchv1_forces
 
     six = mchv1(guide, 1.0, 20 * DEG)
     # pure inertia J: M1·ω1 = J·ψ̇·ψ̈  →  M1 = J·ψ'·ψ''·ω1² (independent of the group-by-group solve)
@@ -173,8 +174,8 @@ DECODED_A = {(120, 50): 0.75, (120, 75): 0.75, (270, 100): 1.43}  # printed 0.8,
 
 @pytest.mark.parametrize("delta,alpha", REPRODUCED)
 def test_thesis_mchv1_rows_reproduced(delta, alpha):
-    from mechlab.chebyshev import rise_law
-    from mechlab.motion_laws import rise_invariants, thesis_mchv1_rows
+    from mechlab.synthesis.lambda_sixbars import rise_law
+    from mechlab.analysis.motion_laws import rise_invariants, thesis_mchv1_rows
 
     row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
     g = circle_guiding(delta * DEG, DECODED_A.get((delta, alpha), row[2]), 2 * alpha * DEG)
@@ -188,7 +189,7 @@ def test_thesis_mchv1_rows_reproduced(delta, alpha):
 
 
 def test_thesis_mchv1_rows_that_do_not_reproduce():
-    from mechlab.errata.seed001_chebyshev import _row_fit
+    from mechlab.course.errata.seed001_chebyshev import _row_fit
 
     # with the printed a the decoded rows miss by more than 10 %
     for (delta, alpha), a in DECODED_A.items():
@@ -196,7 +197,7 @@ def test_thesis_mchv1_rows_that_do_not_reproduce():
         printed = {0.75: 0.8, 1.43: 1.6}[a]
         assert _row_fit(delta, alpha, printed)[0] > 0.1
     # the two 2α = 250° rows: 180° comes within 2.7 % only at a ≈ 1.12, 240° nowhere within 7 %
-    from mechlab.errata.seed001_chebyshev import _best_a
+    from mechlab.course.errata.seed001_chebyshev import _best_a
 
     w180, a180 = _best_a(180, 125, 1.1)
     w240, _ = _best_a(240, 125, 1.4)
@@ -204,7 +205,7 @@ def test_thesis_mchv1_rows_that_do_not_reproduce():
 
 
 def test_mchv3_full_turn_is_intermittent_and_adjustable():
-    from mechlab.chebyshev import dwell_extent, mchv3_full_turn
+    from mechlab.synthesis.lambda_sixbars import dwell_extent, mchv3_full_turn
 
     s = straight_guiding(np.pi, 0.8, np.pi)
     dw = np.pi + np.linspace(-np.pi / 2, np.pi / 2, 2001) + 1e-6
@@ -240,8 +241,7 @@ def test_mchv1_random_requests_are_met_or_refused(guide, K, swing, side):
 
 
 def test_mchv3_full_turn_residual_is_first_order_h_over_s_and_inherent_for_180_degrees():
-    from mechlab.chebyshev.sixbars import (dwell_extent, mchv3_full_turn, mchv3_full_turn_best,
-                                           slot_residual_first_order)
+    from mechlab.synthesis.lambda_sixbars import dwell_extent, mchv3_full_turn, mchv3_full_turn_best, slot_residual_first_order
 
     s = straight_guiding(np.pi, 0.8, np.pi)
     dw = np.pi + np.linspace(-np.pi / 2, np.pi / 2, 2001) + 1e-6

@@ -7,12 +7,13 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from mechlab.chebyshev import InfeasibleDesignError, circle_guiding, straight_guiding
-from mechlab.chebyshev.sliders import (LambdaSliderSixBar, LambdaTranslatingSlot, mchv2, mchv2_far_position,
-                                       mchv2_stroke, mchv5, slider_invariants, slider_report, slider_rise)
+from mechlab.errors import InfeasibleDesignError
+from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
+from mechlab.mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
+from mechlab.synthesis.lambda_sliders import mchv2, mchv2_far_position, mchv2_stroke, mchv5, slider_invariants, slider_report, slider_rise
 from mechlab.errors import DimensionError, MechanismError
-from mechlab.exercises import check, solution
-from mechlab.motion_laws import rise_invariants
+from mechlab.course.exercises import check, solution
+from mechlab.analysis.motion_laws import rise_invariants
 
 DEG = np.pi / 180
 

@@ -6,8 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab import AssemblyError, DimensionError, FourBar, SingularityError
-from mechlab.linkages.curved_slot import (CircleSlot, CurvedSlotLink, ParametricSlot, SampledSlot,
-                                          TranslatingCurvedSlot)
+from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, ParametricSlot, SampledSlot, TranslatingCurvedSlot
 from strategies import revolving_fourbars, revolving_slider_cranks
 
 H = 1e-5

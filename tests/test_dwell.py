@@ -5,11 +5,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.dwell import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError, base_law,
-                           compare_transitions, curved_slot_dwell, dwell_limit, two_branch_slot)
+from mechlab.synthesis.dwell_slot import TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError, base_law, compare_transitions, curved_slot_dwell, dwell_limit, two_branch_slot
 from mechlab.errors import DimensionError, MechanismError, SingularityError
-from mechlab.linkages.curved_slot import CurvedSlotLink, SampledSlot
-from mechlab.linkages.slotted import SlottedLink
+from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
+from mechlab.mechanisms.slotted import SlottedLink
 
 DEG = np.pi / 180
 
@@ -253,7 +252,8 @@ def test_bad_transition_and_pivot():
 
 # -- errata, exercises, drawing, widget ----------------------------------------------------
 def test_errata_of_section_3_hold():
-    from mechlab.errata import seed000_dwell, table
+    from mechlab.course.errata import table
+    from mechlab.course.errata import seed000_dwell
 
     assert len(seed000_dwell.ERRATA) >= 6
     for e in seed000_dwell.ERRATA:
@@ -263,7 +263,7 @@ def test_errata_of_section_3_hold():
 
 
 def test_exercises_have_independent_answers():
-    from mechlab.exercises import check, solution
+    from mechlab.course.exercises import check, solution
 
     lam, p1 = 0.4, 70 * DEG
     assert solution("05.1") == pytest.approx(np.degrees(lam * p1 / (3 * (lam + 1))), rel=1e-12)
@@ -316,7 +316,7 @@ def test_widget_shows_errors_and_recovers():
 def test_rotating_link_dwells_at_a_pressure_angle_of_at_least_90_minus_arcsin():
     from scipy.optimize import minimize_scalar
 
-    from mechlab.dwell import arc_pressure_angle
+    from mechlab.synthesis.dwell_slot import arc_pressure_angle
 
     for lam in (1.3, 2.0, 3.5):
         res = minimize_scalar(lambda x: arc_pressure_angle(lam, x)[0], bounds=(0.0, np.pi), method="bounded",

@@ -5,9 +5,8 @@ import pytest
 from hypothesis import given, settings
 
 from mechlab import DimensionError, FourBar, SineMechanism, SliderCrank, SlottedLink
-from mechlab.equivalence import (assembly_symmetry, base_law, base_mechanism, equivalence_error, equivalent_slot,
-                                 law_difference, other_assembly, relative_path)
-from mechlab.halfturn import formula_18
+from mechlab.analysis.equivalence import assembly_symmetry, base_law, base_mechanism, equivalence_error, equivalent_slot, law_difference, other_assembly, relative_path
+from mechlab.analysis.half_turn import formula_18
 from strategies import revolving_fourbars, revolving_slider_cranks
 
 H = 1e-5
@@ -118,10 +117,10 @@ def test_unsupported_mechanisms_raise_clear_errors():
 # -- drawings, animation, explorer, exercises and errata of chapters 01-03 -------------------------
 import matplotlib.pyplot as plt  # noqa: E402
 
-from mechlab.draw import drawing_class  # noqa: E402
-from mechlab.draw.curved_slot import animate_equivalence, plot_against_base  # noqa: E402
-from mechlab.linkages.curved_slot import CircleSlot, CurvedSlotLink, TranslatingCurvedSlot  # noqa: E402
-from mechlab.sixbar import example  # noqa: E402
+from mechlab.draw import drawing_class
+from mechlab.draw.curved_slot import animate_equivalence, plot_against_base
+from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, TranslatingCurvedSlot
+from mechlab.mechanisms.sixbar_iv import example
 
 
 def _slot_distance_to_pin(drawing, i):
@@ -179,7 +178,7 @@ def test_equivalence_explorer_reports_errors_and_recovers():
 
 
 def test_exercise_answers_are_the_known_values():
-    from mechlab.exercises import check, solution
+    from mechlab.course.exercises import check, solution
     assert np.allclose(solution("01.1"), [0.8, 1.0])
     assert np.isclose(solution("01.2"), 0.3 / (0.3 - 1))
     assert np.allclose(solution("01.3"), [1.04 - 0.25, 1.04 + 0.25], rtol=1e-6)
@@ -195,7 +194,7 @@ def test_exercise_answers_are_the_known_values():
 
 
 def test_seed000_errata_recompute_their_evidence():
-    from mechlab.errata import seed000_equivalence
+    from mechlab.course.errata import seed000_equivalence
     assert len(seed000_equivalence.ERRATA) == 3
     for e in seed000_equivalence.ERRATA:
         text = e.check()

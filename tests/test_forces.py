@@ -1,4 +1,4 @@
-"""Kinetostatics (mechlab.forces): power balance, equilibrium, hand-derived cases, friction, drive."""
+"""Kinetostatics (mechlab.kinetostatics): power balance, equilibrium, hand-derived cases, friction, drive."""
 
 import numpy as np
 import pytest
@@ -6,10 +6,10 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from mechlab import FourBar, MechanismError, SineMechanism, SliderCrank, SlottedLink
-from mechlab.forces import (FRAME, Body, DriveError, Force, ForceModel, FrictionError, HigherPair, Kinetostatics,
-                            LoadError,
-                            MassError, Prismatic, Revolute, SelfLockingError, StructureError, Torque, cycle_mean,
-                            drive, model_for, slender_bar, solve, virtual_work_torque)
+from mechlab.kinetostatics.model import FRAME, Body, Force, ForceModel, FrictionError, HigherPair, LoadError, MassError, Prismatic, Revolute, SelfLockingError, StructureError, Torque, model_for, slender_bar
+from mechlab.kinetostatics.drive import DriveError, cycle_mean, drive
+from mechlab.kinetostatics.machines import Kinetostatics
+from mechlab.kinetostatics.solve import solve, virtual_work_torque
 from strategies import revolving_fourbars, revolving_slider_cranks
 
 unit_floats = st.floats(min_value=-1.0, max_value=1.0, allow_nan=False)
@@ -372,7 +372,7 @@ def test_model_for_unknown_mechanism():
 
 
 def test_press_and_rocker_examples():
-    from mechlab.forces import press, rocker_drive
+    from mechlab.kinetostatics.machines import press, rocker_drive
     k = press(P=2000.0, work_fraction=0.3)
     res = k.forces(k.turn(1441))
     # the press does P × (working part of the stroke) of work per turn: mean torque = that / 2π
@@ -395,7 +395,7 @@ def test_press_and_rocker_examples():
 def test_force_drawing_and_explorer_move_in_place():
     import matplotlib.pyplot as plt
     from mechlab.draw import animate, drawing_class
-    from mechlab.forces import press
+    from mechlab.kinetostatics.machines import press
     from mechlab.widgets.forces import press_explorer
     k = press()
     fig, ax = plt.subplots()
@@ -422,7 +422,7 @@ def test_force_drawing_and_explorer_move_in_place():
 
 
 def test_exercises_have_the_right_answers():
-    from mechlab.exercises import check, solution
+    from mechlab.course.exercises import check, solution
     sc = SliderCrank(0.1, 0.4)
     assert solution("09.1") == pytest.approx(1000.0 * sc.motion(np.radians(240.0)).ds[0], rel=1e-12)
     fb = FourBar(0.1, 0.3, 0.3, 0.35)
@@ -436,7 +436,7 @@ def test_exercises_have_the_right_answers():
 
 
 def test_errata_checks_hold():
-    from mechlab.errata.seed003_forces import ERRATA
+    from mechlab.course.errata.seed003_forces import ERRATA
     assert len(ERRATA) == 3
     for e in ERRATA:
         text = e.evidence()
@@ -445,7 +445,7 @@ def test_errata_checks_hold():
 
 def test_class_iv_group_solved_as_one():
     """The class-IV six-bar's four-link group (12 equations, 12 unknowns) in one batch."""
-    from mechlab.sixbar import example
+    from mechlab.mechanisms.sixbar_iv import example
     sb = example()
     mo = sb.motion(sb.turn(91))
     bodies = (Body("crank", "O", ("O", "A")), Body("l2", "Q", ("Q", "P"), mass=2.0, inertia=0.05, com=(0.3, -0.2)),
@@ -465,7 +465,7 @@ def test_class_iv_group_solved_as_one():
 
 def test_geneva_wheel_as_a_one_link_group():
     """Pin in a radial slot: M_b = (J ψ'' ω² + T sgn ψ') ψ' (the wheel's power balance)."""
-    from mechlab.geneva import ExternalGeneva
+    from mechlab.mechanisms.geneva import ExternalGeneva
     g = ExternalGeneva(5, 0.1)
     s0 = g.engagement_half_angle
     phi = np.pi + s0 * (1 - 1e-9) * np.linspace(-1, 1, 121)
@@ -533,9 +533,9 @@ def test_curved_slot_higher_pair_equals_the_equivalent_fourbar():
     rocker's B) carries the pin. As a higher pair, the pin's push acts along the common normal
     through the arc centre — the massless coupler's line — so with a torque on the link the
     pin force, the pivot reaction and M_b equal the four-bar's (frame turned by π)."""
-    from mechlab.forces import output_axis
+    from mechlab.kinetostatics.solve import output_axis
     from mechlab.geometry import unit
-    from mechlab.linkages.curved_slot import CircleSlot, CurvedSlotLink
+    from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink
     fb = FourBar(0.1, 0.3, 0.3, 0.35)
     cs = CurvedSlotLink(fb.crank, fb.ground, CircleSlot((fb.rocker, 0.0), fb.coupler), start=1.0)
     phi = cs.turn(91)
@@ -564,7 +564,8 @@ def test_curved_slot_higher_pair_equals_the_equivalent_fourbar():
 
 
 def test_verify_and_explorer_messages():
-    from mechlab.forces import ForceResult, press
+    from mechlab.kinetostatics.solve import ForceResult
+    from mechlab.kinetostatics.machines import press
     from mechlab.widgets.forces import press_explorer, rocker_explorer
     res = press(f=0.1).forces()
     assert "power balance" in res.verify() and res.power_gap < 1e-12
@@ -682,7 +683,7 @@ def _cross(a, b):
 @given(st.data(), st.one_of(revolving_fourbars(), revolving_slider_cranks()))
 @settings(max_examples=80, deadline=None)
 def test_audit_torque_by_power_balance_and_reactions_by_newton_euler(data, mech):
-    """Independent of mechlab.forces: (1) the crank torque from the power balance
+    """Independent of mechlab.kinetostatics: (1) the crank torque from the power balance
     M_b = −Σ(F·v_S + M·ω)/ω1 with velocities from finite differences; (2) every reaction and
     M_b from the 9 Newton–Euler equations of the three links, assembled here and solved per
     angle. Both against solve()."""
@@ -793,7 +794,7 @@ def test_press_load_does_not_depend_on_the_sampling(offset, assembly):
     at one crank angle equals the load there within a full turn (it did not before: at φ = 240°
     alone the press felt P although the slider was 0.16 m from the outer dead point). Its work
     per turn is −P·fraction·stroke, the stroke sqrt((l+a)² − e²) − sqrt((l−a)² − e²)."""
-    from mechlab.forces import press_load
+    from mechlab.kinetostatics.machines import press_load
     sc = SliderCrank(0.1, 0.4, offset, assembly)
     load = press_load(2000.0, 0.3)
     phi = sc.turn(7201)

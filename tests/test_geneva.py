@@ -7,12 +7,15 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab.errors import DimensionError, MechanismError
-from mechlab.geneva import (TABLE1_PRINTED, DriveError, ExternalGeneva, InternalGeneva, OffsetError,
-                            SlotCountError, SphericalGeneva, compare, crank_torque, detect_impacts, drive,
-                            drive_angles, impact_kind,
-                            intermittency, spherical_table, table1_comparison)
-from mechlab.forces import drive as fdrive
-from mechlab.linkages import FourBar, SlottedLink
+from mechlab.synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison
+from mechlab.kinetostatics.drive import DriveError
+from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, impact_kind
+from mechlab.mechanisms.spherical_geneva import SphericalGeneva
+from mechlab.analysis.intermittency import compare, detect_impacts, intermittency
+from mechlab.kinetostatics.geneva import crank_torque, drive, drive_angles
+from mechlab.kinetostatics.drive import drive as fdrive
+from mechlab.mechanisms.fourbar import FourBar
+from mechlab.mechanisms.slotted import SlottedLink
 
 H = 1e-5
 slots = st.integers(min_value=3, max_value=16)
@@ -267,7 +270,7 @@ def test_table1_reproduces_and_documents_differences():
         assert cells[z, "beta0"].agrees and cells[z, "omega_max"].agrees
     assert all(cells[z, "eps_max"].agrees for z in (4, 6))
     assert cells[4, "alpha0"].agrees and cells[5, "alpha0"].agrees and cells[8, "alpha0"].agrees
-    # the documented differences (see notebook 08 and mechlab.errata.seed004_geneva)
+    # the documented differences (see notebook 08 and mechlab.course.errata.seed004_geneva)
     differs = {k for k, c in cells.items() if c.status == "differs"}
     assert differs == {(3, "eps_max"), (3, "alpha1"), (3, "beta1"), (4, "alpha1"), (4, "beta1"),
                        (5, "alpha1"), (5, "beta1"), (6, "alpha0"), (6, "beta1"), (8, "alpha1"), (8, "beta1")}
@@ -290,7 +293,7 @@ def test_table1_reproduces_and_documents_differences():
 # -- drive --------------------------------------------------------------------------------------
 def _wheel_law(g):
     """β(σ) of the wheel (magnitude) as a sympy expression and the engagement half-angle,
-    written here from the geometry, independently of mechlab.geneva:
+    written here from the geometry, independently of mechlab.mechanisms.geneva:
     planar — the pin at a = C·λ from O (λ = sin(π/z)), the wheel centre at C: tan β =
     λ sin σ/(1 + κλ cos σ) (κ = -1 external: the pin between O and W at σ = 0), σ0 = π/2 + κπ/z;
     spherical — tan β = tan ψ sin α, ψ = atan(ρ0/(R cos(π/z))), ρ0 = √(e² + R² sin²(π/z)),
@@ -438,7 +441,7 @@ def test_impact_detection_and_comparison():
 
 # -- exercises and errata -------------------------------------------------------------------------
 def test_exercises_08():
-    from mechlab.exercises import check, solution
+    from mechlab.course.exercises import check, solution
     assert solution("08.1") == pytest.approx(60.0)
     assert solution("08.2") == pytest.approx((0.7, 0.3))
     assert solution("08.3") == pytest.approx(10.0)
@@ -452,7 +455,8 @@ def test_exercises_08():
 
 
 def test_errata_seed004_geneva():
-    from mechlab.errata import seed004_geneva, table
+    from mechlab.course.errata import table
+    from mechlab.course.errata import seed004_geneva
     assert len(seed004_geneva.ERRATA) == 8
     for e in seed004_geneva.ERRATA:
         assert e.source == "004" and e.notebook == "08_geneva_spherical.ipynb"
@@ -555,7 +559,7 @@ def test_geneva_explorers():
 
 
 def test_small_helpers():
-    from mechlab.geneva import check_slots, mid_motion_angle
+    from mechlab.mechanisms.geneva import check_slots, mid_motion_angle
 
     assert check_slots(4.0) == 4 and isinstance(check_slots(np.int64(5)), int)
     s = mid_motion_angle(np.array([0.0, np.pi, 2 * np.pi, 3 * np.pi, -np.pi]))
@@ -564,7 +568,7 @@ def test_small_helpers():
     d = g.pin_direction(np.linspace(-3, 3, 7))
     assert np.allclose(np.linalg.norm(d, axis=1), 1.0) and np.allclose(d[:, 0], np.cos(g.cone_angle))
     assert set(g.design()) >= {"α0 (deg)", "ρ0", "r_H", "min slot length"}
-    from mechlab.geneva import PlanarGeneva
+    from mechlab.mechanisms.geneva import PlanarGeneva
     with pytest.raises(TypeError, match="ExternalGeneva or InternalGeneva"):
         PlanarGeneva(4, 1.0)
     assert np.array_equal(g.engaged([np.pi, 0.0]), [True, False])

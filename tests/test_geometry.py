@@ -8,9 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab import AssemblyError, DimensionError, SingularityError
-from mechlab.geometry import (PointPath, as_angles, check_length, circle_circle, crank_point, cross, dyad_rpr,
-                              dyad_rrp, dyad_rrr, fixed_point, line_circle, wrap)
-from mechlab.linkages.base import FULL_TURN, arc_set
+from mechlab.geometry import PointPath, as_angles, check_length, circle_circle, crank_point, cross, dyad_rpr, dyad_rrp, dyad_rrr, fixed_point, line_circle, wrap
+from mechlab.mechanisms.base import FULL_TURN, arc_set
 
 coords = st.floats(-5, 5)
 

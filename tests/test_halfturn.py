@@ -6,10 +6,10 @@ import sympy as sp
 from hypothesis import given, settings
 
 from mechlab import DimensionError, FourBar, SlottedLink
-from mechlab.equivalence import base_law
-from mechlab.halfturn import base_peaks, formula_18, limit_theorem, mirror_angle, other_half
-from mechlab.linkages.curved_slot import CurvedSlotLink, ParametricSlot, SampledSlot, TranslatingCurvedSlot
-from mechlab.sixbar import example
+from mechlab.analysis.equivalence import base_law
+from mechlab.analysis.half_turn import base_peaks, formula_18, limit_theorem, mirror_angle, other_half
+from mechlab.mechanisms.curved_slot import CurvedSlotLink, ParametricSlot, SampledSlot, TranslatingCurvedSlot
+from mechlab.mechanisms.sixbar_iv import example
 from strategies import revolving_fourbars, revolving_slider_cranks
 
 

@@ -639,7 +639,7 @@ def test_curved_slot_dwell_is_a_dwell(lam, p1, span, transition):
 @FEW
 @given(st.lists(st.floats(-0.04, 0.04), min_size=8, max_size=8))
 def test_sixbar_iv_against_own_newton(eps):
-    from mechlab.sixbar import SixBarIV, example
+    from mechlab.mechanisms.sixbar_iv import SixBarIV, example
 
     ex = example()
     f = [1 + e for e in eps]
@@ -946,7 +946,7 @@ def test_classic_chebyshev_lambda_straight_line():
     a bounded search of y(φ) from the independent four-bar solve: 0.0039015 (0.0097537 crank
     lengths, 0.24 % of the stroke; the literature's "within 1 %" for the lambda linkage).
     """
-    from mechlab.chebyshev.lambda_mechanism import classic_lambda
+    from mechlab.mechanisms.lambda_mechanism import classic_lambda
 
     m = classic_lambda()
     assert m.r == 0.4 and m.a == 0.8 and m.delta == np.pi
@@ -1060,8 +1060,8 @@ def _slot_angle(six):
 def test_mchv3_slot_angle_from_own_slot_line(delta_deg, a, kind, x):
     try:
         g = ml.straight_guiding(np.radians(delta_deg), a, np.pi)
-        six = {"oscillating": lambda: ml.chebyshev.mchv3_oscillating(g, x),
-               "half": lambda: ml.chebyshev.mchv3_half_turn(g),
+        six = {"oscillating": lambda: ml.synthesis.lambda_sixbars.mchv3_oscillating(g, x),
+               "half": lambda: ml.synthesis.lambda_sixbars.mchv3_half_turn(g),
                "full": lambda: ml.mchv3_full_turn(g, x / 5, 0.05)}[kind]()
     except MechanismError:
         assume(False)
@@ -1249,7 +1249,7 @@ MECHS = {
     "SlottedLink": lambda: ml.SlottedLink(0.5, 1), "SineMechanism": lambda: ml.SineMechanism(1),
     "CurvedSlotLink": lambda: ml.CurvedSlotLink(0.5, 1, ml.CircleSlot((0.3, 0.5), 1.0)),
     "TranslatingCurvedSlot": lambda: ml.TranslatingCurvedSlot(1, ml.CircleSlot((0.0, 0.0), 2.0)),
-    "SixBarIV": lambda: __import__("mechlab.sixbar", fromlist=["example"]).example(),
+    "SixBarIV": lambda: __import__("mechlab.mechanisms.sixbar_iv", fromlist=["example"]).example(),
     "ExternalGeneva": lambda: ml.ExternalGeneva(4, 1.0), "InternalGeneva": lambda: ml.InternalGeneva(6, 1.0),
     "LambdaMechanism": lambda: ml.LambdaMechanism(0.4, 0.8, np.pi),
 }

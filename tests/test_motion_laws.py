@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from mechlab.errors import MechanismError
-from mechlab.motion_laws import LAWS, law_invariants, rise_invariants, thesis_cam_rows
+from mechlab.analysis.motion_laws import LAWS, law_invariants, rise_invariants, thesis_cam_rows
 
 
 @pytest.mark.parametrize("name", list(LAWS))

@@ -8,8 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab import AssemblyError, DimensionError, RotationError
-from mechlab.equivalence import equivalent_slot, law_difference, relative_path
-from mechlab.sixbar import example
+from mechlab.analysis.equivalence import equivalent_slot, law_difference, relative_path
+from mechlab.mechanisms.sixbar_iv import example
 
 H = 1e-5
 

@@ -7,10 +7,9 @@ import ezdxf
 import numpy as np
 import pytest
 
-from mechlab.dwell import curved_slot_dwell
-from mechlab.linkages.curved_slot import CurvedSlotLink, SampledSlot
-from mechlab.slot_export import (SlotUndercutError, check_roller, min_radius_of_curvature, read_csv, slot_profile,
-                                 write_csv, write_dxf)
+from mechlab.synthesis.dwell_slot import curved_slot_dwell
+from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
+from mechlab.synthesis.slot_export import SlotUndercutError, check_roller, min_radius_of_curvature, read_csv, slot_profile, write_csv, write_dxf
 
 DEG = np.pi / 180
 

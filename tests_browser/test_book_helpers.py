@@ -19,7 +19,7 @@ from conftest import ROOT  # noqa: E402
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
 import errata_page  # noqa: E402
 import mechbook  # noqa: E402
-from mechlab.errata import SOURCES, Erratum  # noqa: E402
+from mechlab.course.errata import SOURCES, Erratum
 
 
 

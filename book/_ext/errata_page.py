@@ -1,4 +1,4 @@
-"""The book's Errata page: every :class:`mechlab.errata.Erratum`, its evidence recomputed now.
+"""The book's Errata page: every :class:`mechlab.course.errata.Erratum`, its evidence recomputed now.
 
 Executed by ``book/errata.md`` at build time. Each row links to the code cell of the
 chapter notebook that demonstrates the mistake: the first code cell of that notebook
@@ -71,13 +71,13 @@ def _inline(text: str) -> str:
 
 
 def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = "notebooks/") -> str:
-    """MyST Markdown for the errata (default: :func:`mechlab.errata.collect`), grouped by source.
+    """MyST Markdown for the errata (default: :func:`mechlab.course.errata.collect`), grouped by source.
 
     Each erratum: the source key (linked to the References page) and where, the chapter
     cell that shows it, then printed, correct and the evidence returned by
     ``Erratum.check()`` (which raises if the claim stopped being true, failing the build).
     """
-    from mechlab.errata import SOURCES, collect
+    from mechlab.course.errata import SOURCES, collect
 
     rows = collect() if errata is None else list(errata)
     if not rows:

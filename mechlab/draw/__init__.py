@@ -18,7 +18,10 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.animation import FuncAnimation
 
-from ..linkages import FourBar, Mechanism, SineMechanism, SliderCrank, SlottedLink
+from ..mechanisms.fourbar import FourBar
+from ..mechanisms.base import Mechanism
+from ..mechanisms.slotted import SineMechanism, SlottedLink
+from ..mechanisms.slider_crank import SliderCrank
 from ..motion import Motion
 
 LINK_STYLE = dict(color="#1f4e79", lw=3, solid_capstyle="round", zorder=3)

@@ -2,7 +2,7 @@
 centres and centrodes that move with the linkage.
 
 Centres at infinity are never drawn as far-away points: curves are masked there
-(:func:`mechlab.centres.segments` / :meth:`Centre.masked`), and a pole at infinity is
+(:func:`mechlab.analysis.centres.segments` / :meth:`Centre.masked`), and a pole at infinity is
 shown by an arrow along its direction with the label "P∞".
 """
 
@@ -11,7 +11,11 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ..centres import Antiparallelogram, Centrodes, EllipticTrammel, InstantCentres, centrodes
+from ..mechanisms.antiparallelogram import Antiparallelogram
+from ..analysis.centres.centrodes import Centrodes
+from ..mechanisms.trammel import EllipticTrammel
+from ..analysis.centres.instant import InstantCentres
+from ..analysis.centres import centrodes
 from . import Animation, LinkageDrawing, drawing_class, register
 
 FIXED_STYLE = dict(color="#8c564b", lw=1.6, zorder=1)

@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..chebyshev import GuidedLambda, LambdaMechanism, LambdaRockerSixBar, LambdaSlottedSixBar
+from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism
+from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
 from . import HIGHLIGHT_STYLE, OUTPUT_STYLE, LinkageDrawing, register
 
 _CIRCLE = np.linspace(0.0, 2 * np.pi, 241)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..chebyshev.sliders import LambdaSliderSixBar, LambdaTranslatingSlot
+from ..mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
 from . import GUIDE_STYLE, HIGHLIGHT_STYLE, OUTPUT_STYLE, LinkageDrawing, register
 from .chebyshev import _dwell_path, _in_dwell
 

@@ -10,9 +10,9 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ..equivalence import EquivalentSlot, base_law, equivalent_slot, relative_path
-from ..linkages.curved_slot import CurvedSlotLink, TranslatingCurvedSlot
-from ..sixbar import SixBarIV
+from ..analysis.equivalence import EquivalentSlot, base_law, equivalent_slot, relative_path
+from ..mechanisms.curved_slot import CurvedSlotLink, TranslatingCurvedSlot
+from ..mechanisms.sixbar_iv import SixBarIV
 from . import EXTRA_STYLE, Animation, LinkageDrawing, drawing_class, register
 
 SLOT_STYLE = dict(color="#2a7f62", lw=5, alpha=0.45, solid_capstyle="round", zorder=2)

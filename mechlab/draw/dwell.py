@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..dwell import DwellSlotMechanism
+from ..synthesis.dwell_slot import DwellSlotMechanism
 from . import EXTRA_STYLE, LinkageDrawing, register
 
 SLOT_STYLE = dict(color="#2a7f62", lw=2, zorder=2)
@@ -27,7 +27,7 @@ class DwellDrawing(LinkageDrawing):
     n_extras = 0
 
     def set_motion(self, mechanism, motion):
-        from ..slot_export import slot_profile
+        from ..synthesis.slot_export import slot_profile
 
         self._centre = mechanism.slot_points(160)
         self._dwell = mechanism.dwell_points(60)

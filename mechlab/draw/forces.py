@@ -1,6 +1,6 @@
 """Force plans drawn over a mechanism: reaction arrows in every pair, moved in place.
 
-:class:`ForcePlanDrawing` is registered for :class:`mechlab.forces.Kinetostatics`, so
+:class:`ForcePlanDrawing` is registered for :class:`mechlab.kinetostatics.Kinetostatics`, so
 ``animate(Kinetostatics(mechanism, model, loads, omega1=…), n=36)`` plays the mechanism
 with its reactions. It draws the mechanism with the mechanism's own registered drawing
 and adds one arrow per pair (the force of link a on link b, at the pair's point, all
@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..forces import Kinetostatics
+from ..kinetostatics.machines import Kinetostatics
 from . import drawing_class, register
 
 ARROW_COLOURS = ("#d62728", "#9467bd", "#ff7f0e", "#2ca02c", "#8c564b", "#e377c2", "#17becf", "#bcbd22")

@@ -11,7 +11,9 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ..geneva import ExternalGeneva, PlanarGeneva, SphericalGeneva, intermittency
+from ..mechanisms.geneva import ExternalGeneva, PlanarGeneva
+from ..mechanisms.spherical_geneva import SphericalGeneva
+from ..analysis.intermittency import intermittency
 from . import JOINT_STYLE, LINK_STYLE, TRACE_STYLE, LinkageDrawing, register
 
 WHEEL_STYLE = dict(color="#2a7f62", lw=1.6, zorder=2)
@@ -89,7 +91,6 @@ class PlanarGenevaDrawing(LinkageDrawing):
         else:
             lock = np.empty((0, 2))
         return [inner, outer, lock]
-
 
 
 # ----------------------------------------------------------------------------------
@@ -194,7 +195,7 @@ class SphericalGenevaDrawing:
 def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.0, dwell_tol: dict | None = None):
     """ψ' and ψ'' over one crank turn (from ``phase``) for each named mechanism, in the
     sense of its index (the external Geneva's negative turn shown positive), with
-    :func:`mechlab.geneva.intermittency` in the legend (``dwell_tol`` per name, for
+    :func:`mechlab.analysis.intermittency.intermittency` in the legend (``dwell_tol`` per name, for
     approximate dwells)."""
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5))

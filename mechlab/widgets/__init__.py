@@ -24,7 +24,7 @@ from IPython.display import display
 
 from ..draw import drawing_class
 from ..errors import MechanismError
-from ..linkages import FourBar
+from ..mechanisms.fourbar import FourBar
 
 
 @dataclass(frozen=True)

@@ -3,10 +3,12 @@ links, the pole moving along them as the crank turns (seed 002, §7.2)."""
 
 from __future__ import annotations
 
-from ..centres import Antiparallelogram, EllipticTrammel, centrodes
+from ..mechanisms.antiparallelogram import Antiparallelogram
+from ..mechanisms.trammel import EllipticTrammel
+from ..analysis.centres import centrodes
 from ..draw.centres import CentrodeOverlay
 from ..errors import MechanismError
-from ..linkages import FourBar
+from ..mechanisms.fourbar import FourBar
 from . import Control, MechanismExplorer
 
 

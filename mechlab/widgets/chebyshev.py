@@ -7,7 +7,8 @@ outside the existence map shows its SynthesisError message in place of the drawi
 from __future__ import annotations
 
 
-from ..chebyshev import circle_guiding, mchv1
+from ..synthesis.lambda_guiding import circle_guiding
+from ..synthesis.lambda_sixbars import mchv1
 from . import Control, MechanismExplorer
 
 

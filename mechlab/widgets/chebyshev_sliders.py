@@ -6,7 +6,8 @@ infeasible request shows its InfeasibleDesignError / SynthesisError message in p
 
 from __future__ import annotations
 
-from ..chebyshev import circle_guiding, mchv2, mchv5, straight_guiding
+from ..synthesis.lambda_guiding import circle_guiding, straight_guiding
+from ..synthesis.lambda_sliders import mchv2, mchv5
 from . import Control, MechanismExplorer
 
 

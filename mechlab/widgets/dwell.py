@@ -7,12 +7,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..dwell import TRANSITIONS, curved_slot_dwell
+from ..synthesis.dwell_slot import TRANSITIONS, curved_slot_dwell
 from . import Choice, Control, MechanismExplorer
 
 
 class DwellExplorer(MechanismExplorer):
-    """Sliders → :func:`mechlab.dwell.curved_slot_dwell` → drawing and law; a bad design
+    """Sliders → :func:`mechlab.synthesis.dwell_slot.curved_slot_dwell` → drawing and law; a bad design
     (φ1 ≥ φ2, λ = 1, a roller too large for the slot's curvature) shows its message instead."""
 
     def __init__(self, lam=0.5, phi1_deg=60.0, phi2_deg=150.0, pivot_distance=1.0, transition="quintic",

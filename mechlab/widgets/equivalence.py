@@ -18,10 +18,11 @@ from IPython.display import display
 
 from ..draw import drawing_class
 from ..draw.curved_slot import SLOT_STYLE
-from ..equivalence import base_law, equivalent_slot, law_difference, relative_path
+from ..analysis.equivalence import base_law, equivalent_slot, law_difference, relative_path
 from ..errors import MechanismError
-from ..halfturn import limit_theorem
-from ..linkages import FourBar, SliderCrank
+from ..analysis.half_turn import limit_theorem
+from ..mechanisms.fourbar import FourBar
+from ..mechanisms.slider_crank import SliderCrank
 from . import Control
 
 

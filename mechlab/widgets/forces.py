@@ -1,6 +1,6 @@
 """Sliders for kinetostatics: speed, masses, load, friction → force plan, torque and efficiency.
 
-:class:`ForceExplorer` builds a :class:`mechlab.forces.Kinetostatics` from its sliders
+:class:`ForceExplorer` builds a :class:`mechlab.kinetostatics.Kinetostatics` from its sliders
 (``factory(**values)``), solves it over the cycle once, and shows the mechanism with its
 reaction arrows (:mod:`mechlab.draw.forces`), the balancing torque from the groups and
 from the power balance, and the instantaneous efficiency; the crank-angle slider moves
@@ -18,7 +18,8 @@ import numpy as np
 
 from ..draw import drawing_class
 from ..errors import MechanismError
-from ..forces import drive, press, rocker_drive
+from ..kinetostatics.drive import drive
+from ..kinetostatics.machines import press, rocker_drive
 from . import Control, Explorer
 
 
@@ -115,7 +116,7 @@ class ForceExplorer(Explorer):
 
 
 def press_explorer(**initial) -> ForceExplorer:
-    """Sliders for the chapter's press (:func:`mechlab.forces.press`): speed, masses, load, friction."""
+    """Sliders for the chapter's press (:func:`mechlab.kinetostatics.press`): speed, masses, load, friction."""
     v = dict(rpm=120.0, P=2000.0, m_rod=3.0, m_slider=4.0, f=0.0, rod=0.40)
     v.update(initial)
     controls = {"rpm": Control("crank speed", 0.0, 400.0, 5.0, v["rpm"], "rpm"),
@@ -128,7 +129,7 @@ def press_explorer(**initial) -> ForceExplorer:
 
 
 def rocker_explorer(**initial) -> ForceExplorer:
-    """Sliders for the chapter's four-bar (:func:`mechlab.forces.rocker_drive`)."""
+    """Sliders for the chapter's four-bar (:func:`mechlab.kinetostatics.rocker_drive`)."""
     v = dict(rpm=120.0, T=40.0, m_coupler=2.0, m_rocker=2.0, f=0.0, ground=0.35)
     v.update(initial)
     controls = {"rpm": Control("crank speed", 0.0, 400.0, 5.0, v["rpm"], "rpm"),

@@ -5,7 +5,8 @@ the peak analogs and the kind of impact instead of the (constant) transmission a
 
 from __future__ import annotations
 
-from ..geneva import ExternalGeneva, InternalGeneva, SphericalGeneva
+from ..mechanisms.geneva import ExternalGeneva, InternalGeneva
+from ..mechanisms.spherical_geneva import SphericalGeneva
 from . import Choice, Control, MechanismExplorer
 
 

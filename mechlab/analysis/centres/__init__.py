@@ -1,0 +1,20 @@
+"""Instantaneous centres and centrodes (seed 002: Kozhevnikov, §7.1-7.2).
+
+* :func:`instant_centres` — every relative centre of a four-bar, slider-crank, slotted
+  link, sine mechanism, elliptic trammel or antiparallelogram, by Kennedy's theorem
+  (or, as a check, from the links' velocity twists), vectorised over φ; centres at
+  infinity are explicit (homogeneous coordinates, :class:`Centre`).
+* :func:`centrodes` — fixed and moving centrodes of any link relative to any other.
+* :class:`EllipticTrammel`, :class:`Antiparallelogram` — the mechanisms of §7.2.
+"""
+
+from .centrodes import Centrodes, centrodes, pole_from_two_points, rolling_speeds
+from .homogeneous import Centre, CentreAtInfinity, IndeterminateCentre, segments, separation
+from .instant import InstantCentres, instant_centres
+from .kennedy import centre_count, centres_from_twists, kennedy
+from ...mechanisms.antiparallelogram import Antiparallelogram
+from ...mechanisms.trammel import EllipticTrammel
+
+__all__ = ["instant_centres", "InstantCentres", "centrodes", "Centrodes", "rolling_speeds",
+           "pole_from_two_points", "Centre", "CentreAtInfinity", "IndeterminateCentre", "segments", "separation",
+           "kennedy", "centres_from_twists", "centre_count", "EllipticTrammel", "Antiparallelogram"]

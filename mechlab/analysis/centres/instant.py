@@ -1,0 +1,293 @@
+"""Every instantaneous centre of a mechanism over its crank angles, and the velocity
+analogs read back from them.
+
+Links are numbered as in seed 002 (Kozhevnikov §7.1): for the single-loop linkages
+1 = crank, 2 = coupler/rod/slider block, 3 = rocker/slider/slotted link, 4 = frame;
+so for a four-bar P14 = O, P12 = A, P23 = B, P34 = E, and Kennedy gives
+P13 = AB ∩ OE (crank relative to rocker) and P24 = OA ∩ BE (the coupler's pole).
+The slotted link and the sine mechanism are read as three links with a higher pair
+(pin A in the slot, seed 002 Fig. 7.3's method): 1 = crank, 2 = slotted link or yoke,
+3 = frame; P12 lies on the common normal at A, i.e. on the slot's normal through A.
+
+From the centres alone (Kennedy's angular-velocity-ratio theorem; no loop-closure
+analogs used): ω_k/ω_1 = (P1k - P1f)/(P1k - Pkf) along their common line (f = frame),
+and a translating link k (Pkf at infinity) moves with the velocity of P1k as a point of
+the crank, ω_1·perp(P1k - P1f).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable, Mapping
+
+import numpy as np
+
+from ...errors import MechanismError, SingularityError
+from ...geometry import AnglePath, PointPath, as_angles, dot, perp, relative, vector_angle
+from ...mechanisms.fourbar import FourBar
+from ...mechanisms.slotted import SineMechanism, SlottedLink
+from ...mechanisms.slider_crank import SliderCrank
+from ...motion import Motion
+from .homogeneous import Centre, at_infinity, finite, line_with_direction
+from .kennedy import Pair, centres_from_twists, kennedy, pair
+from ...mechanisms.antiparallelogram import Antiparallelogram
+from ...mechanisms.trammel import EllipticTrammel
+
+
+def _still(n: int) -> AnglePath:
+    z = np.zeros(n)
+    return AnglePath(z, z.copy(), z.copy())
+
+
+@dataclass(frozen=True, eq=False)
+class Structure:
+    """How a mechanism's links meet, for the centres.
+
+    ``links``: names in seed-002 order (numbers 1..N); ``frame``/``input``/``output``:
+    link names; ``known``: centres fixed by the pairs (0-based index pairs);
+    ``normals``: common normals of higher pairs; ``poses``: each link's frame as
+    (origin path, x-axis angle path); ``guide``: unit direction of a translating output;
+    ``input_rate``: the input link's angular analog dθ/dφ.
+    """
+
+    links: tuple[str, ...]
+    frame: str
+    input: str
+    output: str
+    known: Mapping[Pair, Centre]
+    normals: Mapping[Pair, np.ndarray]
+    poses: Mapping[str, tuple[PointPath, AnglePath]]
+    scale: float
+    guide: np.ndarray | None = None
+    input_rate: float = 1.0     # dθ_input/dφ: 1 for a crank; -1 for the trammel's rod
+
+
+_STRUCTURES: dict[type, Callable] = {}
+
+
+def structure_of(mechanism_type: type):
+    """Decorator registering a function ``(mechanism, motion) -> Structure`` for a type."""
+    def deco(fn):
+        _STRUCTURES[mechanism_type] = fn
+        return fn
+    return deco
+
+
+def structure(mechanism, motion: Motion) -> Structure:
+    for klass in type(mechanism).__mro__:
+        if klass in _STRUCTURES:
+            return _STRUCTURES[klass](mechanism, motion)
+    raise MechanismError(f"no instantaneous-centre model for {type(mechanism).__name__}; known: "
+                         + ", ".join(sorted(k.__name__ for k in _STRUCTURES)))
+
+
+def _crank_pose(motion):
+    A = motion.points["A"]
+    return motion.points["O"], AnglePath(motion.phi.copy(), np.ones(len(A.p)), np.zeros(len(A.p)))
+
+
+@structure_of(FourBar)
+@structure_of(Antiparallelogram)
+def _fourbar(m, mo) -> Structure:
+    O, A, B, E = (mo.points[k] for k in "OABE")
+    n = len(mo.phi)
+    ang_ab = vector_angle(relative(B, A))
+    ang_eb = vector_angle(relative(B, E))
+    psi = AnglePath(mo.psi, ang_eb.d, ang_eb.dd)
+    known = {(0, 1): finite(A.p), (1, 2): finite(B.p), (2, 3): finite(E.p), (0, 3): finite(O.p)}
+    poses = {"crank": _crank_pose(mo), "coupler": (A, ang_ab), "rocker": (E, psi), "frame": (O, _still(n))}
+    return Structure(("crank", "coupler", "rocker", "frame"), "frame", "crank", "rocker", known, {}, poses,
+                     scale=max(m.crank, m.coupler, m.rocker, m.ground))
+
+
+@structure_of(SliderCrank)
+def _slider_crank(m, mo) -> Structure:
+    O, A, B = (mo.points[k] for k in "OAB")
+    n = len(mo.phi)
+    known = {(0, 1): finite(A.p), (1, 2): finite(B.p), (0, 3): finite(O.p), (2, 3): at_infinity((0.0, 1.0), n)}
+    poses = {"crank": _crank_pose(mo), "rod": (A, vector_angle(relative(B, A))), "slider": (B, _still(n)),
+             "frame": (O, _still(n))}
+    return Structure(("crank", "rod", "slider", "frame"), "frame", "crank", "slider", known, {}, poses,
+                     scale=m.crank + m.rod + abs(m.offset), guide=np.array([1.0, 0.0]))
+
+
+@structure_of(SlottedLink)
+def _slotted(m, mo) -> Structure:
+    O, A, B = (mo.points[k] for k in "OAB")
+    n = len(mo.phi)
+    slot = A.p - B.p
+    known = {(0, 2): finite(O.p), (1, 2): finite(B.p)}
+    normals = {(0, 1): line_with_direction(A.p, perp(slot))}   # the pin's contact normal
+    poses = {"crank": _crank_pose(mo), "slotted link": (B, AnglePath(mo.psi, mo.dpsi, mo.ddpsi)),
+             "frame": (O, _still(n))}
+    return Structure(("crank", "slotted link", "frame"), "frame", "crank", "slotted link", known, normals,
+                     poses, scale=m.crank + m.pivot_distance)
+
+
+@structure_of(SineMechanism)
+def _sine(m, mo) -> Structure:
+    O, A, K = (mo.points[k] for k in "OAK")
+    n = len(mo.phi)
+    known = {(0, 2): finite(O.p), (1, 2): at_infinity((0.0, 1.0), n)}
+    normals = {(0, 1): line_with_direction(A.p, np.broadcast_to([1.0, 0.0], (n, 2)))}
+    poses = {"crank": _crank_pose(mo), "yoke": (K, _still(n)), "frame": (O, _still(n))}
+    return Structure(("crank", "yoke", "frame"), "frame", "crank", "yoke", known, normals, poses,
+                     scale=m.crank, guide=np.array([1.0, 0.0]))
+
+
+@structure_of(EllipticTrammel)
+def _trammel(m, mo) -> Structure:
+    O, A, B = (mo.points[k] for k in "OAB")
+    n = len(mo.phi)
+    nb = np.array([-np.sin(m.beta), np.cos(m.beta)])
+    # seed 002 Fig. 7.5: 1 = guides (frame), 2 = slider A, 3 = slider B, 4 = rod. Cardan's crank
+    # only parametrises the motion (θ_rod = π/2 + β - φ): the rod is the input, at rate -1.
+    known = {(0, 1): at_infinity((0.0, 1.0), n), (0, 2): at_infinity(nb, n), (1, 3): finite(A.p),
+             (2, 3): finite(B.p)}
+    theta = m.rod_angle(mo.phi)
+    poses = {"frame": (O, _still(n)), "slider A": (A, _still(n)), "slider B": (B, _still(n)),
+             "rod": (A, AnglePath(theta, -np.ones(n), np.zeros(n)))}
+    return Structure(("frame", "slider A", "slider B", "rod"), "frame", "rod", "slider A", known,
+                     {}, poses, scale=m.fixed_radius, guide=np.array([1.0, 0.0]), input_rate=-1.0)
+
+
+def twists(st: Structure) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """Each link's twist from its pose's analogs: ω = θ', v₀ = o' - θ'·perp(o)."""
+    om, v0 = [], []
+    for name in st.links:
+        o, th = st.poses[name]
+        om.append(th.d)
+        v0.append(o.d - th.d[:, None] * perp(o.p))
+    return om, v0
+
+
+@dataclass(frozen=True, eq=False)
+class InstantCentres:
+    """The centres of every pair of links over the crank angles ``phi``.
+
+    ``centres[(i, j)]`` (0-based, i < j) is a :class:`Centre`; call ``ic(a, b)`` with link
+    names or 1-based numbers. ``steps`` records Kennedy's construction order.
+    """
+
+    mechanism: object
+    motion: Motion
+    structure: Structure
+    centres: Mapping[Pair, Centre]
+    method: str
+    steps: list = field(default_factory=list)
+
+    @property
+    def phi(self) -> np.ndarray:
+        return self.motion.phi
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        return self.structure.links
+
+    def index(self, link) -> int:
+        if isinstance(link, (int, np.integer)):
+            if not 1 <= link <= len(self.links):
+                raise MechanismError(f"link number {link} outside 1..{len(self.links)} ({', '.join(self.links)})")
+            return int(link) - 1
+        try:
+            return self.links.index(link)
+        except ValueError:
+            raise MechanismError(f"no link {link!r}; links: {', '.join(self.links)}") from None
+
+    def __call__(self, a, b) -> Centre:
+        i, j = self.index(a), self.index(b)
+        if i == j:
+            raise MechanismError(f"a link has no centre relative to itself ({self.links[i]})")
+        return self.centres[pair(i, j)]
+
+    def label(self, a, b) -> str:
+        i, j = sorted((self.index(a) + 1, self.index(b) + 1))
+        return f"P{i}{j}"
+
+    # -- analogs read from the centres ---------------------------------------------
+    def angular_analog(self, link) -> np.ndarray:
+        """ω_link / ω_crank from the centres only (Kennedy's ratio theorem); 0 where the link translates."""
+        k, one, f = self.index(link), self.index(self.structure.input), self.index(self.structure.frame)
+        rate = self.structure.input_rate
+        if k == one:
+            return np.full(len(self.phi), rate)
+        if k == f:
+            return np.zeros(len(self.phi))
+        p1k, p1f, pkf = self.centres[pair(one, k)], self.centres[pair(one, f)], self.centres[pair(k, f)]
+        X, w = p1k.h[:, :2], p1k.h[:, 2]
+        u = X - w[:, None] * p1f.xy
+        v = X - w[:, None] * np.where(pkf.finite[:, None], pkf.h[:, :2], 0.0)
+        vv = dot(v, v)
+        bad = pkf.finite & (vv <= (1e-14 * self.structure.scale) ** 2)
+        if np.any(bad):
+            i = int(np.argmax(bad))
+            raise SingularityError(f"{p1k.name} coincides with {pkf.name} at φ = {np.degrees(self.phi[i]):.4g}°: "
+                                   f"a dead point, ω_{k + 1} is unbounded")
+        return rate * np.where(pkf.finite, dot(u, v) / np.where(pkf.finite, vv, 1.0), 0.0)
+
+    def velocity_analog(self, link, point: np.ndarray) -> np.ndarray:
+        """Velocity analog (n, 2) of a point (n, 2) carried by ``link``, from the centres only."""
+        k, one, f = self.index(link), self.index(self.structure.input), self.index(self.structure.frame)
+        point = np.broadcast_to(np.asarray(point, dtype=float), (len(self.phi), 2))
+        if k == f:
+            return np.zeros_like(point)
+        om = self.angular_analog(link)
+        pkf = self.centres[pair(k, f)]
+        out = np.where(pkf.finite[:, None], om[:, None] * perp(point - np.where(pkf.finite[:, None],
+                                                                                  pkf.h[:, :2], 0.0)), 0.0)
+        if k == one:
+            return out
+        trans = ~pkf.finite
+        if np.any(trans):
+            p1k, p1f = self.centres[pair(one, k)], self.centres[pair(one, f)]
+            if np.any(trans & ~p1k.finite):
+                raise SingularityError(f"{p1k.name} and {pkf.name} both at infinity: the crank would not turn")
+            base = self.structure.input_rate * perp(np.where(p1k.finite[:, None], p1k.h[:, :2], 0.0) - p1f.xy)
+            out = np.where(trans[:, None], base, out)
+        return out
+
+    def output_analog(self) -> np.ndarray:
+        """ψ' (angular output) or s' (translating output along its guide), from the centres only."""
+        st = self.structure
+        if st.guide is None:
+            return self.angular_analog(st.output)
+        o, _ = st.poses[st.output]
+        return dot(self.velocity_analog(st.output, o.p), np.broadcast_to(st.guide, o.p.shape))
+
+    def collinearity(self) -> float:
+        """Largest violation of Kennedy's theorem over all triples of links and angles:
+        |det[P_ij; P_jk; P_ik]| of the unit-normalised homogeneous rows (0 when collinear)."""
+        worst = 0.0
+        n = len(self.links)
+        for i in range(n):
+            for j in range(i + 1, n):
+                for k in range(j + 1, n):
+                    rows = [self.centres[(i, j)].h, self.centres[(j, k)].h, self.centres[(i, k)].h]
+                    rows = [r * [1.0 / self.structure.scale, 1.0 / self.structure.scale, 1.0] for r in rows]
+                    rows = [r / np.linalg.norm(r, axis=1)[:, None] for r in rows]
+                    det = np.abs(np.linalg.det(np.stack(rows, axis=1)))
+                    worst = max(worst, float(det.max()))
+        return worst
+
+
+def instant_centres(mechanism, phi=None, method: str = "kennedy") -> InstantCentres:
+    """All instantaneous centres of ``mechanism`` at crank angles φ (default: its cycle).
+
+    ``method="kennedy"``: from positions only — the pairs' own centres and the higher
+    pairs' common normals, then Kennedy's theorem (seed 002, §7.1). ``method="velocity"``:
+    from each link's twist (loop-closure analogs), the independent check; it is also
+    defined where Kennedy's lines coincide (a change point), where "kennedy" raises.
+    """
+    phi = mechanism.cycle() if phi is None else as_angles(phi)
+    motion = mechanism.motion(phi)
+    st = structure(mechanism, motion)
+    nums = [str(k + 1) for k in range(len(st.links))]
+    if method == "kennedy":
+        centres, steps = kennedy(len(st.links), st.known, st.normals, scale=st.scale, phi=phi, names=nums)
+    elif method == "velocity":
+        om, v0 = twists(st)
+        centres = centres_from_twists(om, v0, scale=st.scale, phi=phi, names=nums, known=st.known)
+        steps = []
+    else:
+        raise MechanismError(f"method must be 'kennedy' or 'velocity', got {method!r}")
+    return InstantCentres(mechanism, motion, st, centres, method, steps)

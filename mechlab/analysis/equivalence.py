@@ -1,0 +1,294 @@
+"""Kinematic equivalence of linkages with one second-order group and curved-slot
+slotted links; the base mechanism; the symmetry of the two assemblies (seed 000, §1).
+
+Seed 000 §1 (Fig. 1-4): a linkage made of a crank, the frame and one second-order
+structural group (a dyad, or the class-IV group of :mod:`mechlab.mechanisms.sixbar_iv`) has one
+degree of freedom relative to its output link, so the crank pin A traces a fixed
+curve in the output link's frame — the **relative path**. A slotted link whose slot
+follows that curve, pivoted (or guided) like the output link and driven by the same
+crank, moves exactly like the linkage's output. For the four-bar the curve is the
+circle of radius l_AB about B (Fig. 2), for the slider-crank the circle of radius
+l_AB about the slider's pin (Fig. 4), for the class-IV six-bar a four-bar coupler curve.
+
+Public API
+----------
+* ``relative_path(mechanism, phi) -> PointPath`` — A in the output link's frame
+  (origin at the output pivot, x axis along ψ = 0; for a translating output the
+  frame's origin is C = (s, 0)), with its φ-analogs.
+* ``equivalent_slot(mechanism) -> EquivalentSlot`` — the curved-slot twin, a
+  :class:`~mechlab.mechanisms.base.Mechanism` in the linkage's own frame whose
+  ``motion(phi)`` reproduces the linkage's law; ``.slot_mechanism`` is the
+  :class:`~mechlab.mechanisms.curved_slot.CurvedSlotLink` /
+  :class:`~mechlab.mechanisms.curved_slot.TranslatingCurvedSlot` in seed 000's frame.
+* ``equivalence_error(mechanism, phi) -> float`` — max |law difference| (ψ, ψ', ψ'').
+* ``base_mechanism(mechanism)`` — ``SlottedLink(l_OA, l_OE)`` (straight slot through
+  the output pivot, seed Fig. 5) or ``SineMechanism(l_OA)`` (seed Fig. 6).
+* ``base_law(mechanism, phi) -> AnglePath`` — the base mechanism's law ψ_K, ψ_K', ψ_K''
+  (or x_K …) expressed in the mechanism's own frame.
+* ``other_assembly(mechanism)``, ``assembly_symmetry(mechanism, phi) -> AssemblySymmetry``
+  — the exact relations between the kc = +1 and kc = -1 assemblies (below).
+
+Symmetry of the assemblies (seed 000 §1, after Fig. 6; derived here, not copied).
+The relative path of a four-bar is the whole circle about B; the assembly kc = +1
+uses one arc (α1–α1), kc = -1 the other (α2–α2), and the two arcs are mirror images
+in the output link's axis E→B. With ψ measured from the frame line (x axis):
+
+* ψ₋(φ) = -ψ₊(-φ) (mod 2π), ψ'₋(φ) = ψ'₊(-φ), ψ''₋(φ) = -ψ''₊(-φ)  (mirror in the frame line);
+* (ψ₊(φ) + ψ₋(φ))/2 = ψ_K(φ) (mod π) and likewise for ψ', ψ'': the two assemblies
+  deviate from the base mechanism by equal and opposite angles β (formula (12));
+* the relative paths mirror: y₋(φ) = -y₊(φ), x₋(φ) = x₊(φ) in the output link's frame.
+
+For the slider-crank (assemblies ±1 = slider ahead of / behind the pin):
+s₋(φ) = -s₊(π - φ) (mirror in the y axis), (s₊ + s₋)/2 = x_K = l_OA cos φ, and the
+relative paths mirror in the slot frame's vertical axis: x₋ = -x₊, y₋ = y₊.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numpy as np
+
+from ..errors import DimensionError
+from ..geometry import AnglePath, PointPath, as_angles, perp, wrap
+from ..mechanisms.fourbar import FourBar
+from ..mechanisms.base import Mechanism
+from ..mechanisms.slotted import SineMechanism, SlottedLink
+from ..mechanisms.slider_crank import SliderCrank
+from ..mechanisms.base import FULL_TURN
+from ..mechanisms.curved_slot import CircleSlot, CurvedSlotLink, ParametricSlot, TranslatingCurvedSlot
+from ..motion import AngularMotion, LinearMotion
+from ..mechanisms.sixbar_iv import SixBarIV
+
+# Where the output link turns (point name) and the crank-angle shift from the
+# mechanism's frame to seed 000's (seed φ = own φ - phase; the frames differ by a half turn).
+_PIVOT = {FourBar: ("E", np.pi), SixBarIV: ("E", np.pi), CurvedSlotLink: ("B", 0.0), SlottedLink: ("B", 0.0)}
+
+
+def _angular_info(mechanism):
+    for klass, info in _PIVOT.items():
+        if isinstance(mechanism, klass):
+            return info
+    if isinstance(mechanism, EquivalentSlot):
+        return _angular_info(mechanism.linkage)
+    raise DimensionError(f"{type(mechanism).__name__} has no output link turning about a fixed pivot known to mechlab")
+
+
+def _rot(angle, v):
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]], axis=-1)
+
+
+# ---------------------------------------------------------------------------------------------
+# relative path
+# ---------------------------------------------------------------------------------------------
+def relative_path(mechanism: Mechanism, phi) -> PointPath:
+    """The crank pin A seen from the output link, with its φ-analogs (seed 000 §1, Fig. 1-4).
+
+    Angular output about pivot P: w = Rot(-ψ)(A - P), w' = Rot(-ψ)(v' - ψ'·v⊥),
+    w'' = Rot(-ψ)(v'' - 2ψ'·v'⊥ - ψ''·v⊥ - ψ'²·v) with v = A - P.
+    Translating output: w = A - (s, 0), w' = A' - (s', 0), w'' = A'' - (s'', 0).
+    """
+    phi = as_angles(phi)
+    mo = mechanism.motion(phi)
+    A = mo.points["A"]
+    if isinstance(mo, LinearMotion):
+        z = np.zeros_like(mo.s)
+        return PointPath(A.p - np.stack([mo.s, z], -1), A.d - np.stack([mo.ds, z], -1),
+                         A.dd - np.stack([mo.dds, z], -1))
+    name, _ = _angular_info(mechanism)
+    piv = mo.points[name]
+    v, dv, ddv = A.p - piv.p, A.d - piv.d, A.dd - piv.dd
+    w1, w2 = mo.dpsi[:, None], mo.ddpsi[:, None]
+    return PointPath(_rot(-mo.psi, v), _rot(-mo.psi, dv - w1 * perp(v)),
+                     _rot(-mo.psi, ddv - 2 * w1 * perp(dv) - w2 * perp(v) - w1**2 * v))
+
+
+# ---------------------------------------------------------------------------------------------
+# the equivalent curved-slot mechanism
+# ---------------------------------------------------------------------------------------------
+def _coupler_slot(six: SixBarIV) -> ParametricSlot:
+    """The coupler curve of the six-bar's inner four-bar R-Q-P-T (the relative path), θ = angle of R→Q."""
+    return ParametricSlot(lambda t: six.relative_pin(t).p, lambda t: six.relative_pin(t).d,
+                          lambda t: six.relative_pin(t).dd, -np.pi, np.pi, periodic=True)
+
+
+@dataclass(frozen=True, eq=False)
+class EquivalentSlot(Mechanism):
+    """A linkage's curved-slot twin, expressed in the linkage's own frame.
+
+    ``slot_mechanism`` is the curved-slot link in seed 000's frame; its crank angle is
+    the linkage's minus ``phase`` (π for four-bars and six-bars, whose output pivot E
+    lies on +x, 0 for the slider-crank), and its link angle is the linkage's minus ``phase``.
+    Points: O, A and the pivot E (angular) or C = (s, 0) (translating).
+    """
+
+    linkage: Mechanism
+    slot_mechanism: Mechanism
+    phase: float = 0.0
+
+    links = (("O", "A"),)
+
+    @property
+    def pivots(self):
+        return ("O", "E") if self.output == "angle" else ("O",)
+
+    @property
+    def output(self):
+        return self.slot_mechanism.output
+
+    def crank_ranges(self):
+        ranges = self.slot_mechanism.crank_ranges()
+        if ranges == FULL_TURN or self.phase == 0.0:
+            return ranges
+        return tuple((s + self.phase, e + self.phase) for s, e in ranges)
+
+    def rotation_failure(self) -> str:
+        return self.slot_mechanism.rotation_failure()
+
+    def slot_samples(self, n: int = 200) -> np.ndarray:
+        """Points of the slot's working part in the output link's frame (the linkage's convention)."""
+        return self.slot_mechanism.slot_samples(n)
+
+    def motion(self, phi):
+        """The twin's motion at the linkage's crank angles φ, in the linkage's frame."""
+        phi = as_angles(phi)
+        mo = self.slot_mechanism.motion(phi - self.phase)
+        if isinstance(mo, LinearMotion):
+            return mo
+        ph = self.phase
+        pts = {"O": mo.points["O"], "A": self._turn(mo.points["A"]), "E": self._turn(mo.points["B"])}
+        return AngularMotion(phi, pts, mo.transmission, mo.psi + ph, mo.dpsi, mo.ddpsi)
+
+    def _turn(self, p: PointPath) -> PointPath:
+        ph = self.phase
+        if ph == np.pi:   # a half turn exactly (no rounding of sin π)
+            return PointPath(-p.p, -p.d, -p.dd)
+        return PointPath(_rot(ph, p.p), _rot(ph, p.d), _rot(ph, p.dd))
+
+
+def equivalent_slot(mechanism: Mechanism) -> EquivalentSlot:
+    """The curved-slot mechanism whose slot is the linkage's relative path (seed 000 §1).
+
+    FourBar(a, c, r, g, kc) → slotted link pivoted at E, slot = circle of radius c
+    about (r, 0) in the rocker's frame, on the arc chosen by kc (Fig. 2).
+    SliderCrank(a, l, e, k) → translating slot, circle of radius l about (0, e) (Fig. 4).
+    SixBarIV → slotted link whose slot is the coupler curve of its inner four-bar.
+    """
+    if isinstance(mechanism, FourBar):
+        slot = CircleSlot((mechanism.rocker, 0.0), mechanism.coupler)
+        twin = CurvedSlotLink(mechanism.crank, mechanism.ground, slot, start=mechanism.assembly * np.pi / 2)
+        return EquivalentSlot(mechanism, twin, np.pi)
+    if isinstance(mechanism, SliderCrank):
+        slot = CircleSlot((0.0, mechanism.offset), mechanism.rod)
+        twin = TranslatingCurvedSlot(mechanism.crank, slot, start=np.pi if mechanism.assembly == 1 else 0.0)
+        return EquivalentSlot(mechanism, twin, 0.0)
+    if isinstance(mechanism, SixBarIV):
+        twin = CurvedSlotLink(mechanism.crank, mechanism.ground, _coupler_slot(mechanism),
+                              start=mechanism.start_angle)
+        return EquivalentSlot(mechanism, twin, np.pi)
+    raise DimensionError(f"no curved-slot equivalent known for {type(mechanism).__name__}: "
+                         f"FourBar, SliderCrank and SixBarIV are supported")
+
+
+def _law(mo):
+    return (mo.psi, mo.dpsi, mo.ddpsi) if isinstance(mo, AngularMotion) else (mo.s, mo.ds, mo.dds)
+
+
+def law_difference(m1, m2) -> tuple[float, float, float]:
+    """Max |difference| of the law (angles compared mod 2π) and its two analogs."""
+    a, b = _law(m1), _law(m2)
+    d0 = wrap(a[0] - b[0]) if isinstance(m1, AngularMotion) else a[0] - b[0]
+    return float(np.max(np.abs(d0))), float(np.max(np.abs(a[1] - b[1]))), float(np.max(np.abs(a[2] - b[2])))
+
+
+def equivalence_error(mechanism: Mechanism, phi=None) -> float:
+    """Max over φ of |law − twin's law| for ψ (mod 2π), ψ', ψ'' (or s, s', s'')."""
+    phi = mechanism.cycle(361) if phi is None else as_angles(phi)
+    return max(law_difference(mechanism.motion(phi), equivalent_slot(mechanism).motion(phi)))
+
+
+# ---------------------------------------------------------------------------------------------
+# base mechanism
+# ---------------------------------------------------------------------------------------------
+def base_mechanism(mechanism: Mechanism):
+    """The base mechanism (seed 000 Fig. 5, 6): same crank, straight slot through the output
+    pivot (``SlottedLink(l_OA, l_OE)``), or the sine mechanism for a translating output."""
+    m = mechanism.linkage if isinstance(mechanism, EquivalentSlot) else mechanism
+    if isinstance(m, (FourBar, SixBarIV)):
+        return SlottedLink(m.crank, m.ground)
+    if isinstance(m, (CurvedSlotLink, SlottedLink)):
+        return SlottedLink(m.crank, m.pivot_distance)
+    if isinstance(m, (SliderCrank, TranslatingCurvedSlot, SineMechanism)):
+        return SineMechanism(m.crank)
+    raise DimensionError(f"no base mechanism known for {type(m).__name__}")
+
+
+def frame_phase(mechanism: Mechanism) -> float:
+    """Crank-angle shift from the mechanism's frame to seed 000's (π when the output pivot is on +x)."""
+    if isinstance(mechanism, EquivalentSlot):
+        return mechanism.phase
+    if isinstance(mechanism, (FourBar, SixBarIV)):
+        return np.pi
+    return 0.0
+
+
+def base_law(mechanism: Mechanism, phi) -> AnglePath:
+    """The base mechanism's law in the mechanism's own frame: ψ_K(φ) = angle of A - pivot
+    (formulas (18)-(20) with λ = l_OA/l_OB), or x_K = l_OA cos φ (formulas (2), (5))."""
+    phi = as_angles(phi)
+    base = base_mechanism(mechanism)
+    ph = frame_phase(mechanism)
+    mo = base.motion(phi - ph)
+    if isinstance(mo, LinearMotion):
+        return AnglePath(mo.s, mo.ds, mo.dds)
+    return AnglePath(mo.psi + ph, mo.dpsi, mo.ddpsi)
+
+
+# ---------------------------------------------------------------------------------------------
+# symmetry of the assemblies
+# ---------------------------------------------------------------------------------------------
+def other_assembly(mechanism: Mechanism) -> Mechanism:
+    """The same linkage in the other assembly (kc → -kc)."""
+    if isinstance(mechanism, FourBar):
+        return FourBar(mechanism.crank, mechanism.coupler, mechanism.rocker, mechanism.ground, -mechanism.assembly)
+    if isinstance(mechanism, SliderCrank):
+        return SliderCrank(mechanism.crank, mechanism.rod, mechanism.offset, -mechanism.assembly)
+    raise DimensionError(f"assembly symmetry is stated for FourBar and SliderCrank, not {type(mechanism).__name__}")
+
+
+class AssemblySymmetry(NamedTuple):
+    """Max residuals of the exact relations between the two assemblies (see the module docstring)."""
+
+    mirror: float        # ψ₋(φ) = -ψ₊(-φ) … / s₋(φ) = -s₊(π - φ) …, over the law and both analogs
+    mean_is_base: float  # (ψ₊ + ψ₋)/2 = ψ_K … / (s₊ + s₋)/2 = x_K …
+    branches: float      # the relative paths are mirror images (α1–α1 ↔ α2–α2)
+
+    def holds(self, tol: float = 1e-9) -> bool:
+        return max(self) <= tol
+
+
+def assembly_symmetry(mechanism: Mechanism, phi) -> AssemblySymmetry:
+    """Residuals of the assembly relations for a FourBar or SliderCrank at crank angles φ."""
+    phi = as_angles(phi)
+    plus = mechanism if mechanism.assembly == 1 else other_assembly(mechanism)
+    minus = other_assembly(plus)
+    m, base = minus.motion(phi), base_law(plus, phi)
+    p = plus.motion(phi)
+    rp, rm = relative_path(plus, phi), relative_path(minus, phi)
+    if isinstance(plus, FourBar):
+        q = plus.motion(-phi)
+        mirror = max(np.max(np.abs(wrap(m.psi + q.psi))), np.max(np.abs(m.dpsi - q.dpsi)),
+                     np.max(np.abs(m.ddpsi + q.ddpsi)))
+        # the mean of two angles is defined mod π: compare 2·mean with 2·ψ_K mod 2π
+        mean = max(np.max(np.abs(wrap(p.psi + m.psi - 2 * base.theta))),
+                   np.max(np.abs(p.dpsi + m.dpsi - 2 * base.d)), np.max(np.abs(p.ddpsi + m.ddpsi - 2 * base.dd)))
+        branches = np.max(np.abs(rm.p - rp.p * np.array([1.0, -1.0])))
+    else:
+        q = plus.motion(np.pi - phi)
+        mirror = max(np.max(np.abs(m.s + q.s)), np.max(np.abs(m.ds - q.ds)), np.max(np.abs(m.dds + q.dds)))
+        mean = max(np.max(np.abs(p.s + m.s - 2 * base.theta)), np.max(np.abs(p.ds + m.ds - 2 * base.d)),
+                   np.max(np.abs(p.dds + m.dds - 2 * base.dd)))
+        branches = np.max(np.abs(rm.p - rp.p * np.array([-1.0, 1.0])))
+    return AssemblySymmetry(float(mirror), float(mean), float(branches))

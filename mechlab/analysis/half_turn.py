@@ -1,0 +1,159 @@
+"""Half-turn relations (seed 000, Tables 1-2, formulas (1)-(17)) and the limit theorem.
+
+Where the relations hold
+------------------------
+Frame: the crank angle φ and the output angle ψ are measured from the frame line
+through O and the output pivot (seed 000's frame, or the four-bar's, which differs
+by a half turn and gives the same relations); the slotted link's pin runs back and
+forth along one piece of the slot, so its place on the slot depends only on its
+distance S(φ) from the pivot (oscillating link) or its height l_OA·sin φ (translating
+link). Every linkage with one second-order group does this (see
+:mod:`mechlab.analysis.equivalence`), and so does every :class:`CurvedSlotLink`.
+
+Oscillating or rotating link (Table 2), φ* = 2π - φ (S(φ*) = S(φ), so β(φ*) = β(φ)):
+with ψ = ψ_K - β (formula (12)),
+
+    ψ(φ*) = ψ(φ) - 2ψ_K(φ)          (= -[ψ_K(φ) + β], mod 2π)
+    ψ'(φ*) = 2ψ_K'(φ) - ψ'(φ)       (= ψ_K'(φ) + β')
+    ψ''(φ*) = ψ''(φ) - 2ψ_K''(φ)    (= -[ψ_K''(φ) + β''])
+
+Translating link (Table 1), φ* = π - φ (sin φ* = sin φ, so x_α(φ*) = x_α(φ)), with
+s = x_K - x_α, x_K = l_OA cos φ:
+
+    s(φ*) = s(φ) - 2x_K(φ),  s'(φ*) = 2x_K'(φ) - s'(φ),  s''(φ*) = s''(φ) - 2x_K''(φ).
+
+So the law on one half of the crank turn fixes it on the other half: it can be
+chosen freely on [0, π] only (seed 000, text after Table 2).
+
+Limit theorem (seed 000 §2, conclusions before §3)
+---------------------------------------------------
+Adding the relations for the first analog: ψ'(φ) + ψ'(φ*) = 2ψ_K'(φ), so
+max(|ψ'(φ)|, |ψ'(φ*)|) ≥ |ψ_K'(φ)| at every φ, whence
+max_φ |ψ'| ≥ max_φ |ψ_K'| = λ/|1 - λ| (at φ = π, from (19)). Likewise
+ψ''(φ) - ψ''(φ*) = 2ψ_K''(φ) gives max |ψ''| ≥ max |ψ_K''|, the peak of (20) (closed
+form in :func:`base_peaks`). The same holds for translating links with x_K = l_OA cos φ
+(peaks l_OA and l_OA). Equality needs β' ≡ 0 (resp. β'' ≡ 0): the base mechanism itself.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from ..errors import DimensionError
+from .equivalence import base_law, base_mechanism
+from ..geometry import AnglePath, as_angles, wrap
+from ..mechanisms.slotted import SineMechanism
+from ..motion import AngularMotion
+
+
+def formula_18(lam: float, phi) -> AnglePath:
+    """The base mechanism's law from seed 000 (18)-(20) (the printed formulas, verified correct):
+    tan ψ_K = λ sin φ/(λ cos φ + 1), ψ_K' = λ(λ + cos φ)/D, ψ_K'' = λ(λ² - 1) sin φ/D², D = λ² + 1 + 2λ cos φ.
+    ψ_K is the continuous branch (atan2; lifted by φ when λ > 1)."""
+    phi = as_angles(phi)
+    if not (np.isfinite(lam) and lam > 0 and lam != 1):
+        raise DimensionError(f"λ must be positive, finite and ≠ 1, got {lam}")
+    s, c = np.sin(phi), np.cos(phi)
+    D = lam * lam + 1 + 2 * lam * c
+    psi = np.arctan2(lam * s, lam * c + 1)
+    if lam > 1:
+        psi = phi + wrap(psi - phi)
+    return AnglePath(psi, lam * (lam + c) / D, lam * (lam * lam - 1) * s / D**2)
+
+
+def base_peaks(lam: float) -> tuple[float, float]:
+    """Peaks of |ψ_K'| and |ψ_K''| of the base mechanism over a turn, in closed form.
+
+    |ψ_K'| peaks at φ = π: λ/|1 - λ| (seed (25)). ψ_K'' ∝ sin φ/D² peaks where
+    2λ cos²φ - (1 + λ²) cos φ - 4λ = 0, i.e. cos φ = [(1 + λ²) - √((1 + λ²)² + 32λ²)]/(4λ).
+    """
+    if not (np.isfinite(lam) and lam > 0 and lam != 1):
+        raise DimensionError(f"λ must be positive, finite and ≠ 1, got {lam}")
+    v = lam / abs(1 - lam)
+    c = ((1 + lam * lam) - np.sqrt((1 + lam * lam) ** 2 + 32 * lam * lam)) / (4 * lam)
+    s = np.sqrt(1 - c * c)
+    D = lam * lam + 1 + 2 * lam * c
+    return float(v), float(lam * abs(lam * lam - 1) * s / D**2)
+
+
+def _is_translating(mechanism) -> bool:
+    return isinstance(base_mechanism(mechanism), SineMechanism)
+
+
+def mirror_angle(mechanism, phi) -> np.ndarray:
+    """φ* of Tables 1-2: 2π - φ for a turning output, π - φ for a translating one."""
+    phi = as_angles(phi)
+    return (np.pi - phi) if _is_translating(mechanism) else (2 * np.pi - phi)
+
+
+class HalfTurn(NamedTuple):
+    """The law at φ* predicted from the law at φ (Tables 1-2) and the law actually found there."""
+
+    phi: np.ndarray
+    phi_star: np.ndarray
+    predicted: AnglePath
+    actual: AnglePath
+    angular: bool
+
+    def residual(self) -> float:
+        d0 = self.predicted.theta - self.actual.theta
+        if self.angular:
+            d0 = wrap(d0)
+        return float(max(np.max(np.abs(d0)), np.max(np.abs(self.predicted.d - self.actual.d)),
+                         np.max(np.abs(self.predicted.dd - self.actual.dd))))
+
+
+def _law(mo) -> AnglePath:
+    if isinstance(mo, AngularMotion):
+        return AnglePath(mo.psi, mo.dpsi, mo.ddpsi)
+    return AnglePath(mo.s, mo.ds, mo.dds)
+
+
+def other_half(mechanism, phi) -> HalfTurn:
+    """Predict the law at φ* = 2π - φ (or π - φ) from the law at φ and the base mechanism."""
+    phi = as_angles(phi)
+    star = mirror_angle(mechanism, phi)
+    law = _law(mechanism.motion(phi))
+    k = base_law(mechanism, phi)
+    predicted = AnglePath(law.theta - 2 * k.theta, 2 * k.d - law.d, law.dd - 2 * k.dd)
+    actual = _law(mechanism.motion(star))
+    return HalfTurn(phi, star, predicted, actual, not _is_translating(mechanism))
+
+
+class LimitCheck(NamedTuple):
+    """Peaks of the output's analogs and of its base mechanism's, over one symmetric grid."""
+
+    peak_velocity: float
+    base_peak_velocity: float
+    peak_acceleration: float
+    base_peak_acceleration: float
+    pointwise_velocity_gap: float       # min over φ of max(|ψ'(φ)|, |ψ'(φ*)|) - |ψ_K'(φ)| (≥ 0)
+    pointwise_acceleration_gap: float   # min over φ of max(|ψ''(φ)|, |ψ''(φ*)|) - |ψ_K''(φ)| (≥ 0)
+
+    def holds(self, tol: float = 1e-12) -> bool:
+        return (self.peak_velocity >= self.base_peak_velocity - tol
+                and self.peak_acceleration >= self.base_peak_acceleration - tol
+                and self.pointwise_velocity_gap >= -tol and self.pointwise_acceleration_gap >= -tol)
+
+
+def limit_theorem(mechanism, n: int = 721) -> LimitCheck:
+    """Check seed 000's limit theorem on a grid of n crank angles symmetric under φ ↦ φ*.
+
+    The crank must turn fully. The grid is φ_k = 2πk/(n-1) (for a translating link
+    shifted to -π/2 + …, symmetric under φ ↦ π - φ), so φ* of every sample is a sample.
+    """
+    if n < 3 or n % 2 == 0:
+        raise DimensionError(f"n must be odd and ≥ 3 (so that φ = π is a sample), got {n}")
+    phi = mechanism.turn(n)
+    if _is_translating(mechanism):
+        phi = phi - np.pi / 2
+    law = _law(mechanism.motion(phi))
+    k = base_law(mechanism, phi)
+    star = law.d[::-1], law.dd[::-1]   # on this grid φ* of φ_k is φ_{n-1-k} (mod 2π)
+    gap_v = np.maximum(np.abs(law.d), np.abs(star[0])) - np.abs(k.d)
+    gap_a = np.maximum(np.abs(law.dd), np.abs(star[1])) - np.abs(k.dd)
+    return LimitCheck(float(np.max(np.abs(law.d))), float(np.max(np.abs(k.d))),
+                      float(np.max(np.abs(law.dd))), float(np.max(np.abs(k.dd))),
+                      float(np.min(gap_v)), float(np.min(gap_a)))

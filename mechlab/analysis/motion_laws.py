@@ -1,0 +1,200 @@
+"""Classic cam motion laws over a rise and their dimensionless invariants (seed 001, chapter 2 table).
+
+A rise law is written on the normalised time x ∈ [0, 1] (crank angle over the rise / its
+duration Φ) with the normalised stroke y ∈ [0, 1] (output displacement / stroke h).
+Seed 001 compares linkages with cams by three invariants of the rise:
+
+* B = max |y'| — velocity, the physical peak is B·h·ω/Φ;
+* C = max |y''| — acceleration, the peak is C·h·ω²/Φ²;
+* D = max |y'·y''| — "kinetic power" (velocity × acceleration), the peak of the inertia
+  power is D·J·h²·ω³/Φ³. (The absolute value: the thesis' МЧВ1 rows are reproduced only with
+  it; for the symmetric cam laws it equals the signed maximum.)
+
+:func:`rise_invariants` measures the same numbers on any output law ψ(φ) sampled by a
+mechanism (analogs ψ', ψ'' with respect to φ), so linkages and cams go in one table.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+from ..errors import MechanismError
+
+__all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "rise_invariants", "thesis_cam_rows",
+           "thesis_mchv1_rows"]
+
+
+class Invariants(tuple):
+    """(B, C, D) with names."""
+
+    def __new__(cls, B, C, D):
+        return super().__new__(cls, (float(B), float(C), float(D)))
+
+    B = property(lambda self: self[0])
+    C = property(lambda self: self[1])
+    D = property(lambda self: self[2])
+
+    def __repr__(self):
+        return f"Invariants(B={self.B:.4f}, C={self.C:.4f}, D={self.D:.4f})"
+
+
+@dataclass(frozen=True)
+class RiseLaw:
+    """A rise law y(x) with y'(x), y''(x) (vectorised) and its closed-form invariants."""
+
+    name: str
+    y: Callable
+    dy: Callable
+    ddy: Callable
+    closed: tuple  # (B, C, D) in closed form
+
+    def __call__(self, x):
+        x = np.asarray(x, dtype=float)
+        return self.y(x), self.dy(x), self.ddy(x)
+
+
+PI = np.pi
+_S3 = np.sqrt(3.0)
+
+
+def _piecewise(x, lo, hi):
+    return np.where(x < 0.5, lo(x), hi(x))
+
+
+def _dh_dd_max():
+    # double harmonic: y'y'' = (π³/4)(sin πx − ½ sin 2πx)(cos πx − cos 2πx); its largest magnitude is
+    # in the deceleration (x > 2/3, where y'' < 0), found by a bounded search on [2/3, 1]
+    f = lambda x: (PI**3 / 4) * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x)) * (np.cos(PI * x) - np.cos(2 * PI * x))
+    return -minimize_scalar(f, bounds=(2 / 3, 1.0), method="bounded", options=dict(xatol=1e-12)).fun
+
+
+LAWS = {
+    "constant acceleration": RiseLaw(
+        "constant acceleration",
+        lambda x: _piecewise(x, lambda x: 2 * x**2, lambda x: 1 - 2 * (1 - x) ** 2),
+        lambda x: _piecewise(x, lambda x: 4 * x, lambda x: 4 * (1 - x)),
+        lambda x: _piecewise(x, lambda x: 4 + 0 * x, lambda x: -4 + 0 * x),
+        (2.0, 4.0, 8.0)),  # y'y'' = 16x peaks at x → ½
+    "linearly falling acceleration": RiseLaw(
+        "linearly falling acceleration",
+        lambda x: 3 * x**2 - 2 * x**3, lambda x: 6 * x - 6 * x**2, lambda x: 6 - 12 * x,
+        (1.5, 6.0, 2 * _S3)),  # 36x(1−x)(1−2x) peaks at x = (3 − √3)/6: 2√3
+    "cosine": RiseLaw(
+        "cosine",
+        lambda x: 0.5 * (1 - np.cos(PI * x)), lambda x: PI / 2 * np.sin(PI * x), lambda x: PI**2 / 2 * np.cos(PI * x),
+        (PI / 2, PI**2 / 2, PI**3 / 8)),
+    "cycloidal (sine)": RiseLaw(
+        "cycloidal (sine)",
+        lambda x: x - np.sin(2 * PI * x) / (2 * PI), lambda x: 1 - np.cos(2 * PI * x),
+        lambda x: 2 * PI * np.sin(2 * PI * x),
+        (2.0, 2 * PI, 3 * _S3 * PI / 2)),  # (1 − cos θ)·2π sin θ peaks at cos θ = −½
+    "3-4-5 polynomial": RiseLaw(
+        "3-4-5 polynomial",
+        lambda x: 10 * x**3 - 15 * x**4 + 6 * x**5, lambda x: 30 * x**2 - 60 * x**3 + 30 * x**4,
+        lambda x: 60 * x - 180 * x**2 + 120 * x**3,
+        (15 / 8, 10 / _S3, None)),  # D: _closed_345 below
+    "double harmonic": RiseLaw(
+        "double harmonic",
+        lambda x: 0.5 * ((1 - np.cos(PI * x)) - 0.25 * (1 - np.cos(2 * PI * x))),
+        lambda x: PI / 2 * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x)),
+        lambda x: PI**2 / 2 * (np.cos(PI * x) - np.cos(2 * PI * x)),
+        (None, PI**2, None)),  # |y''| peaks at x = 1: π²; B, D below
+    "4-5-6-7 polynomial": RiseLaw(
+        "4-5-6-7 polynomial",
+        lambda x: 35 * x**4 - 84 * x**5 + 70 * x**6 - 20 * x**7,
+        lambda x: 140 * x**3 - 420 * x**4 + 420 * x**5 - 140 * x**6,
+        lambda x: 420 * x**2 - 1680 * x**3 + 2100 * x**4 - 840 * x**5,
+        (35 / 16, None, None)),
+}
+
+
+def _closed_345():
+    # y'y'' = 30x²(1−x)² · 60x(1−x)(1−2x) = 1800 x³(1−x)³(1−2x); d/dx = 0 → with u = x(1−x):
+    # 3u²u'(1−2x) − 2u³ = 0 → 3(1−2x)² = 2u = 2x(1−x) → 14x² − 14x + 3 = 0
+    x = (14 - np.sqrt(196 - 168)) / 28
+    return 1800 * x**3 * (1 - x) ** 3 * (1 - 2 * x)
+
+
+def _closed_dh_B():
+    # y' ∝ sin πx − ½ sin 2πx, zero derivative: cos πx = cos 2πx → πx = 2π/3
+    x = 2 / 3
+    return PI / 2 * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x))
+
+
+def _closed_4567():
+    # y'' = 420x²(1−x)²(1−2x) = 420u²(1−2x), u = x(1−x): d/dx = 0 → (1−2x)² = u → 5x² − 5x + 1 = 0
+    x = (5 - np.sqrt(5)) / 10
+    return 420 * x**2 * (1 - x) ** 2 * (1 - 2 * x)
+
+
+LAWS["3-4-5 polynomial"] = RiseLaw(*[getattr(LAWS["3-4-5 polynomial"], k) for k in ("name", "y", "dy", "ddy")],
+                                   (15 / 8, 10 / _S3, _closed_345()))
+LAWS["double harmonic"] = RiseLaw(*[getattr(LAWS["double harmonic"], k) for k in ("name", "y", "dy", "ddy")],
+                                  (_closed_dh_B(), PI**2, _dh_dd_max()))
+LAWS["4-5-6-7 polynomial"] = RiseLaw(*[getattr(LAWS["4-5-6-7 polynomial"], k) for k in ("name", "y", "dy", "ddy")],
+                                     (35 / 16, _closed_4567(), None))
+
+
+def law_invariants(law: RiseLaw | str, n: int = 20001) -> Invariants:
+    """B, C, D of a rise law, measured on n samples of x ∈ [0, 1] and polished by a bounded
+    scalar search around the best sample (independent of the closed forms)."""
+    law = LAWS[law] if isinstance(law, str) else law
+    x = np.linspace(0.0, 1.0, n)
+
+    def peak(f):
+        v = f(x)
+        i = int(np.argmax(v))
+        lo, hi = x[max(i - 1, 0)], x[min(i + 1, n - 1)]
+        if hi - lo <= 0:
+            return float(v[i])
+        res = minimize_scalar(lambda s: -float(f(np.array([s]))[0]), bounds=(lo, hi), method="bounded",
+                              options=dict(xatol=1e-12))
+        return max(float(v[i]), -res.fun)
+
+    return Invariants(peak(lambda s: np.abs(law.dy(s))), peak(lambda s: np.abs(law.ddy(s))),
+                      peak(lambda s: np.abs(law.dy(s) * law.ddy(s))))
+
+
+def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: np.ndarray) -> Invariants:
+    """B, C, D of an output law sampled over one rise (φ from its start to its end).
+
+    With Φ = φ_end − φ_start and h = ψ_end − ψ_start: B = max|ψ'|·Φ/|h|, C = max|ψ''|·Φ²/|h|,
+    D = max|ψ'ψ''|·Φ³/h² (seed 001, chapter 2: invariants of velocity, acceleration and kinetic
+    power). Raises MechanismError if the output does not move.
+    """
+    Phi = float(phi[-1] - phi[0])
+    h = float(psi[-1] - psi[0])
+    if not abs(h) > 0 or not Phi > 0:
+        raise MechanismError(f"no rise to normalise: stroke h = {h:.3g}, duration Φ = {Phi:.3g}")
+    return Invariants(np.max(np.abs(dpsi)) * Phi / abs(h), np.max(np.abs(ddpsi)) * Phi**2 / abs(h),
+                      np.max(np.abs(dpsi * ddpsi)) * Phi**3 / h**2)
+
+
+def thesis_cam_rows() -> dict:
+    """The cam rows of the table on page 21 of seed 001 as printed (B, C, D), where the OCR is
+    readable; keys are the laws of :data:`LAWS`. The rows "Stoddart", "Kurd" and the power law
+    with sine-type acceleration are not decodable reliably and are left out."""
+    return {
+        "constant acceleration": (2.00, 4.00, 8.00),
+        "linearly falling acceleration": (1.50, 6.00, 3.46),
+        "cosine": (1.57, 4.94, 3.88),
+        "cycloidal (sine)": (2.00, 6.28, 8.15),
+        "3-4-5 polynomial": (1.875, 5.77, None),  # printed D is garbled ("6.ВЭ")
+        "double harmonic": (2.04, 9.88, 7.00),
+    }
+
+
+def thesis_mchv1_rows() -> list:
+    """МЧВ1 rows of the same table (K = 1, β_m = 20°) as printed: (δ°, α°, a, B, C, D).
+    The dwell is 2α; a is printed to one decimal only."""
+    return [
+        (120, 25, 0.7, 2.58, 17.11, 22.79), (120, 50, 0.8, 2.23, 11.69, 14.02), (120, 75, 0.8, 1.98, 9.11, 9.74),
+        (180, 25, 0.9, 2.51, 18.25, 22.47), (180, 50, 1.0, 2.16, 12.32, 16.67), (180, 100, 1.0, 1.70, 7.77, 6.71),
+        (180, 125, 1.1, 1.43, 4.70, 3.58), (240, 25, 1.2, 2.26, 13.94, 15.20), (240, 50, 1.5, 1.97, 8.22, 8.86),
+        (240, 100, 1.4, 1.52, 5.17, 4.13), (240, 125, 1.4, 1.30, 3.50, 2.43), (270, 25, 1.5, 2.16, 11.76, 12.52),
+        (270, 50, 1.7, 1.92, 7.23, 7.89), (270, 100, 1.6, 1.45, 4.95, 3.51),
+    ]

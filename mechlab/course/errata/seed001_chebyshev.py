@@ -1,0 +1,217 @@
+"""Errata and undecodable passages of seed 001 (Kinitsky, thesis abstract, 1994), with evidence."""
+
+import numpy as np
+
+from ...mechanisms.lambda_mechanism import LambdaMechanism, classic_lambda
+from ...errors import SynthesisError
+from ...synthesis.lambda_guiding import circle_guiding, straight_guiding, thesis_iteration
+from ...mechanisms.fourbar import FourBar
+from ...analysis.motion_laws import law_invariants
+from . import Erratum
+
+DEG = np.pi / 180
+NB06 = "06_chebyshev_dwell_synthesis.ipynb"
+NB07 = "07_chebyshev_dwell_sixbars.ipynb"
+
+
+def _rotation():
+    # r = 0.5, a = 0.3 meets both printed conditions, but the frame is the shortest link
+    fb = FourBar(0.5, 1.0, 1.0, 0.3)
+    kind = fb.grashof().kind
+    assert 0.5 < 1 and 0.5 + 0.3 < 2 and kind == "double-crank"
+    ok = FourBar(0.25, 1.0, 1.0, 0.3).grashof().kind
+    assert ok == "crank-rocker"
+    return (f"r = 0.5, a = 0.3 satisfies r < 1 and r + a < 2, yet the four-bar (0.5, 1, 1, 0.3) is a "
+            f"{kind}; with r = 0.25 < a it is a {ok}")
+
+
+def _formulas():
+    # the relations that replace (2)-(11): |CA| = 2 sin(μ/2), |CD| = 2 sin((δ − μ)/2), ∠ACD = π − δ/2
+    m = LambdaMechanism(0.3, 0.9, 140 * DEG)
+    phi = np.linspace(0, 2 * np.pi, 721)
+    mo = m.motion(phi)
+    A, C, D = (mo.points[k].p for k in "ACD")
+    mu = mo.transmission
+    ca, cd = np.hypot(*(A - C).T), np.hypot(*(D - C).T)
+    ang = np.arccos(np.clip(((A - C) * (D - C)).sum(1) / (ca * cd), -1, 1))
+    e1 = np.abs(ca - 2 * np.sin(mu / 2)).max()
+    e2 = np.abs(cd - 2 * np.sin((m.delta - mu) / 2)).max()
+    e3 = np.abs(ang - (np.pi - m.delta / 2)).max()
+    assert max(e1, e2, e3) < 1e-12
+    return (f"over a turn of (r, a, δ) = (0.3, 0.9, 140°): max errors {e1:.1e}, {e2:.1e}, {e3:.1e} "
+            f"of |CA| = 2 sin(μ/2), |CD| = 2 sin((δ−μ)/2), ∠ACD = π − δ/2")
+
+
+def _iteration():
+    g = circle_guiding(150 * DEG, 0.9, 120 * DEG)
+    r, it, _ = thesis_iteration(150 * DEG, 0.9, 120 * DEG)
+    assert abs(r - g.r) < 1e-6
+    try:
+        thesis_iteration(150 * DEG, 0.9, 60 * DEG)
+    except SynthesisError:
+        failed = True
+    else:
+        failed = False
+    assert failed
+    g60 = circle_guiding(150 * DEG, 0.9, 60 * DEG)
+    return (f"δ = 150°, a = 0.9: 2α = 120° → r = {r:.6f} in {it} steps (scipy: {g.r:.6f}); "
+            f"2α = 60°: no convergence from r0 = a/4 (scipy: r = {g60.r:.6f})")
+
+
+def _cam(name, k, printed, digits=2):
+    def check():
+        got = law_invariants(name)[k]
+        assert round(got, digits) != printed and abs(got - printed) < 1.0
+        return f"{'BCD'[k]} of the {name} law = {got:.4f} (printed {printed:.2f})"
+    return check
+
+
+def _dh_power():
+    got = law_invariants("double harmonic").D
+    x = np.linspace(0, 1, 200001)
+    from ...analysis.motion_laws import LAWS
+    law = LAWS["double harmonic"]
+    absmax = np.abs(law.dy(x) * law.ddy(x)).max()
+    signed = (law.dy(x) * law.ddy(x)).max()
+    assert abs(got - absmax) < 1e-6 and abs(absmax - 7.00) > 0.5 and abs(signed - 7.00) > 0.5
+    return f"max |y'y''| = {absmax:.4f} (signed max {signed:.4f}); neither is 7.00"
+
+
+def _classic():
+    s = straight_guiding(np.pi, 0.8, np.pi)
+    m = classic_lambda()
+    x = m.axis_coordinates(np.pi + np.array([0.0, np.pi / 2]))[0]
+    assert abs(s.r - 0.4) < 1e-12 and np.allclose(x, 1.6, atol=1e-14)
+    return (f"Chebyshev's 1 : 2 : 2.5 : 5 lambda is the equal-ripple straight guide of 2α = 180°: "
+            f"r = {s.r:.12f}, x(0) = x(90°) = 1.6, E = {s.E:.6f}")
+
+
+def _mchv1_row():
+    from ...synthesis.lambda_sixbars import mchv1, rise_law
+    from ...analysis.motion_laws import rise_invariants
+
+    g = circle_guiding(np.pi, 1.0, 100 * DEG)
+    inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG), g.dwell))
+    assert abs(inv.B - 2.16) < 0.01 and abs(inv.C / 12.32 - 1) < 0.01 and abs(inv.D - 16.67) > 2.5
+    return (f"δ = 180°, 2α = 100°, a = 1.0, K = 1, β_m = 20°: B = {inv.B:.2f}, C = {inv.C:.2f} agree with the "
+            f"printed 2.16, 12.32, but D = {inv.D:.2f}; the neighbouring rows agree within 4 %")
+
+
+def _row_fit(delta, alpha, a, guess=None):
+    """Worst relative mismatch of (B, C, D) of МЧВ1 (K = 1, β_m = 20°) against the printed row
+    (and the invariants, and the circle-guiding design as a start for a neighbouring a)."""
+    from ...synthesis.lambda_sixbars import mchv1, rise_law
+    from ...analysis.motion_laws import rise_invariants, thesis_mchv1_rows
+
+    row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
+    g = circle_guiding(delta * DEG, a, 2 * alpha * DEG, guess=guess) if guess else \
+        circle_guiding(delta * DEG, a, 2 * alpha * DEG)
+    inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG, mu_min=None), g.dwell))
+    return max(abs(inv.B / row[3] - 1), abs(inv.C / row[4] - 1), abs(inv.D / row[5] - 1)), inv
+
+
+def _rows_120():
+    out = []
+    for alpha in (50, 75):
+        w75, inv = _row_fit(120, alpha, 0.75)
+        w80, _ = _row_fit(120, alpha, 0.8)
+        assert w75 < 0.015 and w80 > 0.12
+        out.append(f"2α = {2 * alpha}°: a = 0.75 gives B, C, D = {inv.B:.2f}, {inv.C:.2f}, {inv.D:.2f} (worst "
+                   f"{100 * w75:.1f} %), a = 0.8 misses by {100 * w80:.0f} %")
+    return "δ = 120°: " + "; ".join(out)
+
+
+def _row_270_100():
+    w, inv = _row_fit(270, 100, 1.43)
+    w16, _ = _row_fit(270, 100, 1.6)
+    assert w < 0.015 and w16 > 0.1
+    return (f"a = 1.43: B, C, D = {inv.B:.2f}, {inv.C:.2f}, {inv.D:.2f} (printed 1.45, 4.95, 3.51; worst "
+            f"{100 * w:.1f} %); the printed a = 1.6 misses by {100 * w16:.0f} % (C = 4.39)")
+
+
+def _best_a(delta, alpha, a0, span=0.2, step=0.025):
+    """(worst mismatch, a) minimised over a near the printed a0: a scan, then a bounded 1-D search
+    (each circle-guiding solve started from the scan's best design)."""
+    from scipy.optimize import minimize_scalar
+
+    from ...errors import MechanismError
+
+    fits = []
+    for a in a0 + np.arange(-span, span + 1e-9, step):
+        try:
+            fits.append((_row_fit(delta, alpha, a)[0], a))
+        except MechanismError:  # no design at this a (outside the map, or F cannot be placed)
+            continue
+    w, a = min(fits)
+    g = circle_guiding(delta * DEG, a, 2 * alpha * DEG)
+    guess = (g.r, g.c, g.t3, g.t2)
+
+    def worst(x):
+        try:
+            return _row_fit(delta, alpha, x, guess)[0]
+        except MechanismError:
+            return 1.0
+
+    res = minimize_scalar(worst, bounds=(a - step, a + step), method="bounded", options=dict(xatol=1e-3))
+    return (float(res.fun), float(res.x)) if res.fun < w else (w, a)
+
+
+def _rows_125():
+    w180, a180 = _best_a(180, 125, 1.1, step=0.1)
+    w240, a240 = _best_a(240, 125, 1.4, step=0.1)
+    inv = _row_fit(180, 125, a180)[1]
+    assert 0.02 < w180 < 0.035 and abs(a180 - 1.12) < 0.01 and w240 > 0.07
+    return (f"2α = 250°, K = 1, β_m = 20°: δ = 180° is closest at a = {a180:.3f} (B, C, D = {inv.B:.2f}, {inv.C:.2f}, "
+            f"{inv.D:.2f}; worst {100 * w180:.1f} %); δ = 240° at best {100 * w240:.1f} % off (a = {a240:.3f}, "
+            f"B ≈ 1.40 for every a)")
+
+
+def _whole_turn():
+    from ...synthesis.lambda_guiding import whole_turn_line
+
+    wt = whole_turn_line(150 * DEG)
+    g = circle_guiding(150 * DEG, 0.3, 347 * DEG)
+    assert abs(wt.a[0] - 2 * np.sin(150 * DEG / 4)) < 0.01 and abs(wt.r[-1] + wt.a[-1] - 2) < 0.03
+    assert g.r / 0.3 > 0.97
+    return (f"δ = 150°: one 360° line from (r, a) = ({wt.r[0]:.3f}, {wt.a[0]:.4f}) ≈ (0, 2 sin(δ/4)) to "
+            f"({wt.r[-1]:.3f}, {wt.a[-1]:.3f}) on r + a = 2; for a < 1 the dwell → 360° only as r → a "
+            f"(a = 0.3, 2α = 347°: r = {g.r:.4f})")
+
+
+ERRATA = [
+    Erratum("001", "text before Fig. 1 (full rotation)", "$l_{OA} < l$ and $l_{OC} + l_{OA} < 2l$",
+            "also $r < a$ (line PX of Fig. 2a): otherwise the frame is the shortest link and the base "
+            "four-bar is a double crank", _rotation, NB06),
+    Erratum("001", "formulas (2)-(11)", "illegible in the OCR (only (1), (5), (11), (13)-(15) readable)",
+            "re-derived: B is the circumcentre of A, C, D, so $|CA| = 2\\sin(\\mu/2)$, "
+            "$|CD| = 2\\sin((\\delta-\\mu)/2)$, $\\angle ACD = \\pi - \\delta/2$; synthesis by equal ripple",
+            _formulas, NB06),
+    Erratum("001", "iteration (12)-(13)", "halving $r_0 \\leftarrow (r_0 + r_1)/2$ from $r_0 = a/4$ converges",
+            "as reconstructed it converges only in part of the map; scipy root finding is used instead",
+            _iteration, NB06),
+    Erratum("001", "Chebyshev's lambda (note)", "dimensions 1 : 2 : 2.5 : 5 quoted without a dwell",
+            "they are exactly the straight-line synthesis for 2α = 180° (a = 0.8 → r = 0.4)", _classic, NB06),
+    Erratum("001", "table p. 21, МЧВ1 row δ = 180°, α = 50°", "D = 16.67", "D = 13.67 (probably a misprint of one digit)",
+            _mchv1_row, NB07),
+    Erratum("001", "table p. 21, cosine law", "C = 4.94", "C = π²/2 = 4.93", _cam("cosine", 1, 4.94), NB07),
+    Erratum("001", "table p. 21, sinusoidal (cycloidal) law", "D = 8.15", "D = 3√3π/2 = 8.16",
+            _cam("cycloidal (sine)", 2, 8.15), NB07),
+    Erratum("001", "table p. 21, double harmonic law", "C = 9.88", "C = π² = 9.87",
+            _cam("double harmonic", 1, 9.88), NB07),
+    Erratum("001", "table p. 21, double harmonic law", "D = 7.00", "D = 9.89 (max |y'y''|, the definition that reproduces the МЧВ1 rows; 7.75 for the signed max)",
+            _dh_power, NB07),
+    Erratum("001", "table p. 21, МЧВ1 rows δ = 120°, α = 50° and 75°", "a = 0.8",
+            "a = 0.75 (printed rounded up to one decimal); with 0.8 C comes out 13–15 % low", _rows_120, NB07),
+    Erratum("001", "table p. 21, МЧВ1 row δ = 270°, α = 100°", "a = 1.6",
+            "a ≈ 1.43 (the row's B, C, D are those of a = 1.43; 1.6 is probably a misprint of 1.4)",
+            _row_270_100, NB07),
+    Erratum("001", "table p. 21, МЧВ1 rows δ = 180° and 240°, α = 125°", "B, C, D = 1.43, 4.70, 3.58 and 1.30, 3.50, 2.43",
+            "180°: nearly, with a ≈ 1.12 (2.7 %, B 3 % high); 240°: undecodable — no a within ±0.2 comes closer "
+            "than 7.6 % (a wider search over K 0.9–1.1, β_m 15–25° and both sides of F: 6.1 % at best)",
+            _rows_125, NB07),
+    Erratum("001", "text before (12), boundary 2 (lines KU and AP of Fig. 2a)",
+            "two lines where the whole coupler curve is near a circle, α = π",
+            "computed: one line per δ, from A = (0, 2 sin(δ/4)) on the fifth-order line to the rotation limit; "
+            "for a < 1 the 360° limit is r = a itself (which letters are which is not decodable)",
+            _whole_turn, NB06),
+]

@@ -1,0 +1,119 @@
+"""Mistakes in the force sections of seeds 003 (kinetostatics by groups) and 004 (drive torque).
+
+Each check recomputes the evidence with :mod:`mechlab.kinetostatics` on a slider-crank (the
+seed 003 mechanism without its additional link: crank 1 = O-A here, rod 2 = A-B,
+slider 4 at B; the seed's pins B and C are A and B here).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...kinetostatics.model import Force, model_for
+from ...kinetostatics.solve import solve
+from ...geometry import cross
+from ...mechanisms.slider_crank import SliderCrank
+from . import Erratum
+
+NOTEBOOK = "09_forces.ipynb"
+
+# A press-sized slider-crank in metres and kilograms (notebook 09 uses the same numbers).
+_SC = SliderCrank(0.10, 0.40, 0.0)
+_PHI = np.radians(60.0)
+
+
+def _rod_group(eps1: float = 0.0):
+    model = (model_for(_SC).with_body("crank", mass=2.0, inertia=0.002, com=(0.05, 0.0))
+             .with_body("rod", mass=3.0, com=(0.16, 0.0)).with_body("slider", mass=4.0))
+    mo = _SC.motion(np.array([_PHI]))
+    return model, mo, solve(model, mo, [Force("slider", "B", (-500.0, 0.0))], omega1=30.0, eps1=eps1)
+
+
+def _check_rod_tangential() -> str:
+    """Formula (1): the rod's moment equation about C uses the arm h_И2 of the rod's own
+    inertia force; the printed solution divides F_И2·h_И4 (the slider's arm) instead."""
+    model, mo, res = _rod_group()
+    A, B = mo.points["A"].p, mo.points["B"].p
+    l2 = _SC.rod
+    t = np.stack([-(A - B)[:, 1], (A - B)[:, 0]], axis=1) / l2   # unit normal to the rod, C→B turned by +90°
+    R_t = float(np.sum(res.reactions["A"].force * t))            # tangential reaction of the crank on the rod
+    rod = model.body("rod")
+    u = (B - A) / l2
+    S = A + rod.com[0] * u                                        # rod's centre of mass
+    aS = (mo.points["A"].dd + rod.com[0] / l2 * (mo.points["B"].dd - mo.points["A"].dd)) * 30.0**2
+    G2 = rod.mass * np.array([[0.0, -9.81]])
+    F_in2 = -rod.mass * aS
+    # rod's angular acceleration from the same analogs: θ'' of the vector B - A
+    v = mo.points["B"].p - mo.points["A"].p
+    vd = mo.points["B"].d - mo.points["A"].d
+    vdd = mo.points["B"].dd - mo.points["A"].dd
+    r2 = float(np.sum(v * v))
+    ddth = float(cross(v, vdd)[0]) / r2 - 2 * float(cross(v, vd)[0]) * float(np.sum(v * vd)) / r2**2
+    M_in2 = -rod.inertia * ddth * 30.0**2
+    m_G = float(cross(S - B, G2)[0])
+    m_F2 = float(cross(S - B, F_in2)[0])                          # F_И2·h_И2 with its sign
+    m_F4 = 0.0                                                    # the slider's inertia force acts along the guide through C
+    correct = -(m_G + m_F2 + M_in2) / l2
+    printed = -(m_G + m_F4 + M_in2) / l2
+    assert abs(correct - R_t) <= 1e-9 * abs(R_t), (correct, R_t)
+    assert abs(printed - R_t) > 0.05 * abs(R_t), (printed, R_t)
+    return (f"slider-crank 0.10/0.40 m, rod 3 kg, ω1 = 30 rad/s, φ = 60°: group solution R_B^t = {R_t:.3f} N; "
+            f"(1) with h_И2: {correct:.3f} N; with h_И4 (= 0, slider force through C): {printed:.3f} N")
+
+
+def _check_crank_moment() -> str:
+    """The crank's moment equation about B drops the crank's inertia force F_И1 (and couple
+    M_И1) that its force equation includes; harmless only when ε1 = 0 and the crank's
+    centre of mass lies on the line OB."""
+    out = []
+    for eps1 in (0.0, 400.0):
+        model, mo, res = _rod_group(eps1)
+        crank = model.body("crank")
+        O, A = mo.points["O"].p, mo.points["A"].p
+        u = (A - O) / _SC.crank
+        S = O + crank.com[0] * u
+        G1 = crank.mass * np.array([[0.0, -9.81]])
+        R_A = res.reactions["O"].force                            # frame on crank (the seed's R_A)
+        printed = -float(cross(O - A, R_A)[0] + cross(S - A, G1)[0])
+        out.append((eps1, float(res.torque[0]), printed))
+    (e0, t0, p0), (e1, t1, p1) = out
+    assert abs(p0 - t0) <= 1e-9 * abs(t0)
+    assert abs(p1 - t1) > 0.02 * abs(t1)
+    return (f"ε1 = 0: printed M_ур = {p0:.3f} N·m = power balance {t0:.3f} N·m; start-up ε1 = {e1:g} rad/s²: "
+            f"printed {p1:.3f} N·m vs power balance {t1:.3f} N·m")
+
+
+def _check_mean_torque() -> str:
+    """Seed 004: M_cp = Σ(R_i ρ_i / n) is the mean of n sampled torques; the version "with
+    losses" is printed as n·η⁻¹·Σ(...) — n must divide, not multiply."""
+    model = (model_for(_SC).with_body("crank", mass=2.0, inertia=0.002, com=(0.05, 0.0))
+             .with_body("rod", mass=3.0, com=(0.16, 0.0)).with_body("slider", mass=4.0))
+    load = lambda m: np.stack([np.where(m.ds < 0, 2000.0, 0.0), 0.0 * m.s], axis=1)  # pressing on the return stroke
+    fine = _SC.turn(7201)
+    M_fine = solve(model, _SC.motion(fine), [Force("slider", "B", load)], omega1=30.0).torque
+    exact = float(np.trapezoid(M_fine, fine) / (2 * np.pi))
+    n, eta = 12, 0.9
+    phi = np.arange(n) * 2 * np.pi / n + np.pi / n
+    M = solve(model, _SC.motion(phi), [Force("slider", "B", load)], omega1=30.0).torque
+    correct = float(np.sum(M) / (n * eta))
+    printed = float(n / eta * np.sum(M))
+    assert abs(correct * eta - exact) < 0.05 * abs(exact)
+    assert abs(printed / correct - n * n) < 1e-9 * n * n
+    return (f"press torque at n = {n} positions, η = {eta}: Σ M_i/(nη) = {correct:.3f} N·m (cycle mean/η "
+            f"{exact / eta:.3f}); printed n·η⁻¹·Σ M_i = {printed:.1f} N·m, n² = {n * n} times too large")
+
+
+ERRATA = [
+    Erratum(source="003", where="slider-crank with an additional link, formula (1)",
+            printed=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}4} \mu_l - M_{\text{И}2})/l_2$",
+            correct=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}2} \mu_l - M_{\text{И}2})/l_2$ (the arm of the rod's own inertia force, as in the moment equation above it)",
+            check=_check_rod_tangential, notebook=NOTEBOOK),
+    Erratum(source="003", where="slider-crank with an additional link, leading link (Fig. 5), moment equation about B",
+            printed=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l$",
+            correct=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l \pm F_{\text{И}1} h_{\text{И}1} \mu_l \pm M_{\text{И}1}$: the inertia force that the force equation includes also has a moment about B (zero only if ε1 = 0 and the centre of mass is on OB)",
+            check=_check_crank_moment, notebook=NOTEBOOK),
+    Erratum(source="004", where="last section, mean crank torque with friction losses",
+            printed=r"$M_{cp} \approx n\,\eta^{-1} \sum P_i \rho_i \omega/\omega_{KP}$",
+            correct=r"$M_{cp} \approx (n\,\eta)^{-1} \sum P_i \rho_i \omega/\omega_{KP}$ (the mean of the n sampled torques, as in $M_{cp} = \sum R_i\rho_i/n$ above it)",
+            check=_check_mean_torque, notebook=NOTEBOOK),
+]

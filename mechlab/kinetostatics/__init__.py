@@ -1,0 +1,21 @@
+"""Kinetostatics: bodies and loads (:mod:`.model`), the group-by-group solve (:mod:`.solve`),
+the motor rule (:mod:`.drive`), and the chapters' machines (:mod:`.machines`, :mod:`.geneva`,
+:mod:`.lambda_sixbars`).
+
+``mechlab.kinetostatics`` is this package (the name the course used first).
+"""
+
+from .drive import Drive, DriveError, cycle_mean, drive, motor_torque
+from .machines import Kinetostatics, press, press_load, rocker_drive, rpm_to_rad
+from .model import (FRAME, G, Body, Force, ForceModel, FrictionError, HigherPair, LoadError, MassError, Prismatic,
+                    Revolute, SelfLockingError, StructureError, Torque, model_for, slender_bar)
+from .solve import ForceResult, Reaction, output_axis, solve, virtual_work_torque
+
+__all__ = [
+    "FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque",
+    "Reaction", "ForceResult", "Drive", "DriveError", "Kinetostatics",
+    "solve", "virtual_work_torque", "model_for", "slender_bar", "drive", "motor_torque", "cycle_mean",
+    "output_axis",
+    "rpm_to_rad", "press_load", "press", "rocker_drive",
+    "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError",
+]

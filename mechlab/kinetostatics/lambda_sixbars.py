@@ -1,0 +1,81 @@
+"""Loads of the МЧВ1 six-bar (seed 001, chapter 3, Figs. 10-11), solved with :mod:`mechlab.kinetostatics`.
+
+The thesis loads only the output: a resisting moment M_s = M_st + M_d on the rocker E-F (a
+constant static moment opposing its motion plus the inertia moment −J·ε of the driven masses
+reduced to it), links massless, friction in the journals as f·r·|R|. Its formulas (16)-(17)
+are the statics of this model worked by hand (the rod D-E and the rocker B-C are two-force
+members; the three-force theorem on the coupler A-B-D); here the same model is solved by
+:func:`mechlab.kinetostatics.solve` group by group, so the crank torque is checked against the power
+balance. Invariants (seed 001, ch. 3): forces are divided by J·ω1²/l and torques by J·ω1²
+(l = 1 here, the length of the Chebyshev dyad's links); the cycle efficiency is the mean of the
+instantaneous efficiencies over the crank angles where the output moves.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .model import FRAME, Body, ForceModel, Revolute, Torque
+from .solve import solve
+from ..mechanisms.lambda_sixbars import LambdaRockerSixBar
+
+__all__ = ["mchv1_model", "mchv1_forces", "ForceInvariants"]
+
+
+def mchv1_model(six: LambdaRockerSixBar, inertia: float, friction: float = 0.0, radius: float = 0.0) -> ForceModel:
+    """Force model of МЧВ1: massless links, the output rocker carrying the reduced inertia J about F."""
+    bodies = (
+        Body("crank", "O", ("O", "A")),
+        Body("coupler", "A", ("A", "B")),
+        Body("rocker", "C", ("C", "B")),
+        Body("rod", "D", ("D", "E")),
+        Body("output", "F", ("F", "E"), inertia=inertia),
+    )
+    pairs = (
+        Revolute("O", FRAME, "crank", "O"), Revolute("A", "crank", "coupler", "A"),
+        Revolute("B", "coupler", "rocker", "B"), Revolute("C", FRAME, "rocker", "C"),
+        Revolute("D", "coupler", "rod", "D"), Revolute("E", "rod", "output", "E"),
+        Revolute("F", FRAME, "output", "F"),
+    )
+    model = ForceModel(bodies, pairs, (("rod", "output"), ("coupler", "rocker")), "crank", "O")
+    return model.with_friction(friction, radius) if friction else model
+
+
+class ForceInvariants(NamedTuple):
+    """Peak dimensionless reactions in O, A, B, D, E, F, crank torque and cycle efficiency."""
+
+    reactions: dict
+    torque: float
+    cycle_efficiency: float
+    result: object
+
+
+def mchv1_forces(six: LambdaRockerSixBar, *, inertia: float = 1.0, resisting: float = 0.0, omega1: float = 1.0,
+                 friction: float = 0.0, radius: float = 0.0, n: int = 721, dwell: float | None = None):
+    """Solve МЧВ1 over a crank turn with the output loaded by its inertia J and a constant
+    resisting moment of size ``resisting`` opposing the rocker's motion.
+
+    Returns :class:`ForceInvariants` (reactions and torque divided by J·ω1²/l and J·ω1²) with
+    the :class:`mechlab.kinetostatics.ForceResult`. The cycle efficiency is averaged over the crank
+    angles outside the dwell ``dwell`` (centred on φ = π), where the output moves.
+    """
+    phi = np.linspace(0, 2 * np.pi, n)
+    motion = six.motion(phi)
+    moving = np.abs(motion.dpsi) > 1e-9
+
+    def resist(mo):
+        return -resisting * np.sign(mo.dpsi)
+
+    model = mchv1_model(six, inertia, friction, radius)
+    res = solve(model, motion, (Torque("output", resist),), omega1=omega1, eps1=0.0, gravity=(0.0, 0.0))
+    unit_force = inertia * omega1**2  # / l, l = 1
+    reactions = {k: float(r.magnitude.max() / unit_force) for k, r in res.reactions.items()}
+    if dwell is not None:
+        moving = moving & (np.abs(((phi - np.pi) + np.pi) % (2 * np.pi) - np.pi) > dwell / 2)
+    try:
+        eta = res.cycle_efficiency(moving) if friction else 1.0
+    except Exception:
+        eta = float("nan")
+    return ForceInvariants(reactions, float(np.abs(res.torque).max() / unit_force), eta, res)

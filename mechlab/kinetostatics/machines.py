@@ -1,0 +1,142 @@
+"""The chapter's machines with loads: a slider-crank press and a four-bar rocker drive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable
+import numpy as np
+from ..motion import Motion
+from ..mechanisms.base import Mechanism
+from .model import Force, ForceModel, G, LoadError, Torque, _nonneg, model_for, slender_bar
+from .solve import ForceResult, solve
+
+__all__ = ["Kinetostatics", "rpm_to_rad", "press_load", "press", "rocker_drive"]
+
+
+@dataclass(frozen=True, eq=False)
+class Kinetostatics(Mechanism):
+    """A mechanism with its force model and loads: moves like the mechanism, ``forces(phi)`` solves.
+
+    Used by :mod:`mechlab.draw.forces` to animate force plans with ``mechlab.draw.animate``.
+    """
+
+    mechanism: Any
+    model: ForceModel | None = None
+    loads: tuple = ()
+    omega1: float = 1.0
+    eps1: float = 0.0
+    gravity: tuple = (0.0, -G)
+
+    def __post_init__(self):
+        if self.model is None:
+            object.__setattr__(self, "model", model_for(self.mechanism))
+        object.__setattr__(self, "loads", tuple(self.loads))
+
+    @property
+    def links(self):
+        return self.mechanism.links
+
+    @property
+    def pivots(self):
+        return self.mechanism.pivots
+
+    @property
+    def output(self):
+        return self.mechanism.output
+
+    def crank_ranges(self):
+        return self.mechanism.crank_ranges()
+
+    def rotation_failure(self) -> str:
+        return self.mechanism.rotation_failure()
+
+    def turn(self, n: int = 361):
+        return self.mechanism.turn(n)
+
+    def cycle(self, n: int = 361):
+        return self.mechanism.cycle(n)
+
+    def motion(self, phi):
+        return self.mechanism.motion(phi)
+
+    def forces(self, phi=None, motion: Motion | None = None, **kw) -> ForceResult:
+        """Solve at crank angles φ (default: the mechanism's cycle) or on a given motion."""
+        if motion is None:
+            motion = self.motion(self.cycle() if phi is None else phi)
+        return solve(self.model, motion, self.loads, self.omega1, self.eps1, self.gravity, **kw)
+
+
+# --------------------------------------------------------------------------- the chapter's two examples
+def rpm_to_rad(rpm: float) -> float:
+    """Crank speed in rad/s from revolutions per minute."""
+    return float(rpm) * 2.0 * np.pi / 60.0
+
+
+def press_load(P: float, work_fraction: float = 0.3) -> Callable:
+    """Technological resistance of a press: a force P against the slider while it moves
+    towards its outer dead point in the last ``work_fraction`` of its stroke.
+
+    Returns ``load(motion) → (n, 2)`` for :class:`Force` on the slider of a slider-crank
+    motion (points O, A, B; guide parallel to x). The outer dead point and the stroke come
+    from the dimensions (crank a = |OA|, rod l = |AB|, offset e = y of B): the slider is
+    sqrt((l + a)² − e²) from O along the guide there, on the side where B is ahead of A,
+    so the load at a crank angle does not depend on which other angles are sampled.
+    """
+    P = _nonneg("press force P", P, LoadError)
+    if not 0 < work_fraction <= 1:
+        raise LoadError(f"work_fraction must satisfy 0 < fraction ≤ 1, got {work_fraction}")
+
+    def load(motion):
+        crank, rod, offset, side = _slider_crank_dimensions(motion)
+        outer = float(np.sqrt((rod + crank) ** 2 - offset**2))
+        stroke = outer - float(np.sqrt((rod - crank) ** 2 - offset**2))
+        working = (motion.ds * side > 0) & (motion.s * side >= outer - work_fraction * stroke)
+        return np.stack([np.where(working, -side * P, 0.0), np.zeros(len(motion))], axis=1)
+    return load
+
+
+def _slider_crank_dimensions(motion) -> tuple[float, float, float, float]:
+    """Crank, rod, offset and the side (+1: B ahead of A along x) of a slider-crank motion."""
+    pts = motion.points
+    A, B = pts["A"].p, pts["B"].p
+    crank = float(np.hypot(*A[0]))
+    rod = float(np.hypot(*(B[0] - A[0])))
+    return crank, rod, float(B[0, 1]), float(np.sign(B[0, 0] - A[0, 0]) or 1.0)
+
+
+def press(crank: float = 0.10, rod: float = 0.40, *, rpm: float = 120.0, P: float = 2000.0,
+          work_fraction: float = 0.3, m_crank: float = 2.0, m_rod: float = 3.0, m_slider: float = 4.0,
+          f: float = 0.0, radius: float = 0.01, eps1: float = 0.0) -> Kinetostatics:
+    """The chapter's crank press (metres, kilograms, N): a centred slider-crank whose slider
+    meets the resistance of :func:`press_load`; the crank is balanced (centre of mass at O),
+    the rod is a uniform bar, friction f in every pair (journal radius ``radius``)."""
+    sc = _slider_crank(crank, rod)
+    sc.turn(2)  # a press's crank turns fully: RotationError (with the numbers) otherwise
+    model = (model_for(sc).with_body("crank", mass=m_crank, inertia=slender_bar(m_crank, crank), com=(0.0, 0.0))
+             .with_body("rod", mass=m_rod).with_body("slider", mass=m_slider).with_friction(f, radius))
+    return Kinetostatics(sc, model, (Force("slider", "B", press_load(P, work_fraction)),), rpm_to_rad(rpm), eps1)
+
+
+def rocker_drive(crank: float = 0.10, coupler: float = 0.30, rocker: float = 0.30, ground: float = 0.35, *,
+                 rpm: float = 120.0, T: float = 40.0, m_coupler: float = 2.0, m_rocker: float = 2.0,
+                 f: float = 0.0, radius: float = 0.01) -> Kinetostatics:
+    """The chapter's four-bar: a crank-rocker whose rocker meets a resisting torque of size T
+    against its motion, uniform bars for coupler and rocker, friction f in every pair."""
+    fb = _four_bar(crank, coupler, rocker, ground)
+    fb.turn(2)  # RotationError (Grashof, with the numbers) unless the crank turns fully
+    model = (model_for(fb).with_body("coupler", mass=m_coupler).with_body("rocker", mass=m_rocker)
+             .with_friction(f, radius))
+    T = _nonneg("resisting torque T", T, LoadError)
+    return Kinetostatics(fb, model, (Torque("rocker", lambda m: -T * np.sign(m.dpsi)),), rpm_to_rad(rpm))
+
+
+def _slider_crank(crank, rod):
+    from ..mechanisms.slider_crank import SliderCrank
+    return SliderCrank(crank, rod)
+
+
+def _four_bar(crank, coupler, rocker, ground):
+    from ..mechanisms.fourbar import FourBar
+    return FourBar(crank, coupler, rocker, ground)
+

@@ -1,0 +1,412 @@
+"""Kinetostatics: loads, reactions group by group, balancing torque, friction, efficiency, drive.
+
+The method is the one seed 003 (SibSIU proceedings, "Kinetostatic analysis of the
+slider-crank mechanism with an additional link", formulas (1)-(5) and the force plans
+of its Figs. 2-5) applies by hand: split the mechanism into structural groups of zero
+mobility (Assur groups), load every link with its gravity, its d'Alembert inertia
+force and couple and the external loads, and solve the groups **from the output back
+to the crank**, each group's reactions becoming known loads on the links it is
+attached to; the crank (the leading link) is solved last and gives the balancing
+(driving) torque. Here every group is solved at once for all crank angles: the
+3·k equilibrium equations of its k links are a batch of small linear systems.
+
+Stable API (used by the chapters on Chebyshev six-bars and Geneva drives)
+-------------------------------------------------------------------------
+Structure (frozen dataclasses; lengths and masses in one consistent unit system —
+with metres, kilograms and rad/s, forces come out in N and torques in N·m):
+
+* ``Body(name, origin, axis=0.0, mass=0, inertia=0, com=(0, 0), length=0)`` — a link.
+  ``origin`` is a joint (a key of ``motion.points``) fixed on the link; ``axis`` is
+  its x axis: a pair of joint names ``(P, Q)`` (direction P→Q, the two points need not
+  both lie on the link, the direction must be fixed in it), a constant angle
+  (a translating link), or ``axis(motion) → (θ, θ', θ'')`` such as ``output_axis``.
+  ``com`` = centre of mass in link coordinates (along the axis, to its left);
+  ``inertia`` = moment of inertia J_S about the centre of mass.
+* ``Revolute(name, a, b, point, friction=0, radius=0)`` — turning pair at a joint;
+  ``friction`` is Coulomb's f, ``radius`` the journal radius r (friction couple f·r·|R|).
+* ``Prismatic(name, a, b, point, angle=0, friction=0)`` — link b slides on link a
+  along a guide at ``angle`` to a's axis (absolute when a is the frame); reaction =
+  normal force N plus a couple (the offset of N along the guide); friction f·|N|.
+* ``HigherPair(name, a, b, point, normal, friction=0)`` — contact at the moving point
+  ``point`` with the common normal at angle ``normal`` to a's axis, or
+  ``normal(motion) → (n, 2)`` unit vectors (a curved slot, a cam); reaction N along it.
+* ``ForceModel(bodies, pairs, groups, crank, pivot)`` — ``groups`` lists the structural
+  groups (tuples of body names) in solving order, output first; ``crank`` is the
+  leading link turning about the joint ``pivot``. Pair ``a`` or ``b`` may be ``FRAME``.
+  ``model.with_body(name, mass=…, inertia=…, com=…)``, ``model.with_friction(f, radius)``
+  return modified copies. ``model_for(mechanism)`` builds the model of a FourBar,
+  SliderCrank, SlottedLink or SineMechanism (massless, frictionless, com mid-link).
+
+Loads: ``Force(body, at, value)`` (``at`` a joint name or link coordinates) and
+``Torque(body, value)``; a value is a constant, an array over the crank angles, or a
+callable ``value(motion)`` returning one (so the load follows any sampling).
+
+Analysis:
+
+* ``solve(model, motion, loads=(), omega1=1.0, eps1=0.0, gravity=(0, -9.81))`` →
+  :class:`ForceResult` with ``reactions[name]`` (:class:`Reaction`: point, force of a
+  on b, couple, normal force), ``torque`` (balancing torque on the crank, from the
+  groups), ``torque_power`` (the same from the power balance, computed independently),
+  ``ideal_torque`` (without friction, by virtual work), ``losses`` (friction power per
+  unit ω1), ``residual`` (largest equilibrium residual of any link), ``verify(tol=1e-9)``
+  (both built-in checks, raises if either fails), ``efficiency()``, ``cycle_efficiency(...)``.
+* ``virtual_work_torque(model, motion, loads, omega1, eps1, gravity)`` — the frictionless
+  balancing torque from the power balance alone: M_b = −Σ(F_i·v_i + M_i·ω_i)/ω1
+  (Zhukovsky's lever in analytic form).
+* ``drive(torque, phi, omega1, overload=2.0, efficiency=1.0)`` → :class:`Drive` — the
+  course's one rule for the motor of a crank without a flywheel (the Geneva's
+  :func:`mechlab.kinetostatics.geneva.drive` calls it): motor torque M/η where the motor drives, M·η
+  where it is driven back; mean power ⟨M_m⟩·ω1 (seed 004, last section) for the energy;
+  nominal torque max(M_rms, M_peak/k) — the rms (equivalent) torque for the heating, the
+  peak within the overload factor k; ``choose(catalogue)`` picks a motor.
+* ``Kinetostatics(mechanism, model, loads, omega1, eps1, gravity)`` — a mechanism with
+  its loads: ``.motion(phi)``/``.cycle(n)`` delegate to the mechanism, ``.forces(phi)``
+  solves; :mod:`mechlab.draw.forces` draws it with reaction arrows (``animate`` works).
+* The chapter's examples: ``press(...)`` (a crank press, the resistance ``press_load(P,
+  work_fraction)`` on its slider) and ``rocker_drive(...)`` (a four-bar with a resisting
+  torque on the rocker), both returning a Kinetostatics; ``rpm_to_rad(rpm)``.
+
+Friction is solved by **linearisation and iteration on its senses**: with the direction
+ê of a journal's reaction R and the sign of a sliding pair's normal force N taken from
+the previous pass, the friction couple f·r·|R| = f·r·ê·R and the friction force
+f·|N| = f·sgn(N)·N are *linear* in the unknowns, so they go into each group's matrix
+and every pass is still a linear group-by-group solve (the first pass is frictionless).
+The passes stop when the linearisation is exact (ê·R = |R| to 1e-12, every sgn N
+consistent) — usually after 3-6 passes. A friction force that is less than a full
+pass behind would not converge where f·tan(pressure angle) > 1 even though a solution
+exists; this scheme does. Where no consistent senses exist (a sense keeps reversing)
+or the group's matrix with friction is singular, the mechanism is self-locking there:
+:class:`SelfLockingError` names the crank angle. The sense of sliding comes from the
+analogs and the sign of ω1 (ω1 = 0 is treated as the start of a motion with ω1 > 0).
+Prismatic friction is f·|N| with N the resultant normal force (edge pressures from
+the reaction couple are not modelled).
+
+Efficiency (seed 001, chapter 3): the instantaneous efficiency from the power balance,
+η = 1 − P_friction / P_drive = M_ideal / M_b, defined where the drive delivers power
+and the loads absorb it (P_drive > 0 and M_ideal·ω1 > 0; elsewhere masked); the thesis' cycle efficiency is the arithmetic mean
+of the instantaneous values over the period in which the output moves
+(``how="mean"``); ``how="work"`` gives the energy ratio 1 − A_friction / A_drive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import Any, Sequence
+import numpy as np
+from ..errors import DimensionError, MechanismError
+
+__all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque", "model_for", "slender_bar", "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"]
+
+
+FRAME = "frame"
+
+
+G = 9.81
+
+
+# --------------------------------------------------------------------------- errors
+class MassError(DimensionError):
+    """A mass or moment of inertia is negative or not finite."""
+
+
+class FrictionError(DimensionError):
+    """A friction coefficient or journal radius is out of range."""
+
+
+class LoadError(DimensionError):
+    """A load's value has the wrong shape or is not finite."""
+
+
+class StructureError(MechanismError):
+    """The force model's links, pairs and groups do not make statically solvable groups."""
+
+
+class SelfLockingError(MechanismError):
+    """Friction admits no consistent solution (or makes a group singular): the mechanism locks."""
+
+
+def _nonneg(name: str, value, exc) -> float:
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise exc(f"{name} must be a number, got {value!r}") from None
+    if not np.isfinite(x) or x < 0:
+        raise exc(f"{name} must be a finite number ≥ 0, got {x:g}")
+    return x
+
+
+def _friction(name: str, f) -> float:
+    f = _nonneg(f"friction coefficient of {name}", f, FrictionError)
+    if f >= 1.0:
+        raise FrictionError(f"friction coefficient of {name} must satisfy 0 ≤ f < 1, got f = {f:g}")
+    return f
+
+
+# --------------------------------------------------------------------------- structure
+@dataclass(frozen=True)
+class Body:
+    """A link: a joint fixed on it (``origin``), its axis, and its mass properties.
+
+    ``axis`` = (P, Q): the link's x axis points from joint P to joint Q; a float: the
+    link translates with its axis at that constant angle (radians); a callable
+    ``axis(motion) → (θ, θ', θ'')`` (e.g. :func:`output_axis`): any other link angle,
+    such as a curved-slot link's ψ. ``com`` is the
+    centre of mass in link coordinates (ξ along the axis from the origin, η to its left).
+    ``length`` is informational (a bar's length, for the default slender-bar inertia).
+    """
+
+    name: str
+    origin: str
+    axis: Any = 0.0
+    mass: float = 0.0
+    inertia: float = 0.0
+    com: tuple = (0.0, 0.0)
+    length: float = 0.0
+
+    def __post_init__(self):
+        if self.name == FRAME:
+            raise StructureError(f"a body may not be called {FRAME!r} (reserved for the frame)")
+        object.__setattr__(self, "mass", _nonneg(f"mass of {self.name}", self.mass, MassError))
+        object.__setattr__(self, "inertia", _nonneg(f"moment of inertia of {self.name}", self.inertia, MassError))
+        object.__setattr__(self, "length", _nonneg(f"length of {self.name}", self.length, DimensionError))
+        com = tuple(float(c) for c in self.com)
+        if len(com) != 2 or not all(np.isfinite(com)):
+            raise DimensionError(f"centre of mass of {self.name} must be two finite numbers, got {self.com!r}")
+        object.__setattr__(self, "com", com)
+        if callable(self.axis):
+            pass
+        elif not isinstance(self.axis, tuple):
+            a = float(self.axis)
+            if not np.isfinite(a):
+                raise DimensionError(f"axis angle of {self.name} must be finite, got {a}")
+            object.__setattr__(self, "axis", a)
+        elif len(self.axis) != 2:
+            raise StructureError(f"axis of {self.name} must be (P, Q) joint names or an angle, got {self.axis!r}")
+
+    @property
+    def translates(self) -> bool:
+        return not isinstance(self.axis, tuple) and not callable(self.axis)
+
+
+@dataclass(frozen=True)
+class Revolute:
+    """Turning pair at joint ``point``; reaction R = force of link a on link b."""
+
+    name: str
+    a: str
+    b: str
+    point: str
+    friction: float = 0.0
+    radius: float = 0.0
+    n_unknowns = 2
+
+    def __post_init__(self):
+        object.__setattr__(self, "friction", _friction(self.name, self.friction))
+        object.__setattr__(self, "radius", _nonneg(f"journal radius of {self.name}", self.radius, FrictionError))
+
+
+@dataclass(frozen=True)
+class Prismatic:
+    """Link b slides on link a along a guide at ``angle`` to a's axis, through ``point`` (fixed on b)."""
+
+    name: str
+    a: str
+    b: str
+    point: str
+    angle: float = 0.0
+    friction: float = 0.0
+    n_unknowns = 2
+
+    def __post_init__(self):
+        object.__setattr__(self, "friction", _friction(self.name, self.friction))
+        object.__setattr__(self, "angle", float(self.angle))
+        if not np.isfinite(self.angle):
+            raise DimensionError(f"guide angle of {self.name} must be finite, got {self.angle}")
+
+
+@dataclass(frozen=True)
+class HigherPair:
+    """Contact of links a and b at the moving point ``point``; reaction along the common normal.
+
+    ``normal``: angle of the normal to a's axis, or ``normal(motion) → (n, 2)`` unit vectors.
+    """
+
+    name: str
+    a: str
+    b: str
+    point: str
+    normal: Any = np.pi / 2
+    friction: float = 0.0
+    n_unknowns = 1
+
+    def __post_init__(self):
+        object.__setattr__(self, "friction", _friction(self.name, self.friction))
+        if not callable(self.normal):
+            object.__setattr__(self, "normal", float(self.normal))
+            if not np.isfinite(self.normal):
+                raise DimensionError(f"normal angle of {self.name} must be finite, got {self.normal}")
+
+
+Pair = Revolute | Prismatic | HigherPair
+
+
+@dataclass(frozen=True)
+class ForceModel:
+    """Links, pairs and the structural groups (output first) of a mechanism driven by ``crank``."""
+
+    bodies: tuple
+    pairs: tuple
+    groups: tuple
+    crank: str
+    pivot: str
+
+    def __post_init__(self):
+        object.__setattr__(self, "bodies", tuple(self.bodies))
+        object.__setattr__(self, "pairs", tuple(self.pairs))
+        object.__setattr__(self, "groups", tuple(tuple(g) for g in self.groups))
+        names = [b.name for b in self.bodies]
+        if len(set(names)) != len(names):
+            raise StructureError(f"body names must be unique, got {names}")
+        pnames = [p.name for p in self.pairs]
+        if len(set(pnames)) != len(pnames):
+            raise StructureError(f"pair names must be unique, got {pnames}")
+        known = set(names) | {FRAME}
+        for p in self.pairs:
+            for end in (p.a, p.b):
+                if end not in known:
+                    raise StructureError(f"pair {p.name} joins unknown body {end!r}; bodies: {names}")
+            if p.a == p.b:
+                raise StructureError(f"pair {p.name} joins {p.a} to itself")
+        if self.crank not in names:
+            raise StructureError(f"crank {self.crank!r} is not a body; bodies: {names}")
+        listed = [b for g in self.groups for b in g] + [self.crank]
+        if sorted(listed) != sorted(names):
+            raise StructureError(f"every body except the crank must be in exactly one group: groups "
+                                 f"{self.groups} + crank {self.crank!r} vs bodies {names}")
+        solved: set[str] = set()
+        for g in (*self.groups, (self.crank,)):
+            unknown = self._unknown_pairs(g, solved)
+            count = sum(p.n_unknowns for p in unknown) + (g == (self.crank,))
+            if count != 3 * len(g):
+                raise StructureError(
+                    f"group {g} is not statically determinate: {count} unknown reaction components "
+                    f"(pairs {[p.name for p in unknown]}) for 3·{len(g)} = {3 * len(g)} equilibrium equations")
+            solved |= {p.name for p in unknown}
+        if solved != set(pnames):
+            raise StructureError(f"pairs {sorted(set(pnames) - solved)} belong to no group")
+
+    def _unknown_pairs(self, group, solved):
+        return [p for p in self.pairs if (p.a in group or p.b in group) and p.name not in solved]
+
+    def body(self, name: str) -> Body:
+        for b in self.bodies:
+            if b.name == name:
+                return b
+        raise KeyError(f"no body {name!r}; bodies: {[b.name for b in self.bodies]}")
+
+    def pair(self, name: str):
+        for p in self.pairs:
+            if p.name == name:
+                return p
+        raise KeyError(f"no pair {name!r}; pairs: {[p.name for p in self.pairs]}")
+
+    def with_body(self, name: str, *, mass=None, inertia=None, com=None) -> "ForceModel":
+        """A copy with link ``name``'s mass properties changed.
+
+        ``inertia=None`` with a new mass gives a slender uniform bar, J_S = m·length²/12.
+        """
+        old = self.body(name)
+        m = old.mass if mass is None else mass
+        if inertia is None:
+            inertia = old.inertia if mass is None else _nonneg(f"mass of {name}", m, MassError) * old.length**2 / 12
+        new = replace(old, mass=m, inertia=inertia, com=old.com if com is None else com)
+        return replace(self, bodies=tuple(new if b.name == name else b for b in self.bodies))
+
+    def with_friction(self, f: float, radius: float = 0.0, *, pairs: Sequence[str] | None = None) -> "ForceModel":
+        """A copy with friction coefficient f in the named pairs (all by default) and journal radius r."""
+        chosen = set(pairs) if pairs is not None else {p.name for p in self.pairs}
+        unknown = chosen - {p.name for p in self.pairs}
+        if unknown:
+            raise KeyError(f"no pairs {sorted(unknown)}; pairs: {[p.name for p in self.pairs]}")
+        out = []
+        for p in self.pairs:
+            if p.name in chosen:
+                p = replace(p, friction=f, radius=radius) if isinstance(p, Revolute) else replace(p, friction=f)
+            out.append(p)
+        return replace(self, pairs=tuple(out))
+
+
+# --------------------------------------------------------------------------- loads
+@dataclass(frozen=True)
+class Force:
+    """External force on ``body`` applied at ``at`` (joint name or link coordinates (ξ, η))."""
+
+    body: str
+    at: Any
+    value: Any
+
+
+@dataclass(frozen=True)
+class Torque:
+    """External couple on ``body`` (counter-clockwise positive)."""
+
+    body: str
+    value: Any
+
+
+# --------------------------------------------------------------------------- models of the core mechanisms
+def model_for(mechanism) -> ForceModel:
+    """Force model of a core mechanism: massless frictionless links, centres of mass mid-link.
+
+    * FourBar: links crank (O→A), coupler (A→B), rocker (E→B); pairs O, A, B, E; group RRR
+      (coupler, rocker).
+    * SliderCrank: crank, rod (A→B), slider (at B, translating); pairs O, A, B and the
+      prismatic ``guide``; group RRP (rod, slider).
+    * SlottedLink: crank, block (at A, turning with the link), link (B→A); pairs O, A,
+      the prismatic ``slot`` (block in the link) and B; group RPR (block, link).
+    * SineMechanism: crank, block (at A), yoke (at K); pairs O, A, ``slot`` (block in
+      the yoke, vertical) and ``guide`` (yoke on the frame); group (block, yoke).
+    """
+    from ..mechanisms.fourbar import FourBar
+    from ..mechanisms.slotted import SineMechanism, SlottedLink
+    from ..mechanisms.slider_crank import SliderCrank
+
+    if not isinstance(mechanism, (FourBar, SliderCrank, SlottedLink, SineMechanism)):
+        raise TypeError(f"no force model for {type(mechanism).__name__}; build a ForceModel for it")
+    crank = Body("crank", "O", ("O", "A"), com=(mechanism.crank / 2, 0.0), length=mechanism.crank)
+    crank_pair = Revolute("O", FRAME, "crank", "O")
+    if isinstance(mechanism, FourBar):
+        return ForceModel(
+            (crank, Body("coupler", "A", ("A", "B"), com=(mechanism.coupler / 2, 0.0), length=mechanism.coupler),
+             Body("rocker", "E", ("E", "B"), com=(mechanism.rocker / 2, 0.0), length=mechanism.rocker)),
+            (crank_pair, Revolute("A", "crank", "coupler", "A"), Revolute("B", "coupler", "rocker", "B"),
+             Revolute("E", FRAME, "rocker", "E")),
+            (("coupler", "rocker"),), "crank", "O")
+    if isinstance(mechanism, SliderCrank):
+        return ForceModel(
+            (crank, Body("rod", "A", ("A", "B"), com=(mechanism.rod / 2, 0.0), length=mechanism.rod),
+             Body("slider", "B", 0.0)),
+            (crank_pair, Revolute("A", "crank", "rod", "A"), Revolute("B", "rod", "slider", "B"),
+             Prismatic("guide", FRAME, "slider", "B", 0.0)),
+            (("rod", "slider"),), "crank", "O")
+    if isinstance(mechanism, SlottedLink):
+        reach = mechanism.pivot_distance + mechanism.crank
+        return ForceModel(
+            (crank, Body("block", "A", ("B", "A")),
+             Body("link", "B", ("B", "A"), com=(reach / 2, 0.0), length=reach)),
+            (crank_pair, Revolute("A", "crank", "block", "A"), Prismatic("slot", "link", "block", "A", 0.0),
+             Revolute("B", FRAME, "link", "B")),
+            (("block", "link"),), "crank", "O")
+    if isinstance(mechanism, SineMechanism):
+        return ForceModel(
+            (crank, Body("block", "A", np.pi / 2), Body("yoke", "K", 0.0)),
+            (crank_pair, Revolute("A", "crank", "block", "A"), Prismatic("slot", "yoke", "block", "A", np.pi / 2),
+             Prismatic("guide", FRAME, "yoke", "K", 0.0)),
+            (("block", "yoke"),), "crank", "O")
+    raise TypeError(f"no force model for {type(mechanism).__name__}; build a ForceModel for it")
+
+
+def slender_bar(mass: float, length: float) -> float:
+    """Moment of inertia m·l²/12 of a uniform slender bar about its centre."""
+    return _nonneg("mass", mass, MassError) * _nonneg("length", length, DimensionError) ** 2 / 12.0
+

@@ -1,0 +1,103 @@
+"""The antiparallelogram: the crossed four-bar with equal opposite links (Kozhevnikov, §7.2).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+import numpy as np
+from ..errors import DimensionError
+from ..geometry import PointPath, as_angles, check_length, dot, fixed_point, unit
+from .base import Mechanism
+from .fourbar import FourBar
+from ..motion import AngularMotion
+
+
+@dataclass(frozen=True)
+class Antiparallelogram(Mechanism):
+    """Crossed four-bar O-A-B-E with crank OA = rocker EB = ``crank`` and coupler AB = frame OE = ``ground``.
+
+    A four-bar with s + l = p + q is a change-point linkage: at φ = 0 and φ = π all four
+    joints lie on the frame line and the loop may continue as a parallelogram (ψ = φ) or
+    as the crossed antiparallelogram. :class:`~mechlab.FourBar` with a fixed assembly
+    sign cannot follow the crossed branch: it is ``assembly = -1`` on 0 < φ < π and
+    ``+1`` on π < φ < 2π (tests), and FourBar refuses φ = 0, π. This class follows the
+    crossed branch analytically through both change points. Derivation (sympy in the
+    tests and notebook 04): with k = (crank + ground)/(crank - ground),
+
+        tan(ψ/2) = k·tan(φ/2),   ψ' = 2k / ((1 + k²) + (1 - k²) cos φ),
+        ψ'' = 2k(1 - k²) sin φ / ((1 + k²) + (1 - k²) cos φ)².
+
+    ground < crank (k > 1): both long links turn fully in the same sense (short frame);
+    ground > crank (k < -1): both short links turn fully in opposite senses (long frame).
+    """
+
+    crank: float
+    ground: float
+
+    links = (("O", "A"), ("A", "B"), ("B", "E"))
+    pivots = ("O", "E")
+    output = "angle"
+
+    def __post_init__(self):
+        object.__setattr__(self, "crank", check_length("crank", self.crank))
+        object.__setattr__(self, "ground", check_length("ground", self.ground))
+        if abs(self.crank - self.ground) <= 1e-9 * max(self.crank, self.ground):
+            raise DimensionError(
+                f"crank = ground = {self.crank:g}: all four links equal (a rhombus), the crossed branch "
+                f"degenerates (the rocker folds onto the frame); take crank ≠ ground")
+
+    @property
+    def coupler(self) -> float:
+        return self.ground
+
+    @property
+    def rocker(self) -> float:
+        return self.crank
+
+    @property
+    def k(self) -> float:
+        """k = (crank + ground)/(crank - ground), the ratio in tan(ψ/2) = k·tan(φ/2)."""
+        return (self.crank + self.ground) / (self.crank - self.ground)
+
+    def change_points(self) -> tuple[float, float]:
+        """Crank angles (rad) where the linkage folds flat: 0 and π."""
+        return (0.0, np.pi)
+
+    def cycle(self, n: int = 361) -> np.ndarray:
+        """n crank angles over a full turn, shifted by 0.37 of a step so that no sample falls
+        on a change point (0 or π), where Kennedy's construction is indeterminate."""
+        phi = self.turn(n)
+        return phi + 0.37 * (phi[1] - phi[0]) if n > 1 else phi + 0.1
+
+    def as_fourbar(self, assembly: int) -> FourBar:
+        """The same lengths as a FourBar with a fixed assembly sign (valid on half a turn each)."""
+        return FourBar(self.crank, self.ground, self.crank, self.ground, assembly)
+
+    def output_angle(self, phi) -> np.ndarray:
+        """ψ(φ) on the crossed branch, continuous over any range of φ."""
+        phi = as_angles(phi)
+        k = self.k
+        if k > 0:
+            return phi + 2.0 * np.arctan2((k - 1.0) * np.sin(phi), (1.0 + k) + (1.0 - k) * np.cos(phi))
+        return -phi + 2.0 * np.arctan2((k + 1.0) * np.sin(phi), (1.0 - k) + (1.0 + k) * np.cos(phi))
+
+    def motion(self, phi) -> AngularMotion:
+        """Paths of O, A, B, E and ψ, ψ', ψ'' at crank angles φ (radians), any φ."""
+        phi = as_angles(phi)
+        n = len(phi)
+        a, g, k = self.crank, self.ground, self.k
+        psi = self.output_angle(phi)
+        den = (1.0 + k * k) + (1.0 - k * k) * np.cos(phi)
+        dpsi = 2.0 * k / den
+        ddpsi = 2.0 * k * (1.0 - k * k) * np.sin(phi) / den**2
+        ua, ub = unit(phi), unit(psi)
+        pa, pb = np.stack([-ua[:, 1], ua[:, 0]], -1), np.stack([-ub[:, 1], ub[:, 0]], -1)
+        A = PointPath(a * ua, a * pa, -a * ua)
+        E = fixed_point((g, 0.0), n)
+        B = PointPath(E.p + a * ub, a * dpsi[:, None] * pb,
+                      a * (ddpsi[:, None] * pb - (dpsi**2)[:, None] * ub))
+        ba, be = A.p - B.p, E.p - B.p
+        mu = np.arccos(np.clip(dot(ba, be) / (g * a), -1.0, 1.0))
+        return AngularMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "B": B, "E": E}, mu,
+                             psi, dpsi, ddpsi)
+

@@ -1,0 +1,803 @@
+"""Slotted links whose slot is a curve: seed 000, §1-2 (Fig. 2, 4, 7, 8).
+
+Public API (kept stable; other modules build on it)
+---------------------------------------------------
+Slot curves, each given in the frame of the slotted link and evaluated by
+``curve.evaluate(t) -> PointPath(c, c_t, c_tt)`` (position and its first two
+derivatives with respect to the curve parameter t, analytic):
+
+* ``CircleSlot(center, radius)`` — c(t) = center + radius·(cos t, sin t), periodic;
+  mechanisms with a circular slot are solved in closed form.
+* ``ParametricSlot(f, df, ddf, t0, t1, periodic=False)`` — any smooth curve from
+  three vectorised functions t ↦ (n, 2) arrays.
+* ``SampledSlot(points, closed=False)`` — a cubic spline (scipy CubicSpline,
+  chord-length parameter) through sampled points; its derivatives are the
+  spline's (exact for the spline, not for the curve it was sampled from).
+
+Mechanisms (frozen dataclasses, subclasses of :class:`~mechlab.mechanisms.base.Mechanism`):
+
+* ``CurvedSlotLink(crank, pivot_distance, slot, start=None)`` — oscillating or
+  fully rotating slotted link. **Frame of seed 000 §2 (Fig. 8)**, as
+  :class:`~mechlab.mechanisms.slotted.SlottedLink`: crank pivot O at the origin, link
+  pivot B at (-pivot_distance, 0), φ = 0 where the pin A is farthest from B
+  (A = (crank, 0)). ψ is the angle of the link's own x axis (the x axis of the frame
+  in which ``slot`` is given) from the ray B→O. ``motion(phi)`` → AngularMotion with
+  ψ, ψ', ψ'' and points O, A, B; ``beta(phi)`` → AnglePath of the seed's β (polar angle
+  of the pin in the link frame), so that ψ = ψ_K - β with ψ_K the base mechanism's
+  angle (formula (12)); ``base()`` → the base mechanism ``SlottedLink(crank, pivot_distance)``.
+* ``TranslatingCurvedSlot(crank, slot, start=None)`` — the slotted link translates
+  along the x axis (seed 000 Fig. 4, 7). Frame: O at the origin, φ from +x; the link
+  frame's origin C = (s, 0) moves along the x axis, so the pin satisfies
+  A = (s + x_α, y_α) with (x_α, y_α) the slot point. ``motion(phi)`` → LinearMotion
+  with s, s', s'' and points O, A, C; ``x_alpha(phi)`` → AnglePath (x_α, x_α', x_α'')
+  so that s = x_K - x_α (formula (1)); ``base()`` → ``SineMechanism(crank)``.
+
+``start`` is a curve parameter near the point where the pin sits at φ = 0 (distance
+crank + pivot_distance from B; for the translating link, the point on the x axis,
+y_α = 0); it can be omitted when only one point of the curve qualifies. For a
+circular slot it chooses the arc (the side of the line pivot → centre) the pin runs on.
+
+How it is solved
+----------------
+The pin A lies on the slot: B + R(ψ)·c(t) = A(φ). Taking lengths, |c(t)| = |A - B| =
+S(φ) = sqrt(a² + d² + 2ad·cos φ) (the seed's S(φ), after formula (25)), a scalar
+equation for t alone; then ψ = angle(A - B) - angle(c(t)) = ψ_K - β. As φ runs over
+a turn S goes from a + d (φ = 0) to |a - d| (φ = π) and back, so the pin runs along a
+piece of the slot on which |c| decreases strictly from a + d to |a - d| and back
+again: that working segment is found once (in ``__post_init__``), and each φ is
+solved on it by a vectorised bracketed Newton iteration on |c(t)|² - S² = 0 with the
+analytic derivative 2c·c_t, started from the inverse of a monotone table
+(no loop over angles). Circular slots use the closed form of the triangle B-centre-A.
+Analogs from differentiating c·c = S²: t' = (S²)'/(2c·c_t),
+t'' = ((S²)''/2 - (|c_t|² + c·c_tt)·t'²)/(c·c_t); β' = θ_t·t', β'' = θ_tt·t'² + θ_t·t''.
+The translating link likewise solves y_α(t) = a·sin φ.
+
+Scope and its one limitation: the pin runs *back and forth* over one piece of the
+slot (the case of Tables 1-2 and of every equivalent linkage). A slot on which the pin
+would pass through a point where the slot is tangent to the pin's circle about B —
+e.g. the two-branch slot of seed 000 Fig. 10, whose outermost point E the pin reaches
+at φ = 0 — is the degenerate case the seed itself calls unworkable (pressure angle
+π/2): it raises SingularityError rather than guessing a branch. A parameter t with
+|c(t)| strictly monotone on the working piece (e.g. the distance from B itself, the
+choice made by :mod:`mechlab.synthesis.dwell_slot`) is always safe; c'(t) must not vanish there.
+
+Errors: where the slot ends before the pin's distance range is covered, the crank
+cannot turn fully (``crank_ranges()`` shrinks, ``motion`` raises AssemblyError
+"the pin would leave the slot …"); where the slot becomes tangent to the circle about
+the pivot (c·c_t = 0: pressure angle 90°, the crank cannot drive the link past it),
+SingularityError; a slot that never reaches the pin's starting point, DimensionError
+/ AssemblyError with the numbers.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Callable
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..errors import AssemblyError, DimensionError, SingularityError
+from ..geometry import AnglePath, PointPath, as_angles, check_length, cross, crank_point, dot, fixed_point, lift
+from ..motion import AngularMotion, LinearMotion
+from .base import FULL_TURN, Mechanism, arc_set, fmt_ranges
+from .slotted import PivotedSlot, SineMechanism, SlottedLink
+
+# Samples of the curve used to find the working segment and the Newton brackets.
+_TABLE = 4097
+# |c·c_t| below this fraction of |c||c_t|: the slot is tangent to the circle about the pivot.
+_TANGENT_TOL = 1e-10
+
+
+# ---------------------------------------------------------------------------------------------
+# slot curves
+# ---------------------------------------------------------------------------------------------
+class SlotCurve:
+    """A smooth curve in the link frame, parameter t in [t0, t1] (periodic if closed)."""
+
+    t0: float
+    t1: float
+    periodic: bool
+
+    def evaluate(self, t) -> PointPath:  # pragma: no cover - interface
+        raise NotImplementedError
+
+    def points(self, t) -> np.ndarray:
+        return self.evaluate(t).p
+
+
+def _xy(value, n, what):
+    arr = np.asarray(value, dtype=float)
+    if arr.shape != (n, 2):
+        raise DimensionError(f"{what} must return an array of shape ({n}, 2), got {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise DimensionError(f"{what} returned NaN or inf")
+    return arr
+
+
+@dataclass(frozen=True)
+class CircleSlot(SlotCurve):
+    """Circle of ``radius`` about ``center`` (link frame); c(t) = center + radius·(cos t, sin t)."""
+
+    center: tuple
+    radius: float
+    t0: float = field(default=-np.pi, init=False)
+    t1: float = field(default=np.pi, init=False)
+    periodic: bool = field(default=True, init=False)
+
+    def __post_init__(self):
+        c = np.asarray(self.center, dtype=float)
+        if c.shape != (2,) or not np.all(np.isfinite(c)):
+            raise DimensionError(f"circle centre must be two finite numbers, got {self.center!r}")
+        object.__setattr__(self, "center", (float(c[0]), float(c[1])))
+        object.__setattr__(self, "radius", check_length("slot radius", self.radius))
+
+    def evaluate(self, t) -> PointPath:
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        u = np.stack([np.cos(t), np.sin(t)], axis=-1)
+        r = self.radius
+        return PointPath(np.asarray(self.center) + r * u, r * np.stack([-u[:, 1], u[:, 0]], axis=-1), -r * u)
+
+
+@dataclass(frozen=True)
+class ParametricSlot(SlotCurve):
+    """A curve given by vectorised functions f, f', f'' : t ↦ (n, 2) on [t0, t1]."""
+
+    f: Callable
+    df: Callable
+    ddf: Callable
+    t0: float
+    t1: float
+    periodic: bool = False
+
+    def __post_init__(self):
+        t0, t1 = float(self.t0), float(self.t1)
+        if not (np.isfinite(t0) and np.isfinite(t1) and t1 > t0):
+            raise DimensionError(f"the parameter interval must satisfy t0 < t1 (finite), got [{t0}, {t1}]")
+        object.__setattr__(self, "t0", t0)
+        object.__setattr__(self, "t1", t1)
+
+    def evaluate(self, t) -> PointPath:
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        n = len(t)
+        return PointPath(_xy(self.f(t), n, "f(t)"), _xy(self.df(t), n, "df(t)"), _xy(self.ddf(t), n, "ddf(t)"))
+
+
+@dataclass(frozen=True, eq=False)
+class SampledSlot(SlotCurve):
+    """Cubic spline through sampled points (m, 2) of the slot's centre line, chord-length parameter.
+
+    ``closed=True`` makes a periodic spline (the first point is repeated at the end if needed).
+    """
+
+    samples: np.ndarray
+    closed: bool = False
+    t0: float = field(default=0.0, init=False)
+    t1: float = field(default=1.0, init=False)
+    periodic: bool = field(default=False, init=False)
+
+    def __post_init__(self):
+        pts = np.asarray(self.samples, dtype=float)
+        if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) < 4:
+            raise DimensionError(f"a sampled slot needs at least 4 points as an (m, 2) array, got shape {pts.shape}")
+        if not np.all(np.isfinite(pts)):
+            raise DimensionError("slot samples must be finite")
+        if self.closed and np.any(pts[0] != pts[-1]):
+            pts = np.vstack([pts, pts[:1]])
+        seg = np.hypot(*np.diff(pts, axis=0).T)
+        if np.any(seg <= 0):
+            i = int(np.argmin(seg))
+            raise DimensionError(f"slot samples {i} and {i + 1} coincide: the chord-length parameter needs distinct points")
+        t = np.concatenate([[0.0], np.cumsum(seg)])
+        from scipy.interpolate import CubicSpline  # imported here: scipy.interpolate is slow to import
+
+        spline = CubicSpline(t, pts, bc_type="periodic" if self.closed else "not-a-knot")
+        object.__setattr__(self, "samples", pts)
+        object.__setattr__(self, "t1", float(t[-1]))
+        object.__setattr__(self, "periodic", bool(self.closed))
+        object.__setattr__(self, "_spline", spline)
+        object.__setattr__(self, "_d1", spline.derivative(1))
+        object.__setattr__(self, "_d2", spline.derivative(2))
+
+    def evaluate(self, t) -> PointPath:
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        if self.periodic:
+            t = self.t0 + np.mod(t - self.t0, self.t1 - self.t0)
+        return PointPath(self._spline(t), self._d1(t), self._d2(t))
+
+
+# ---------------------------------------------------------------------------------------------
+# the working segment: a piece of the curve on which a scalar g(t) is strictly monotone
+# ---------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class _Segment:
+    """t = t_s + direction·u, u ∈ [0, u_end]; g decreases strictly from g_start to g_end."""
+
+    t_start: float
+    direction: int
+    u_end: float
+    g_end: float
+    u_table: np.ndarray
+    g_table: np.ndarray
+    reason: str          # why the segment ends: "covered", "end", "tangent"
+
+
+def _walk(curve: SlotCurve, g_of: Callable, dg_of: Callable, t_s: float, direction: int, g_target: float,
+          what_tangent: str) -> _Segment:
+    """From t_s, follow the curve in ``direction`` while g decreases, until g reaches g_target,
+    the curve ends, or g' vanishes (the slot is tangent to the level set)."""
+    if curve.periodic:
+        length = curve.t1 - curve.t0
+    else:
+        length = (curve.t1 - t_s) if direction > 0 else (t_s - curve.t0)
+    if length <= 0:
+        return _Segment(t_s, direction, 0.0, g_of(np.array([t_s]))[0], np.array([0.0]),
+                        g_of(np.array([t_s])), "end")
+    u = np.linspace(0.0, length, _TABLE)
+    t = t_s + direction * u
+    g = g_of(t)
+    dg = direction * dg_of(t)  # dg/du
+    # first sample where g has reached the target, or where g stops decreasing
+    reached = g <= g_target
+    rising = dg[1:] >= 0  # ignore u = 0 itself
+    i_reach = int(np.argmax(reached)) if np.any(reached) else None
+    i_rise = 1 + int(np.argmax(rising)) if np.any(rising) else None
+    if i_reach is not None and (i_rise is None or i_reach <= i_rise):
+        k = i_reach
+        f = lambda uu: g_of(np.array([t_s + direction * uu]))[0] - g_target  # noqa: E731
+        u_end = u[k] if f(u[k]) == 0 else brentq(f, u[k - 1], u[k], xtol=1e-15, rtol=1e-15)
+        reason, g_end = "covered", g_target
+    elif i_rise is not None:
+        k = i_rise
+        f = lambda uu: direction * dg_of(np.array([t_s + direction * uu]))[0]  # noqa: E731
+        u_end = brentq(f, u[k - 1], u[k], xtol=1e-15, rtol=1e-15)
+        reason, g_end = "tangent", float(g_of(np.array([t_s + direction * u_end]))[0])
+    else:
+        k = len(u) - 1
+        u_end, reason, g_end = float(u[-1]), "end", float(g[-1])
+    keep = u < u_end
+    u_tab = np.concatenate([u[keep], [u_end]])
+    g_tab = np.concatenate([g[keep], [g_end]])
+    return _Segment(float(t_s), int(direction), float(u_end), float(g_end), u_tab, g_tab, reason)
+
+
+def _solve_on_segment(seg: _Segment, curve: SlotCurve, g_of: Callable, dg_of: Callable, target: np.ndarray):
+    """u with g(t_s + dir·u) = target on the segment (g decreasing in u): bracketed Newton, vectorised."""
+    gt, ut = seg.g_table, seg.u_table
+    # bracket from the monotone table (g decreasing → flip for searchsorted)
+    k = np.clip(len(gt) - 1 - np.searchsorted(gt[::-1], target, side="left"), 0, len(gt) - 2)
+    lo, hi = ut[k].copy(), ut[k + 1].copy()
+    glo, ghi = gt[k], gt[k + 1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w = np.where(glo != ghi, (glo - target) / (glo - ghi), 0.5)
+    u = lo + np.clip(w, 0.0, 1.0) * (hi - lo)
+    scale = max(1.0, seg.u_end)
+    for _ in range(100):
+        t = seg.t_start + seg.direction * u
+        f = g_of(t) - target
+        fp = seg.direction * dg_of(t)
+        lo = np.where(f > 0, u, lo)   # g too large → pin not yet far enough along
+        hi = np.where(f < 0, u, hi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            un = u - f / fp
+        bad = ~np.isfinite(un) | (un < lo) | (un > hi)
+        un = np.where(bad, 0.5 * (lo + hi), un)
+        done = np.abs(un - u) <= 1e-15 * scale
+        u = un
+        if np.all(done | (f == 0)):
+            break
+    return u
+
+
+def _distinct_roots(roots, curve: SlotCurve) -> list[float]:
+    """Roots without repeats (on a closed curve t0 and t1 are the same point)."""
+    out: list[float] = []
+    span = curve.t1 - curve.t0
+    for r in sorted(roots):
+        if curve.periodic:
+            r = curve.t0 + float(np.mod(r - curve.t0, span))
+        if all(min(abs(r - q), span - abs(r - q) if curve.periodic else np.inf) > 1e-12 * max(1.0, span)
+               for q in out):
+            out.append(r)
+    return out
+
+
+def _fmt_deg(x):
+    return f"{np.degrees(x):.2f}°"
+
+
+# ---------------------------------------------------------------------------------------------
+# the oscillating / rotating curved slotted link
+# ---------------------------------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class CurvedSlotLink(PivotedSlot, Mechanism):
+    """Crank O-A (radius ``crank``) driving a link pivoted at B = (-pivot_distance, 0) whose
+    slot ``slot`` (a curve in the link frame, origin at B) carries the pin A.
+
+    Seed 000 §2, Fig. 8, formulas (12)-(17): ψ = ψ_K - β with ψ_K the base mechanism's
+    angle (formula (18)) and β the polar angle of the pin in the link frame.
+    """
+
+    crank: float
+    pivot_distance: float
+    slot: SlotCurve
+    start: float | None = None
+
+    links = (("O", "A"),)
+    pivots = ("O", "B")
+    output = "angle"
+
+    def __post_init__(self):
+        if not isinstance(self.slot, SlotCurve):
+            raise DimensionError(f"slot must be a CircleSlot, ParametricSlot or SampledSlot, got {type(self.slot).__name__}")
+        self._check_crank_and_pivot()
+        if isinstance(self.slot, CircleSlot):
+            self._circle_setup()
+        else:
+            self._segment  # noqa: B018 - validate now (raises with the numbers)
+
+    # -- basic quantities ---------------------------------------------------------------------
+    def base(self) -> SlottedLink:
+        """The base mechanism: straight slot through the pivot, same crank and pivot (seed 000 Fig. 5)."""
+        return SlottedLink(self.crank, self.pivot_distance)
+
+    @property
+    def s_max(self) -> float:
+        return self.crank + self.pivot_distance
+
+    @property
+    def s_min(self) -> float:
+        return abs(self.pivot_distance - self.crank)
+
+    def _cos_for_distance(self, s):
+        a, d = self.crank, self.pivot_distance
+        return (s * s - a * a - d * d) / (2 * a * d)
+
+    # -- circle: closed form ------------------------------------------------------------------
+    def _circle_setup(self):
+        cx, cy = self.slot.center
+        D = float(np.hypot(cx, cy))
+        if D == 0.0:
+            raise DimensionError("a circular slot centred on the pivot keeps the pin at a constant distance from B: "
+                                 "the link cannot be driven (|centre| = 0)")
+        side = 1
+        if self.start is not None:
+            p = self.slot.points(np.array([float(self.start)]))[0]
+            side = 1 if cx * p[1] - cy * p[0] >= 0 else -1
+        object.__setattr__(self, "_side", side)
+        if not self.crank_ranges():
+            rho = self.slot.radius
+            raise AssemblyError(
+                f"the pin never lies on the circular slot: its distance from B ranges over "
+                f"[{self.s_min:.4g}, {self.s_max:.4g}], the slot's points over [|D - ρ|, D + ρ] = "
+                f"[{abs(D - rho):.4g}, {D + rho:.4g}] (D = |centre| = {D:.4g}, ρ = {rho:.4g})")
+
+    # -- general curve: working segment -------------------------------------------------------
+    def _g(self, t):
+        c = self.slot.points(t)
+        return dot(c, c)
+
+    def _dg(self, t):
+        c = self.slot.evaluate(t)
+        return 2.0 * dot(c.p, c.d)
+
+    @cached_property
+    def _segment(self) -> _Segment:
+        curve = self.slot
+        target = self.s_max**2
+        t = np.linspace(curve.t0, curve.t1, _TABLE)
+        g = self._g(t) - target
+        roots = [float(t[i]) for i in np.flatnonzero(g == 0)]
+        for i in np.flatnonzero(g[:-1] * g[1:] < 0):
+            roots.append(brentq(lambda x: self._g(np.array([x]))[0] - target, t[i], t[i + 1], xtol=1e-15, rtol=1e-15))
+        roots = _distinct_roots(roots, curve)
+        if not roots:
+            r = np.sqrt(self._g(t))
+            raise DimensionError(
+                f"the slot never reaches the pin's position at φ = 0: the pin is crank + pivot_distance = "
+                f"{self.s_max:.6g} from B, the slot's points lie {r.min():.6g} … {r.max():.6g} from B")
+        if self.start is None:
+            if len(roots) > 1:
+                raise DimensionError(
+                    f"the slot passes {len(roots)} times at distance {self.s_max:.6g} from B (t = "
+                    + ", ".join(f"{x:.6g}" for x in roots) + "): give start= to say where the pin is at φ = 0")
+            t_s = roots[0]
+        else:
+            t_s = min(roots, key=lambda x: abs(x - float(self.start)))
+        c = self.slot.evaluate(np.array([t_s]))
+        gd = float(dot(c.p, c.d)[0])
+        if abs(gd) <= _TANGENT_TOL * float(np.hypot(*c.p[0]) * np.hypot(*c.d[0])):
+            raise SingularityError(
+                f"at φ = 0 the slot (t = {t_s:.6g}) is tangent to the circle of radius {self.s_max:.6g} about B: "
+                f"pressure angle 90°, the crank cannot drive the link from there")
+        direction = -1 if gd > 0 else 1
+        return _walk(curve, self._g, self._dg, t_s, direction, self.s_min**2, "circle about B")
+
+    # -- ranges -------------------------------------------------------------------------------
+    def crank_ranges(self):
+        if isinstance(self.slot, CircleSlot):
+            D = float(np.hypot(*self.slot.center))
+            rho = self.slot.radius
+            return arc_set(self._cos_for_distance(abs(D - rho)), self._cos_for_distance(D + rho))
+        seg = self._segment
+        if seg.reason == "covered":
+            return FULL_TURN
+        c_end = self._cos_for_distance(np.sqrt(seg.g_end))
+        phi_e = float(np.arccos(np.clip(c_end, -1.0, 1.0)))
+        return ((-phi_e, phi_e),)
+
+    def rotation_failure(self) -> str:
+        return f"crank cannot turn fully: {self._range_reason()}; it reaches only φ ∈ {fmt_ranges(self.crank_ranges())}"
+
+    def _range_reason(self) -> str:
+        if isinstance(self.slot, CircleSlot):
+            D = float(np.hypot(*self.slot.center))
+            rho = self.slot.radius
+            return (f"the circular slot's points lie [{abs(D - rho):.4g}, {D + rho:.4g}] from B, the pin "
+                    f"[{self.s_min:.4g}, {self.s_max:.4g}]; at the ends the slot is tangent to the pin's circle "
+                    f"about B (pressure angle 90°)")
+        seg = self._segment
+        r_end = float(np.sqrt(seg.g_end))
+        if seg.reason == "tangent":
+            return (f"the slot becomes tangent to the circle of radius {r_end:.6g} about B (pressure angle 90°) "
+                    f"before the pin comes within |pivot_distance - crank| = {self.s_min:.6g} of B")
+        return (f"the pin would leave the slot: the slot ends {r_end:.6g} from B, but the pin comes within "
+                f"|pivot_distance - crank| = {self.s_min:.6g} of B")
+
+    def assembly_failure(self, phi: float) -> str:
+        return self._range_reason()
+
+    def check_reachable(self, phi):
+        ranges = self.crank_ranges()
+        if ranges == FULL_TURN:
+            return
+        inside = np.zeros(phi.shape, dtype=bool)
+        for start, end in ranges:
+            t = np.mod(phi - start, 2 * np.pi)
+            inside |= (t > 0.0) & (t < end - start)
+        if not np.all(inside):
+            i = int(np.argmin(inside))
+            err = SingularityError if self._ends_tangent() else AssemblyError
+            raise err(f"cannot move to φ = {np.degrees(phi[i]):.2f}°: {self._range_reason()}; "
+                      f"the crank reaches only φ ∈ {fmt_ranges(ranges)}")
+
+    def _ends_tangent(self) -> bool:
+        return isinstance(self.slot, CircleSlot) or self._segment.reason == "tangent"
+
+    # -- kinematics ---------------------------------------------------------------------------
+    def _distance(self, A: PointPath):
+        """S² = |A - B|² with its φ-analogs."""
+        v = A.p - np.array([-self.pivot_distance, 0.0])
+        q = dot(v, v)
+        dq = 2.0 * dot(v, A.d)
+        ddq = 2.0 * (dot(A.d, A.d) + dot(v, A.dd))
+        return q, dq, ddq
+
+    def beta(self, phi) -> AnglePath:
+        """β(φ), β'(φ), β''(φ): the pin's polar angle in the link frame (seed 000, formula (12))."""
+        phi = as_angles(phi)
+        self.check_reachable(phi)
+        A = crank_point(self.crank, phi)
+        q, dq, ddq = self._distance(A)
+        if isinstance(self.slot, CircleSlot):
+            return self._beta_circle(q, dq, ddq)
+        return self._beta_curve(q, dq, ddq)
+
+    def _beta_circle(self, q, dq, ddq) -> AnglePath:
+        cx, cy = self.slot.center
+        D = float(np.hypot(cx, cy))
+        K = D * D - self.slot.radius ** 2
+        S = np.sqrt(q)
+        dS = dq / (2 * S)
+        ddS = (ddq / 2 - dS**2) / S
+        # cos γ = (S² + D² - ρ²)/(2DS), γ = angle between B→centre and B→pin (triangle B-centre-A)
+        w = S / (2 * D) + K / (2 * D * S)
+        dw = dS / (2 * D) - K * dS / (2 * D * S**2)
+        ddw = ddS / (2 * D) - K * ddS / (2 * D * S**2) + K * dS**2 / (D * S**3)
+        sin_g = np.sqrt(np.clip(1.0 - w * w, 0.0, None))
+        if np.any(sin_g <= 1e-12):
+            i = int(np.argmin(sin_g))
+            raise SingularityError(
+                f"the circular slot is tangent to the pin's circle about B (pin {S[i]:.6g} from B): "
+                f"pressure angle 90°, the analogs are unbounded")
+        g = np.arccos(np.clip(w, -1.0, 1.0))
+        dg = -dw / sin_g
+        ddg = -(ddw + w * dg**2) / sin_g
+        sgn = self._side
+        return AnglePath(np.arctan2(cy, cx) + sgn * g, sgn * dg, sgn * ddg)
+
+    def _beta_curve(self, q, dq, ddq) -> AnglePath:
+        seg = self._segment
+        u = _solve_on_segment(seg, self.slot, self._g, self._dg, q)
+        t = seg.t_start + seg.direction * u
+        c = self.slot.evaluate(t)
+        gd = dot(c.p, c.d)
+        tiny = np.abs(gd) <= _TANGENT_TOL * np.hypot(*c.p.T) * np.hypot(*c.d.T)
+        # at φ = 0 and π the pin reverses on the slot: q' = 0 and t' = 0 exactly
+        at_turn = np.abs(dq) <= 1e-14 * q
+        if np.any(tiny & ~at_turn):
+            i = int(np.argmax(tiny & ~at_turn))
+            raise SingularityError(f"the slot is tangent to the circle about B at the pin (t = {t[i]:.6g}): "
+                                   f"pressure angle 90°")
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dt = np.where(at_turn, 0.0, dq / (2 * gd))
+            dt2 = dt * dt
+            ddt = (ddq / 2 - (dot(c.d, c.d) + dot(c.p, c.dd)) * dt2) / gd
+        r2 = dot(c.p, c.p)
+        c1 = cross(c.p, c.d)
+        th_t = c1 / r2
+        th_tt = cross(c.p, c.dd) / r2 - 2.0 * c1 * gd / r2**2
+        theta = np.arctan2(c.p[:, 1], c.p[:, 0])
+        theta = lift(theta, self._theta_reference(u))
+        return AnglePath(theta, th_t * dt, th_tt * dt2 + th_t * ddt)
+
+    def _theta_reference(self, u):
+        seg = self._segment
+        tt = seg.t_start + seg.direction * seg.u_table
+        p = self.slot.points(tt)
+        ref = np.unwrap(np.arctan2(p[:, 1], p[:, 0]))
+        return np.interp(u, seg.u_table, ref)
+
+    def motion(self, phi) -> AngularMotion:
+        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, seed 000 frame)."""
+        phi = as_angles(phi)
+        b = self.beta(phi)
+        base = self.base().motion(phi)
+        psi = base.psi - b.theta
+        dpsi = base.dpsi - b.d
+        ddpsi = base.ddpsi - b.dd
+        n = len(phi)
+        A = base.points["A"]
+        # the transmission angle needs the slot's tangent: computed on first use only
+        mu = lambda mo: self._transmission(phi, psi, A)  # noqa: E731
+        return AngularMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A,
+                                   "B": fixed_point((-self.pivot_distance, 0.0), n)}, mu, psi, dpsi, ddpsi)
+
+    def _transmission(self, phi, psi, A: PointPath):
+        """μ = angle between the slot's tangent at the pin and the radius B→A, in [0, π/2].
+
+        The pin pushes along the slot's normal; the link point under it moves
+        perpendicular to B→A; the pressure angle between the two is π/2 - μ.
+        """
+        rel = A.p - np.array([-self.pivot_distance, 0.0])
+        tangent = self._slot_tangent_world(phi, psi)
+        cosang = np.abs(dot(tangent, rel)) / (np.hypot(*tangent.T) * np.hypot(*rel.T))
+        return np.arcsin(np.clip(cosang, 0.0, 1.0))
+
+    def _slot_tangent_world(self, phi, psi):
+        A = crank_point(self.crank, phi)
+        q, _, _ = self._distance(A)
+        if isinstance(self.slot, CircleSlot):
+            b = self._beta_circle(q, np.zeros_like(q), np.zeros_like(q))
+            pin = np.sqrt(q)[:, None] * np.stack([np.cos(b.theta), np.sin(b.theta)], axis=-1)
+            radial = pin - np.asarray(self.slot.center)
+            tan_link = np.stack([-radial[:, 1], radial[:, 0]], axis=-1)
+        else:
+            u = _solve_on_segment(self._segment, self.slot, self._g, self._dg, q)
+            tan_link = self.slot.evaluate(self._segment.t_start + self._segment.direction * u).d
+        c, s = np.cos(psi), np.sin(psi)
+        return np.stack([c * tan_link[:, 0] - s * tan_link[:, 1], s * tan_link[:, 0] + c * tan_link[:, 1]], axis=-1)
+
+    def slot_samples(self, n: int = 200) -> np.ndarray:
+        """(n, 2) points of the slot's working part in the link frame (for drawings)."""
+        if isinstance(self.slot, CircleSlot):
+            phi = np.linspace(*self._sample_range(), n)
+            return self._pin_in_link(phi)
+        seg = self._segment
+        u = np.linspace(0.0, seg.u_end, n)
+        return self.slot.points(seg.t_start + seg.direction * u)
+
+    def _sample_range(self):
+        ranges = self.crank_ranges()
+        if ranges == FULL_TURN:
+            return 0.0, np.pi
+        start, end = ranges[0]
+        return start + 1e-6 * (end - start), end - 1e-6 * (end - start)
+
+    def _pin_in_link(self, phi):
+        A = crank_point(self.crank, as_angles(phi))
+        q, dq, ddq = self._distance(A)
+        b = self._beta_circle(q, dq, ddq)
+        return np.sqrt(q)[:, None] * np.stack([np.cos(b.theta), np.sin(b.theta)], axis=-1)
+
+
+# ---------------------------------------------------------------------------------------------
+# the translating curved slotted link
+# ---------------------------------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class TranslatingCurvedSlot(Mechanism):
+    """Crank O-A driving a slotted link that translates along the x axis (seed 000 Fig. 4, 7).
+
+    The slot is a curve in the link frame whose origin C = (s, 0) slides on the x axis;
+    the pin satisfies A = (s + x_α, y_α), so s = x_K - x_α with x_K = crank·cos φ the sine
+    mechanism's law (formulas (1), (2)).
+    """
+
+    crank: float
+    slot: SlotCurve
+    start: float | None = None
+
+    links = (("O", "A"),)
+    pivots = ("O",)
+    output = "position"
+
+    def __post_init__(self):
+        object.__setattr__(self, "crank", check_length("crank", self.crank))
+        if not isinstance(self.slot, SlotCurve):
+            raise DimensionError(f"slot must be a CircleSlot, ParametricSlot or SampledSlot, got {type(self.slot).__name__}")
+        if isinstance(self.slot, CircleSlot):
+            x0 = self.slot.center[0]
+            side = 1
+            if self.start is not None:
+                side = 1 if self.slot.points(np.array([float(self.start)]))[0, 0] >= x0 else -1
+            object.__setattr__(self, "_side", side)
+            if not self.crank_ranges():
+                y0, rho = self.slot.center[1], self.slot.radius
+                raise AssemblyError(
+                    f"the pin never lies on the circular slot: its height a·sin φ ranges over "
+                    f"[{-self.crank:.4g}, {self.crank:.4g}], the slot's over [{y0 - rho:.4g}, {y0 + rho:.4g}]")
+        else:
+            self._segments  # noqa: B018
+
+    def base(self) -> SineMechanism:
+        """The base mechanism: the sine mechanism with the same crank (seed 000 Fig. 6)."""
+        return SineMechanism(self.crank)
+
+    # -- working segment: y decreasing from 0 one way, increasing the other -------------------
+    def _y(self, t):
+        return self.slot.points(t)[:, 1]
+
+    def _dy(self, t):
+        return self.slot.evaluate(t).d[:, 1]
+
+    @cached_property
+    def _segments(self):
+        curve = self.slot
+        t = np.linspace(curve.t0, curve.t1, _TABLE)
+        y = self._y(t)
+        roots = [float(t[i]) for i in np.flatnonzero(y == 0)]
+        for i in np.flatnonzero(y[:-1] * y[1:] < 0):
+            roots.append(brentq(lambda x: self._y(np.array([x]))[0], t[i], t[i + 1], xtol=1e-15, rtol=1e-15))
+        roots = _distinct_roots(roots, curve)
+        if not roots:
+            raise DimensionError(f"the slot never crosses the x axis (y_α = 0), where the pin is at φ = 0: "
+                                 f"its points have y in [{y.min():.6g}, {y.max():.6g}]")
+        if self.start is None:
+            if len(roots) > 1:
+                raise DimensionError(f"the slot crosses the x axis {len(roots)} times (t = "
+                                     + ", ".join(f"{x:.6g}" for x in roots) + "): give start= to say where the pin is at φ = 0")
+            t_s = roots[0]
+        else:
+            t_s = min(roots, key=lambda x: abs(x - float(self.start)))
+        dy = float(self._dy(np.array([t_s]))[0])
+        if dy == 0:
+            raise SingularityError(f"at φ = 0 the slot (t = {t_s:.6g}) is parallel to the guide: pressure angle 90°")
+        up = 1 if dy > 0 else -1
+        a = self.crank
+        # walking "down" in -y means g = y decreasing; walking "up" means g = -y decreasing
+        down = _walk(curve, self._y, self._dy, t_s, -up, -a, "guide")
+        neg_y = lambda tt: -self._y(tt)  # noqa: E731
+        neg_dy = lambda tt: -self._dy(tt)  # noqa: E731
+        upper = _walk(curve, neg_y, neg_dy, t_s, up, -a, "guide")
+        return down, upper, neg_y, neg_dy
+
+    def _y_range(self):
+        if isinstance(self.slot, CircleSlot):
+            y0, rho = self.slot.center[1], self.slot.radius
+            return y0 - rho, y0 + rho
+        down, upper, _, _ = self._segments
+        return down.g_end, -upper.g_end
+
+    def crank_ranges(self):
+        a = self.crank
+        if not isinstance(self.slot, CircleSlot) and all(sg.reason == "covered" for sg in self._segments[:2]):
+            return FULL_TURN
+        lo, hi = self._y_range()
+        arcs = arc_set(lo / a, hi / a, phase=np.pi / 2)   # a·sin φ ∈ (lo, hi)
+        if isinstance(self.slot, CircleSlot) or arcs in ((), FULL_TURN):
+            return arcs
+        # the pin starts at φ = 0: keep the arc containing it
+        for s, e in arcs:
+            if np.mod(0.0 - s, 2 * np.pi) < e - s:
+                return ((s, e),)
+        return ()
+
+    def _range_reason(self) -> str:
+        lo, hi = self._y_range()
+        if isinstance(self.slot, CircleSlot):
+            return (f"the circular slot spans heights [{lo:.4g}, {hi:.4g}], the pin [{-self.crank:.4g}, {self.crank:.4g}]; "
+                    f"at its top and bottom the slot is parallel to the guide (pressure angle 90°)")
+        return (f"the pin would leave the slot or jam: the usable slot spans heights [{lo:.6g}, {hi:.6g}], "
+                f"the pin needs [{-self.crank:.6g}, {self.crank:.6g}]")
+
+    def rotation_failure(self) -> str:
+        return f"crank cannot turn fully: {self._range_reason()}; it reaches only φ ∈ {fmt_ranges(self.crank_ranges())}"
+
+    def assembly_failure(self, phi: float) -> str:
+        return self._range_reason()
+
+    # -- kinematics ---------------------------------------------------------------------------
+    def x_alpha(self, phi) -> AnglePath:
+        """x_α(φ) with its analogs: the slot point's abscissa in the link frame (formula (1))."""
+        phi = as_angles(phi)
+        self.check_reachable(phi)
+        a = self.crank
+        y, dy, ddy = a * np.sin(phi), a * np.cos(phi), -a * np.sin(phi)
+        if isinstance(self.slot, CircleSlot):
+            x0, y0 = self.slot.center
+            rho = self.slot.radius
+            h2 = rho**2 - (y - y0) ** 2
+            if np.any(h2 <= 1e-12 * rho**2):
+                raise SingularityError("the circular slot is parallel to the guide at the pin: pressure angle 90°")
+            h = np.sqrt(h2)
+            dh = -(y - y0) * dy / h
+            ddh = (-(dy**2) - (y - y0) * ddy - dh**2) / h
+            sg = self._side
+            return AnglePath(x0 + sg * h, sg * dh, sg * ddh)
+        down, upper, neg_y, neg_dy = self._segments
+        t = np.empty_like(phi)
+        lower = y < 0
+        if np.any(lower):
+            u = _solve_on_segment(down, self.slot, self._y, self._dy, y[lower])
+            t[lower] = down.t_start + down.direction * u
+        if np.any(~lower):
+            u = _solve_on_segment(upper, self.slot, neg_y, neg_dy, -y[~lower])
+            t[~lower] = upper.t_start + upper.direction * u
+        c = self.slot.evaluate(t)
+        yt = c.d[:, 1]
+        if np.any(np.abs(yt) <= _TANGENT_TOL * np.hypot(*c.d.T)):
+            i = int(np.argmin(np.abs(yt)))
+            raise SingularityError(f"the slot is parallel to the guide at the pin (t = {t[i]:.6g}): pressure angle 90°")
+        dt = dy / yt
+        ddt = (ddy - c.dd[:, 1] * dt**2) / yt
+        return AnglePath(c.p[:, 0], c.d[:, 0] * dt, c.dd[:, 0] * dt**2 + c.d[:, 0] * ddt)
+
+    def motion(self, phi) -> LinearMotion:
+        """Paths of O, A, C and s, s', s'' at crank angles φ (radians)."""
+        phi = as_angles(phi)
+        xa = self.x_alpha(phi)
+        A = crank_point(self.crank, phi)
+        s = A.p[:, 0] - xa.theta
+        ds = A.d[:, 0] - xa.d
+        dds = A.dd[:, 0] - xa.dd
+        n = len(phi)
+        z = np.zeros(n)
+        C = PointPath(np.stack([s, z], -1), np.stack([ds, z], -1), np.stack([dds, z], -1))
+        mu = lambda mo: self._transmission(phi)  # noqa: E731 - on first use
+        return LinearMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "C": C}, mu, s, ds, dds)
+
+    def _transmission(self, phi):
+        """μ = angle between the slot's tangent at the pin and the guide's normal direction."""
+        tan = self._tangent(phi)
+        return np.arcsin(np.clip(np.abs(tan[:, 1]) / np.hypot(*tan.T), 0.0, 1.0))
+
+    def _tangent(self, phi):
+        a = self.crank
+        y = a * np.sin(phi)
+        if isinstance(self.slot, CircleSlot):
+            x0, y0 = self.slot.center
+            x = x0 + self._side * np.sqrt(np.clip(self.slot.radius**2 - (y - y0) ** 2, 0.0, None))
+            return np.stack([-(y - y0), x - x0], axis=-1)
+        down, upper, neg_y, neg_dy = self._segments
+        t = np.empty_like(phi)
+        lower = y < 0
+        if np.any(lower):
+            t[lower] = down.t_start + down.direction * _solve_on_segment(down, self.slot, self._y, self._dy, y[lower])
+        if np.any(~lower):
+            t[~lower] = upper.t_start + upper.direction * _solve_on_segment(upper, self.slot, neg_y, neg_dy, -y[~lower])
+        return self.slot.evaluate(t).d
+
+    def slot_samples(self, n: int = 200) -> np.ndarray:
+        """(n, 2) points of the slot's working part in the link frame (for drawings)."""
+        lo, hi = self._y_range()
+        a = self.crank
+        ys = np.linspace(max(lo, -a), min(hi, a), n)
+        if isinstance(self.slot, CircleSlot):
+            x0, y0 = self.slot.center
+            return np.stack([x0 + self._side * np.sqrt(np.clip(self.slot.radius**2 - (ys - y0) ** 2, 0, None)), ys], -1)
+        down, upper, neg_y, neg_dy = self._segments
+        ud = np.linspace(down.u_end, 0.0, n // 2)
+        uu = np.linspace(0.0, upper.u_end, n - n // 2)
+        t = np.concatenate([down.t_start + down.direction * ud, upper.t_start + upper.direction * uu])
+        return self.slot.points(t)

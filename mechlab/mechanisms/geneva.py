@@ -1,0 +1,325 @@
+"""Geneva drives: the planar external and internal Geneva, and the spherical offset
+Geneva with perpendicular axes of seed 004 (Vainer & Shatokhina).
+
+Planar Geneva (what every course teaches and seed 004 assumes, its refs. [2], [3])
+-------------------------------------------------------------------------------------
+Crank pivot O = (0, 0), wheel centre W = (C, 0), crank radius a, z radial slots,
+roller (pin) radius r. *Radial entry*: the pin enters a slot moving along it, so
+OA ⟂ WA at entry; the right triangle O-A-W with the angle π/z at W gives
+``a = C·sin(π/z)`` and ``|WA| = C·cos(π/z)`` (both drives). With λ = sin(π/z) and σ
+the crank angle from the middle of the motion, the wheel's angle from the line W→O
+(derived from the vector loop A - W, see :meth:`PlanarGeneva.closed_form`) is
+
+* external (κ = -1, the pin on the near side, wheel turns against the crank),
+* internal (κ = +1, the pin on the far side, wheel turns with the crank):
+
+    β = κ·atan(λ sin σ / (1 + κλ cos σ)),
+    β' = κλ (cos σ + κλ) / D,   β'' = -κλ (1 - λ²) sin σ / D²,   D = 1 + 2κλ cos σ + λ²,
+
+while |σ| ≤ σ0 = π/2 + κπ/z (the pin in a slot); the wheel is locked otherwise.
+The crank angle φ of the library is σ + π: φ = 0 is the middle of the dwell.
+
+Spherical offset Geneva (seed 004)
+----------------------------------
+Sphere (the hemispherical wheel) of radius R about O, wheel axis z, slots in the
+meridian planes. The crank axis is the line {y = 0, z = -e} (perpendicular to the
+wheel axis, offset e); its point O1 = (0, 0, -e) nearest O lies on the wheel axis.
+The pin axis is a generatrix of the cone with apex O1, axis x and half-angle ψ
+(seed's ψ, formula (3)): d(α) = (cos ψ, sin ψ sin α, sin ψ cos α), α = 0 at the
+crank's lowest position (seed Fig. 2). Because O1 is on the wheel axis, the whole pin
+axis lies in the meridian plane of its contact point A = O1 + u·d with the sphere, so
+the wheel angle is the azimuth of d:
+
+    tan β = tan ψ · sin α            (equivalent to seed formula (18)),
+
+exactly, for any e. The seed's cos γ = cos α·sin ψ (11) is exact as well: its
+"neglected" term C1 of (10) is identically zero by formula (3).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import NamedTuple
+import numpy as np
+from ..errors import DimensionError
+from ..geometry import AnglePath, PointPath, as_angles, check_length, crank_point, fixed_point, lift, relative, vector_angle
+from .base import Mechanism
+from ..motion import AngularMotion
+
+
+TWO_PI = 2.0 * np.pi
+
+
+class SlotCountError(DimensionError):
+    """The number of slots z is not an integer ≥ 3."""
+
+
+class OffsetError(DimensionError):
+    """The spherical Geneva's offset e does not satisfy 0 ≤ e < R."""
+
+
+def check_slots(z) -> int:
+    """z as an int, raising SlotCountError unless it is a whole number ≥ 3."""
+    try:
+        zf = float(z)
+    except (TypeError, ValueError):
+        raise SlotCountError(f"the number of slots z must be a whole number ≥ 3, got {z!r}") from None
+    if not np.isfinite(zf) or zf != round(zf) or zf < 3:
+        raise SlotCountError(
+            f"the number of slots z must be a whole number ≥ 3, got z = {zf:g} "
+            f"(a Geneva wheel needs z ≥ 3: with z = 2 the crank radius C·sin(π/z) equals C)")
+    return int(round(zf))
+
+
+def mid_motion_angle(phi) -> np.ndarray:
+    """σ = φ - π reduced to [-π, π) turn by turn (0 in the middle of the motion)."""
+    phi = np.asarray(phi, dtype=float)
+    return phi - TWO_PI * np.floor(phi / TWO_PI) - np.pi
+
+
+def impact_kind(velocity_jump: float, acceleration_jump: float, tol: float = 1e-9) -> str:
+    """'hard' for a jump in velocity (theoretically unbounded acceleration), 'soft'
+    for a finite jump in acceleration only, 'none' for continuous analogs."""
+    if abs(velocity_jump) > tol:
+        return "hard"
+    if abs(acceleration_jump) > tol:
+        return "soft"
+    return "none"
+
+
+class Impact(NamedTuple):
+    """Jumps of ψ' and ψ'' (output analogs) where the pin enters and leaves a slot."""
+
+    entry_velocity_jump: float
+    entry_acceleration_jump: float
+    exit_velocity_jump: float
+    exit_acceleration_jump: float
+
+    @property
+    def kind(self) -> str:
+        return max((impact_kind(self.entry_velocity_jump, self.entry_acceleration_jump),
+                    impact_kind(self.exit_velocity_jump, self.exit_acceleration_jump)),
+                   key=("none", "soft", "hard").index)
+
+
+# ----------------------------------------------------------------------------------
+# planar Geneva
+# ----------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class PlanarGeneva(Mechanism):
+    """Common part of :class:`ExternalGeneva` and :class:`InternalGeneva` (κ = ∓1).
+
+    ``z`` slots, centre distance ``centre_distance`` = C (O to W), roller radius
+    ``roller_radius`` (default 0.15·a). Raises SlotCountError for z < 3 and
+    DimensionError for negative sizes or a roller that does not fit (see
+    :meth:`_check_roller`).
+    """
+
+    z: int
+    centre_distance: float
+    roller_radius: float | None = None
+
+    kappa = 0  # -1 external, +1 internal
+    links = (("O", "A"),)
+    pivots = ("O", "W")
+    output = "angle"
+
+    def __post_init__(self):
+        if self.kappa not in (-1, 1):
+            raise TypeError("PlanarGeneva is the common base: use ExternalGeneva or InternalGeneva")
+        object.__setattr__(self, "z", check_slots(self.z))
+        object.__setattr__(self, "centre_distance", check_length("centre_distance", self.centre_distance))
+        r = 0.15 * self.crank_radius if self.roller_radius is None else self.roller_radius
+        object.__setattr__(self, "roller_radius", check_length("roller_radius", r))
+        self._check_roller()
+
+    # -- dimensions -----------------------------------------------------------------
+    @property
+    def lam(self) -> float:
+        """λ = a / C = sin(π/z) (radial entry)."""
+        return float(np.sin(np.pi / self.z))
+
+    @property
+    def crank_radius(self) -> float:
+        """a = C·sin(π/z): OA ⟂ WA at entry, angle π/z at W."""
+        return self.centre_distance * self.lam
+
+    @property
+    def entry_radius(self) -> float:
+        """|WA| at entry and exit = C·cos(π/z) (the wheel radius to the pin centre)."""
+        return self.centre_distance * float(np.cos(np.pi / self.z))
+
+    @property
+    def index_angle(self) -> float:
+        """Wheel turn per crank turn, 2π/z, signed: negative for the external drive."""
+        return self.kappa * TWO_PI / self.z
+
+    @property
+    def engagement_half_angle(self) -> float:
+        """σ0 = π/2 + κπ/z: the pin is in a slot for |σ| ≤ σ0."""
+        return np.pi / 2 + self.kappa * np.pi / self.z
+
+    @property
+    def dwell_fraction(self) -> float:
+        """Fraction of the crank turn with the wheel locked: 1/2 - κ/z."""
+        return 1.0 - self.engagement_half_angle / np.pi
+
+    @property
+    def motion_fraction(self) -> float:
+        return 1.0 - self.dwell_fraction
+
+    # -- closed forms -----------------------------------------------------------------
+    def closed_form(self, sigma) -> AnglePath:
+        """β, β', β'' (wheel angle from the line W→O) at crank angles σ from the middle
+        of the motion, from the vector loop A - W (formulas in the module docstring).
+        Valid while engaged, |σ| ≤ σ0."""
+        s = np.asarray(sigma, dtype=float)
+        k, lam = self.kappa, self.lam
+        D = 1.0 + 2.0 * k * lam * np.cos(s) + lam**2
+        beta = k * np.arctan2(lam * np.sin(s), 1.0 + k * lam * np.cos(s))
+        return AnglePath(beta, k * lam * (np.cos(s) + k * lam) / D, -k * lam * (1.0 - lam**2) * np.sin(s) / D**2)
+
+    def max_velocity(self) -> float:
+        """max |ψ'| = λ/(1 + κλ), at σ = 0 (the pin on the line of centres)."""
+        return self.lam / (1.0 + self.kappa * self.lam)
+
+    def acceleration_peak_sigma(self) -> float:
+        """σ ≥ 0 of the largest |ψ''| while engaged.
+
+        External: d/dσ (sin σ / D²) = 0 gives 2λ cos²σ + (1 + λ²) cos σ - 4λ = 0 (inside the
+        engagement for every z ≥ 3). Internal: |ψ''| grows up to the entry, so σ0.
+        """
+        lam = self.lam
+        if self.kappa < 0:
+            b = 1.0 + lam**2
+            c = (-b + np.sqrt(b * b + 32.0 * lam**2)) / (4.0 * lam)
+            return float(min(np.arccos(c), self.engagement_half_angle))
+        return self.engagement_half_angle
+
+    def max_acceleration(self) -> float:
+        """max |ψ''| while engaged (closed form at :meth:`acceleration_peak_sigma`)."""
+        return float(abs(self.closed_form(self.acceleration_peak_sigma()).dd))
+
+    def entry_acceleration(self) -> float:
+        """|ψ''| just after entry = tan(π/z) (both drives): the jump from the locked 0."""
+        return float(np.tan(np.pi / self.z))
+
+    def impacts(self) -> Impact:
+        """Exact jumps at entry (σ = -σ0) and exit (σ = +σ0): ψ' = 0 there (radial
+        entry), ψ'' jumps by ±tan(π/z) — a soft impact."""
+        s0 = self.engagement_half_angle
+        a, b = self.closed_form(-s0), self.closed_form(s0)
+        return Impact(float(a.d), float(a.dd), float(-b.d), float(-b.dd))
+
+    # -- sizes for drawing and design ---------------------------------------------------
+    @property
+    def slot_bottom(self) -> float:
+        """Distance from W of the slot bottom's centre: the pin centre's extreme C ∓ a."""
+        return self.centre_distance + self.kappa * self.crank_radius
+
+    def _check_roller(self):
+        a, r, b = self.crank_radius, self.roller_radius, self.entry_radius
+        gap = b * np.sin(np.pi / self.z)  # half the chord between neighbouring slot mouths
+        if r >= min(0.5 * a, gap):
+            raise DimensionError(
+                f"roller_radius = {r:g} is too large: it must be < min(a/2, C·cos(π/z)·sin(π/z)) = "
+                f"min({0.5 * a:.6g}, {gap:.6g}) so that the slots fit between each other and the crank hub")
+
+    # -- motion -------------------------------------------------------------------------
+    def _pin(self, phi) -> PointPath:
+        # φ = 0 mid-dwell: the external pin then points away from W (A = -a u(φ)),
+        # the internal pin towards it (A = a u(φ)); σ = φ - π in both.
+        return crank_point(self.crank_radius, phi if self.kappa > 0 else phi + np.pi)
+
+    def motion(self, phi) -> AngularMotion:
+        """Wheel angle ψ (0 at φ = 0, κ·2π/z more after each turn) and its analogs.
+
+        Positions and analogs from the vector A - W (geometry.vector_angle) while the
+        pin is in a slot, exact zeros while locked; ψ accumulates over several turns.
+        """
+        phi = as_angles(phi)
+        n = len(phi)
+        turns = np.floor(phi / TWO_PI)
+        sigma = mid_motion_angle(phi)
+        s0 = self.engagement_half_angle
+        A = self._pin(phi)
+        W = fixed_point((self.centre_distance, 0.0), n)
+        ang = vector_angle(relative(A, W))
+        beta = lift(ang.theta, np.pi) - np.pi
+        on = np.abs(sigma) <= s0
+        local = np.where(on, beta + self.kappa * np.pi / self.z, np.where(sigma > 0, self.index_angle, 0.0))
+        psi = turns * self.index_angle + local
+        dpsi = np.where(on, ang.d, 0.0)
+        ddpsi = np.where(on, ang.dd, 0.0)
+        # the pin pushes along the slot's normal, which is the wheel point's direction of motion
+        mu = np.full(n, np.pi / 2)
+        return AngularMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "W": W}, mu, psi, dpsi, ddpsi)
+
+    def engaged(self, phi) -> np.ndarray:
+        """True where the pin is in a slot."""
+        return np.abs(mid_motion_angle(as_angles(phi))) <= self.engagement_half_angle
+
+    def design(self) -> dict:
+        """The main sizes (lengths in the unit of C, angles in degrees)."""
+        return {"z": self.z, "C": self.centre_distance, "crank radius a": self.crank_radius,
+                "pin radius at entry |WA|": self.entry_radius, "roller radius": self.roller_radius,
+                "slot bottom from W": self.slot_bottom, "slot length": self.slot_length,
+                "dwell fraction": self.dwell_fraction, "index angle (deg)": np.degrees(abs(self.index_angle)),
+                "max |ψ'|": self.max_velocity(), "max |ψ''|": self.max_acceleration()}
+
+
+@dataclass(frozen=True)
+class ExternalGeneva(PlanarGeneva):
+    """External Geneva: the pin on the near side of O, the wheel turns against the crank.
+
+    a = C sin(π/z), wheel (entry) radius C cos(π/z), outer radius sqrt(C²cos²(π/z) + r²)
+    (the slot corners touch the roller at entry), locking disc radius a - 1.5·r.
+    Dwell fraction 1/2 + 1/z; max |ψ'| = λ/(1 - λ); |ψ''| jumps by tan(π/z) at entry.
+    """
+
+    kappa = -1
+
+    @property
+    def outer_radius(self) -> float:
+        """sqrt(C² cos²(π/z) + r²): the slot corners touch the roller at entry."""
+        return float(np.hypot(self.entry_radius, self.roller_radius))
+
+    @property
+    def slot_length(self) -> float:
+        """From the rim to the slot's bottom: outer radius - (C - a - r)."""
+        return self.outer_radius - (self.slot_bottom - self.roller_radius)
+
+    @property
+    def locking_radius(self) -> float:
+        """Radius of the crank's locking disc, a - 1.5 r (the usual design rule: the
+        roller clears it by half its radius). The wheel's concave locking arcs have this
+        radius, centred at distance C from W on the bisectors between slots."""
+        return self.crank_radius - 1.5 * self.roller_radius
+
+
+@dataclass(frozen=True)
+class InternalGeneva(PlanarGeneva):
+    """Internal Geneva: the pin on the far side of O, wheel and crank turn the same way.
+
+    a = C sin(π/z), slot mouths at C cos(π/z) from W, slot bottoms at C + a. Dwell
+    fraction 1/2 - 1/z; max |ψ'| = λ/(1 + λ) at mid-motion; |ψ''| is largest at entry
+    and exit, tan(π/z).
+    """
+
+    kappa = +1
+
+    @property
+    def inner_radius(self) -> float:
+        """The ring's inner rim, where the slot walls end: sqrt(C²cos²(π/z) - r²)."""
+        return float(np.sqrt(self.entry_radius**2 - self.roller_radius**2))
+
+    @property
+    def outer_radius(self) -> float:
+        """The ring's outer rim, drawn 1.5 r beyond the slot bottoms (a drawing choice, not a design rule)."""
+        return self.slot_bottom + 2.5 * self.roller_radius
+
+    @property
+    def slot_length(self) -> float:
+        """From the inner rim to the slot's bottom: C + a + r - inner radius."""
+        return self.slot_bottom + self.roller_radius - self.inner_radius
+

@@ -1,0 +1,167 @@
+"""Chebyshev's symmetric lambda mechanism (Kinitsky, 1994).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+import numpy as np
+from ..errors import MechanismError, RotationError
+from ..geometry import PointPath, as_angles, check_length, check_sign, dot, perp, unit
+from .fourbar import FourBar
+from .base import Mechanism
+from ..motion import AngularMotion
+
+__all__ = ["LambdaMechanism", "GuidedLambda", "classic_lambda"]
+
+
+def _angle(name: str, value, lo: float, hi: float, *, closed_hi: bool = True) -> float:
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise MechanismError(f"{name} must be a number (radians), got {value!r}") from None
+    ok = np.isfinite(x) and lo < x and (x <= hi if closed_hi else x < hi)
+    if not ok:
+        b = "]" if closed_hi else ")"
+        raise MechanismError(f"{name} = {np.degrees(x):.4g}° must lie in ({np.degrees(lo):g}°, "
+                             f"{np.degrees(hi):g}°{b}")
+    return x
+
+
+# --------------------------------------------------------------------------------------------
+# The mechanism
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LambdaMechanism(Mechanism):
+    """Symmetric lambda mechanism O-A-B-C with coupler point D (seed 001, Fig. 1a).
+
+    ``r`` = l_OA / l, ``a`` = l_OC / l, ``delta`` = ∠ABD in (0, π] (radians). ``assembly``
+    +1 is the thesis' assembly (B on the left of A→C, D turned from A about B by +δ), in
+    which the symmetry axis of the coupler curve makes π − δ/2 with the ray C→O; −1 is
+    its mirror image in the line OC. The output ψ is the angle of the rocker C→B.
+
+    Crank-rocker condition (boundary lines r = a and r + a = 2 of seed 001, Fig. 2a): r < a
+    and r + a < 2; otherwise RotationError names the violated inequality. (The text before
+    Fig. 1 prints only l_OA < l and l_OC + l_OA < 2l, which also admits the double crank
+    r > a: see the errata.)
+    """
+
+    r: float
+    a: float
+    delta: float
+    assembly: int = 1
+
+    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
+    pivots = ("O", "C")
+    output = "angle"
+
+    def __post_init__(self):
+        object.__setattr__(self, "r", check_length("r", self.r))
+        object.__setattr__(self, "a", check_length("a", self.a))
+        object.__setattr__(self, "delta", _angle("δ", self.delta, 0.0, 2 * np.pi, closed_hi=False))
+        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
+        r, a = self.r, self.a
+        if not r + a < 2.0:
+            raise RotationError(
+                f"the crank of the lambda mechanism cannot turn fully: r + a = {r + a:.6g} ≥ 2 (Grashof: with "
+                f"links r, 1, 1, a the crank turns only if r + a < 2; line EN of Fig. 2a)")
+        if not r < a:
+            raise RotationError(
+                f"the base four-bar is not a crank-rocker: r = {r:.6g} ≥ a = {a:.6g} (the frame is the shortest "
+                f"link, so the rocker BC would turn fully too: a double crank); the thesis' region needs r < a "
+                f"(line PX of Fig. 2a)")
+
+    @cached_property
+    def fourbar(self) -> FourBar:
+        """The four-bar O-A-B-C (crank r, coupler 1, rocker 1, ground a)."""
+        return FourBar(self.r, 1.0, 1.0, self.a, self.assembly)
+
+    def crank_ranges(self):
+        return self.fourbar.crank_ranges()
+
+    # -- symmetry ---------------------------------------------------------------------------
+    @property
+    def dwell_centre(self) -> float:
+        """Crank angle φ = π where A is farthest from C (|CA| = a + r): the curve's axis point D0."""
+        return np.pi
+
+    @property
+    def axis_angle(self) -> float:
+        """Direction (from +x) of the ray C→D0 along the symmetry axis: assembly·δ/2."""
+        return self.assembly * self.delta / 2.0
+
+    @property
+    def axis(self) -> np.ndarray:
+        """Unit vector e of the symmetry axis, pointing from C towards D0."""
+        return unit(self.axis_angle)
+
+    @property
+    def C(self) -> np.ndarray:
+        return np.array([self.a, 0.0])
+
+    def mu(self, phi) -> np.ndarray:
+        """Transmission angle μ = ∠ABC at crank angles φ: |CA| = 2 sin(μ/2)."""
+        phi = as_angles(phi)
+        d = np.sqrt(self.a**2 + self.r**2 - 2 * self.a * self.r * np.cos(phi))
+        return 2.0 * np.arcsin(np.clip(d / 2.0, -1.0, 1.0))
+
+    def coupler_point(self, phi) -> np.ndarray:
+        """Positions of D by the closed form (*) of the module docstring (no dyad solve)."""
+        phi = as_angles(phi)
+        A = np.stack([self.r * np.cos(phi), self.r * np.sin(phi)], axis=-1)
+        v = A - self.C
+        mu = self.mu(phi)
+        k = np.sin((self.delta - mu) / 2) / np.sin(mu / 2)
+        th = -self.assembly * (np.pi - self.delta / 2)
+        c, s = np.cos(th), np.sin(th)
+        return self.C + k[:, None] * np.stack([c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]], axis=-1)
+
+    def axis_coordinates(self, phi) -> tuple[np.ndarray, np.ndarray]:
+        """D in the axis frame at C: x along e (towards D0), y across (left of e)."""
+        w = self.coupler_point(phi) - self.C
+        e = self.axis
+        return w @ e, w @ perp(e)
+
+    # -- kinematics ----------------------------------------------------------------------------
+    def motion(self, phi) -> AngularMotion:
+        """Paths of O, A, B, C, D (positions and analogs) and the rocker angle ψ, ψ', ψ''.
+
+        D = B + Rot(assembly·δ)(A − B): its analogs follow from those of A and B (exact).
+        """
+        phi = as_angles(phi)
+        mo = self.fourbar.motion(phi)
+        A, B = mo.points["A"], mo.points["B"]
+        th = self.assembly * self.delta
+        c, s = np.cos(th), np.sin(th)
+
+        def rot(v):
+            return np.stack([c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]], axis=-1)
+
+        D = PointPath(B.p + rot(A.p - B.p), B.d + rot(A.d - B.d), B.dd + rot(A.dd - B.dd))
+        pts = {"O": mo.points["O"], "A": A, "B": B, "C": mo.points["E"], "D": D}
+        return AngularMotion(phi, pts, mo.transmission, mo.psi, mo.dpsi, mo.ddpsi)
+
+    def radius_about(self, centre, phi) -> tuple[np.ndarray, np.ndarray]:
+        """ρ = |D − Q| and ρ' = dρ/dφ for a fixed point Q."""
+        D = self.motion(phi).points["D"]
+        w = D.p - np.asarray(centre, dtype=float)
+        rho = np.hypot(w[:, 0], w[:, 1])
+        return rho, dot(w, D.d) / rho
+
+
+@dataclass(frozen=True)
+class GuidedLambda(LambdaMechanism):
+    """A lambda mechanism with its guiding band: arc centre Q = (qx, qy), radii R0, R1 and the
+    dwell 2α (for drawings and widgets; the kinematics are those of LambdaMechanism)."""
+
+    qx: float = 0.0
+    qy: float = 0.0
+    R0: float = 0.0
+    R1: float = 0.0
+    dwell: float = 0.0
+
+
+def classic_lambda() -> LambdaMechanism:
+    """Chebyshev's lambda: crank 1, ground 2, links 2.5, coupler point at 5 (δ = π)."""
+    return LambdaMechanism(1.0 / 2.5, 2.0 / 2.5, np.pi)
+

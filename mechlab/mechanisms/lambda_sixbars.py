@@ -1,0 +1,204 @@
+"""Six-bars on the lambda mechanism: МЧВ1 (rocker) and МЧВ3 (slotted link) (Kinitsky, 1994).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+import numpy as np
+from ..errors import MechanismError
+from ..geometry import AnglePath, as_angles, check_length, check_number, check_sign, dot, dyad_rpr, dyad_rrr, fixed_point, relative, vector_angle
+from .base import TWO_PI, Mechanism
+from ..motion import AngularMotion
+from .lambda_mechanism import LambdaMechanism
+from ..errors import InfeasibleDesignError
+
+__all__ = ["LambdaRockerSixBar", "LambdaSlottedSixBar"]
+
+
+# --------------------------------------------------------------------------------------------
+# МЧВ1
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LambdaRockerSixBar(Mechanism):
+    """Lambda mechanism (r, a, δ) + connecting rod D-E (``rod``) + rocker E-F (``rocker``)
+    pivoted at F = (``fx``, ``fy``). ``assembly`` puts E on the left (+1) or right (−1) of
+    the directed line D→F. Output ψ: angle of the rocker F→E."""
+
+    r: float
+    a: float
+    delta: float
+    rod: float
+    rocker: float
+    fx: float
+    fy: float
+    assembly: int = 1
+    dwell: float = 0.0  # the designed dwell 2α (informational: drawings, widgets)
+
+    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"), ("D", "E"), ("F", "E"))
+    pivots = ("O", "C", "F")
+    output = "angle"
+
+    def __post_init__(self):
+        object.__setattr__(self, "rod", check_length("rod DE", self.rod))
+        object.__setattr__(self, "rocker", check_length("rocker EF", self.rocker))
+        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
+        for k in ("fx", "fy"):
+            object.__setattr__(self, k, check_number(f"pivot coordinate {k}", getattr(self, k)))
+        self.base  # validates r, a, δ (full rotation)
+        # the dyad D-E-F must close over the whole turn
+        D = self.base.coupler_point(np.linspace(0, TWO_PI, 1441))
+        dist = np.hypot(*(D - self.F).T)
+        lo, hi = abs(self.rod - self.rocker), self.rod + self.rocker
+        if dist.max() >= hi or dist.min() <= lo:
+            bad = dist.max() if dist.max() >= hi else dist.min()
+            raise InfeasibleDesignError(
+                f"the dyad D-E-F does not close over the whole crank turn: |DF| reaches {bad:.4g}, "
+                f"outside the open interval (|DE − EF|, DE + EF) = ({lo:.4g}, {hi:.4g})")
+
+    @cached_property
+    def base(self) -> LambdaMechanism:
+        return LambdaMechanism(self.r, self.a, self.delta)
+
+    @property
+    def F(self) -> np.ndarray:
+        return np.array([float(self.fx), float(self.fy)])
+
+    @cached_property
+    def _reference(self):
+        phi = np.linspace(0, TWO_PI, 1441)
+        th = np.unwrap(self._raw(phi))
+        return 0.5 * (th.min() + th.max())
+
+    def _raw(self, phi):
+        mo = self.base.motion(phi)
+        D = mo.points["D"]
+        E = dyad_rrr(D, fixed_point(self.F, len(phi)), self.rod, self.rocker, self.assembly, phi, "the dyad D-E-F")
+        return np.arctan2(E.p[:, 1] - self.F[1], E.p[:, 0] - self.F[0])
+
+    def motion(self, phi) -> AngularMotion:
+        """Paths of O, A, B, C, D, E, F and the rocker's ψ, ψ', ψ''; transmission = angle DEF."""
+        phi = as_angles(phi)
+        mo = self.base.motion(phi)
+        D = mo.points["D"]
+        Fp = fixed_point(self.F, len(phi))
+        E = dyad_rrr(D, Fp, self.rod, self.rocker, self.assembly, phi, "the dyad D-E-F")
+        ang = vector_angle(relative(E, Fp))
+        psi = self._reference + ((ang.theta - self._reference + np.pi) % TWO_PI - np.pi)
+        ed, ef = D.p - E.p, Fp.p - E.p
+        mu = np.arccos(np.clip(dot(ed, ef) / (self.rod * self.rocker), -1, 1))
+        pts = dict(mo.points)
+        pts.update(E=E, F=Fp)
+        return AngularMotion(phi, pts, mu, psi, ang.d, ang.dd)
+
+
+# --------------------------------------------------------------------------------------------
+# МЧВ3
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LambdaSlottedSixBar(Mechanism):
+    """Lambda mechanism (r, a, δ) whose coupler point D slides in the straight slot of a link
+    turning about P = (``px``, ``py``); the slot line runs at signed distance ``offset`` from P,
+    on the left of P looking along the slot direction u for offset > 0: u × (D − P) = offset.
+    Output ψ: the slot's direction (continuous, so a link that turns fully gains 2π, or π for
+    a slot through a pivot on the path, per turn).
+    """
+
+    r: float
+    a: float
+    delta: float
+    px: float
+    py: float
+    offset: float = 0.0
+    dwell: float = 0.0  # the straight part's crank angle 2α (informational)
+
+    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
+    pivots = ("O", "C", "P")
+    output = "angle"
+
+    def __post_init__(self):
+        self.base
+        for k in ("px", "py", "offset"):
+            object.__setattr__(self, k, check_number(k, getattr(self, k)))
+        D = self.base.coupler_point(np.linspace(0, TWO_PI, 2881))
+        rho = np.hypot(*(D - self.P).T)
+        if abs(self.offset) > 0 and rho.min() <= abs(self.offset):
+            raise InfeasibleDesignError(
+                f"the pin D comes within {rho.min():.4g} of the pivot, inside the slot offset |e| = "
+                f"{abs(self.offset):.4g}: the slot cannot reach it")
+
+    @cached_property
+    def base(self) -> LambdaMechanism:
+        return LambdaMechanism(self.r, self.a, self.delta)
+
+    def cycle(self, n: int = 361) -> np.ndarray:
+        """A turn sampled off φ = π by 1e-6 rad (the pin may pass through the pivot exactly there)."""
+        return np.linspace(0.0, TWO_PI, n) + 1e-6
+
+    turn = cycle
+
+    @property
+    def P(self) -> np.ndarray:
+        return np.array([float(self.px), float(self.py)])
+
+    @cached_property
+    def _turns(self):
+        """Branch data: the output's period (π for a slot through a pivot on the path, else 2π),
+        the unwrapped angle on a fine grid over one turn (the reference branch) and the gain per turn."""
+        grid = np.linspace(0, TWO_PI, 4001)[:-1] + np.pi / 4000
+        th = self._angle(grid).theta
+        period = np.pi if self.offset == 0 and self._through_pivot else TWO_PI
+        lifted = np.unwrap(th, period=period)
+        step = lifted[1] - lifted[0]
+        gain = period * round((lifted[-1] + step - lifted[0]) / period)
+        return period, grid, lifted, gain
+
+    @cached_property
+    def _through_pivot(self) -> bool:
+        D = self.base.coupler_point(np.linspace(0, TWO_PI, 2881))
+        return bool(np.hypot(*(D - self.P).T).min() < 1e-6)
+
+    def _angle(self, phi) -> AnglePath:
+        D = self.base.motion(phi).points["D"]
+        ang, rho = dyad_rpr(D, fixed_point(self.P, len(phi)))
+        if np.any(rho.theta < 1e-9):
+            i = int(np.argmin(rho.theta))
+            raise MechanismError(f"the pin D passes through the pivot P at φ = {np.degrees(phi[i]):.4f}°, "
+                                 f"where the slot direction is a limit; sample other crank angles")
+        e = float(self.offset)
+        if e == 0.0:
+            return ang
+        s = e / rho.theta
+        if np.any(np.abs(s) > 1):  # between the samples of the constructor's check
+            i = int(np.argmax(np.abs(s)))
+            raise InfeasibleDesignError(
+                f"the pin D comes within {rho.theta[i]:.4g} of the pivot at φ = {np.degrees(phi[i]):.4f}°, inside "
+                f"the slot offset |e| = {abs(e):.4g}: the slot cannot reach it")
+        ds = -e * rho.d / rho.theta**2
+        dds = -e * (rho.dd * rho.theta - 2 * rho.d**2) / rho.theta**3
+        q = np.sqrt(1 - s * s)
+        # slot direction = direction of P→D turned by −asin(e/ρ)
+        return AnglePath(ang.theta - np.arcsin(s), ang.d - ds / q, ang.dd - (dds / q + s * ds**2 / q**3))
+
+    def motion(self, phi) -> AngularMotion:
+        phi = as_angles(phi)
+        mo = self.base.motion(phi)
+        ang = self._angle(phi)
+        period, grid, lifted, gain = self._turns
+        k = np.floor((phi - grid[0]) / TWO_PI)
+        local = phi - TWO_PI * k
+        # the reference branch interpolated on the fine grid (periodic: + gain per crank turn)
+        ext_phi = np.concatenate([grid, [grid[0] + TWO_PI]])
+        ext_th = np.concatenate([lifted, [lifted[0] + gain]])
+        ref = np.interp(local, ext_phi, ext_th) + gain * k
+        psi = ref + ((ang.theta - ref + period / 2) % period - period / 2)
+        pts = dict(mo.points)
+        pts["P"] = fixed_point(self.P, len(phi))
+        mu = np.full(len(phi), np.pi / 2)  # the pin pushes along the slot's normal
+        return AngularMotion(phi, pts, mu, psi, ang.d, ang.dd)
+
+    @property
+    def turns(self) -> float:
+        """Output rotation per crank turn in revolutions (0 for an oscillating link)."""
+        return self._turns[3] / TWO_PI
+

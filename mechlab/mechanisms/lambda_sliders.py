@@ -1,0 +1,171 @@
+"""Six-bars on the lambda mechanism with a translating output: МЧВ2 (rod and slider), МЧВ5 (translating slotted link).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+import numpy as np
+from ..errors import MechanismError
+from ..geometry import PointPath, as_angles, check_length, check_number, check_sign, cross, dyad_rrp, unit
+from .base import TWO_PI, Mechanism
+from ..motion import LinearMotion
+from .lambda_mechanism import LambdaMechanism
+from ..errors import InfeasibleDesignError
+
+__all__ = ["LambdaSliderSixBar", "LambdaTranslatingSlot"]
+
+
+# samples of a turn on which the closure of the attached dyad is checked at construction
+_CHECK = np.linspace(0.0, TWO_PI, 2881)
+
+
+# --------------------------------------------------------------------------------------------
+# МЧВ2: rod D-E and a slider E on a straight guide through the arc centre
+# --------------------------------------------------------------------------------------------
+class _OnLambda(Mechanism):
+    """A six-bar on the lambda mechanism (r, a, δ): its base four-bar with the coupler point D."""
+
+    @cached_property
+    def base(self) -> LambdaMechanism:
+        return LambdaMechanism(self.r, self.a, self.delta)
+
+
+@dataclass(frozen=True)
+class LambdaSliderSixBar(_OnLambda):
+    """МЧВ2 (seed 001, Fig. 1 в): lambda mechanism (r, a, δ) + rod D-E (``rod``) + slider E on the
+    fixed line through Q = (``qx``, ``qy``) at angle ``theta`` (radians, from +x).
+
+    Output s: E = Q + s·u, u = (cos θ, sin θ). ``assembly`` = +1 takes the root of the RRP dyad
+    ahead along u, −1 the one behind (:func:`mechlab.geometry.line_circle`). Transmission angle
+    μ2′ = π/2 − β, β = asin(dist(D, guide)/rod), the acute angle between the rod and the guide.
+    Raises InfeasibleDesignError if D goes as far as ``rod`` from the guide somewhere in the turn
+    (the rod would stand across the guide: a dead point, or no assembly at all).
+    """
+
+    r: float
+    a: float
+    delta: float
+    rod: float
+    qx: float
+    qy: float
+    theta: float
+    assembly: int = 1
+    dwell: float = 0.0  # the designed dwell 2α (informational: drawings, reports)
+
+    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"), ("D", "E"))
+    pivots = ("O", "C")
+    output = "position"
+
+    def __post_init__(self):
+        object.__setattr__(self, "rod", check_length("rod DE", self.rod))
+        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
+        for k in ("qx", "qy", "theta"):
+            object.__setattr__(self, k, check_number(k, getattr(self, k)))
+        self.base  # validates r, a, δ (the crank turns fully)
+        off = np.abs(self.offsets(_CHECK))
+        i = int(np.argmax(off))
+        if off[i] >= self.rod * (1 - 1e-9):
+            raise InfeasibleDesignError(
+                f"the slider dyad D-E does not work over the whole turn: at φ = {np.degrees(_CHECK[i]):.2f}° "
+                f"D is {off[i]:.6g} from the guide, not less than the rod DE = {self.rod:.6g} (the rod would "
+                f"stand across the guide)")
+
+    @property
+    def Q(self) -> np.ndarray:
+        """The guide's reference point (the arc centre for a designed МЧВ2): s = 0 there."""
+        return np.array([self.qx, self.qy])
+
+    @property
+    def u(self) -> np.ndarray:
+        """Unit vector of the guide."""
+        return unit(self.theta)
+
+    def offsets(self, phi) -> np.ndarray:
+        """Signed distance u × (D − Q) of D from the guide line (closed form of D)."""
+        D = self.base.coupler_point(phi)
+        return cross(np.broadcast_to(self.u, D.shape), D - self.Q)
+
+    def motion(self, phi) -> LinearMotion:
+        """Paths of O, A, B, C, D, E and the slider's s, s′, s″ (exact); transmission = μ2′."""
+        phi = as_angles(phi)
+        mo = self.base.motion(phi)
+        E, s = dyad_rrp(mo.points["D"], self.Q, self.theta, self.rod, self.assembly, phi, "the slider dyad D-E")
+        pts = dict(mo.points)
+        pts["E"] = E
+
+        def mu2(m):
+            D = m.points["D"].p
+            dist = np.abs(cross(np.broadcast_to(self.u, D.shape), D - self.Q))
+            return np.pi / 2 - np.arcsin(np.clip(dist / self.rod, 0.0, 1.0))
+
+        return LinearMotion(phi, pts, mu2, s.theta, s.d, s.dd)
+
+
+# --------------------------------------------------------------------------------------------
+# МЧВ5: block at D in the straight slot of a translating output
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LambdaTranslatingSlot(_OnLambda):
+    """МЧВ5 (seed 001, Fig. 1 д): lambda mechanism (r, a, δ) + block at D sliding in a straight slot
+    (direction angle ``slot``) of an output link translating along the fixed direction ``guide``.
+
+    Output s: the link's displacement along w = (cos guide, sin guide), zero when the slot line
+    passes through P = (``px``, ``py``): s = v×(D − P)/(v×w), s′ = v×D′/(v×w), s″ = v×D″/(v×w).
+    The point E = P + s·w of the slot line (on the guide through P) is the output's reference
+    point. Transmission angle: the acute angle between slot and guide (constant; 90° ideal: the
+    pressure angle is the angle between the slot's normal, along which the block pushes, and w).
+    """
+
+    r: float
+    a: float
+    delta: float
+    px: float
+    py: float
+    slot: float
+    guide: float
+    dwell: float = 0.0  # the straight part's crank angle 2α (informational)
+
+    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
+    pivots = ("O", "C")
+    output = "position"
+
+    def __post_init__(self):
+        for k in ("px", "py", "slot", "guide"):
+            object.__setattr__(self, k, check_number(k, getattr(self, k)))
+        self.base
+        if abs(self._sin) < 1e-3:
+            raise MechanismError(
+                f"the output's guide ({np.degrees(self.guide):.4g}°) is parallel to its slot "
+                f"({np.degrees(self.slot):.4g}°) to within {np.degrees(np.arcsin(min(abs(self._sin), 1))):.3g}° "
+                f"(needs at least 0.057°): the block cannot push the link along the guide")
+
+    @property
+    def P(self) -> np.ndarray:
+        return np.array([self.px, self.py])
+
+    @property
+    def _sin(self) -> float:
+        """v × w = sin(guide − slot)."""
+        return float(np.sin(self.guide - self.slot))
+
+    @property
+    def transmission_angle(self) -> float:
+        """The acute angle between the slot and the guide (π/2 when the guide is along the slot normal)."""
+        return float(np.arcsin(min(abs(self._sin), 1.0)))
+
+    def motion(self, phi) -> LinearMotion:
+        """Paths of O, A, B, C, D, E (output reference point) and s, s′, s″ in closed form."""
+        phi = as_angles(phi)
+        mo = self.base.motion(phi)
+        D = mo.points["D"]
+        v, w = unit(self.slot), unit(self.guide)
+        vv = np.broadcast_to(v, D.p.shape)
+        k = 1.0 / self._sin
+        s = cross(vv, D.p - self.P) * k
+        ds = cross(vv, D.d) * k
+        dds = cross(vv, D.dd) * k
+        pts = dict(mo.points)
+        pts["E"] = PointPath(self.P + s[:, None] * w, ds[:, None] * w, dds[:, None] * w)
+        return LinearMotion(phi, pts, np.full(len(phi), self.transmission_angle), s, ds, dds)
+

@@ -1,0 +1,292 @@
+"""The offset spherical Geneva drive (Vainer & Shatokhina): design and exact 3-D model.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import NamedTuple
+import numpy as np
+from ..errors import DimensionError
+from ..geometry import AnglePath, PointPath, as_angles, check_length, vector_angle
+from .base import Mechanism
+from ..motion import AngularMotion
+from .geneva import Impact, OffsetError, TWO_PI, check_slots, mid_motion_angle
+
+
+# ----------------------------------------------------------------------------------
+# spherical offset Geneva (seed 004)
+# ----------------------------------------------------------------------------------
+class SphericalModel(NamedTuple):
+    """The exact 3-D model at crank angles α: contact point A (3-D PointPath), pin axis
+    direction d, distance u = |O1A|, wheel angle β (azimuth of A), γ (angle between
+    O1A and the wheel axis), ρ (A's distance from the crank axis), r (from the wheel axis)."""
+
+    A: PointPath
+    d: np.ndarray
+    u: np.ndarray
+    beta: AnglePath
+    gamma: np.ndarray
+    rho: np.ndarray
+    r: np.ndarray
+
+
+@dataclass(frozen=True)
+class SphericalGeneva(Mechanism):
+    """Hemispherical Geneva with perpendicular axes and offset e (seed 004).
+
+    ``R`` sphere radius, ``e`` offset of the crank axis from the sphere's centre
+    (0 ≤ e < R), ``z`` slots, ``pin_diameter`` d (seed Table 1: R = 40, e = 15, d = 10 mm).
+    Design (seed formulas (1)-(9)): β0 = π/z, ρ0 = sqrt(e² + R² sin²β0) (1),
+    α0 = arccos(e/ρ0) (2), ψ = atan(ρ0/(R cos β0)) (3), γ0 = atan(R/e) (4).
+    The crank angle of the library is φ = α + π (φ = 0 mid-dwell); ψ (output) = β + β0
+    while |α| ≤ α0.
+    """
+
+    R: float
+    e: float
+    z: int
+    pin_diameter: float = 10.0
+
+    links = (("B", "P"),)
+    pivots = ("O", "O1")
+    output = "angle"
+
+    def __post_init__(self):
+        object.__setattr__(self, "z", check_slots(self.z))
+        object.__setattr__(self, "R", check_length("R", self.R))
+        object.__setattr__(self, "e", check_length("e", self.e, allow_zero=True))
+        object.__setattr__(self, "pin_diameter", check_length("pin_diameter", self.pin_diameter))
+        if self.e >= self.R:
+            raise OffsetError(f"the offset must satisfy e < R (the crank axis passes inside the sphere), "
+                              f"got e = {self.e:g} ≥ R = {self.R:g}")
+        if self.pin_diameter >= self.min_slot_length:
+            raise DimensionError(f"pin_diameter = {self.pin_diameter:g} must be smaller than the slot's working "
+                                 f"arc R·(π/2 - arcsin(r_H/R)) = {self.min_slot_length - self.pin_diameter / 2:.6g}")
+
+    # -- design (seed 004, formulas (1)-(9)) ------------------------------------------
+    @property
+    def k(self) -> float:
+        """k = e/R (seed, after (5))."""
+        return self.e / self.R
+
+    @property
+    def beta0(self) -> float:
+        """Half the index angle, π/z (seed Table 1: 60°, 45°, 36°, 30°, 22.5°)."""
+        return np.pi / self.z
+
+    @property
+    def rho0(self) -> float:
+        """ρ0 = sqrt(e² + R² sin²β0): radius of the entry point A0 about the crank axis (1)."""
+        return float(np.hypot(self.e, self.R * np.sin(self.beta0)))
+
+    @property
+    def alpha0(self) -> float:
+        """α0 = arccos(e/ρ0) (2): the crank angle at entry; sin β0 = (e/R) tan α0 (5)."""
+        return float(np.arccos(self.e / self.rho0))
+
+    @property
+    def cone_angle(self) -> float:
+        """The seed's ψ = atan(ρ0/(R cos β0)) (3): half-angle of the pin axis' cone about the crank axis."""
+        return float(np.arctan2(self.rho0, self.R * np.cos(self.beta0)))
+
+    @property
+    def gamma0(self) -> float:
+        """γ0 = atan(R/e) (4): angle between O1A0 and the wheel axis at entry (A0 on the equator)."""
+        return float(np.arctan2(self.R, self.e))
+
+    @property
+    def a2(self) -> float:
+        """a² = 1/sin²ψ (seed, after (18))."""
+        return 1.0 / np.sin(self.cone_angle) ** 2
+
+    @property
+    def u0(self) -> float:
+        """|O1A0| = ρ0/sin ψ = sqrt(R² + e²)."""
+        return self.rho0 / np.sin(self.cone_angle)
+
+    @property
+    def u_H(self) -> float:
+        """|O1A_H| at α = 0: e sin ψ + R sqrt(1 - k² cos²ψ) (root of U² - 2eU sin ψ - (R² - e²) = 0)."""
+        p = self.cone_angle
+        return float(self.e * np.sin(p) + self.R * np.sqrt(1.0 - self.k**2 * np.cos(p) ** 2))
+
+    @property
+    def rho_H(self) -> float:
+        """ρ_H = |O1A_H| sin ψ (6): contact radius about the crank axis in the lowest position."""
+        return self.u_H * np.sin(self.cone_angle)
+
+    @property
+    def r_H(self) -> float:
+        """r_H = |O1A_H| cos ψ = ρ_H / tan ψ (7), (8): contact radius about the wheel axis."""
+        return self.u_H * np.cos(self.cone_angle)
+
+    @property
+    def pin_travel(self) -> float:
+        """(ρ_H - ρ0)/sin ψ = |O1A_H| - |O1A0|: how far the contact runs along the pin."""
+        return (self.rho_H - self.rho0) / np.sin(self.cone_angle)
+
+    def pin_length(self, wall: float, allowance: float = 6.5) -> float:
+        """Crank-pin length (9): (ρ_H - ρ0)/sin ψ + δ + (5…8) mm, δ the slot wall
+        thickness, ``allowance`` in [5, 8] mm (2…3 mm inside plus 3…5 mm outside)."""
+        wall = check_length("wall", wall)
+        if not 5.0 <= allowance <= 8.0:
+            raise DimensionError(f"the pin-length allowance must be within [5, 8] mm (seed formula (9)), got {allowance:g}")
+        return self.pin_travel + wall + allowance
+
+    @property
+    def min_slot_length(self) -> float:
+        """L = R·∠A_H O G + d/2 with ∠A_H O G = π/2 - arcsin(r_H/R): the meridian arc from
+        the equator (entry) to the highest contact point A_H, plus half the pin."""
+        return self.R * (np.pi / 2 - np.arcsin(self.r_H / self.R)) + self.pin_diameter / 2
+
+    @property
+    def dwell_fraction(self) -> float:
+        """1 - α0/π: the pin is in a slot for |α| ≤ α0."""
+        return 1.0 - self.alpha0 / np.pi
+
+    @property
+    def index_angle(self) -> float:
+        return TWO_PI / self.z
+
+    @property
+    def engagement_half_angle(self) -> float:
+        """α0: the pin is in a slot for |α| ≤ α0 (same name as the planar drives)."""
+        return self.alpha0
+
+    # -- closed forms (seed (16)-(22)) ------------------------------------------------
+    def position(self, alpha) -> AnglePath:
+        """β(α) = arcsin(sin α / sqrt(a² - cos²α)) (18), β' (19) and β'' (20) (per ω1, ω1²)."""
+        al = np.asarray(alpha, dtype=float)
+        a2 = self.a2
+        q = a2 - np.cos(al) ** 2
+        s = np.sqrt(a2 - 1.0)
+        beta = np.arcsin(np.sin(al) / np.sqrt(q))
+        return AnglePath(beta, s * np.cos(al) / q, -s * (a2 + np.cos(al) ** 2) * np.sin(al) / q**2)
+
+    def max_velocity(self) -> float:
+        """ω_max/ω1 = 1/sqrt(a² - 1) = tan ψ at α = 0 (seed (21), printed as ε)."""
+        return float(1.0 / np.sqrt(self.a2 - 1.0))
+
+    def acceleration_extreme_alpha(self) -> float:
+        """α1 ∈ [0, π/2] of the largest |ε| of (20): sin²α1 = 3a² - sqrt(8a⁴ + 1) (22),
+        the root of sin⁴α - 6a² sin²α + a⁴ - 1 = 0 below 1. It may lie beyond α0, where
+        the wheel no longer moves. For a² ≥ 6 (ψ ≤ 24.09°) the root is ≥ 1: there is no
+        interior extreme and |ε| grows up to α = π/2, returned then."""
+        a2 = self.a2
+        s2 = 3.0 * a2 - np.sqrt(8.0 * a2 * a2 + 1.0)
+        return float(np.arcsin(np.sqrt(s2))) if s2 < 1.0 else np.pi / 2
+
+    def max_acceleration(self) -> tuple[float, float]:
+        """(|ε|max/ω1², α where reached) while the wheel moves (|α| ≤ α0): at α1 if
+        α1 ≤ α0, else at the entry α0 (|ε| increases all the way to α0)."""
+        al = min(self.acceleration_extreme_alpha(), self.alpha0)
+        return float(abs(self.position(al).dd)), al
+
+    def entry_velocity(self) -> float:
+        """β'(α0) = sin ψ cos ψ cos α0 / (1 - sin²ψ cos²α0), which by (1)-(3)
+        (sin ψ = ρ0/sqrt(R² + e²), cos α0 = e/ρ0) is k·cos β0 = (e/R)·cos(π/z): zero only for e = 0."""
+        return float(self.position(self.alpha0).d)
+
+    def impacts(self) -> Impact:
+        """Jumps at entry (α = -α0) and exit (α0): ψ' jumps from 0 to β'(α0) > 0 for
+        e > 0 — a hard impact; for e = 0 (α0 = 90°) only ψ'' jumps — soft."""
+        a, b = self.position(-self.alpha0), self.position(self.alpha0)
+        return Impact(float(a.d), float(a.dd), float(-b.d), float(-b.dd))
+
+    # -- exact 3-D model --------------------------------------------------------------
+    def pin_direction(self, alpha) -> np.ndarray:
+        """Unit vector of the pin axis on its cone: (cos ψ, sin ψ sin α, sin ψ cos α)."""
+        al = np.asarray(alpha, dtype=float)
+        p = self.cone_angle
+        return np.stack([np.full_like(al, np.cos(p)), np.sin(p) * np.sin(al), np.sin(p) * np.cos(al)], axis=-1)
+
+    def model(self, alpha) -> SphericalModel:
+        """The pin axis line O1 + u·d(α) meets the sphere |A| = R at u > 0:
+        u² + 2u (O1·d) + e² - R² = 0; u', u'' from its derivatives; β = azimuth of A
+        with analogs from the projection of A, A', A'' on the equator plane."""
+        al = as_angles(alpha)
+        p, e, R = self.cone_angle, self.e, self.R
+        sp_ = np.sin(p)
+        d = self.pin_direction(al)
+        d1 = np.stack([np.zeros_like(al), sp_ * np.cos(al), -sp_ * np.sin(al)], axis=-1)
+        d2 = np.stack([np.zeros_like(al), -sp_ * np.sin(al), -sp_ * np.cos(al)], axis=-1)
+        o1 = np.array([0.0, 0.0, -e])
+        g0, g1, g2 = d @ o1, d1 @ o1, d2 @ o1  # O1·d and its derivatives
+        u = -g0 + np.sqrt(g0**2 + R**2 - e**2)
+        den = u + g0  # = sqrt(...) > 0 since e < R
+        u1 = -u * g1 / den
+        u2 = -(u1**2 + 2.0 * u1 * g1 + u * g2) / den
+        A = PointPath(o1 + u[:, None] * d, u1[:, None] * d + u[:, None] * d1,
+                      u2[:, None] * d + 2.0 * u1[:, None] * d1 + u[:, None] * d2)
+        beta = vector_angle(PointPath(A.p[:, :2], A.d[:, :2], A.dd[:, :2]))
+        gamma = np.arccos(np.clip(d[:, 2], -1.0, 1.0))
+        return SphericalModel(A, d, u, beta, gamma, u * sp_, np.hypot(A.p[:, 0], A.p[:, 1]))
+
+    def force_arms(self, alpha) -> tuple[np.ndarray, np.ndarray]:
+        """Moment arms of a unit force normal to the slot (meridian) plane at the contact
+        point A, about the wheel axis and about the crank axis, from 3-D cross products.
+        By the power balance the crank arm equals r·β' = ρ·cos α·cos β."""
+        m = self.model(alpha)
+        A = m.A.p
+        n = np.stack([-np.sin(m.beta.theta), np.cos(m.beta.theta), np.zeros_like(m.u)], axis=-1)
+        wheel = np.cross(A, n)[:, 2]
+        crank = np.cross(A - np.array([0.0, 0.0, -self.e]), n)[:, 0]
+        return wheel, -crank
+
+    def seed_c1(self) -> float:
+        """C1 = (tg⁻²ψ - R²ρ0⁻² cos²β0)·ρ0/(2e) of seed (10); zero by (3) (0 also for e = 0)."""
+        if self.e == 0:
+            return 0.0
+        p = self.cone_angle
+        return float((1.0 / np.tan(p) ** 2 - self.R**2 * np.cos(self.beta0) ** 2 / self.rho0**2)
+                     * self.rho0 / (2.0 * self.e))
+
+    # -- Mechanism protocol --------------------------------------------------------------
+    def engaged(self, phi) -> np.ndarray:
+        return np.abs(mid_motion_angle(as_angles(phi))) <= self.alpha0
+
+    def motion(self, phi) -> AngularMotion:
+        """Wheel angle ψ = β + β0 (0 at φ = 0, +2π/z per turn) with analogs: the exact
+        3-D model while the pin is in a slot, zeros while the wheel stands.
+
+        ``points`` hold 3-D PointPaths: O (sphere centre), O1 (crank axis point on the
+        wheel axis), A (where the pin axis meets the sphere; below the equator, i.e.
+        out of the slot, during the dwell), P (pin point at |O1A0| on its axis) and B
+        (P's foot on the crank axis).
+        """
+        phi = as_angles(phi)
+        n = len(phi)
+        turns = np.floor(phi / TWO_PI)
+        alpha = mid_motion_angle(phi)
+        m = self.model(alpha)
+        on = np.abs(alpha) <= self.alpha0
+        b0 = self.beta0
+        local = np.where(on, m.beta.theta + b0, np.where(alpha > 0, 2 * b0, 0.0))
+        psi = turns * self.index_angle + local
+        dpsi = np.where(on, m.beta.d, 0.0)
+        ddpsi = np.where(on, m.beta.dd, 0.0)
+        u0 = self.u0
+        o1 = np.array([0.0, 0.0, -self.e])
+        d = m.d
+        sp_ = np.sin(self.cone_angle)
+        d1 = np.stack([np.zeros(n), sp_ * np.cos(alpha), -sp_ * np.sin(alpha)], axis=-1)
+        d2 = np.stack([np.zeros(n), -sp_ * np.sin(alpha), -sp_ * np.cos(alpha)], axis=-1)
+        P = PointPath(o1 + u0 * d, u0 * d1, u0 * d2)
+        zero3 = np.zeros((n, 3))
+        B = PointPath(np.tile([u0 * np.cos(self.cone_angle), 0.0, -self.e], (n, 1)), zero3, zero3.copy())
+
+        def fixed3(xyz):
+            return PointPath(np.tile(xyz, (n, 1)), zero3.copy(), zero3.copy())
+
+        mu = np.full(n, np.pi / 2)
+        return AngularMotion(phi, {"O": fixed3([0.0, 0.0, 0.0]), "O1": fixed3(o1), "A": m.A, "P": P, "B": B},
+                             mu, psi, dpsi, ddpsi)
+
+    def design(self) -> dict:
+        """Seed 004's design quantities (mm, degrees)."""
+        return {"R": self.R, "e": self.e, "z": self.z, "α0 (deg)": np.degrees(self.alpha0),
+                "β0 (deg)": np.degrees(self.beta0), "ρ0": self.rho0, "ψ (deg)": np.degrees(self.cone_angle),
+                "γ0 (deg)": np.degrees(self.gamma0), "ρ_H": self.rho_H, "r_H": self.r_H,
+                "pin travel (ρ_H-ρ0)/sinψ": self.pin_travel, "min slot length": self.min_slot_length,
+                "dwell fraction": self.dwell_fraction}
+

@@ -1,0 +1,91 @@
+"""The two mechanisms of seed 002 §7.2 that are not in :mod:`mechlab.mechanisms`.
+
+* :class:`EllipticTrammel` — a rod AB whose ends slide on two straight guides crossing
+  at O at the angle β (seed 002, Fig. 7.5; β = 90° in Fig. 7.6), driven here by Cardan's
+  crank O-C, C being the centre of the rod's moving centrode (the circumcentre of
+  triangle OAB), so that the crank angle φ is a full-turn input.
+* :class:`Antiparallelogram` — the crossed four-bar whose opposite links are equal
+  (seed 002, Fig. 7.7), followed on its crossed branch through both change points.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+import numpy as np
+from ..errors import DimensionError
+from ..geometry import PointPath, as_angles, check_length, fixed_point, unit
+from .base import Mechanism
+from ..motion import LinearMotion
+
+
+# Guides closer than this to parallel (radians) are rejected: the rod could not move.
+_MIN_GUIDE_ANGLE = 1e-6
+
+
+@dataclass(frozen=True)
+class EllipticTrammel(Mechanism):
+    """Rod A-B of length ``rod``; A slides on the x axis, B on the line through O at angle ``beta``.
+
+    Derivation (seed 002, Fig. 7.5, derived anew): the normals to the guides at A and B
+    meet at the rod's instantaneous centre P, so O, A, P, B lie on the circle with
+    diameter OP = rod / sin β (angle AOB = β subtends the chord AB = rod). That circle's
+    centre C = P/2 is fixed to the rod, and |OC| = r = rod / (2 sin β): a crank O-C of
+    radius r drives the rod (Cardan's drive; the crank adds a redundant but consistent
+    constraint). With φ the crank angle, P = 2r·(cos φ, sin φ), and the feet of P on
+    the guides are
+
+        A = 2r cos φ · (1, 0),    B = 2r cos(φ - β) · (cos β, sin β),
+
+    the rod's angle is θ = π/2 + β - φ (θ' = -1: the small circle rolls inside the big
+    one and turns backwards at the crank's rate). Output: s = x_A = 2r cos φ.
+    """
+
+    rod: float
+    beta: float = np.pi / 2
+
+    links = (("O", "C"), ("A", "B"), ("B", "C"), ("C", "A"))
+    pivots = ("O",)
+    output = "position"
+
+    def __post_init__(self):
+        object.__setattr__(self, "rod", check_length("rod", self.rod))
+        b = float(self.beta)
+        if not (np.isfinite(b) and _MIN_GUIDE_ANGLE < b < np.pi - _MIN_GUIDE_ANGLE):
+            raise DimensionError(
+                f"the angle between the guides must satisfy 0 < β < 180°, got β = {np.degrees(b):.6g}°: "
+                f"parallel guides leave no room for the rod to turn")
+        object.__setattr__(self, "beta", b)
+
+    @property
+    def crank(self) -> float:
+        """Radius of the Cardan crank O-C: rod / (2 sin β), the moving centrode's radius."""
+        return self.rod / (2.0 * np.sin(self.beta))
+
+    @property
+    def fixed_radius(self) -> float:
+        """Radius of the fixed centrode (centre O): rod / sin β (seed 002, formula (7.12))."""
+        return self.rod / np.sin(self.beta)
+
+    def rod_angle(self, phi) -> np.ndarray:
+        """Angle θ of the rod A→B at crank angles φ: θ = π/2 + β - φ."""
+        return np.pi / 2 + self.beta - as_angles(phi)
+
+    def motion(self, phi) -> LinearMotion:
+        """Paths of O, C, A, B and the slider law s = x_A, s', s'' at crank angles φ (rad)."""
+        phi = as_angles(phi)
+        n = len(phi)
+        d = 2.0 * self.crank
+        u = unit(phi)
+        C = PointPath(self.crank * u, self.crank * np.stack([-u[:, 1], u[:, 0]], -1), -self.crank * u)
+        ex = np.array([1.0, 0.0])
+        ub = unit(self.beta)
+        c0, s0 = np.cos(phi), np.sin(phi)
+        cb, sb = np.cos(phi - self.beta), np.sin(phi - self.beta)
+        A = PointPath(d * c0[:, None] * ex, -d * s0[:, None] * ex, -d * c0[:, None] * ex)
+        B = PointPath(d * cb[:, None] * ub, -d * sb[:, None] * ub, -d * cb[:, None] * ub)
+        # transmission: between the rod and the normal to A's guide (as for a slider-crank)
+        rod = B.p - A.p
+        mu = np.pi / 2 - np.arcsin(np.clip(np.abs(rod[:, 1]) / self.rod, 0.0, 1.0))
+        return LinearMotion(phi, {"O": fixed_point((0.0, 0.0), n), "C": C, "A": A, "B": B}, mu,
+                            A.p[:, 0].copy(), A.d[:, 0].copy(), A.dd[:, 0].copy())
+

@@ -1,0 +1,745 @@
+"""Dwell synthesis with a curved slot (seed 000, §3, Fig. 9-10, formulas (21)-(25)).
+
+Frame of seed 000 §2 (as :class:`~mechlab.mechanisms.slotted.SlottedLink`): crank pivot
+O at the origin, link pivot B at (-d, 0) with d = ``pivot_distance``, crank radius
+r = λd, φ = 0 where the pin A is farthest from B. The **base mechanism** (straight slot
+through B) has the law ψ_K(φ) = atan2(λ sin φ, 1 + λ cos φ) (formula (18)) with
+ψ_K' = λ(λ + cos φ)/D, ψ_K'' = λ(λ² - 1) sin φ / D², D = 1 + λ² + 2λ cos φ ((19), (20),
+re-derived with sympy: both are printed correctly).
+
+**Slot and law.** In the frame of the moving link (origin B, x axis = the link's
+reference line, which passes through the slot's far end E), the pin sits at polar
+coordinates (S, β) with S(φ) = |A - B| = d·sqrt(1 + λ² + 2λ cos φ) and β = ψ_K - ψ
+(formula (12); the printed S has a wrong sign, see :mod:`mechlab.course.errata.seed000_dwell`).
+S(φ) = S(-φ), so a slot whose centre line meets every circle about B once is passed at
+φ and at -φ in the same point: β(-φ) = β(φ), hence the half-turn relation (Table 2)
+
+    ψ(-φ) = ψ(φ) - 2ψ_K(φ),  ψ'(-φ) = 2ψ_K'(φ) - ψ'(φ),  ψ''(-φ) = ψ''(φ) - 2ψ_K''(φ).
+
+A law chosen on [0, π] therefore fixes the slot and the other half of the turn. Odd
+derivatives of ψ must equal the base mechanism's at φ = 0 and π (else they jump:
+ψ'(0±) differ by 2(ψ'(0+) - ψ_K'(0))), even ones are continuous there automatically.
+
+**Design** (seed 000 formulas (21)-(25)): ψ = ψ_B on the dwell [φ1, φ2] (the slot there
+is an arc of radius l_OA about the link-frame image of O), and transitions
+ψ = ψ_B + p(φ1 - φ) on [0, φ1], ψ = ψ_B + q(φ - φ2) on [φ2, π] with polynomials p, q
+that start at the join with ψ' = ψ'' = 0 and reach the base mechanism's velocity
+analog at 0 and π, and ψ(0) = 0 (this fixes ψ_B). Two transition laws:
+
+* ``"cubic"`` (the seed's (21), (23)): p = a1 u³, q = a2 v³ with the *correct* signs
+  a1 = -λ / (3(λ + 1)φ1²), a2 = λ / (3(λ - 1)(π - φ2)²), ψ_B = λφ1 / (3(λ + 1)).
+  ψ, ψ', ψ'' are continuous, but the jerk ψ''' jumps at 0, φ1, φ2, π and the slot's
+  curvature grows like 1/φ towards its ends (the pin's reversal points φ = 0, π),
+  because β'''(0) = ψ_K'''(0) - ψ'''(0) ≠ 0.
+* ``"quintic"``: p = c4 u⁴ + c5 u⁵, q = d4 v⁴ + d5 v⁵ matching also the base
+  mechanism's jerk at 0 and π (ψ_K'''(0) = λ(λ - 1)/(λ + 1)³, ψ_K'''(π) = -λ(λ + 1)/(λ - 1)³)
+  and ψ''' = 0 at the joins: ψ''' is continuous over the whole turn and the slot's
+  curvature is bounded, also at its ends.
+
+The pressure angle θ (between the slot's normal, along which the pin pushes, and the
+velocity of the link's point under the pin) is the angle between the slot's tangent and
+the ray B → A, a property of the slot point alone: tan θ = S |dβ/dS|
+= S² |β'| / (r d |sin φ|), equal at φ and -φ. On the dwell arc it is
+θ = |π/2 - (φ - ψ_K(φ))|, zero where OA ⊥ BA (cos φ = -λ).
+
+:func:`curved_slot_dwell` returns a :class:`DwellSlotMechanism` whose ``motion(phi)``
+solves the pin-in-slot loop through :class:`mechlab.mechanisms.curved_slot.CurvedSlotLink`
+with the designed slot (not by evaluating the law); ``law`` keeps the design for
+comparison.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+from math import comb
+from typing import NamedTuple
+import numpy as np
+from numpy.polynomial import Polynomial
+from ..errors import DimensionError, MechanismError
+from ..geometry import as_angles, check_length, wrap
+from ..mechanisms.base import Mechanism
+
+
+TRANSITIONS = ("cubic", "quintic", "sextic")
+
+
+LAMBDA_TOL = 1e-9
+
+
+class DwellError(MechanismError):
+    """A dwell design that cannot be built."""
+
+
+class DwellIntervalError(DwellError, DimensionError):
+    """The dwell interval [φ1, φ2] is empty, reversed, or not strictly inside (0, π)."""
+
+
+class DwellRatioError(DwellError, DimensionError):
+    """λ = l_OA / l_OB is not a positive number different from 1."""
+
+
+def check_lambda(lam) -> float:
+    """λ as a float; DwellRatioError unless 0 < λ < ∞ and λ ≠ 1."""
+    try:
+        lam = float(lam)
+    except (TypeError, ValueError):
+        raise DwellRatioError(f"λ must be a number, got {lam!r}") from None
+    if not np.isfinite(lam) or lam <= 0:
+        raise DwellRatioError(f"λ = l_OA / l_OB must be a positive finite number, got {lam}")
+    if abs(lam - 1.0) <= LAMBDA_TOL:
+        raise DwellRatioError(
+            f"λ = l_OA / l_OB = {lam:g}, but λ ≠ 1 is needed: the pin passes through the pivot B at φ = 180°, where the "
+            f"slot direction is undefined and ψ_K'(π) = λ/(λ - 1) is infinite")
+    return lam
+
+
+class BaseLaw(NamedTuple):
+    """ψ_K and its first three analogs (base mechanism, seed 000 (18)-(20))."""
+
+    psi: np.ndarray
+    d: np.ndarray
+    dd: np.ndarray
+    ddd: np.ndarray
+
+
+def base_law(lam: float, phi) -> BaseLaw:
+    """The base mechanism's law ψ_K(φ) with ψ_K', ψ_K'', ψ_K''' (seed 000, (18)-(20)).
+
+    ψ_K is continuous in φ: principal for λ < 1, ψ_K - φ ∈ (-π/2, π/2) for λ > 1 (the link turns).
+    """
+    lam = check_lambda(lam)
+    phi = as_angles(phi)
+    s, c = np.sin(phi), np.cos(phi)
+    D = 1.0 + lam * lam + 2.0 * lam * c
+    psi = np.arctan2(lam * s, 1.0 + lam * c)
+    if lam > 1.0:
+        psi = phi + wrap(psi - phi)
+    d1 = lam * (lam + c) / D
+    d2 = lam * (lam * lam - 1.0) * s / D**2
+    d3 = lam * (lam * lam - 1.0) * (c * D + 4.0 * lam * s * s) / D**3
+    return BaseLaw(psi, d1, d2, d3)
+
+
+def arc_pressure_angle(lam, phi) -> np.ndarray:
+    """Pressure angle where the pin runs on a dwell arc (radius l_OA about O): the slot's normal
+    is along OA, the link point moves perpendicular to BA, so θ = |π/2 - (φ - ψ_K(φ))|.
+
+    Its smallest value over φ is 0 for λ < 1 (at cos φ = -λ, OA ⊥ BA) and π/2 - arcsin(1/λ) for
+    λ > 1 (the angle OAB never exceeds arcsin(1/λ)): a dwell of the rotating link always works
+    at a pressure angle of at least that much.
+    """
+    phi = as_angles(phi)
+    return np.abs(np.pi / 2 - (phi - base_law(lam, phi).psi))
+
+
+def _end_values(lam: float):
+    """(ψ_K'(0), ψ_K'''(0), ψ_K'(π), ψ_K'''(π)) in closed form."""
+    return (lam / (lam + 1.0), lam * (lam - 1.0) / (lam + 1.0) ** 3,
+            lam / (lam - 1.0), -lam * (lam + 1.0) / (lam - 1.0) ** 3)
+
+
+def _fit(powers, at: float, sign: float, conditions) -> np.ndarray:
+    """Coefficients of Σ c_k x^k (k in ``powers``) with (sign)^m p^(m)(at) = value for (m, value)."""
+    M = np.zeros((len(conditions), len(powers)))
+    rhs = np.zeros(len(conditions))
+    for i, (m, value) in enumerate(conditions):
+        for j, k in enumerate(powers):
+            if k >= m:
+                M[i, j] = sign**m * np.prod(np.arange(k - m + 1, k + 1)) * at ** (k - m)
+        rhs[i] = value
+    coef = np.zeros(max(powers) + 1)
+    coef[list(powers)] = np.linalg.solve(M, rhs)
+    return coef
+
+
+def _deriv(coef: np.ndarray, m: int = 1) -> np.ndarray:
+    for _ in range(m):
+        coef = coef[1:] * np.arange(1, len(coef)) if len(coef) > 1 else np.zeros(1)
+    return coef
+
+
+def _reflect(coef: np.ndarray, a: float) -> np.ndarray:
+    """Coefficients in x of p(a - x)."""
+    out = np.zeros(len(coef))
+    for k, c in enumerate(coef):
+        for j in range(k + 1):
+            out[j] += c * comb(k, j) * a ** (k - j) * (-1.0) ** j
+    return out
+
+
+def _horner(coef, x):
+    """Σ coef[k] x^k by Horner's rule (numpy's Polynomial call is slow for small arrays)."""
+    out = np.full(np.shape(x), float(coef[-1]))
+    for c in coef[-2::-1]:
+        out = out * x + c
+    return out
+
+
+def _x_over_sin(x: np.ndarray):
+    """x/sin x and its derivative, without cancellation near x = 0 (series for |x| < 0.1)."""
+    x = np.asarray(x, dtype=float)
+    small = np.abs(x) < 0.1
+    xs = np.where(small, 0.5, x)
+    s = xs / np.sin(xs)
+    ds = (np.sin(xs) - xs * np.cos(xs)) / np.sin(xs) ** 2
+    z = x * x
+    s_ser = 1 + z * (1 / 6 + z * (7 / 360 + z * (31 / 15120 + z * (127 / 604800 + z * 73 / 3421440))))
+    ds_ser = x * (1 / 3 + z * (28 / 360 + z * (186 / 15120 + z * (1016 / 604800 + z * 730 / 3421440))))
+    return np.where(small, s_ser, s), np.where(small, ds_ser, ds)
+
+
+def check_interval(phi1, phi2) -> tuple[float, float]:
+    """(φ1, φ2) as floats; DwellIntervalError unless 0 < φ1 < φ2 < π."""
+    try:
+        phi1, phi2 = float(phi1), float(phi2)
+    except (TypeError, ValueError):
+        raise DwellIntervalError(f"φ1 and φ2 must be numbers (radians), got {phi1!r}, {phi2!r}") from None
+    if not (np.isfinite(phi1) and np.isfinite(phi2)):
+        raise DwellIntervalError(f"φ1 and φ2 must be finite, got {phi1}, {phi2}")
+    deg = f"[φ1, φ2] = [{np.degrees(phi1):.2f}°, {np.degrees(phi2):.2f}°]"
+    if phi1 >= phi2:
+        raise DwellIntervalError(f"the dwell needs φ1 < φ2, got {deg}")
+    if phi1 < 0.0 or phi2 > np.pi:
+        raise DwellIntervalError(f"the dwell must lie within [0°, 180°] (one half-turn of the crank), got {deg}")
+    if phi1 == 0.0 or phi2 == np.pi:
+        raise DwellIntervalError(
+            f"a dwell starting at φ = 0° or ending at 180° leaves no room for a transition that matches the "
+            f"base mechanism's ψ' there, got {deg}: this is the two-branch slot (see two_branch_slot)")
+    return phi1, phi2
+
+
+@dataclass(frozen=True)
+class DwellLaw:
+    """The designed law ψ(φ) (seed 000 (21)-(25), corrected) and the slot it fixes.
+
+    ``lam`` = λ, ``phi1`` < ``phi2`` the dwell (radians, strictly inside (0, π)),
+    ``transition`` one of :data:`TRANSITIONS`, ``pivot_distance`` d = l_OB.
+    """
+
+    lam: float
+    phi1: float
+    phi2: float
+    transition: str = "cubic"
+    pivot_distance: float = 1.0
+    left_coef: np.ndarray = field(init=False, repr=False, compare=False)
+    right_coef: np.ndarray = field(init=False, repr=False, compare=False)
+    psi_dwell: float = field(init=False, compare=False)
+
+    def __post_init__(self):
+        lam = check_lambda(self.lam)
+        phi1, phi2 = check_interval(self.phi1, self.phi2)
+        d = check_length("pivot_distance", self.pivot_distance)
+        if self.transition not in TRANSITIONS:
+            raise DwellError(f"transition must be one of {', '.join(TRANSITIONS)}, got {self.transition!r}")
+        for k, v in (("lam", lam), ("phi1", phi1), ("phi2", phi2), ("pivot_distance", d)):
+            object.__setattr__(self, k, v)
+        k0, j0, k1, j1 = _end_values(lam)
+        W = np.pi - phi2
+        if self.transition == "cubic":
+            # (21)/(24): ψ'(0) = -3 a1 φ1² = λ/(λ+1);  (23)/(25): ψ'(π) = 3 a2 (π-φ2)² = λ/(λ-1)
+            left = _fit((3,), phi1, -1.0, [(1, k0)])
+            right = _fit((3,), W, 1.0, [(1, k1)])
+        elif self.transition == "quintic":
+            left = _fit((4, 5), phi1, -1.0, [(1, k0), (3, j0)])
+            right = _fit((4, 5), W, 1.0, [(1, k1), (3, j1)])
+        else:  # ψ'' = ψ_K'' = 0 at the ends as well
+            left = _fit((4, 5, 6), phi1, -1.0, [(1, k0), (2, 0.0), (3, j0)])
+            right = _fit((4, 5, 6), W, 1.0, [(1, k1), (2, 0.0), (3, j1)])
+        object.__setattr__(self, "left_coef", left)
+        object.__setattr__(self, "right_coef", right)
+        # coefficient arrays used in the hot paths: derivatives of p and q, and the polynomials
+        # (ψ'(φ) - k0)/φ (left, in φ) and (ψ'(π - w) - k1)/w (right, in w) with their derivatives
+        q = -_reflect(_deriv(left), phi1)          # ψ'(φ) on the left, in powers of φ
+        rq = _reflect(_deriv(right), W)            # ψ'(π - w) on the right, in powers of w
+        P = q[1:] if len(q) > 1 else np.zeros(1)
+        Pr = rq[1:] if len(rq) > 1 else np.zeros(1)
+        object.__setattr__(self, "_coefs", dict(
+            left=[_deriv(left, m) for m in range(4)], right=[_deriv(right, m) for m in range(4)],
+            P=(P, _deriv(P)), Pr=(Pr, _deriv(Pr))))
+        object.__setattr__(self, "psi_dwell", float(-_horner(left, phi1)))  # ψ(0) = 0
+
+    @property
+    def left(self) -> Polynomial:
+        """p(u) on [0, φ1], u = φ1 - φ: ψ = ψ_B + p(φ1 - φ)."""
+        return Polynomial(self.left_coef)
+
+    @property
+    def right(self) -> Polynomial:
+        """q(v) on [φ2, π], v = φ - φ2: ψ = ψ_B + q(φ - φ2)."""
+        return Polynomial(self.right_coef)
+
+    # -- dimensions ----------------------------------------------------------------------
+    @property
+    def crank(self) -> float:
+        """l_OA = λ·l_OB."""
+        return self.lam * self.pivot_distance
+
+    @property
+    def dwell_angle(self) -> float:
+        """φ_B = φ2 - φ1 (radians)."""
+        return self.phi2 - self.phi1
+
+    @property
+    def rotates(self) -> bool:
+        """λ > 1: the slotted link turns fully, one dwell per turn (intermittent rotation)."""
+        return self.lam > 1.0
+
+    # -- the law on the half turn [0, π] -------------------------------------------------
+    def _pieces(self, phi):
+        return phi < self.phi1, phi > self.phi2
+
+    def half(self, phi) -> BaseLaw:
+        """ψ, ψ', ψ'', ψ''' for φ in [0, π] (the designed half)."""
+        phi = as_angles(phi)
+        if np.any((phi < 0.0) | (phi > np.pi)):
+            raise DwellError("half() takes crank angles in [0, π]; use __call__ for any φ")
+        L, R = self._pieces(phi)
+        out = [np.zeros_like(phi) for _ in range(4)]
+        out[0][:] = self.psi_dwell
+        u, v = self.phi1 - phi[L], phi[R] - self.phi2
+        cl, cr = self._coefs["left"], self._coefs["right"]
+        for m in range(4):
+            out[m][L] += (-1.0) ** m * _horner(cl[m], u)
+            out[m][R] += _horner(cr[m], v)
+        return BaseLaw(*out)
+
+    def __call__(self, phi) -> BaseLaw:
+        """ψ(φ) and its analogs over any crank angles: the designed half on [0, π], the
+        half-turn relation (Table 2) on (-π, 0), and ψ(φ + 2π) = ψ(φ) + 2π·[λ > 1]."""
+        phi = as_angles(phi)
+        red = wrap(phi)
+        turns = np.round((phi - red) / (2 * np.pi))
+        neg = red < 0
+        a = np.abs(red)
+        h = self.half(a)
+        K = base_law(self.lam, a)
+        sign = np.where(neg, -1.0, 1.0)
+        psi = h.psi - 2.0 * neg * K.psi
+        d1 = np.where(neg, 2.0 * K.d - h.d, h.d)
+        d2 = h.dd - 2.0 * neg * K.dd
+        d3 = sign * (h.ddd - 2.0 * neg * K.ddd)
+        if self.rotates:
+            psi = psi + 2 * np.pi * turns
+        return BaseLaw(psi, d1, d2, d3)
+
+    def in_dwell(self, phi) -> np.ndarray:
+        """True where wrap(φ) lies in [φ1, φ2]."""
+        red = wrap(as_angles(phi))
+        return (red >= self.phi1) & (red <= self.phi2)
+
+    # -- the slot --------------------------------------------------------------------------
+    def S(self, phi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """|A - B| and its two analogs (seed 000 §3, S(φ) corrected to the §2 frame)."""
+        phi = as_angles(phi)
+        d, r = self.pivot_distance, self.crank
+        S = np.sqrt(d * d + r * r + 2 * r * d * np.cos(phi))
+        dS = -r * d * np.sin(phi) / S
+        ddS = (-r * d * np.cos(phi) - dS**2) / S
+        return S, dS, ddS
+
+    def beta(self, phi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """β = ψ_K - ψ (polar angle of the pin in the link's frame) and β', β'' for φ in [0, π]."""
+        h, K = self.half(phi), base_law(self.lam, phi)
+        return K.psi - h.psi, K.d - h.d, K.dd - h.dd
+
+    def slot_points(self, phi) -> np.ndarray:
+        """Points of the slot's centre line in the link's frame (origin B), φ in [0, π]."""
+        S, _, _ = self.S(phi)
+        b, _, _ = self.beta(phi)
+        return S[:, None] * np.stack([np.cos(b), np.sin(b)], axis=-1)
+
+    def centre_in_link(self) -> np.ndarray:
+        """Where the crank pivot O sits in the link's frame during the dwell: the dwell arc's centre."""
+        c, s = np.cos(self.psi_dwell), np.sin(self.psi_dwell)
+        return np.array([c * self.pivot_distance, -s * self.pivot_distance])
+
+    def _g(self, phi: np.ndarray, with_derivative: bool = False):
+        """g = β'(φ)/sin φ on [0, π], exact also at φ = 0 and π (where β' = 0), and, if asked,
+        G = g'(φ)/sin φ (finite at the ends only when β‴ vanishes there; taken 1e-6 inside them).
+
+        Each piece is written so that nothing cancels at the ends: on the left transition
+        (ψ_K' - k0)/sin φ = λ(λ-1) tan(φ/2)/((λ+1)D) and (ψ' - k0)/φ is a polynomial; on the
+        right one, with w = π - φ, (ψ_K' - k1)/sin φ = -λ(λ+1) tan(w/2)/((λ-1)D).
+        """
+        lam = self.lam
+        g = np.empty_like(phi)
+        G = np.empty_like(phi)
+        L, R = self._pieces(phi)
+        M = ~(L | R)
+        x = phi[M]
+        K = base_law(lam, x)
+        sx, cx = np.sin(x), np.cos(x)
+        g[M] = K.d / sx
+        G[M] = (K.dd * sx - K.d * cx) / sx**3
+        # left transition, x = φ
+        x = phi[L]
+        C = lam * (lam - 1.0) / (lam + 1.0)
+        g[L], G[L] = self._piece(x, C, 1.0, self._coefs["P"])
+        # right transition, w = π - φ
+        w = np.pi - phi[R]
+        C2 = -lam * (lam + 1.0) / (lam - 1.0)
+        gr, Gr = self._piece(w, C2, -1.0, self._coefs["Pr"])
+        g[R], G[R] = gr, -Gr   # d/dφ = -d/dw
+        return (g, G) if with_derivative else g
+
+    def _piece(self, x, C, sign, P):
+        """g = C tan(x/2)/D - P(x)·x/sin x with D = 1 + λ² + 2λ·sign·cos x, and (dg/dx)/sin x
+        (P = (coefficients of P, of P'))."""
+        lam = self.lam
+        D = 1.0 + lam * lam + 2.0 * lam * sign * np.cos(x)
+        Dx = -2.0 * lam * sign * np.sin(x)
+        P, dP = P
+        s, _ = _x_over_sin(x)
+        g = C * np.tan(x / 2) / D - _horner(P, x) * s
+        # G = g'/sin x: g' = O(x) cancels at the ends, so G is taken at x ≥ 1e-6 (relative error
+        # ~1e-10 there; it only enters the solver multiplied by t'² = O(x²))
+        x = np.clip(x, 1e-6, None)
+        D = 1.0 + lam * lam + 2.0 * lam * sign * np.cos(x)
+        Dx = -2.0 * lam * sign * np.sin(x)
+        s, ds = _x_over_sin(x)
+        t = np.tan(x / 2)
+        dg = C * ((1.0 + t * t) / (2.0 * D) - t * Dx / D**2) - _horner(dP, x) * s - _horner(P, x) * ds
+        return g, dg / np.sin(x)
+
+    def pressure_angle(self, phi) -> np.ndarray:
+        """Pressure angle θ (radians) at the pin for any φ, from the slot's geometry:
+        tan θ = S²|β'|/(r d |sin φ|) (exact limit at the slot's ends φ = 0, π)."""
+        phi = np.abs(wrap(as_angles(phi)))
+        S, _, _ = self.S(phi)
+        g = self._g(phi)
+        return np.arctan(S * S * np.abs(g) / (self.crank * self.pivot_distance))
+
+    def curvature(self, phi) -> np.ndarray:
+        """Signed curvature of the slot's centre line where the pin is at crank angle φ ∈ [0, π]
+        (sign taken along increasing distance from B), from the slot parametrised by S:
+        κ = (2β_S + Sβ_SS + S²β_S³)/(1 + S²β_S²)^{3/2}. On the dwell |κ| = 1/l_OA. For the
+        cubic law κ grows like 1/φ towards the ends (it is evaluated 1e-6 inside them)."""
+        phi = np.abs(wrap(as_angles(phi)))
+        S = self.S(phi)[0]
+        _, bS, bSS = self._polar(S)
+        return (2 * bS + S * bSS + S * S * bS**3) / (1 + (S * bS) ** 2) ** 1.5
+
+    # -- the slot as a curve in the link's frame, parameter = distance from B ----------------
+    def phi_of_distance(self, S) -> np.ndarray:
+        """The crank angle φ ∈ [0, π] at which the pin is S from B (stable at both ends)."""
+        S = np.asarray(S, dtype=float)
+        r, d = self.crank, self.pivot_distance
+        smax, smin = r + d, abs(r - d)
+        a = np.clip((smax - S) * (smax + S) / (4 * r * d), 0.0, 1.0)   # sin²(φ/2)
+        b = np.clip((S - smin) * (S + smin) / (4 * r * d), 0.0, 1.0)   # cos²(φ/2)
+        return np.where(a <= 0.5, 2 * np.arcsin(np.sqrt(a)), np.pi - 2 * np.arcsin(np.sqrt(b)))
+
+    def slot_curve(self):
+        """The slot's centre line as a :class:`~mechlab.mechanisms.curved_slot.ParametricSlot`
+        in the link's frame with parameter t = distance from B.
+
+        On the dwell it is the circle of radius l_OA about the link-frame image of O
+        (computed from that geometry, not from the law); on the transitions
+        c = S·(cos β, sin β) with β from the law, β_S = -S g/(r d), β_SS = -g/(r d) + S² G/(r d)².
+        Beyond [|r - d|, r + d] (never reached by the pin) the curve goes on with constant β_S,
+        so that the solver's root brackets see both ends.
+        """
+        from ..mechanisms.curved_slot import ParametricSlot
+
+        r, d = self.crank, self.pivot_distance
+        smax, smin = r + d, abs(r - d)
+        ends = np.array([smin, smax])
+        _, bS_end, _ = self._polar(ends)
+        b_end = self.beta(self.phi_of_distance(ends))[0]
+        pad = 0.05 * (smax - smin)
+
+        def polar(t):
+            t = np.asarray(t, dtype=float)
+            inside = (t >= smin) & (t <= smax)
+            beta, bS, bSS = (np.empty_like(t) for _ in range(3))
+            beta[inside], bS[inside], bSS[inside] = self._polar(t[inside])
+            for k, end in enumerate(ends):
+                out = (t > smax) if k else (t < smin)
+                beta[out] = b_end[k] + bS_end[k] * (t[out] - end)
+                bS[out] = bS_end[k]
+                bSS[out] = 0.0
+            return t, beta, bS, bSS
+
+        memo = {}
+
+        def frames(t):
+            # f, df, ddf are called one after the other with the same t: compute once
+            t = np.asarray(t, dtype=float)
+            key = (t.shape, t.tobytes())
+            if memo.get("key") != key:
+                S, beta, bS, bSS = polar(t)
+                er = np.stack([np.cos(beta), np.sin(beta)], axis=-1)
+                et = np.stack([-er[:, 1], er[:, 0]], axis=-1)
+                memo.update(key=key, value=(S, er, et, bS, bSS))
+            return memo["value"]
+
+        def f(t):
+            S, er, _, _, _ = frames(t)
+            c = S[:, None] * er   # a new array: the memo is not modified
+            dw = self._dwell_mask(S)
+            c[dw] = self._arc_point(S[dw])
+            return c
+
+        def df(t):
+            S, er, et, bS, _ = frames(t)
+            return er + (S * bS)[:, None] * et
+
+        def ddf(t):
+            S, er, et, bS, bSS = frames(t)
+            return (-S * bS**2)[:, None] * er + (2 * bS + S * bSS)[:, None] * et
+
+        return ParametricSlot(f, df, ddf, smin - pad, smax + pad)
+
+    def _dwell_mask(self, S):
+        phi = self.phi_of_distance(S)
+        return (phi >= self.phi1) & (phi <= self.phi2)
+
+    def _arc_point(self, S):
+        """Pin positions on the dwell arc at distance S from B, from the geometry of the dwell:
+        the link stands at ψ_B, so the pin is R(-ψ_B)·(A(φ) - B) with A on the crank circle."""
+        phi = self.phi_of_distance(S)
+        r, d = self.crank, self.pivot_distance
+        v = np.stack([r * np.cos(phi) + d, r * np.sin(phi)], axis=-1)
+        c, s = np.cos(self.psi_dwell), np.sin(self.psi_dwell)
+        return np.stack([c * v[:, 0] + s * v[:, 1], -s * v[:, 0] + c * v[:, 1]], axis=-1)
+
+    def _polar(self, S):
+        """β, dβ/dS, d²β/dS² of the slot at distances S ∈ [|r - d|, r + d] from B."""
+        rd = self.crank * self.pivot_distance
+        phi = self.phi_of_distance(S)
+        beta = self.beta(phi)[0]
+        g, G = self._g(phi, with_derivative=True)
+        return beta, -S * g / rd, -g / rd + S * S * G / rd**2
+
+
+@dataclass(frozen=True, eq=False)
+class DwellSlotMechanism(Mechanism):
+    """The curved-slot mechanism designed for a dwell (seed 000 §3, Fig. 9).
+
+    ``motion(phi)`` is solved through :class:`~mechlab.mechanisms.curved_slot.CurvedSlotLink`
+    with the designed slot (:meth:`DwellLaw.slot_curve`); ``law`` is the design it was
+    made from. ``roller_radius`` (≥ 0, below the slot's smallest radius of curvature on its
+    concave side) sets the slot's flanks for drawing and export.
+    """
+
+    lam: float
+    phi1: float
+    phi2: float
+    pivot_distance: float = 1.0
+    transition: str = "cubic"
+    roller_radius: float = 0.0
+
+    links = (("O", "A"),)
+    pivots = ("O", "B")
+    output = "angle"
+
+    def __post_init__(self):
+        law = DwellLaw(self.lam, self.phi1, self.phi2, self.transition, self.pivot_distance)
+        for k in ("lam", "phi1", "phi2", "pivot_distance"):
+            object.__setattr__(self, k, getattr(law, k))
+        object.__setattr__(self, "law", law)
+        rho = check_length("roller_radius", self.roller_radius, allow_zero=True)
+        object.__setattr__(self, "roller_radius", rho)
+        if rho > 0:
+            from .slot_export import check_roller
+            check_roller(self, rho)
+
+    @property
+    def crank(self) -> float:
+        return self.law.crank
+
+    @cached_property
+    def link(self):
+        """The :class:`~mechlab.mechanisms.curved_slot.CurvedSlotLink` with the designed slot."""
+        from ..mechanisms.curved_slot import CurvedSlotLink
+
+        link = CurvedSlotLink(self.crank, self.pivot_distance, self.law.slot_curve())
+        if not link.can_turn:  # pragma: no cover - the design covers the whole distance range
+            raise DwellError(f"the designed slot does not let the crank turn: {link.rotation_failure()}")
+        return link
+
+    def base(self):
+        """The base mechanism (straight slot through B)."""
+        return self.link.base()
+
+    def motion(self, phi):
+        """ψ, ψ', ψ'' and the pressure angle through the slot (the curved-slot solver)."""
+        return self.link.motion(phi)
+
+    def slot_points(self, n: int = 401) -> np.ndarray:
+        """(n, 2) points of the slot's centre line in the link frame, from the far end E
+        (φ = 0) to the near end (φ = π), as the solver's curve gives them."""
+        S = np.linspace(self.crank + self.pivot_distance, abs(self.crank - self.pivot_distance), n)
+        return self.link.slot.points(S)
+
+    def dwell_points(self, n: int = 101) -> np.ndarray:
+        """(n, 2) points of the dwell arc (link frame)."""
+        phi = np.linspace(self.phi1, self.phi2, n)
+        return self.law._arc_point(self.law.S(phi)[0])
+
+    def max_pressure_angle(self, n: int = 721) -> tuple[float, float]:
+        """(θ_max, φ at θ_max) over the whole turn from the solver's motion: a grid over [0, π]
+        (θ(-φ) = θ(φ): the pin is at the same slot point), the peak refined on the closed form
+        :meth:`DwellLaw.pressure_angle`, and θ re-evaluated there through the solver."""
+        from scipy.optimize import minimize_scalar
+
+        phi = np.linspace(0.0, np.pi, n)
+        th = self.motion(phi).pressure_angle
+        i = int(np.argmax(th))
+        best_phi, best = float(phi[i]), float(th[i])
+        lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, n - 1)]
+        res = minimize_scalar(lambda x: -self.law.pressure_angle(x)[0], bounds=(lo, hi), method="bounded",
+                              options={"xatol": 1e-10})
+        refined = float(self.motion(res.x).pressure_angle[0])
+        if refined > best:
+            best_phi, best = float(res.x), refined
+        return best, best_phi
+
+
+def curved_slot_dwell(lam, phi1, phi2, pivot_distance=1.0, transition="cubic", *,
+                      roller_radius=0.0) -> DwellSlotMechanism:
+    """Design the curved-slot dwell mechanism of seed 000 §3 (angles in radians, seed-000 frame).
+
+    λ = l_OA / l_OB (≠ 1; λ > 1 gives intermittent rotation), dwell [φ1, φ2] strictly inside
+    (0, π), ``transition`` one of :data:`TRANSITIONS`. Raises DwellRatioError,
+    DwellIntervalError (φ1 ≥ φ2, outside [0, π], touching 0 or π) or DwellError.
+    """
+    return DwellSlotMechanism(lam, phi1, phi2, pivot_distance, transition, roller_radius)
+
+
+# ---------------------------------------------------------------------------------------------
+# comparisons and limits
+# ---------------------------------------------------------------------------------------------
+def _jerk_jump(law: DwellLaw) -> float:
+    e = 1e-9
+    x = np.array([0.0, law.phi1, law.phi2, np.pi])
+    return float(np.abs(law(x + e).ddd - law(x - e).ddd).max())
+
+
+def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: int = 721) -> list[dict]:
+    """One row per transition law: ψ_B, peak |ψ'|, |ψ''| (through the slot, whole turn),
+    peak |ψ'''| and its largest jump at 0, φ1, φ2, π (from the law), the largest pressure
+    angle and where it occurs, the largest |κ| of the slot for φ ∈ [1°, 179°] and |κ| at its
+    ends (1e-6 rad inside them), and the smallest radius of curvature."""
+    from .slot_export import min_radius_of_curvature
+
+    rows = []
+    for tr in TRANSITIONS:
+        m = curved_slot_dwell(lam, phi1, phi2, pivot_distance, tr)
+        phi = m.turn(n)
+        mo = m.motion(phi)
+        law = m.law(phi)
+        th, where = m.max_pressure_angle()
+        inner = np.linspace(np.radians(1.0), np.radians(179.0), 1001)
+        rows.append(dict(
+            transition=tr,
+            psi_dwell_deg=float(np.degrees(m.law.psi_dwell)),
+            peak_dpsi=float(np.abs(mo.dpsi).max()),
+            peak_ddpsi=float(np.abs(mo.ddpsi).max()),
+            peak_jerk=float(np.abs(law.ddd).max()),
+            jerk_jump=_jerk_jump(m.law),
+            max_pressure_deg=float(np.degrees(th)),
+            where_deg=float(np.degrees(where)),
+            curvature_max=float(np.abs(m.law.curvature(inner)).max()),
+            curvature_end=float(np.abs(m.law.curvature(np.array([0.0, np.pi]))).max()),
+            min_radius=min_radius_of_curvature(m)[0],
+        ))
+    return rows
+
+
+def _worst(law: DwellLaw, n: int = 361):
+    phi = np.linspace(0.0, np.pi, n)
+    th = law.pressure_angle(phi)
+    i = int(np.argmax(th))
+    return float(th[i]), float(phi[i])
+
+
+def where_kind(law: DwellLaw, phi: float, tol: float = np.radians(0.5)) -> str:
+    """Name the place of a crank angle in the design: slot end, dwell end, transition, dwell."""
+    phi = abs(float(wrap(phi)))
+    if phi <= tol:
+        return "far slot end (φ = 0)"
+    if phi >= np.pi - tol:
+        return "near slot end (φ = 180°)"
+    if abs(phi - law.phi1) <= tol or abs(phi - law.phi2) <= tol:
+        return "dwell end"
+    if law.phi1 < phi < law.phi2:
+        return "dwell"
+    return "transition"
+
+
+def best_placement(lam, length, transition="cubic", pivot_distance=1.0, n_grid: int = 19):
+    """The dwell [φ1, φ1 + length] that minimises the largest pressure angle (law-based,
+    closed form): (θ_max, φ1). Grid over φ1, then a bounded refinement."""
+    from scipy.optimize import minimize_scalar
+
+    margin = 1e-3
+    lo, hi = margin, np.pi - length - margin
+    if hi <= lo:
+        raise DwellIntervalError(f"a dwell of {np.degrees(length):.2f}° leaves no room for both transitions")
+
+    def cost(p1):
+        return _worst(DwellLaw(lam, p1, p1 + length, transition, pivot_distance))[0]
+
+    grid = np.linspace(lo, hi, n_grid)
+    vals = np.array([cost(p) for p in grid])
+    i = int(np.argmin(vals))
+    a, b = grid[max(i - 1, 0)], grid[min(i + 1, n_grid - 1)]
+    res = minimize_scalar(cost, bounds=(a, b), method="bounded", options={"xatol": 1e-5})
+    return (float(res.fun), float(res.x)) if res.fun < vals[i] else (float(vals[i]), float(grid[i]))
+
+
+def dwell_limit(lam, theta_max, transition="cubic", pivot_distance=1.0) -> dict:
+    """The longest dwell whose largest pressure angle stays ≤ ``theta_max`` (radians) with the
+    best placement, by bisection on the dwell length. Seed 000 §3 says a dwell over 120°
+    makes the pressure angle large; this computes the actual limit and where θ is worst."""
+    lo, hi = np.radians(1.0), np.pi - np.radians(1.0)
+    if best_placement(lam, lo, transition, pivot_distance)[0] > theta_max:
+        raise DwellError(f"no dwell keeps the pressure angle ≤ {np.degrees(theta_max):.1f}° for λ = {lam:g} "
+                         f"with the {transition} transition")
+    for _ in range(30):
+        mid = 0.5 * (lo + hi)
+        if best_placement(lam, mid, transition, pivot_distance)[0] <= theta_max:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo < 2e-4:
+            break
+    th, p1 = best_placement(lam, lo, transition, pivot_distance)
+    law = DwellLaw(lam, p1, p1 + lo, transition, pivot_distance)
+    _, where = _worst(law, 3601)
+    return dict(max_dwell_deg=float(np.degrees(lo)), phi1=p1, phi2=p1 + lo, theta_deg=float(np.degrees(th)),
+                where_deg=float(np.degrees(where)), where=where_kind(law, where))
+
+
+def two_branch_slot(lam, phi2, pivot_distance=1.0) -> dict:
+    """The two-branch slot of seed 000 Fig. 10: the dwell starts at φ1 = 0, so the dwell arc
+    (radius l_OA about O, link at ψ_B = 0) passes through the slot's far point E.
+
+    Returns ``pressure_angle_at_E`` (π/2: the arc is tangent to the circle about B there),
+    ``dpsi_after`` = ψ'(0+) through the solver (the link dwells), ``dpsi_before`` = ψ'(0-) when
+    the pin comes back along the same branch (Table 2: 2ψ_K'(0) - ψ'(0+)), their difference
+    ``velocity_jump`` (= 2λ/(λ+1), times ω1), and ``link``: a factory of the curved-slot
+    mechanism with that arc, which raises SingularityError at φ = 0.
+    """
+    from ..mechanisms.curved_slot import CircleSlot, CurvedSlotLink
+
+    lam = check_lambda(lam)
+    d = check_length("pivot_distance", pivot_distance)
+    phi2 = float(phi2)
+    if not 0.0 < phi2 < np.pi:
+        raise DwellIntervalError(f"φ2 must lie in (0°, 180°), got {np.degrees(phi2):.2f}°")
+    r = lam * d
+
+    def link():
+        return CurvedSlotLink(r, d, CircleSlot((d, 0.0), r), start=0.0)
+
+    after = float(link().motion(np.array([0.5 * phi2])).dpsi[0])   # the link dwells on (0, φ2)
+    before = float(2 * base_law(lam, 0.0).d[0] - after)
+    # at E the slot point is c(0) = (d + r, 0) in the link frame (= B→E); θ = angle(tangent, radius)
+    E = link().slot.evaluate(np.array([0.0]))
+    cos_t = abs(float(E.p[0] @ E.d[0])) / (np.hypot(*E.p[0]) * np.hypot(*E.d[0]))
+    return dict(pressure_angle_at_E=float(np.arccos(cos_t)), dpsi_after=after,
+                dpsi_before=before, velocity_jump=before - after, link=link)
+

@@ -1,0 +1,330 @@
+"""Six-bar dwell mechanisms made by attaching a dyad to the coupler point D (seed 001, Figs. 1, 3).
+
+* МЧВ1 (:class:`LambdaRockerSixBar`, synthesis :func:`mchv1`): a circle-guiding lambda
+  mechanism, a connecting rod D-E of length R (so E sits near the arc centre Q while D runs
+  along the arc) and a rocker E-F. While D is in the band, E stays within about E of Q: the
+  rocker dwells. Synthesis by time ratio K and swing β_m (seed 001, formulas (14), (15) and
+  the construction of Fig. 3): the rocker is farthest out when DE lies on the normal to the
+  coupler curve at D, i.e. at the crank angle t = α + φ_n with φ_n = 2K(π − α)/(1 + K) after
+  the dwell centre; E1 = D1 + R·n there; F lies on the perpendicular bisector of Q-E1 and the
+  rocker length is b = S/(2 sin(β_m/2)) with S = |Q E1|.
+* МЧВ3 (:class:`LambdaSlottedSixBar`): a straight-line lambda mechanism whose coupler point
+  D drives a slotted link (straight slot, pin D) turning about a pivot P. With the slot
+  through P (offset 0) and P on the line of the straight part of the curve, beyond the curve,
+  the link oscillates with a dwell (МЧВ3-1М); with P on the straight part itself it turns
+  180° per crank turn with a dwell (МЧВ3-2М). The 360° variant МЧВ3-3М is reconstructed
+  (the abstract only says: pivot inside the curve, dwell adjusted by moving it): pivot inside
+  the curve just past the end of the straight part, slot offset from the pivot so that it lies
+  along the straight line — an approximate dwell whose residual motion is ≈ E/(distance of
+  the pivot's foot from the dwell part); moving the pivot along the line trades length against
+  accuracy. (With the pivot's foot inside the dwell part the slot is tangent to the offset
+  circle there and the residual grows to ≈ √(4E/e).)
+
+Frames and angles as in :mod:`mechlab.synthesis.lambda_guiding`: the dwell is centred on
+φ = π (A farthest from C); the crank turns counter-clockwise.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+import numpy as np
+from scipy.optimize import brentq
+from ..errors import MechanismError
+from ..geometry import as_angles, check_length, check_sign, cross
+from ..mechanisms.base import TWO_PI
+from .lambda_guiding import CircleGuide, StraightGuide
+from ..mechanisms.lambda_mechanism import _angle
+from ..errors import InfeasibleDesignError
+from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
+
+__all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_turn", "time_ratio_far_angle", "rise_law", "mchv3_full_turn", "dwell_extent", "slot_residual_first_order", "mchv3_full_turn_best"]
+
+
+def time_ratio_far_angle(K: float, dwell: float) -> float:
+    """Crank angle φ_n from the end of the dwell to the far extreme: K = φ_n / (2π − 2α − φ_n),
+    so φ_n = 2K(π − α)/(1 + K) (seed 001, (14)-(15))."""
+    alpha = dwell / 2
+    return 2 * K * (np.pi - alpha) / (1 + K)
+
+
+class SixBarReport(NamedTuple):
+    """What a simulation of a dwell six-bar shows (angles in radians)."""
+
+    dwell: float          # crank angle of the designed dwell 2α
+    residual: float       # range of ψ over the dwell (residual motion)
+    swing: float          # |ψ(far extreme) − ψ(dwell centre)|
+    far: float            # crank angle φ of the far extreme (ψ' = 0)
+    K: float              # measured time ratio (far − dwell end) / (next dwell start − far)
+    mu_min: float         # smallest transmission angle of the base four-bar over the turn
+    mu_max: float
+    mu2_min: float        # of the attached dyad
+    mu2_max: float
+
+
+def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1,
+          mu_min: float | None = np.radians(30)) -> LambdaRockerSixBar:
+    """МЧВ1 from a circle-guiding design, a time ratio K and a swing β_m (radians) — Fig. 3.
+
+    ``side`` picks F on one or the other side of the chord Q-E1. Raises InfeasibleDesignError
+    (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
+    ``mu_min`` is None — when the transmission angle D-E-F of the attached dyad leaves the working
+    range [μ_min, 180° − μ_min] over the turn (seed 001, §1.8: 30° ≤ μ ≤ 150°, the figure "cnm"
+    of Fig. 2a); pass ``mu_min=None`` to get such a design anyway.
+    """
+    if not isinstance(guide, CircleGuide):
+        raise TypeError("mchv1 needs a CircleGuide from circle_guiding(...)")
+    try:
+        K = float(K)
+    except (TypeError, ValueError):
+        raise InfeasibleDesignError(f"K must be a number, got {K!r}") from None
+    if not (np.isfinite(K) and K > 0):
+        raise InfeasibleDesignError(f"time ratio K must be > 0, got {K:g}")
+    swing = _angle("swing β_m", swing, 0.0, np.pi, closed_hi=False)
+    side = check_sign("side", side)
+    m, alpha, R, Q = guide.mechanism, guide.alpha, guide.R, guide.centre
+    phi_far = np.pi + alpha + time_ratio_far_angle(K, guide.dwell)
+    D1 = m.motion(np.array([phi_far])).points["D"]
+    v = D1.d[0] / np.hypot(*D1.d[0])
+    # the rod lies along the normal at D1, on the side of the arc centre (where E was)
+    n = np.array([-v[1], v[0]])
+    if n @ (Q - D1.p[0]) < 0:
+        n = -n
+    E1 = D1.p[0] + R * n
+    S = float(np.hypot(*(E1 - Q)))
+    if S < 1e-9:
+        raise InfeasibleDesignError("E does not move: the far position of E coincides with the arc centre")
+    b = S / (2 * np.sin(swing / 2))
+    U = 0.5 * (Q + E1)
+    w = (E1 - Q) / S
+    h = np.sqrt(max(b * b - S * S / 4, 0.0))
+    F = U + side * h * np.array([-w[1], w[0]])
+    # the assembly in which E sits at E1 at the far extreme (and near Q in the dwell)
+    asm = 1 if cross(F - D1.p[0], E1 - D1.p[0]) > 0 else -1
+    D0 = m.coupler_point(np.array([np.pi]))[0]
+    if (cross(F - D0, Q - D0) > 0) != (asm > 0):
+        raise InfeasibleDesignError(
+            f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the rod D-E would have to change "
+            f"assembly between the dwell and the far extreme; try the other side or a smaller swing")
+    try:
+        six = LambdaRockerSixBar(m.r, m.a, m.delta, R, b, float(F[0]), float(F[1]), asm, guide.dwell)
+    except MechanismError as err:
+        raise InfeasibleDesignError(f"K = {K:g}, β_m = {np.degrees(swing):.4g}°: {err}") from None
+    # the designed extreme must be the real far extreme of the simulated rocker
+    rep = report(six, guide.dwell)
+    if abs((rep.far - phi_far + np.pi) % TWO_PI - np.pi) > 1e-6 or abs(rep.swing - swing) > 0.25 * swing:
+        raise InfeasibleDesignError(
+            f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the simulated rocker's far extreme is at "
+            f"φ = {np.degrees(rep.far):.2f}°, not at the designed {np.degrees(phi_far % TWO_PI):.2f}°")
+    if mu_min is not None:
+        lo = _angle("mu_min", mu_min, 0.0, np.pi / 2)
+        if rep.mu2_min < lo or rep.mu2_max > np.pi - lo:
+            bad = rep.mu2_min if rep.mu2_min < lo else rep.mu2_max
+            raise InfeasibleDesignError(
+                f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the transmission angle D-E-F reaches "
+                f"{np.degrees(bad):.1f}°, outside {np.degrees(lo):g}°…{180 - np.degrees(lo):g}° (mu_min); "
+                f"pass mu_min=None to accept it")
+    return six
+
+
+def _far_extreme(mech, dwell: float) -> float:
+    """Crank angle (in (π + α, 3π − α)) of the rocker's far extreme: ψ' = 0 farthest from ψ(π)."""
+    alpha = dwell / 2
+    phi = np.linspace(np.pi + alpha, 3 * np.pi - alpha, 2001)
+    mo = mech.motion(phi)
+    ref = mech.motion(np.array([np.pi])).psi[0]
+    i = int(np.argmax(np.abs(mo.psi - ref)))
+    lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, len(phi) - 1)]
+    f = lambda x: mech.motion(np.array([x])).dpsi[0]
+    if f(lo) * f(hi) > 0:
+        return float(phi[i] % TWO_PI)
+    return float(brentq(f, lo, hi, xtol=1e-14) % TWO_PI)
+
+
+def report(mech, dwell: float) -> SixBarReport:
+    """Simulate a dwell six-bar over a turn: residual motion in the dwell (centred on φ = π),
+    swing, far extreme, measured K and transmission angles."""
+    alpha = dwell / 2
+    mo = mech.motion(np.linspace(0, TWO_PI, 2881))
+    inside = mech.motion(np.pi + np.linspace(-alpha, alpha, 801)).psi
+    far = _far_extreme(mech, dwell)
+    psi_far = mech.motion(np.array([far])).psi[0]
+    psi0 = mech.motion(np.array([np.pi])).psi[0]
+    t = (far - np.pi) % TWO_PI  # thesis angle of the far extreme
+    K = (t - alpha) / (TWO_PI - alpha - t)
+    mu_base = mech.base.motion(mo.phi).transmission
+    return SixBarReport(dwell, float(np.ptp(inside)), float(abs(psi_far - psi0)), far, float(K),
+                        float(mu_base.min()), float(mu_base.max()), float(mo.transmission.min()),
+                        float(mo.transmission.max()))
+
+
+def _line_frame(guide: StraightGuide):
+    m = guide.mechanism
+    e = m.axis
+    foot = m.C + guide.Y * e  # the point of the straight line on the axis
+    return m, e, foot
+
+
+def mchv3_oscillating(guide: StraightGuide, distance: float) -> LambdaSlottedSixBar:
+    """МЧВ3-1М: pivot on the straight line, ``distance`` (units of l) beyond the end D1 of the
+    straight part: the slot stays along the line during the dwell, the link oscillates."""
+    m, e, foot = _line_frame(guide)
+    distance = check_length("distance", distance)
+    half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
+    along = np.array([-e[1], e[0]])
+    P = foot - (half + distance) * along
+    return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), 0.0, guide.dwell)
+
+
+def mchv3_half_turn(guide: StraightGuide) -> LambdaSlottedSixBar:
+    """МЧВ3-2М: pivot on the straight part of the path (at D0): 180° per crank turn with a dwell."""
+    m = guide.mechanism
+    P = m.coupler_point(np.array([np.pi]))[0]
+    return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), 0.0, guide.dwell)
+
+
+def rise_law(mech, dwell: float, n: int = 4001):
+    """Output law over the rise: from the end of the dwell (φ = π + α) to the far extreme.
+
+    Returns (φ, ψ, ψ', ψ'') sampled on n points, ready for
+    :func:`mechlab.analysis.motion_laws.rise_invariants` (seed 001, chapter 2)."""
+    far = _far_extreme(mech, dwell)
+    start = np.pi + dwell / 2
+    end = far if far > start else far + TWO_PI
+    phi = np.linspace(start, end, n)
+    mo = mech.motion(phi)
+    return phi, mo.psi, mo.dpsi, mo.ddpsi
+
+
+def mchv3_full_turn(guide: StraightGuide, beyond: float = 0.06, depth: float = 0.05, side: int = 1) -> LambdaSlottedSixBar:
+    """МЧВ3-3М (as reconstructed): 360° per crank turn with an approximate dwell.
+
+    The pivot P sits inside the coupler curve, ``beyond`` past one end of the dwell part of the
+    straight line (``side`` ±1 picks the end) and ``depth`` into the curve; the slot is offset
+    from P by ``depth``, so on the straight part it lies along the line itself. As D runs along
+    the line the slot stays put up to ≈ E/s (s = D's distance from the foot of P on the line,
+    ≥ ``beyond``): the residual motion is of order E/beyond, and moving P along the line trades
+    the dwell's length for its accuracy (the thesis' adjustable dwell). The defaults suit
+    Chebyshev's lambda (2α = 180°). Raises InfeasibleDesignError if P is not inside the curve.
+
+    The residual is not caused by the pivot being inside the curve: for D exactly on the line the
+    slot *is* the line (it is tangent to the offset circle), so an exact straight segment would dwell
+    exactly; to first order the slot turns by h/s (:func:`slot_residual_first_order`; h = D's distance
+    from the line, ≤ E). With 2α = 180° the curve leaves ≤ 0.065 l for the pivot past the dwell end, so
+    over the full 180° the defaults give 2.15° and the best pivot 2.01° (:func:`mchv3_full_turn_best`):
+    ~2° is inherent there; a guide designed for a shorter dwell does better (160°: 0.94°, 140°: 0.55°).
+    """
+    m, e, foot = _line_frame(guide)
+    beyond = check_length("beyond", beyond, allow_zero=True)
+    depth = check_length("depth", depth)
+    side = check_sign("side", side)
+    along = np.array([-e[1], e[0]])
+    half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
+    P = foot + side * (half + beyond) * along + depth * e
+    best = None
+    for off in (depth, -depth):
+        try:
+            cand = LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), off, guide.dwell)
+        except MechanismError:
+            continue
+        if abs(cand.turns) != 1:
+            continue
+        res = np.ptp(cand.motion(np.pi + np.linspace(-0.3, 0.3, 7) * guide.dwell / 2).psi)
+        if best is None or res < best[0]:
+            best = (res, cand)
+    if best is None:
+        raise InfeasibleDesignError(
+            f"beyond = {beyond:g}, depth = {depth:g}: the pivot is not inside the coupler curve (or the slot "
+            f"cannot reach the pin), so the link does not turn once per crank turn")
+    return best[1]
+
+
+def dwell_extent(mech, tol: float = 0.02, n: int = 2881) -> float:
+    """Crank angle around φ = π over which |ψ'| stays below tol·max|ψ'| (the usable dwell)."""
+    phi = mech.cycle(n)
+    d = np.abs(mech.motion(phi).dpsi)
+    still = d <= tol * d.max()
+    i0 = int(np.argmin(np.abs(phi - np.pi)))
+    if not still[i0]:
+        return 0.0
+    lo = i0
+    while lo > 0 and still[lo - 1]:
+        lo -= 1
+    hi = i0
+    while hi < len(phi) - 1 and still[hi + 1]:
+        hi += 1
+    return float(phi[hi] - phi[lo])
+
+
+def slot_residual_first_order(mech: LambdaSlottedSixBar, guide: StraightGuide, phi) -> np.ndarray:
+    """First-order turn of the МЧВ3-3М slot away from the guide's line L at crank angles φ (radians).
+
+    Derivation: the slot is the tangent from the pin D to the circle of radius |e| about P; P sits
+    at distance |e| from L, so for D exactly on L that tangent *is* L, whatever D's position on it —
+    an exact straight segment would give an exact dwell, the pivot inside the curve costs nothing.
+    With D off L by h = x − Y (x: D's coordinate along the axis) and at s = y − y_P along L from
+    the foot of P (the tangent point), the tangent turns about that point by atan(h/s) ≈ h/s. So the
+    residual motion over the dwell is ≈ ptp(h/s): the straightness E of the guide divided by D's
+    distance from the pivot's foot, worst at the dwell end nearest the pivot (E/beyond).
+    Returns h/s (compare differences: the simulated ψ − ψ(φ0) ≈ ±(h/s − (h/s)(φ0)))."""
+    m = mech.base
+    x, y = m.axis_coordinates(as_angles(phi))
+    e = m.axis
+    yP = (mech.P - m.C) @ np.array([-e[1], e[0]])
+    return (x - guide.Y) / (y - yP)
+
+
+def mchv3_full_turn_best(guide: StraightGuide, side: int = 1, max_speed: float | None = 15.0,
+                         beyonds=np.arange(0.0, 0.5001, 0.005), depths=np.arange(0.005, 0.2001, 0.005)):
+    """МЧВ3-3М with the pivot placed for the smallest residual over the guide's dwell.
+
+    Scans the pivot's position (``beyonds`` past the dwell end × ``depths`` into the curve) with the
+    first-order residual ptp(h/s) of :func:`slot_residual_first_order` (no dyad solve), keeping pivots
+    inside the coupler curve (winding number ±1: the link turns once per crank turn) whose offset
+    circle the pin's path clears; candidates are tried best first, built by :func:`mchv3_full_turn`
+    and simulated, until one whose peak |ψ'| over the turn (fine grid) is ≤ ``max_speed`` (None: no
+    limit). The bound matters: the smallest residuals come with the pin grazing the offset circle,
+    where the link whips round (ψ' ≈ 96, ψ'' ≈ 13 000 for the 180° optimum without it).
+    Returns (mechanism, simulated residual = range of ψ over the guide's dwell).
+
+    Findings (δ = 180°, a = 0.8, :func:`straight_guiding`; residual over the guide's dwell): for
+    Chebyshev's 2α = 180° no pivot inside the curve lies farther than ≈ 0.065 l past the dwell end, so
+    the residual cannot drop much below E/0.065 ≈ 1.7°: the best found is 2.01° (pivot 0.065 l past,
+    0.04 l deep; peak ψ' 13.9, ψ'' 758) against the reconstruction's default (0.06, 0.05) with 2.15°
+    (ψ' 13.4, ψ'' 276); without the speed bound 2.03° with ψ' ≈ 96. A free Nelder-Mead over P and e
+    at the default's clearance gives 2.12°. So the ~2° is inherent to a 180° straight part, not a poor
+    choice of pivot. Shorter dwells leave the pivot room: a guide for 2α = 160° gives 0.94°, 140° 0.55°.
+    """
+    m, e, foot = _line_frame(guide)
+    side = check_sign("side", side)
+    half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
+    xc, yc = m.axis_coordinates(np.linspace(0, TWO_PI, 1441))
+    t = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 121) + 1e-6
+    xd, yd = m.axis_coordinates(t)
+    h = xd - guide.Y
+    beyonds = np.asarray(beyonds, dtype=float)
+    yP = side * (half + beyonds)
+    cands = []
+    for depth in np.asarray(depths, dtype=float):
+        dx, dy = xc[None, :] - (guide.Y + depth), yc[None, :] - yP[:, None]
+        ang = np.unwrap(np.arctan2(dy, dx), axis=1)
+        winding = np.round((ang[:, -1] - ang[:, 0]) / TWO_PI)
+        gap = np.hypot(dx, dy).min(axis=1) - depth
+        with np.errstate(divide="ignore", invalid="ignore"):
+            res = np.ptp(h[None, :] / (yd[None, :] - yP[:, None]), axis=1)
+        ok = (winding != 0) & (gap > 1e-4)
+        cands += [(res[i], beyonds[i], depth) for i in np.nonzero(ok)[0]]
+    cands.sort()
+    phi = np.linspace(0, TWO_PI, 20001) + 1e-6
+    dwell = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 2001) + 1e-6
+    for _, beyond, depth in cands[:400]:
+        try:
+            mech = mchv3_full_turn(guide, float(beyond), float(depth), side)
+            if max_speed is not None and np.abs(mech.motion(phi).dpsi).max() > max_speed:
+                continue
+        except MechanismError:
+            continue
+        return mech, float(np.ptp(mech.motion(dwell).psi))
+    raise InfeasibleDesignError(
+        f"no pivot inside the coupler curve gives a full-turn link with peak |ψ'| ≤ {max_speed} for the dwell "
+        f"2α = {np.degrees(guide.dwell):.4g}°")
+

@@ -1,0 +1,289 @@
+"""Six-bar dwell mechanisms with a translating output on the lambda mechanism: МЧВ2 and МЧВ5
+(seed 001, chapter 1, the list of kinds before Fig. 1 and the caption of Fig. 1 в, д).
+
+Seed 001 sorts its dwell six-bars by the class-II group attached to the coupler point D:
+kind 1 (RRR, МЧВ1), kind 2 (RRP, МЧВ2), kind 3 (RPR, МЧВ3) and kind 5 (RPP, МЧВ5). The abstract
+only names МЧВ2 and МЧВ5, says that the program SK5 synthesises МЧВ2 (whose dyad's transmission
+angle it calls μ2′) and that "МЧВ3 and МЧВ5 allow a simple rigid locking of the output during its
+stop". The geometry below is reconstructed from that and from the МЧВ1 construction (Fig. 3,
+formulas (14)-(15)); what was assumed is stated with each mechanism.
+
+МЧВ2, :class:`LambdaSliderSixBar` (circle guide): a rod D-E of length R and a slider E on a fixed
+straight guide **through the arc centre Q**. While D runs along the arc (|DQ| = R ± E) the circle of
+radius R about D passes within about E of Q, so the slider stays at Q to the order of E: E = Q + s·u
+with s = (D−Q)·u ± √(R² − ((D−Q)×u)²) (the RRP dyad of :func:`mechlab.geometry.dyad_rrp`); in the
+dwell the root is the one near 0, |s| ≈ | |DQ|² − R² | / (2|(D−Q)·u|) ≤ E/cos β, β the angle between
+QD and the guide. Assumed: the guide's direction is the design freedom. As for МЧВ1 the slider is
+farthest out where the rod lies on the normal n-n to D's path (s' = (E−D)·D'/((E−D)·u) = 0), at
+the crank angle t = α + φ_n after the dwell centre, φ_n = 2K(π − α)/(1 + K) (14)-(15); so for a
+time ratio K the far position is E1 = D1 + R·n and the guide is the line Q-E1: the stroke is
+h = |QE1| (:func:`mchv2`). K = 1 puts the guide on the symmetry axis and gives the smallest stroke,
+h = R − |QD(0)|; the seed's "S = |D0D1| at K = 1" (text after (15)) holds to E: |D0D1| = R0 − |QD(0)|
+= h + (R0 − R). A larger stroke needs K ≠ 1 (:func:`mchv2_stroke`); h(K) = h(1/K) (mirror guides).
+The dwell holds while (D − Q)·u keeps its sign over the dwell, and then the residual is bounded by
+2·max|ρ² − R²| / min|(D − Q)·u| (≈ 2E/cos β; → 2E as the dwell shrinks). The transmission angle of the dyad, μ2′, is
+defined as for a slider-crank: the angle between the rod D-E and the normal to the guide,
+μ2′ = π/2 − β with sin β = (distance of D from the guide)/R; the slider's pressure angle is β.
+
+МЧВ5, :class:`LambdaTranslatingSlot` (straight-line guide): a block pinned at D slides in a straight
+slot of an output link that translates in a fixed guide. The slot is parallel to the straight part
+of D's path (perpendicular to the symmetry axis e), so while D runs along it the output stands still
+to within the deviation E. With the slot direction v and the guide direction w, the slot line through
+P + s·w contains D: s = v×(D − P) / (v×w) — a closed form, and its analogs are the same projection
+of D′ and D″. With the guide along e (:func:`mchv5`, γ = 0) s = x − Y, the axis coordinate of D minus
+the line's offset: the residual is exactly 2E; turning the guide by γ scales the stroke by 1/cos γ
+at the price of a constant pressure angle γ. The time ratio is K = 1 whatever γ (x(π + t) = x(π − t)
+by the curve's symmetry), so K cannot be chosen.
+
+The circle-guide counterpart of МЧВ5 is **not** a straight slot: a translating link whose slot is an
+arc of radius R about a point E of the link holds the block D at distance R from E, which is the rod
+D-E of МЧВ2 (a curved slot replaces a binary link, chapter 1 of this course), so on a circle guide the
+translating slotted link is МЧВ2 again, with the same s(φ).
+
+Frames as in :mod:`mechlab.synthesis.lambda_guiding`: O = (0, 0), C = (a, 0), the dwell centred on
+φ = π, the crank turning counter-clockwise, lengths in units of l.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+import numpy as np
+from scipy.optimize import brentq
+from ..errors import MechanismError
+from ..geometry import check_length, check_sign
+from ..mechanisms.base import TWO_PI
+from ..motion import AngularMotion
+from ..analysis.motion_laws import Invariants, rise_invariants
+from .lambda_guiding import CircleGuide, StraightGuide
+from ..mechanisms.lambda_mechanism import _angle
+from ..errors import InfeasibleDesignError
+from .lambda_sixbars import report, rise_law, time_ratio_far_angle
+from ..mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
+
+__all__ = ["mchv2", "mchv2_stroke", "mchv2_far_position", "mchv5", "SliderReport", "slider_report", "slider_rise", "slider_invariants"]
+
+
+def mchv2_far_position(guide: CircleGuide, K: float, normal: int = 1):
+    """The far crank angle φ_far = π + α + φ_n and the far position E1 = D1 + R·n of the slider
+    for a time ratio K (n the unit normal to D's path at D1, on the side of Q for ``normal`` = +1 as
+    in МЧВ1's Fig. 3, on the other side for −1). Returns (φ_far, D1, E1)."""
+    normal = check_sign("normal", normal)
+    if not isinstance(guide, CircleGuide):
+        raise TypeError("МЧВ2 needs a CircleGuide from circle_guiding(...)")
+    try:
+        K = float(K)
+    except (TypeError, ValueError):
+        raise InfeasibleDesignError(f"K must be a number, got {K!r}") from None
+    if not (np.isfinite(K) and K > 0):
+        raise InfeasibleDesignError(f"time ratio K must be > 0, got {K:g}")
+    m, Q = guide.mechanism, guide.centre
+    phi_far = np.pi + guide.alpha + time_ratio_far_angle(K, guide.dwell)
+    D1 = m.motion(np.array([phi_far])).points["D"]
+    v = D1.d[0] / np.hypot(*D1.d[0])
+    n = np.array([-v[1], v[0]])
+    if n @ (Q - D1.p[0]) < 0:
+        n = -n
+    return phi_far, D1.p[0], D1.p[0] + normal * guide.R * n
+
+
+def mchv2(guide: CircleGuide, K: float = 1.0, *, normal: int | None = None,
+          mu_min: float | None = np.radians(30)) -> LambdaSliderSixBar:
+    """МЧВ2 for a circle-guiding design and a time ratio K: rod DE = R, guide through Q and E1.
+
+    The slider's stroke is then h = |QE1| (:func:`mchv2_far_position`); K = 1 gives the guide along
+    the symmetry axis. The assembly is the one that keeps E at Q during the dwell. At the far
+    extreme the rod lies on the normal to D's path, on Q's side (``normal`` = +1, as in МЧВ1) or on
+    the other (−1; for some designs only this one is reached on the dwell's assembly); None tries
+    +1, then −1. Raises InfeasibleDesignError with the numbers when the design does not work: the
+    guide turns across QD during the dwell ((D − Q)·u changes sign, so the slider leaves Q), the rod
+    would stand across the guide somewhere, the simulated far extreme is not the designed one, or the
+    transmission angle μ2′ falls below ``mu_min`` (radians; by default the thesis' working limit 30°,
+    as for :func:`mchv1`; ``mu_min=None`` accepts any).
+    """
+    if normal is not None:
+        return _mchv2(guide, K, normal, mu_min)
+    try:
+        return _mchv2(guide, K, 1, mu_min)
+    except InfeasibleDesignError as inner:
+        try:
+            return _mchv2(guide, K, -1, mu_min)
+        except InfeasibleDesignError as outer:
+            raise InfeasibleDesignError(f"{inner}; with the rod on the outer normal instead: {outer}") from None
+
+
+def _mchv2(guide: CircleGuide, K: float, normal: int, mu_min: float | None) -> LambdaSliderSixBar:
+    phi_far, D1, E1 = mchv2_far_position(guide, K, normal)
+    Q, R = guide.centre, guide.R
+    h = float(np.hypot(*(E1 - Q)))
+    if h < 1e-9:
+        raise InfeasibleDesignError(f"K = {K:g}: the far position E1 coincides with the arc centre Q (no stroke)")
+    u = (E1 - Q) / h
+    theta = float(np.arctan2(u[1], u[0]))
+    m = guide.mechanism
+    D0 = m.coupler_point(np.array([np.pi]))[0]
+    along = float((D0 - Q) @ u)
+    if abs(along) < 1e-9 * R:
+        raise InfeasibleDesignError(f"K = {K:g}: the guide is perpendicular to QD0, the rod stands across it "
+                                    f"in the middle of the dwell")
+    asm = -1 if along > 0 else 1  # the root of the RRP dyad near s = 0 while |DQ| ≈ R
+    # dwell: |s| = |ρ² − R²| / (|w| + √(w² − ρ² + R²)), w = (D − Q)·u, small if w keeps its sign
+    al = (m.coupler_point(np.pi + np.linspace(-guide.alpha, guide.alpha, 801)) - Q) @ u
+    if al.min() * al.max() <= 0:
+        raise InfeasibleDesignError(
+            f"K = {K:g}: the guide (at {np.degrees(theta):.2f}°) turns across QD during the dwell, (D − Q)·u runs "
+            f"from {al.min():.4g} to {al.max():.4g}: the slider leaves Q, the dwell is lost")
+    try:
+        six = LambdaSliderSixBar(m.r, m.a, m.delta, R, float(Q[0]), float(Q[1]), theta, asm, guide.dwell)
+        at_far = six.motion(np.array([phi_far])).s[0]
+    except MechanismError as err:
+        raise InfeasibleDesignError(f"МЧВ2 with K = {K:g} (stroke {h:.4g}): {err}") from None
+    if abs(at_far - h) > 1e-9 * max(1.0, h):
+        raise InfeasibleDesignError(
+            f"K = {K:g}: on the assembly that holds E at Q in the dwell the slider reaches s = {at_far:.6g} at "
+            f"φ_far = {np.degrees(phi_far % TWO_PI):.2f}°, not E1 (s = {h:.6g}): E1 lies on the other assembly")
+    rep = slider_report(six, guide.dwell)
+    if abs((rep.far - phi_far + np.pi) % TWO_PI - np.pi) > 1e-6:
+        raise InfeasibleDesignError(
+            f"K = {K:g}: the simulated slider's far extreme is at φ = {np.degrees(rep.far):.2f}°, not at the "
+            f"designed {np.degrees(phi_far % TWO_PI):.2f}° (stroke {rep.stroke:.4g} instead of {h:.4g})")
+    if mu_min is not None and rep.mu2_min < mu_min:
+        raise InfeasibleDesignError(
+            f"K = {K:g}: the transmission angle μ2′ of the slider dyad falls to {np.degrees(rep.mu2_min):.2f}°, "
+            f"below the allowed {np.degrees(mu_min):.4g}°")
+    return six
+
+
+def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float = 20.0, *, normal: int = 1,
+                 mu_min: float | None = np.radians(30)) -> LambdaSliderSixBar:
+    """МЧВ2 with a requested stroke h = |QE1| (units of l): the time ratio K is solved for.
+
+    h(K) is smallest at K = 1 (guide on the axis) and, with the mirror symmetry, h(K) = h(1/K);
+    ``side`` = +1 returns the solution with K ≥ 1, −1 the one with K ≤ 1. The smallest K on that
+    side with h(K) = h is found by a scan of K ∈ [1, ``K_max``] and brentq (``normal`` as in
+    :func:`mchv2`, here fixed: h(K) depends on it; ``mu_min`` as there). Raises
+    InfeasibleDesignError naming the achievable range when h cannot be met.
+    """
+    h = check_length("stroke h", stroke)
+    side = check_sign("side", side)
+
+    def gap(k):  # k ≥ 1; K = k or 1/k
+        _, _, E1 = mchv2_far_position(guide, k if side > 0 else 1 / k, normal)
+        return float(np.hypot(*(E1 - guide.centre))) - h
+
+    ks = np.geomspace(1.0, K_max, 121)
+    g = np.array([gap(k) for k in ks])
+    hs = g + h
+    if g[0] > 0:
+        raise InfeasibleDesignError(
+            f"stroke h = {h:.6g} is below the smallest stroke of МЧВ2 on this guide, h(K = 1) = {hs[0]:.6g} "
+            f"(guide along the symmetry axis)")
+    up = np.nonzero((g[:-1] <= 0) & (g[1:] > 0))[0]
+    if len(up) == 0:
+        raise InfeasibleDesignError(
+            f"stroke h = {h:.6g} exceeds the largest stroke |QE1| = {hs.max():.6g} of МЧВ2 on this guide "
+            f"for K in [1/{K_max:g}, {K_max:g}]")
+    i = int(up[0])
+    k = brentq(gap, ks[i], ks[i + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps)
+    return mchv2(guide, k if side > 0 else 1 / k, normal=normal, mu_min=mu_min)
+
+
+def _axis_stroke(guide: StraightGuide) -> float:
+    """Range of the axis coordinate x of D over a turn: the stroke of МЧВ5 with γ = 0."""
+    m = guide.mechanism
+    phi = np.linspace(0.0, TWO_PI, 2881)
+    x = m.axis_coordinates(phi)[0]
+
+    def dx(t):
+        return float(m.motion(np.array([t])).points["D"].d[0] @ m.axis)
+
+    ext = []
+    for i in (int(np.argmin(x)), int(np.argmax(x))):
+        lo, hi = phi[i] - phi[1], phi[i] + phi[1]
+        t = brentq(dx, lo, hi, xtol=1e-15) if dx(lo) * dx(hi) < 0 else phi[i]
+        ext.append(float(m.axis_coordinates(np.array([t]))[0][0]))
+    return ext[1] - ext[0]
+
+
+def mchv5(guide: StraightGuide, stroke: float | None = None, *, guide_angle: float | None = None,
+          side: int = 1, max_pressure: float = np.radians(60)) -> LambdaTranslatingSlot:
+    """МЧВ5 on a straight-line design: slot along the straight part of D's path (perpendicular to
+    the axis e), through its foot P = C + Y·e, output guide turned by γ from e.
+
+    Give either ``guide_angle`` γ (radians, default 0: s = x − Y, stroke h0 = range of x) or a
+    ``stroke`` h ≥ h0 (γ = arccos(h0/h), turned by ``side``·γ). Raises InfeasibleDesignError
+    when h < h0 or the needed pressure angle γ exceeds ``max_pressure``.
+    """
+    if not isinstance(guide, StraightGuide):
+        raise TypeError("МЧВ5 needs a StraightGuide from straight_guiding(...)")
+    side = check_sign("side", side)
+    if stroke is not None and guide_angle is not None:
+        raise MechanismError("give either the stroke or the guide angle γ, not both")
+    h0 = _axis_stroke(guide)
+    if stroke is not None:
+        h = check_length("stroke h", stroke)
+        if h < h0 * (1 - 1e-12):
+            raise InfeasibleDesignError(
+                f"stroke h = {h:.6g} is below the stroke h0 = {h0:.6g} of the slot across the axis: a translating "
+                f"slot parallel to the straight part moves at least h0 (h = h0/cos γ)")
+        gamma = side * float(np.arccos(min(h0 / h, 1.0)))
+    else:
+        gamma = _angle("guide angle γ", 0.0 if guide_angle is None else guide_angle, -np.pi / 2, np.pi / 2,
+                       closed_hi=False)
+    if abs(gamma) > max_pressure:
+        raise InfeasibleDesignError(
+            f"the output's guide would be turned by γ = {np.degrees(abs(gamma)):.4g}° from the slot normal "
+            f"(stroke {h0 / np.cos(gamma):.6g} = h0/cos γ, h0 = {h0:.6g}): its pressure angle exceeds the allowed "
+            f"{np.degrees(max_pressure):.4g}°")
+    m = guide.mechanism
+    e = m.axis
+    P = m.C + guide.Y * e
+    ang = float(np.arctan2(e[1], e[0]))
+    return LambdaTranslatingSlot(m.r, m.a, m.delta, float(P[0]), float(P[1]), ang + np.pi / 2, ang + gamma,
+                                 guide.dwell)
+
+
+# --------------------------------------------------------------------------------------------
+# Simulation: the same measures as the rotating-output six-bars
+# --------------------------------------------------------------------------------------------
+class _AsAngle:
+    """A translating-output six-bar presented to :func:`.sixbars.report` and
+    :func:`.sixbars.rise_law`, which read ψ: here ψ := s (so "swing" reads as the stroke)."""
+
+    def __init__(self, mech):
+        self.mech, self.base = mech, mech.base
+
+    def motion(self, phi) -> AngularMotion:
+        mo = self.mech.motion(phi)
+        return AngularMotion(mo.phi, mo.points, lambda _: mo.transmission, mo.s, mo.ds, mo.dds)
+
+
+class SliderReport(NamedTuple):
+    """What a simulation of a translating-output dwell six-bar shows (lengths in units of l)."""
+
+    dwell: float      # crank angle of the designed dwell 2α
+    residual: float   # range of s over the dwell (residual motion)
+    stroke: float     # |s(far extreme) − s(dwell centre)|
+    far: float        # crank angle φ of the far extreme (s′ = 0)
+    K: float          # measured time ratio (far − dwell end) / (next dwell start − far)
+    mu_min: float     # smallest transmission angle of the base four-bar over the turn
+    mu_max: float
+    mu2_min: float    # of the attached group (μ2′ for МЧВ2; constant for МЧВ5)
+    mu2_max: float
+
+
+def slider_report(mech, dwell: float | None = None) -> SliderReport:
+    """Simulate МЧВ2 or МЧВ5 over a turn (the measures of :func:`.sixbars.report`): residual motion
+    in the dwell centred on φ = π, stroke, far extreme, measured K, transmission angles."""
+    dwell = mech.dwell if dwell is None else dwell
+    return SliderReport(*report(_AsAngle(mech), dwell))
+
+
+def slider_rise(mech, dwell: float | None = None, n: int = 4001):
+    """(φ, s, s′, s″) over the rise, from the end of the dwell to the far extreme (:func:`.sixbars.rise_law`)."""
+    return rise_law(_AsAngle(mech), mech.dwell if dwell is None else dwell, n)
+
+
+def slider_invariants(mech, dwell: float | None = None) -> Invariants:
+    """B, C, D of the rise (:func:`mechlab.analysis.motion_laws.rise_invariants`; seed 001, chapter 2)."""
+    return rise_invariants(*slider_rise(mech, dwell))
+

@@ -1,0 +1,163 @@
+"""The designed slot for manufacture: centre line, the two flanks for a roller, CSV and DXF.
+
+A roller of radius ρ on the crank pin runs between two flanks, the offsets of the slot's
+centre line by ±ρ along its normal (link frame, origin at the link pivot B, x axis the
+link's reference line: the frame of :class:`mechlab.synthesis.dwell_slot.DwellSlotMechanism`). An
+offset is a faithful flank only while ρ stays below the centre line's radius of
+curvature; where 1/|κ| ≤ ρ the flank on the concave side folds over (the cutter
+would undercut it), so :func:`check_roller` refuses such a roller. The cubic transition
+of seed 000 (21), (23) has κ ∝ 1/φ towards the slot's ends, so no roller of positive
+radius reproduces its centre line there exactly; the quintic and sextic laws keep κ bounded.
+
+The slot's ends (where the pin turns back, φ = 0 and π) are closed by half circles of
+radius ρ. The DXF (written with ezdxf, units mm) has layers ``CENTRE`` (the centre line,
+an LWPOLYLINE), ``DWELL`` (the dwell part of the centre line as an exact ARC of radius
+l_OA about the link-frame image of O), ``FLANKS`` (two LWPOLYLINEs and the two end ARCs).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import MechanismError
+
+
+class SlotUndercutError(MechanismError):
+    """The roller is too large for the slot's curvature (a flank would fold over)."""
+
+
+@dataclass(frozen=True)
+class SlotProfile:
+    """Sampled slot in the link frame: crank angles φ ∈ [0, π] (the pin's positions), the
+    distance S from B, centre line, unit normals, curvature κ, and the flanks at ±ρ."""
+
+    phi: np.ndarray
+    S: np.ndarray
+    centre: np.ndarray
+    normal: np.ndarray
+    curvature: np.ndarray
+    roller_radius: float
+
+    @property
+    def left(self) -> np.ndarray:
+        """Flank on the side of +normal (normal = tangent turned +90°, tangent towards B)."""
+        return self.centre + self.roller_radius * self.normal
+
+    @property
+    def right(self) -> np.ndarray:
+        return self.centre - self.roller_radius * self.normal
+
+
+def _grid(n: int) -> np.ndarray:
+    # crank angles over the half turn: the pin passes each slot point once
+    return np.linspace(0.0, np.pi, n)
+
+
+def min_radius_of_curvature(mechanism, n: int = 2001) -> tuple[float, float]:
+    """(smallest radius of curvature of the centre line, crank angle φ where it occurs),
+    on a grid over [0, π] refined logarithmically towards both ends (down to 1e-6 rad)."""
+    ends = np.logspace(-6, -1, 41)
+    phi = np.unique(np.concatenate([_grid(n), ends, np.pi - ends]))
+    k = np.abs(mechanism.law.curvature(phi))
+    i = int(np.argmax(k))
+    return float(1.0 / k[i]), float(phi[i])
+
+
+def check_roller(mechanism, roller_radius: float) -> None:
+    """SlotUndercutError if ρ ≥ the centre line's smallest radius of curvature."""
+    rmin, where = min_radius_of_curvature(mechanism)
+    if roller_radius >= rmin:
+        law = mechanism.law
+        hint = (" (the cubic transition makes the curvature grow like 1/φ at the slot's ends: use the "
+                "'quintic' law)" if law.transition == "cubic" else "")
+        raise SlotUndercutError(
+            f"roller radius {roller_radius:g} ≥ the slot's smallest radius of curvature {rmin:.4g} "
+            f"(at φ = {np.degrees(where):.3g}°): the flank on the concave side would fold over{hint}")
+
+
+def slot_profile(mechanism, roller_radius: float | None = None, n: int = 721) -> SlotProfile:
+    """The slot of a :class:`~mechlab.synthesis.dwell_slot.DwellSlotMechanism` sampled at n crank angles
+    over [0, π], taken from the curve the solver uses, with flanks at ±ρ."""
+    rho = mechanism.roller_radius if roller_radius is None else float(roller_radius)
+    if rho < 0 or not np.isfinite(rho):
+        raise SlotUndercutError(f"roller radius must be a finite number ≥ 0, got {rho}")
+    if rho > 0:
+        check_roller(mechanism, rho)
+    phi = _grid(n)
+    S = mechanism.law.S(phi)[0]
+    c = mechanism.link.slot.evaluate(S)
+    t = -c.d / np.hypot(*c.d.T)[:, None]   # towards B, i.e. along the pin's path for φ: 0 → π
+    normal = np.stack([-t[:, 1], t[:, 0]], axis=-1)
+    return SlotProfile(phi, S, c.p, normal, mechanism.law.curvature(phi), rho)
+
+
+def write_csv(mechanism, path=None, roller_radius: float | None = None, n: int = 721) -> str:
+    """The slot as CSV (columns phi_deg, S, x, y, x_left, y_left, x_right, y_right, curvature);
+    written to ``path`` if given; returns the text."""
+    prof = slot_profile(mechanism, roller_radius, n)
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["phi_deg", "S", "x", "y", "x_left", "y_left", "x_right", "y_right", "curvature"])
+    L, R = prof.left, prof.right
+    for i in range(len(prof.phi)):
+        w.writerow([repr(float(v)) for v in (np.degrees(prof.phi[i]), prof.S[i], *prof.centre[i], *L[i], *R[i],
+                                              prof.curvature[i])])
+    text = buf.getvalue()
+    if path is not None:
+        Path(path).write_text(text)
+    return text
+
+
+def read_csv(path_or_text) -> dict[str, np.ndarray]:
+    """Columns of a CSV written by :func:`write_csv` as float arrays."""
+    text = str(path_or_text)
+    if "\n" not in text:
+        text = Path(text).read_text()
+    rows = list(csv.reader(io.StringIO(text)))
+    head, body = rows[0], np.array(rows[1:], dtype=float)
+    return {h: body[:, j] for j, h in enumerate(head)}
+
+
+def _angle_deg(v) -> float:
+    return float(np.degrees(np.arctan2(v[1], v[0])))
+
+
+def write_dxf(mechanism, path, roller_radius: float | None = None, n: int = 721):
+    """Write the slot as DXF (R2010, units mm) with ezdxf; returns the ezdxf document."""
+    import ezdxf
+
+    prof = slot_profile(mechanism, roller_radius, n)
+    doc = ezdxf.new("R2010", units=4)
+    for name, color in (("CENTRE", 1), ("DWELL", 3), ("FLANKS", 5)):
+        doc.layers.add(name, color=color)
+    msp = doc.modelspace()
+    msp.add_lwpolyline(prof.centre.tolist(), dxfattribs={"layer": "CENTRE"})
+    law = mechanism.law
+    O = law.centre_in_link()
+    arc = mechanism.dwell_points(3)
+    a1, a2 = _angle_deg(arc[0] - O), _angle_deg(arc[-1] - O)
+    start, end = (a1, a2) if np.mod(a2 - a1, 360.0) < 180.0 else (a2, a1)   # ezdxf arcs run counter-clockwise
+    msp.add_arc(O.tolist(), law.crank, start, end, dxfattribs={"layer": "DWELL"})
+    rho = prof.roller_radius
+    if rho > 0:
+        msp.add_lwpolyline(prof.left.tolist(), dxfattribs={"layer": "FLANKS"})
+        msp.add_lwpolyline(prof.right.tolist(), dxfattribs={"layer": "FLANKS"})
+        # end caps: half circles from the right flank to the left one around each end,
+        # on the side away from the slot (outward tangent)
+        for i, outward in ((0, prof.centre[0] - prof.centre[1]), (-1, prof.centre[-1] - prof.centre[-2])):
+            nrm = prof.normal[i]
+            a_left = _angle_deg(nrm)
+            a_right = _angle_deg(-nrm)
+            mid = np.radians(a_left + 90.0)
+            if np.dot([np.cos(mid), np.sin(mid)], outward) > 0:
+                start, end = a_left, a_right
+            else:
+                start, end = a_right, a_left
+            msp.add_arc(prof.centre[i].tolist(), rho, start, end, dxfattribs={"layer": "FLANKS"})
+    doc.saveas(str(path))
+    return doc
