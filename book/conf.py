@@ -43,13 +43,18 @@ extensions = [
     "sphinx_copybutton",
     "sphinx-mathjax-offline",  # MathJax 3 served from _static/mathjax, not from a CDN
     "mechbook",  # _ext/mechbook.py: cell anchors, offline checks, animation controls
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "sphinx.ext.napoleon",  # numpydoc sections in docstrings
+    "apiref",  # _ext/apiref.py: docstrings read as reStructuredText
 ]
 
 external_toc_path = "_toc.yml"
 external_toc_exclude_missing = False
 
 exclude_patterns = ["_build", "**.ipynb_checkpoints", "README.md", "Thumbs.db", ".DS_Store"]
-suppress_warnings: list[str] = []
+# autosummary's generated module pages carry their own toctree of submodules
+suppress_warnings: list[str] = ["etoc.toctree"]
 
 # --- MyST and notebook execution ------------------------------------------------------
 myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence", "deflist", "html_image",
@@ -96,3 +101,14 @@ html_copy_source = True
 # pydata-sphinx-theme logs a console error when the colour mode is left empty
 html_context = {"default_mode": "light"}
 html_favicon = "_static/favicon.svg"  # a local icon: the browser would ask for /favicon.ico (a 404)
+
+# --- API reference ----------------------------------------------------------------------
+# autosummary writes one stub page per module into _api (git-ignored) at every build
+autosummary_generate = True
+autosummary_imported_members = False
+# a package page documents what its modules define, not its re-exports (no duplicates)
+autodoc_default_options = {"members": True, "show-inheritance": True, "ignore-module-all": True}
+autodoc_typehints = "none"
+autodoc_member_order = "bysource"
+napoleon_google_docstring = False
+napoleon_numpy_docstring = True

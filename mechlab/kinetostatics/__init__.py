@@ -1,8 +1,10 @@
-"""Kinetostatics: bodies and loads (:mod:`.model`), the group-by-group solve (:mod:`.solve`),
-the motor rule (:mod:`.drive`), and the chapters' machines (:mod:`.machines`, :mod:`.geneva`,
-:mod:`.lambda_sixbars`).
+"""Kinetostatics: bodies and loads, the group-by-group solve, the motor rule, the chapters' machines.
 
-``mechlab.kinetostatics`` is this package (the name the course used first).
+:mod:`~mechlab.kinetostatics.model`, :mod:`~mechlab.kinetostatics.solve`, :mod:`~mechlab.kinetostatics.drive`,
+:mod:`~mechlab.kinetostatics.machines`, :mod:`~mechlab.kinetostatics.geneva` and
+:mod:`~mechlab.kinetostatics.lambda_sixbars`.
+
+``mechlab.forces`` (``ml.forces``) is this package under the name the course used first.
 """
 
 from .drive import Drive, DriveError, cycle_mean, drive, motor_torque
