@@ -6,6 +6,7 @@ Computation never imports plotting: drawings live in :mod:`mechlab.draw`, contro
 in :mod:`mechlab.widgets`.
 """
 
+from . import design
 from . import kinetostatics as forces
 from .analysis import motion_laws
 from .analysis.centres import Centre, CentreAtInfinity, IndeterminateCentre, centrodes, instant_centres
@@ -60,6 +61,6 @@ __all__ = [
     # Geneva
     "spherical_table", "compare", "intermittency", "SlotCountError", "OffsetError",
     # forces
-    "forces", "motion_laws", "Kinetostatics", "ForceModel", "Body", "Revolute", "Prismatic", "HigherPair",
+    "forces", "motion_laws", "design", "Kinetostatics", "ForceModel", "Body", "Revolute", "Prismatic", "HigherPair",
     "Force", "Torque", "model_for", "SelfLockingError", "DriveError",
 ]

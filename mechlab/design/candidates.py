@@ -1,0 +1,170 @@
+"""Every family synthesised to one specification, simulated, and compared on the same criteria."""
+
+from __future__ import annotations
+
+import csv
+import io
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import MechanismError
+from .criteria import Criteria, evaluate
+from .families import FAMILIES, Design, Unsuitable
+from .spec import IMPACTS, Specification
+
+
+@dataclass(frozen=True)
+class Refusal:
+    """A family that cannot meet the specification, and why (with the numbers)."""
+
+    family: str
+    reason: str
+
+    def __str__(self) -> str:
+        return f"{self.family}: {self.reason}"
+
+
+@dataclass(frozen=True)
+class Candidate:
+    """A family's design and its criteria, read off its simulated motion."""
+
+    design: Design
+    criteria: Criteria
+
+    @property
+    def family(self) -> str:
+        return self.design.family
+
+
+# (column, heading, unit, formatter); the order of the table
+COLUMNS = (
+    ("dwell_fraction", "dwell", "of turn", "{:.3f}"),
+    ("dwell_residual", "dwell residual", "of amplitude", "{:.2e}"),
+    ("B", "B", "", "{:.3f}"),
+    ("C", "C", "", "{:.3f}"),
+    ("D", "D", "", "{:.3f}"),
+    ("impact", "impact", "", "{}"),
+    ("pressure_angle", "pressure angle", "deg", "{:.1f}"),
+    ("size", "size", "mm", "{:.0f}"),
+    ("peak_torque", "peak torque", "N·m", "{:.3g}"),
+    ("rms_torque", "rms torque", "N·m", "{:.3g}"),
+    ("motor_power", "motor", "W", "{:.3g}"),
+    ("structure", "parts and pairs", "", "{}"),
+)
+
+
+def _value(c: Criteria, key: str):
+    v = getattr(c, key)
+    return np.degrees(v) if key == "pressure_angle" else v
+
+
+def _missed(spec: Specification, c: Criteria) -> list[str]:
+    """The specification's limits this simulated design misses, each with its numbers."""
+    out = []
+    # a longer dwell than asked still serves the machine; a shorter one does not
+    if c.dwell_fraction < spec.dwell_fraction - spec.dwell_tolerance:
+        out.append(f"simulated dwell {c.dwell_fraction:.3f} of the turn < {spec.dwell_fraction:.3f} "
+                   f"− {spec.dwell_tolerance:.3f} asked")
+    if c.pressure_angle > spec.max_pressure_angle + 1e-9:
+        out.append(f"pressure angle {np.degrees(c.pressure_angle):.1f}° > "
+                   f"{np.degrees(spec.max_pressure_angle):.1f}°")
+    if c.size > spec.max_size:
+        out.append(f"size {c.size:.0f} mm > {spec.max_size:.0f} mm")
+    if IMPACTS.index(c.impact) > IMPACTS.index(spec.impacts):
+        out.append(f"{c.impact} impacts where {spec.impacts} at worst are admitted")
+    return out
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """The candidates that meet a specification and the families refused, with a table view.
+
+    Shows as an HTML table in a notebook; :meth:`to_csv` writes the same table; :meth:`ranked`
+    orders the candidates by a criterion.
+    """
+
+    spec: Specification
+    candidates: tuple[Candidate, ...]
+    refusals: tuple[Refusal, ...]
+
+    def ranked(self, by: str = "motor_power") -> "Comparison":
+        """The same comparison with the candidates ordered by ``by`` (smallest first; D None last)."""
+        keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure")]
+        if by not in keys:
+            raise MechanismError(f"ranked(by=...) takes one of {keys}, got {by!r}")
+
+        def key(c):
+            v = _value(c.criteria, by)
+            return (v is None, v if v is not None else 0.0)
+
+        return Comparison(self.spec, tuple(sorted(self.candidates, key=key)), self.refusals)
+
+    def rows(self) -> list[tuple[str, ...]]:
+        """The table as text: a header row, then one row a candidate."""
+        head = ("family",) + tuple(f"{h} ({u})" if u else h for _, h, u, _ in COLUMNS)
+        body = [(c.family,) + tuple("—" if _value(c.criteria, k) is None else f.format(_value(c.criteria, k))
+                                    for k, _, _, f in COLUMNS) for c in self.candidates]
+        return [head] + body
+
+    def to_csv(self, path=None) -> str:
+        """The table as CSV (full precision); written to ``path`` when given."""
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow(["family"] + [k for k, *_ in COLUMNS])
+        for c in self.candidates:
+            w.writerow([c.family] + ["" if _value(c.criteria, k) is None else _value(c.criteria, k)
+                                     for k, *_ in COLUMNS])
+        text = buf.getvalue()
+        if path is not None:
+            with open(path, "w", encoding="utf-8", newline="") as f:
+                f.write(text)
+        return text
+
+    def __str__(self) -> str:
+        rows = self.rows()
+        widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+        lines = ["  ".join(v.ljust(w) for v, w in zip(r, widths)) for r in rows]
+        lines += [f"refused — {r}" for r in self.refusals]
+        return "\n".join(lines)
+
+    def _repr_html_(self) -> str:
+        rows = self.rows()
+        head = "".join(f"<th>{h}</th>" for h in rows[0])
+        body = "".join("<tr>" + "".join(f"<td>{v}</td>" for v in r) + "</tr>" for r in rows[1:])
+        refused = "".join(f"<li><b>{r.family}</b>: {r.reason}</li>" for r in self.refusals)
+        return (f"<p>{self.spec.describe()}</p><div style='overflow-x:auto'><table><thead><tr>{head}</tr></thead>"
+                f"<tbody>{body}</tbody></table></div>" + (f"<p>Refused:</p><ul>{refused}</ul>" if refused else ""))
+
+
+def candidates(spec: Specification, families=None) -> Comparison:
+    """Synthesise a design of every family (or of ``families``, names of :data:`FAMILIES`) for ``spec``.
+
+    Each design is simulated and judged by :func:`~mechlab.design.criteria.evaluate`; a family
+    whose synthesis refuses, or whose simulated design misses a limit of the specification,
+    is listed among the refusals with the reason.
+    """
+    if not isinstance(spec, Specification):
+        raise TypeError(f"candidates needs a mechlab.design.Specification, got {type(spec).__name__}")
+    names = list(FAMILIES) if families is None else list(families)
+    unknown = [n for n in names if n not in FAMILIES]
+    if unknown:
+        raise MechanismError(f"unknown families {unknown}; known: {list(FAMILIES)}")
+    found, refused = [], []
+    for name in names:
+        try:
+            design = FAMILIES[name](spec)
+            crit = evaluate(design.mechanism, spec, scale=design.scale, structure=design.structure,
+                            circles=design.circles, pressure_angle=design.pressure_angle, phase=design.phase)
+        except Unsuitable as why:
+            refused.append(Refusal(name, str(why)))
+            continue
+        except MechanismError as err:
+            refused.append(Refusal(name, f"{type(err).__name__}: {err}"))
+            continue
+        missed = _missed(spec, crit)
+        if missed:
+            refused.append(Refusal(name, "; ".join(missed)))
+        else:
+            found.append(Candidate(design, crit))
+    return Comparison(spec, tuple(found), tuple(refused))

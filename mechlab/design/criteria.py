@@ -1,0 +1,179 @@
+"""The comparison criteria of a dwell design, computed from its simulated motion.
+
+Every figure is read off ``mechanism.motion(phi)`` on a fine grid of the crank turn, never
+from a family's own formulas, so that all families are judged alike. Kinematic figures are
+normalised as Kinitsky (1994) normalises cam laws: with h the output's amplitude and
+Φ = 2π(1 − dwell fraction) the crank angle of the motion, B = max|x′|·Φ/h,
+C = max|x″|·Φ²/h, D = max|x‴|·Φ³/h.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..kinetostatics.drive import drive
+from .spec import Specification
+
+SAMPLES = 2880  # crank angles per turn (1/8°): the dwell is found to this resolution
+
+
+@dataclass(frozen=True)
+class Structure:
+    """What a design is built of: moving parts, lower pairs and higher pairs (cam, pin in slot)."""
+
+    parts: int
+    lower_pairs: int
+    higher_pairs: int
+
+    def __str__(self) -> str:
+        higher = f" + {self.higher_pairs} higher" if self.higher_pairs else ""
+        return f"{self.parts} parts, {self.lower_pairs} lower{higher} pairs"
+
+
+@dataclass(frozen=True)
+class Criteria:
+    """One design judged on the criteria every family shares (see the module's docstring).
+
+    Attributes
+    ----------
+    dwell_fraction : float
+        Longest share of the turn over which the output stays within ``dwell_precision``·h.
+    dwell_residual : float
+        Output motion (max − min) over the asked dwell, centred on the achieved one, as a
+        fraction of h: the dwell's accuracy (0 for an exact dwell).
+    B, C : float
+        Peak velocity and acceleration invariants.
+    D : float or None
+        Peak jerk invariant; None where the acceleration jumps (the jerk is unbounded).
+    velocity_jump, acceleration_jump : float
+        Jumps of x′ and x″ (as fractions of their peaks); non-zero means a hard or soft impact.
+    impact : str
+        "none", "soft" or "hard".
+    pressure_angle : float
+        Worst pressure angle over the turn (rad): 90° − the least transmission angle of a linkage.
+    size : float
+        Largest side of the footprint's bounding box (mm).
+    peak_torque, rms_torque, motor_power : float
+        Crank torque (N·m) and the motor's nominal power (W) by the course's motor rule.
+    structure : Structure
+    """
+
+    dwell_fraction: float
+    dwell_residual: float
+    B: float
+    C: float
+    D: float | None
+    velocity_jump: float
+    acceleration_jump: float
+    impact: str
+    pressure_angle: float
+    size: float
+    peak_torque: float
+    rms_torque: float
+    motor_power: float
+    structure: Structure
+
+
+def output_law(motion) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The output x, x′, x″ of a motion, angular or linear."""
+    if hasattr(motion, "psi"):
+        return motion.psi, motion.dpsi, motion.ddpsi
+    return motion.s, motion.ds, motion.dds
+
+
+def longest_still(x: np.ndarray, shift: float, band: float) -> tuple[int, int]:
+    """Longest run (start, length in samples) of the periodic samples ``x`` whose range stays ≤ band.
+
+    ``x`` holds one turn without its end point; the next turn is ``x + shift`` (the index
+    angle of a unidirectional output, 0 for a rocking one). Two pointers with monotone
+    queues of the running maximum and minimum: O(n).
+    """
+    n = len(x)
+    ext = np.concatenate([x, x + shift])
+    hi, lo = deque(), deque()
+    best, start, i = (0, 0), 0, 0
+    for j in range(2 * n):
+        while hi and ext[hi[-1]] <= ext[j]:
+            hi.pop()
+        hi.append(j)
+        while lo and ext[lo[-1]] >= ext[j]:
+            lo.pop()
+        lo.append(j)
+        while ext[hi[0]] - ext[lo[0]] > band or j - i + 1 > n:
+            i += 1
+            if hi[0] < i:
+                hi.popleft()
+            if lo[0] < i:
+                lo.popleft()
+        if j - i + 1 > best[1]:
+            best = (i, j - i + 1)
+            start = i
+    return start % n, best[1]
+
+
+def _jumps(mechanism, phase: float) -> tuple[float, float]:
+    """Largest neighbour-to-neighbour change of x′ and x″ that does not shrink when the grid is halved."""
+    out = []
+    for n in (SAMPLES, 2 * SAMPLES):
+        phi = phase + np.linspace(0.0, 2 * np.pi, n + 1)
+        _, d1, d2 = output_law(mechanism.motion(phi))
+        out.append((np.max(np.abs(np.diff(d1))), np.max(np.abs(np.diff(d2))), np.max(np.abs(d1)),
+                    np.max(np.abs(d2))))
+    (v1, a1, _, _), (v2, a2, vmax, amax) = out
+    # a continuous derivative's largest step halves with the step; a jump stays
+    v = v2 / vmax if v2 > 0.75 * v1 and vmax > 0 else 0.0
+    a = a2 / amax if a2 > 0.75 * a1 and amax > 0 else 0.0
+    return float(v), float(a)
+
+
+def evaluate(mechanism, spec: Specification, *, scale: float, structure: Structure,
+             circles=(), pressure_angle: float | None = None, phase: float = 0.0) -> Criteria:
+    """Judge ``mechanism`` (lengths × ``scale`` = mm) against ``spec`` from its simulated motion.
+
+    ``circles`` are (centre, radius) pairs of parts the joints do not trace (a Geneva wheel, a
+    cam disc), in the mechanism's units, added to the footprint; ``pressure_angle``, when
+    given, replaces the motion's own (a family whose motion does not carry one).
+    """
+    phi = phase + np.linspace(0.0, 2 * np.pi, SAMPLES + 1)
+    mo = mechanism.motion(phi)
+    x, d1, d2 = (np.asarray(a, float) for a in output_law(mo))
+    length = 1.0 if spec.rotary else scale  # a translating output's analogs in mm
+    x, d1, d2 = x * length, d1 * length, d2 * length
+    h = spec.amplitude
+    shift = x[-1] - x[0] if spec.motion == "index" else 0.0
+    start, run = longest_still(x[:-1], shift, spec.dwell_precision * h)
+    dwell = run / SAMPLES
+    # residual over the asked dwell, centred on the achieved one
+    want = int(round(spec.dwell_fraction * SAMPLES))
+    centre = start + run // 2
+    idx = np.arange(centre - want // 2, centre - want // 2 + want)
+    # the unwrapped output at any sample k: x[k mod n] + shift·⌊k/n⌋
+    window = x[:-1][idx % SAMPLES] + shift * np.floor_divide(idx, SAMPLES)
+    residual = float(np.ptp(window)) / h if want else 0.0
+    motion_angle = 2 * np.pi * (1.0 - spec.dwell_fraction)
+    v_jump, a_jump = _jumps(mechanism, phase)
+    impact = "hard" if v_jump > 1e-6 else "soft" if a_jump > 1e-6 else "none"
+    jerk = None
+    if impact == "none":
+        d3 = np.gradient(d2, phi)
+        jerk = float(np.max(np.abs(d3))) * motion_angle**3 / h
+    if pressure_angle is None:
+        pressure_angle = float(np.max(mo.pressure_angle))
+    pts = [p.p for p in mo.points.values()] + [np.array([[c[0] - r, c[1] - r], [c[0] + r, c[1] + r]])
+                                               for c, r in circles]
+    allp = np.concatenate([np.asarray(p, float)[:, :2] for p in pts])
+    size = float(np.max(np.ptp(allp, axis=0))) * scale
+    # the output's load alone (massless links): M1·ω1 = J x′x″ω1³ + M_r|x′|ω1 (SI: x in m for a stroke)
+    si = 1.0 if spec.rotary else 1e-3
+    load = spec.inertia if spec.rotary else spec.mass
+    w = spec.omega1
+    torque = load * (d1 * si) * (d2 * si) * w**2 + spec.resisting * np.abs(d1 * si)
+    motor = drive(torque, phi, w, overload=spec.overload)
+    return Criteria(dwell_fraction=dwell, dwell_residual=residual,
+                    B=float(np.max(np.abs(d1))) * motion_angle / h, C=float(np.max(np.abs(d2))) * motion_angle**2 / h,
+                    D=jerk, velocity_jump=v_jump, acceleration_jump=a_jump, impact=impact,
+                    pressure_angle=float(pressure_angle), size=size, peak_torque=motor.peak_torque,
+                    rms_torque=motor.rms_torque, motor_power=motor.nominal_power, structure=structure)

@@ -1,0 +1,225 @@
+"""Each family's synthesis to one :class:`~mechlab.design.spec.Specification`, through the course's own synthesis.
+
+A designer returns a :class:`Design` (the mechanism, its scale to mm, its structure) or
+raises :class:`Unsuitable` with the reason and the numbers.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..errors import MechanismError
+from ..mechanisms import ExternalGeneva, InternalGeneva, SphericalGeneva
+from ..synthesis.dwell_slot import DwellLaw, best_placement, curved_slot_dwell
+from ..synthesis.lambda_guiding import circle_guiding, straight_guiding
+from ..synthesis.lambda_sixbars import mchv1, mchv3_half_turn
+from ..synthesis.lambda_sliders import mchv2, mchv5
+from ..synthesis.slot_export import write_csv, write_dxf
+from .criteria import Structure
+from .spec import Specification
+
+# lambda mechanisms tried, (δ, a): inside the existence region of Kinitsky (1994), Fig. 2a
+LAMBDA_FRAMES = ((np.radians(150.0), 0.9), (np.radians(180.0), 0.8), (np.radians(120.0), 0.75))
+
+
+class Unsuitable(Exception):
+    """The family cannot meet the specification; the message says why, with the numbers."""
+
+
+@dataclass(frozen=True)
+class Design:
+    """One family's design for a specification.
+
+    ``mechanism`` is in its own units; its lengths × ``scale`` are mm. ``circles`` are
+    (centre, radius) of parts the joints do not trace (a wheel, a sphere), for the footprint.
+    ``pressure_angle`` replaces the motion's own where the family knows it better.
+    ``export(path)`` writes the part that must be manufactured to a profile (DXF), or is
+    None where the family has none. ``phase`` shifts the sampled crank angles off a point
+    where the family's solver cannot be evaluated.
+    """
+
+    family: str
+    mechanism: object
+    scale: float
+    structure: Structure
+    circles: tuple = ()
+    pressure_angle: float | None = None
+    phase: float = 0.0
+    export: Callable | None = None
+    note: str = ""
+
+
+def _needs(spec: Specification, *motions: str, what: str) -> None:
+    if spec.motion not in motions:
+        raise Unsuitable(f"{what}; a {spec.motion} was asked")
+
+
+def _dwell_matches(spec: Specification, dwell: float, how: str) -> None:
+    if abs(dwell - spec.dwell_fraction) > spec.dwell_tolerance:
+        raise Unsuitable(f"{how} give a dwell fraction of {dwell:.3f}; {spec.dwell_fraction:.3f} was asked "
+                         f"(± {spec.dwell_tolerance:.3f})")
+
+
+def _geneva(cls, family: str, spec: Specification) -> Design:
+    _needs(spec, "index", what="indexes a rotating table one way")
+    z = spec.stations
+    g = cls(z, 1.0)
+    _dwell_matches(spec, g.dwell_fraction, f"{z} stations")
+    wheel = ((g.centre_distance, 0.0), g.outer_radius)
+    crank = ((0.0, 0.0), g.crank_radius + g.roller_radius)
+    # parts: crank with pin and locking disc, wheel; pairs: two pivots, pin in slot, locking arcs
+    return Design(family, g, spec.crank_radius / g.crank_radius,
+                  Structure(parts=2, lower_pairs=2, higher_pairs=2), circles=(wheel, crank),
+                  pressure_angle=0.0, note="radial slot: the pin pushes along the wheel's tangent")
+
+
+def external_geneva(spec: Specification) -> Design:
+    return _geneva(ExternalGeneva, "external Geneva", spec)
+
+
+def internal_geneva(spec: Specification) -> Design:
+    return _geneva(InternalGeneva, "internal Geneva", spec)
+
+
+def spherical_geneva(spec: Specification) -> Design:
+    """The offset spherical Geneva (Vainer & Shatokhina): the offset e sets the dwell for z stations."""
+    _needs(spec, "index", what="indexes a rotating table one way")
+    # in mm: the drive's pin and slot have sizes of their own (pin_diameter, mm)
+    z, R = spec.stations, spec.crank_radius
+    # the dwell grows with e from 1/2 at e = 0; the largest admissible e is where the drive still assembles
+    lo, hi = 0.0, R
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        try:
+            SphericalGeneva(R, mid, z)
+            lo = mid
+        except MechanismError:
+            hi = mid
+    e_max = lo * (1 - 1e-6)
+    d_min, d_max = SphericalGeneva(R, 0.0, z).dwell_fraction, SphericalGeneva(R, e_max, z).dwell_fraction
+    want = spec.dwell_fraction
+    if not d_min - spec.dwell_tolerance <= want <= d_max + spec.dwell_tolerance:
+        raise Unsuitable(f"with {z} stations its dwell fraction lies in [{d_min:.3f}, {d_max:.3f}] "
+                         f"(offset 0 to {e_max:.4g} mm); {want:.3f} was asked")
+    e = brentq(lambda e: SphericalGeneva(R, e, z).dwell_fraction - np.clip(want, d_min, d_max), 0.0, e_max,
+               xtol=1e-9) if d_min < want < d_max else (0.0 if want <= d_min else e_max)
+    g = SphericalGeneva(R, e, z)
+    return Design("spherical Geneva", g, 1.0, Structure(parts=2, lower_pairs=2, higher_pairs=2),
+                  circles=(((0.0, 0.0), R),), note=f"offset e = {e:.4g} mm sets the dwell (sphere R = {R:g} mm)")
+
+
+def curved_slot(spec: Specification) -> Design:
+    """The slotted link with a curved slot (Zinchenko et al., 2013): λ from the swing, the dwell placed
+    where its largest pressure angle is least."""
+    _needs(spec, "swing", what="rocks its output (λ < 1)")
+    length = spec.dwell_angle
+    if length >= np.pi - 0.1:
+        raise Unsuitable(f"its dwell lies within one half-turn with room for both transitions: "
+                         f"{np.degrees(length):.1f}° asked, less than {np.degrees(np.pi - 0.1):.1f}° possible")
+
+    def design(lam):
+        theta, phi1 = best_placement(lam, length)
+        return theta, phi1, DwellLaw(lam, phi1, phi1 + length)
+
+    phi = np.linspace(-np.pi, np.pi, 721)
+
+    def swing(lam):
+        return float(np.ptp(design(lam)[2](phi).psi))
+
+    lo, hi = 0.05, 0.95
+    s_lo, s_hi = swing(lo), swing(hi)
+    if not s_lo <= spec.amplitude <= s_hi:
+        raise Unsuitable(f"its swing lies in [{np.degrees(s_lo):.1f}°, {np.degrees(s_hi):.1f}°] for this dwell "
+                         f"(λ from {lo} to {hi}); {np.degrees(spec.amplitude):.1f}° was asked")
+    lam = brentq(lambda x: swing(x) - spec.amplitude, lo, hi, xtol=1e-6)
+    theta, phi1, _ = design(lam)
+    if theta > spec.max_pressure_angle:
+        raise Unsuitable(f"its least worst pressure angle for a {np.degrees(length):.1f}° dwell is "
+                         f"{np.degrees(theta):.1f}° > {np.degrees(spec.max_pressure_angle):.1f}° (λ = {lam:.3f})")
+    m = curved_slot_dwell(lam, phi1, phi1 + length)
+    scale = spec.crank_radius / m.crank
+
+    def export(path):
+        """The slot in mm: DXF at ``path`` and CSV beside it."""
+        from ..synthesis.dwell_slot import curved_slot_dwell as build
+        mm = build(lam, phi1, phi1 + length, pivot_distance=scale)
+        write_dxf(mm, path)
+        write_csv(mm, str(path).rsplit(".", 1)[0] + ".csv")
+        return path
+
+    return Design("curved slot", m, scale, Structure(parts=3, lower_pairs=3, higher_pairs=1),
+                  pressure_angle=theta, export=export, note=f"λ = {lam:.4f}, dwell from φ = {np.degrees(phi1):.1f}°")
+
+
+def _lambda_designs(spec: Specification, build, what: str) -> list:
+    """Try the lambda frames of :data:`LAMBDA_FRAMES`; the designs that build, or Unsuitable with every reason."""
+    designs, reasons = [], []
+    for delta, a in LAMBDA_FRAMES:
+        try:
+            designs.append(build(delta, a))
+        except MechanismError as err:
+            reasons.append(f"δ = {np.degrees(delta):.0f}°, a = {a}: {err}")
+    if not designs:
+        raise Unsuitable(f"no {what} for this dwell: " + "; ".join(reasons))
+    return designs
+
+
+def mchv1_rocker(spec: Specification) -> Design:
+    """Kinitsky's МЧВ1: circle-guiding lambda mechanism and a rocker dyad, time ratio 1."""
+    _needs(spec, "swing", what="rocks its output")
+    mu_min = np.pi / 2 - spec.max_pressure_angle
+    designs = _lambda_designs(
+        spec, lambda d, a: mchv1(circle_guiding(d, a, spec.dwell_angle), 1.0, spec.amplitude, mu_min=mu_min),
+        "МЧВ1")
+    six = min(designs, key=lambda m: m.r)  # the smallest crank for a given coupler: the slowest coupler
+    return Design("МЧВ1 six-bar", six, spec.crank_radius / six.r,
+                  Structure(parts=5, lower_pairs=7, higher_pairs=0))
+
+
+def mchv3_half(spec: Specification) -> Design:
+    """Kinitsky's МЧВ3-2М: a straight-line lambda mechanism drives a slotted link through 180°."""
+    _needs(spec, "index", what="indexes 180° (2 stations)")
+    if spec.stations != 2:
+        raise Unsuitable(f"indexes 180° per crank turn (2 stations); {spec.stations} stations were asked")
+    six = _lambda_designs(spec, lambda d, a: mchv3_half_turn(straight_guiding(d, a, spec.dwell_angle)),
+                          "straight-line lambda mechanism")[0]
+    return Design("МЧВ3-2М six-bar", six, spec.crank_radius / six.r,
+                  Structure(parts=5, lower_pairs=7, higher_pairs=0), phase=1e-3)
+
+
+def _stroke_design(spec, six, family):
+    phi = np.linspace(0.0, 2 * np.pi, 721)
+    stroke = float(np.ptp(six.motion(phi).s))
+    return Design(family, six, spec.amplitude / stroke, Structure(parts=5, lower_pairs=7, higher_pairs=0))
+
+
+def mchv2_slider(spec: Specification) -> Design:
+    """Kinitsky's МЧВ2: circle-guiding lambda mechanism, rod and slider, scaled to the stroke."""
+    _needs(spec, "stroke", what="translates its output")
+    six = _lambda_designs(spec, lambda d, a: mchv2(circle_guiding(d, a, spec.dwell_angle), 1.0,
+                                                   mu_min=np.pi / 2 - spec.max_pressure_angle), "МЧВ2")[0]
+    return _stroke_design(spec, six, "МЧВ2 six-bar")
+
+
+def mchv5_slotted(spec: Specification) -> Design:
+    """Kinitsky's МЧВ5: straight-line lambda mechanism and a translating slotted link, scaled to the stroke."""
+    _needs(spec, "stroke", what="translates its output")
+    six = _lambda_designs(spec, lambda d, a: mchv5(straight_guiding(d, a, spec.dwell_angle)),
+                          "straight-line lambda mechanism")[0]
+    return _stroke_design(spec, six, "МЧВ5 six-bar")
+
+
+FAMILIES: dict[str, Callable[[Specification], Design]] = {
+    "external Geneva": external_geneva,
+    "internal Geneva": internal_geneva,
+    "spherical Geneva": spherical_geneva,
+    "curved slot": curved_slot,
+    "МЧВ1 six-bar": mchv1_rocker,
+    "МЧВ3-2М six-bar": mchv3_half,
+    "МЧВ2 six-bar": mchv2_slider,
+    "МЧВ5 six-bar": mchv5_slotted,
+}

@@ -1,0 +1,213 @@
+"""Choosing a dwell mechanism: every candidate meets its specification when simulated anew; refusals
+say why; the comparison criteria agree with closed forms (Geneva, cam laws, the limit theorem)."""
+
+import numpy as np
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+from scipy.optimize import brentq
+
+import mechlab as ml
+from mechlab import design as D
+from mechlab.analysis.half_turn import base_peaks
+from mechlab.geometry import PointPath
+from mechlab.motion import AngularMotion
+
+
+SEEN: set[str] = set()  # families that produced a candidate in the property test
+
+
+def _law(mo):
+    return (mo.psi, mo.dpsi, mo.ddpsi) if hasattr(mo, "psi") else (mo.s, mo.ds, mo.dds)
+
+
+def _resimulate(cand, spec, n=5001):
+    """The candidate's motion on a grid of its own (not evaluate's), in mm for a stroke."""
+    d = cand.design
+    phi = d.phase + np.linspace(0.0, 2 * np.pi, n)
+    x, d1, _ = _law(d.mechanism.motion(phi))
+    return phi, (x if spec.rotary else x * d.scale), d1
+
+
+def _longest_near(x, spec, n=1441):
+    """Longest share of the turn over which the output stays within dwell_precision·h of one of its values
+    (brute force over every sample as the reference, on the unwrapped output of two turns)."""
+    idx = np.linspace(0, len(x) - 1, n).round().astype(int)
+    one = x[idx][:-1]
+    shift = x[-1] - x[0] if spec.motion == "index" else 0.0
+    ext = np.concatenate([one, one + shift])
+    best = 0
+    for i in range(n - 1):
+        near = np.abs(ext - ext[i]) <= spec.dwell_precision * spec.amplitude
+        # the run of True through i (and through i + n - 1, its copy one turn later)
+        for j in (i, i + n - 1):
+            lo = j - np.argmin(near[j::-1]) if not near[j::-1].all() else 0
+            hi = j + np.argmin(near[j:]) if not near[j:].all() else len(ext)
+            best = max(best, hi - lo - 1 if not near[j::-1].all() else hi - lo)
+    return min(best, n - 1) / (n - 1)
+
+
+specs = st.one_of(
+    st.builds(lambda z, extra, rpm: D.Specification("index", min(0.9, (z + 2) / (2 * z) + extra), stations=z,
+                                                    rpm=rpm, inertia=1.0),
+              st.integers(3, 10), st.sampled_from([-0.1, -0.02, 0.0, 0.02, 0.1]), st.floats(10, 120)),
+    st.builds(lambda dw, sw, pa: D.Specification("swing", dw / 360, amplitude=np.radians(sw),
+                                                 max_pressure_angle=np.radians(pa), inertia=0.2),
+              st.sampled_from([30, 40, 60, 120]), st.floats(15, 60), st.sampled_from([45, 60, 70])),
+    st.builds(lambda dw, h: D.Specification("stroke", dw / 360, amplitude=h, mass=3.0,
+                                            max_pressure_angle=np.radians(60)),
+              st.sampled_from([60, 120]), st.floats(20, 150)),
+)
+
+
+@settings(max_examples=12, deadline=None)
+@given(specs)
+@example(D.Specification("index", 2 / 3, stations=6, inertia=2.4, rpm=40))
+@example(D.Specification("swing", 40 / 360, amplitude=np.radians(40), max_pressure_angle=np.radians(60)))
+@example(D.Specification("stroke", 1 / 3, amplitude=60.0, mass=2.0, max_pressure_angle=np.radians(60)))
+def test_every_candidate_meets_its_specification_when_simulated_anew(spec):
+    comp = D.candidates(spec)
+    SEEN.update(c.family for c in comp.candidates)
+    assert len(comp.candidates) + len(comp.refusals) == len(D.FAMILIES)
+    for cand in comp.candidates:
+        phi, x, d1 = _resimulate(cand, spec)
+        h = spec.amplitude
+        if spec.motion == "index":
+            assert abs(abs(x[-1] - x[0]) - h) < 1e-6 * h  # one index per crank turn
+        else:
+            assert np.ptp(x) == pytest.approx(h, rel=2e-3)  # the swing or stroke asked
+        # the output stands still (within the precision band) for at least the asked dwell less the tolerance
+        assert _longest_near(x, spec) >= spec.dwell_fraction - spec.dwell_tolerance - 2e-3
+        c = cand.criteria
+        assert c.pressure_angle <= spec.max_pressure_angle + 1e-9
+        assert 0 < c.size <= spec.max_size
+        assert D.spec.IMPACTS.index(c.impact) <= D.spec.IMPACTS.index(spec.impacts)
+        for v in (c.B, c.C, c.peak_torque, c.rms_torque, c.motor_power, c.dwell_residual):
+            assert np.isfinite(v) and v >= 0
+    for r in comp.refusals:
+        assert r.reason and r.family in D.FAMILIES
+
+
+def test_the_property_test_saw_candidates_of_several_families():
+    # runs after the property test (file order): it must not have passed on refusals alone
+    assert {"external Geneva", "spherical Geneva", "curved slot", "МЧВ1 six-bar", "МЧВ2 six-bar"} <= SEEN
+
+
+def test_refusals_name_their_reason_with_numbers():
+    spec = D.Specification("index", 0.60, stations=4)
+    comp = D.candidates(spec)
+    refused = {r.family: r.reason for r in comp.refusals}
+    assert refused["external Geneva"] == "4 stations give a dwell fraction of 0.750; 0.600 was asked (± 0.030)"
+    assert "0.250" in refused["internal Geneva"]
+    assert refused["curved slot"].startswith("rocks its output")
+    assert "180°" in refused["МЧВ3-2М six-bar"] and "4 stations" in refused["МЧВ3-2М six-bar"]
+    tight = D.candidates(D.Specification("swing", 50 / 360, amplitude=np.radians(40),
+                                         max_pressure_angle=np.radians(55)), ["curved slot"])
+    assert not tight.candidates and "> 55.0°" in tight.refusals[0].reason
+
+
+def test_a_limit_missed_in_simulation_is_a_refusal_with_its_numbers():
+    small = D.Specification("index", 0.75, stations=4, max_size=100.0)
+    comp = D.candidates(small, ["external Geneva"])
+    assert not comp.candidates
+    assert "size" in comp.refusals[0].reason and "> 100 mm" in comp.refusals[0].reason
+    none = D.Specification("index", 0.75, stations=4, impacts="none")
+    assert "soft impacts where none at worst" in D.candidates(none, ["external Geneva"]).refusals[0].reason
+
+
+@pytest.mark.parametrize("z", [3, 4, 6, 8])
+def test_geneva_criteria_agree_with_its_closed_form(z):
+    spec = D.Specification("index", (z + 2) / (2 * z), stations=z, inertia=1.0)
+    cand = D.candidates(spec, ["external Geneva"]).candidates[0]
+    g, c = cand.design.mechanism, cand.criteria
+    motion_angle, h = 2 * np.pi * (1 - spec.dwell_fraction), 2 * np.pi / z
+    assert c.B == pytest.approx(g.max_velocity() * motion_angle / h, rel=1e-4)
+    assert c.C == pytest.approx(g.max_acceleration() * motion_angle**2 / h, rel=2e-3)
+    assert c.impact == "soft" and c.acceleration_jump > 0.01 and c.velocity_jump == 0.0
+    assert c.dwell_residual < 1e-3
+
+
+class _CycloidalRiseReturn:
+    """A stand-in whose output is a cycloidal rise over Φ/2, a cycloidal return over Φ/2, then a dwell."""
+
+    def __init__(self, motion_angle, h):
+        object.__setattr__(self, "Phi", motion_angle)
+        object.__setattr__(self, "h", h)
+
+    def motion(self, phi):
+        phi = np.asarray(phi, float)
+        half = self.Phi / 2
+        t = np.mod(phi, 2 * np.pi)
+        u = np.clip(np.where(t < half, t, self.Phi - t) / half, 0.0, 1.0)
+        sgn = np.where(t < half, 1.0, -1.0) * (t < self.Phi)
+        x = self.h * (u - np.sin(2 * np.pi * u) / (2 * np.pi))
+        d1 = sgn * self.h / half * (1 - np.cos(2 * np.pi * u))
+        d2 = (t < self.Phi) * self.h / half**2 * 2 * np.pi * np.sin(2 * np.pi * u)
+        zero = np.zeros((len(phi), 2))
+        return AngularMotion(phi, {"O": PointPath(zero, zero, zero)}, np.full(len(phi), np.pi / 2), x, d1, d2)
+
+
+def test_criteria_reproduce_the_cycloidal_invariants():
+    # cycloidal law: C_v = 2, C_a = 2π, C_j = 4π² over its own rise angle Φ/2, hence ×2, ×4, ×8 over Φ
+    spec = D.Specification("swing", 1 / 3, amplitude=0.5)
+    mech = _CycloidalRiseReturn(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
+    c = D.evaluate(mech, spec, scale=1.0, structure=D.Structure(1, 1, 1))
+    assert c.B == pytest.approx(4.0, rel=1e-4)
+    assert c.C == pytest.approx(8 * np.pi, rel=1e-4)
+    assert c.D == pytest.approx(32 * np.pi**2, rel=2e-3)
+    assert c.impact == "none"
+    # the output stays within 0.001 h of its rest value also where the cycloid leaves and joins it
+    u = brentq(lambda u: u - np.sin(2 * np.pi * u) / (2 * np.pi) - spec.dwell_precision, 1e-6, 0.5)
+    assert c.dwell_fraction == pytest.approx(1 / 3 + 2 * u * (mech.Phi / 2) / (2 * np.pi), abs=1e-3)
+    assert c.dwell_residual == pytest.approx(0.0, abs=1e-6)
+
+
+def test_curved_slot_candidate_respects_the_limit_theorem():
+    # Zinchenko et al. (2013): no linkage's peak ψ' is below its base mechanism's
+    spec = D.Specification("swing", 40 / 360, amplitude=np.radians(40), max_pressure_angle=np.radians(60))
+    cand = D.candidates(spec, ["curved slot"]).candidates[0]
+    lam = cand.design.mechanism.lam
+    phi, x, d1 = _resimulate(cand, spec)
+    assert np.max(np.abs(d1)) >= base_peaks(lam)[0] * (1 - 1e-9)
+
+
+def test_the_table_shows_and_exports(tmp_path):
+    comp = D.candidates(D.Specification("index", 2 / 3, stations=6, inertia=2.4, rpm=40))
+    assert {c.family for c in comp.candidates} >= {"external Geneva", "spherical Geneva"}
+    text = comp.to_csv(tmp_path / "t.csv")
+    assert (tmp_path / "t.csv").read_text(encoding="utf-8") == text
+    assert text.splitlines()[0].startswith("family,dwell_fraction,dwell_residual,B,C,D,impact")
+    assert "external Geneva" in comp._repr_html_() and "Refused" in comp._repr_html_()
+    by_power = comp.ranked("motor_power")
+    powers = [c.criteria.motor_power for c in by_power.candidates]
+    assert powers == sorted(powers)
+    with pytest.raises(ml.MechanismError, match="ranked"):
+        comp.ranked("colour")
+
+
+def test_the_chosen_curved_slot_exports_its_slot(tmp_path):
+    spec = D.Specification("swing", 40 / 360, amplitude=np.radians(40), max_pressure_angle=np.radians(60))
+    cand = D.candidates(spec, ["curved slot"]).candidates[0]
+    path = cand.design.export(tmp_path / "slot.dxf")
+    assert (tmp_path / "slot.dxf").stat().st_size > 1000 and (tmp_path / "slot.csv").exists()
+    assert path == tmp_path / "slot.dxf"
+
+
+@pytest.mark.parametrize("bad, match", [
+    (dict(motion="jump"), "motion must be one of"),
+    (dict(dwell_fraction=float("nan")), "dwell_fraction"),
+    (dict(dwell_fraction=1.2), "dwell_fraction must lie in"),
+    (dict(stations=None), "needs the number of stations"),
+    (dict(stations=4.5), "whole number"),
+    (dict(rpm=0), "rpm"),
+    (dict(rpm="fast"), "rpm must be a real number"),
+    (dict(max_pressure_angle=2.0), "max_pressure_angle"),
+    (dict(impacts="some"), "impacts must be one of"),
+    (dict(inertia=1 + 1j), "inertia must be a real number"),
+])
+def test_a_bad_specification_names_its_field(bad, match):
+    kw = dict(motion="index", dwell_fraction=0.75, stations=4) | bad
+    with pytest.raises(D.SpecificationError, match=match):
+        D.Specification(**kw)
+    with pytest.raises(TypeError, match="Specification"):
+        D.candidates({"motion": "index"})
