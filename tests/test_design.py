@@ -1,6 +1,8 @@
 """Choosing a dwell mechanism: every candidate meets its specification when simulated anew; refusals
 say why; the comparison criteria agree with closed forms (Geneva, cam laws, the limit theorem)."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from hypothesis import example, given, settings
@@ -211,3 +213,37 @@ def test_a_bad_specification_names_its_field(bad, match):
         D.Specification(**kw)
     with pytest.raises(TypeError, match="Specification"):
         D.candidates({"motion": "index"})
+
+
+def test_the_explorer_recovers_from_an_impossible_specification():
+    from mechlab.widgets.design import ChoosingExplorer
+    ex = ChoosingExplorer(D.Specification("index", 0.75, stations=4, inertia=1.0), live=False)
+    assert "external Geneva" in ex.table.value and not ex.message
+    ex.sliders["dwell_fraction"].value = 0.40  # no Geneva dwells 0.40 with 4 stations
+    assert ex.message == "No family meets this specification."
+    assert "4 stations give a dwell fraction of 0.750; 0.400 was asked" in ex.table.value
+    assert not any(line.get_visible() for line in ex.figure.curves.values())
+    ex.sliders["dwell_fraction"].value = 0.75
+    assert not ex.message and ex.figure.curves["external Geneva"].get_visible()
+    ex.rank.value = "size"
+    sizes = [c.criteria.size for c in ex.comparison.candidates]
+    assert sizes == sorted(sizes)
+
+
+def test_check_design_reports_each_limit_with_numbers():
+    spec = D.Specification("stroke", 1 / 3, amplitude=120.0, mass=6.0, max_pressure_angle=np.radians(60))
+    six = ml.mchv2(ml.circle_guiding(np.radians(150), 0.9, spec.dwell_angle), 1.0)
+    stroke = np.ptp(six.motion(np.linspace(0, 2 * np.pi, 2881)).s)
+    good = D.check_design(spec, six, scale=120.0 / stroke)
+    assert good.met, str(good)
+    bad = D.check_design(spec, six, scale=100.0 / stroke)  # a stroke of 100 mm, 120 asked
+    assert not bad.met
+    amp = next(v for v in bad.verdicts if v.criterion == "amplitude")
+    assert not amp.met and amp.text.startswith("100 mm reached, 120 mm asked")
+    tight = D.check_design(replace(spec, max_pressure_angle=np.radians(20)), six, scale=120.0 / stroke)
+    pa = next(v for v in tight.verdicts if v.criterion == "pressure angle")
+    assert not pa.met and "> 20.0°" in pa.text
+    with pytest.raises(TypeError, match="mechanism"):
+        D.check_design(spec, "МЧВ2")
+    with pytest.raises(ml.MechanismError, match="scale"):
+        D.check_design(spec, six, scale=-1)

@@ -6,10 +6,11 @@ synthesis), simulates each design and compares them on the same criteria
 (:class:`~mechlab.design.criteria.Criteria`); the families that cannot are refused with the reason.
 """
 
-from .candidates import Candidate, Comparison, Refusal, candidates
+from .candidates import Candidate, Comparison, DesignReport, Refusal, Verdict, candidates, check_design
 from .criteria import Criteria, Structure, evaluate
 from .families import FAMILIES, Design, Unsuitable
 from .spec import Specification, SpecificationError
 
-__all__ = ["Specification", "SpecificationError", "candidates", "Comparison", "Candidate", "Refusal", "Criteria",
+__all__ = ["Specification", "SpecificationError", "candidates", "Comparison", "Candidate", "Refusal", "check_design",
+           "DesignReport", "Verdict", "Criteria",
            "Structure", "evaluate", "FAMILIES", "Design", "Unsuitable"]

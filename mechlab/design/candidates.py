@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import MechanismError
-from .criteria import Criteria, evaluate
+from .criteria import Criteria, Structure, evaluate, output_law
 from .families import FAMILIES, Design, Unsuitable
 from .spec import IMPACTS, Specification
 
@@ -168,3 +168,69 @@ def candidates(spec: Specification, families=None) -> Comparison:
         else:
             found.append(Candidate(design, crit))
     return Comparison(spec, tuple(found), tuple(refused))
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """One limit of a specification: met or missed, in words with the numbers."""
+
+    criterion: str
+    met: bool
+    text: str
+
+    def __str__(self) -> str:
+        return f"{'✓' if self.met else '✗'} {self.criterion}: {self.text}"
+
+
+@dataclass(frozen=True)
+class DesignReport:
+    """A student's (or anyone's) design run against a specification: each limit met or missed."""
+
+    spec: Specification
+    criteria: Criteria
+    verdicts: tuple[Verdict, ...]
+
+    @property
+    def met(self) -> bool:
+        return all(v.met for v in self.verdicts)
+
+    def __str__(self) -> str:
+        head = "meets the specification" if self.met else "misses the specification"
+        return "\n".join([f"The design {head}:"] + [f"  {v}" for v in self.verdicts])
+
+    def _repr_html_(self) -> str:
+        rows = "".join(f"<li style='color:{'#2a7f62' if v.met else '#b00020'}'>{v}</li>" for v in self.verdicts)
+        head = "meets the specification" if self.met else "misses the specification"
+        return f"<p><b>The design {head}</b></p><ul>{rows}</ul>"
+
+
+def check_design(spec: Specification, mechanism, *, scale: float = 1.0, phase: float = 0.0) -> DesignReport:
+    """Run ``mechanism`` (its lengths × ``scale`` = mm) against ``spec``: amplitude, dwell, pressure
+    angle, size and impacts, each met or missed with the numbers, from its simulated motion."""
+    if not isinstance(spec, Specification):
+        raise TypeError(f"check_design needs a mechlab.design.Specification, got {type(spec).__name__}")
+    if not hasattr(mechanism, "motion"):
+        raise TypeError(f"check_design needs a mechanism (with motion(phi)), got {type(mechanism).__name__}")
+    scale = float(scale)
+    if not (np.isfinite(scale) and scale > 0):
+        raise MechanismError(f"scale must be a positive number (mm per length unit), got {scale!r}")
+    c = evaluate(mechanism, spec, scale=scale, structure=Structure(0, 0, 0), phase=phase)
+    phi = phase + np.linspace(0.0, 2 * np.pi, 2881)
+    x = np.asarray(output_law(mechanism.motion(phi))[0], float) * (1.0 if spec.rotary else scale)
+    reached = abs(x[-1] - x[0]) if spec.motion == "index" else float(np.ptp(x))
+    unit, shown = ("deg", np.degrees) if spec.rotary else ("mm", lambda v: v)
+    amp_ok = abs(reached - spec.amplitude) <= 0.01 * spec.amplitude
+    v = [Verdict("amplitude", amp_ok, f"{shown(reached):.4g} {unit} reached, {shown(spec.amplitude):.4g} {unit} "
+                                      f"asked (± 1 %)")]
+    v.append(Verdict("dwell", c.dwell_fraction >= spec.dwell_fraction - spec.dwell_tolerance,
+                     f"{c.dwell_fraction:.3f} of the turn within ± {spec.dwell_precision:g} of the amplitude, "
+                     f"{spec.dwell_fraction:.3f} − {spec.dwell_tolerance:.3f} asked at least"))
+    pa = np.degrees(c.pressure_angle)
+    v.append(Verdict("pressure angle", c.pressure_angle <= spec.max_pressure_angle + 1e-9,
+                     f"worst {pa:.1f}° {'≤' if c.pressure_angle <= spec.max_pressure_angle + 1e-9 else '>'} "
+                     f"{np.degrees(spec.max_pressure_angle):.1f}°"))
+    v.append(Verdict("size", c.size <= spec.max_size, f"{c.size:.0f} mm {'≤' if c.size <= spec.max_size else '>'} "
+                                                      f"{spec.max_size:.0f} mm"))
+    v.append(Verdict("impacts", IMPACTS.index(c.impact) <= IMPACTS.index(spec.impacts),
+                     f"{c.impact} (worst admitted: {spec.impacts})"))
+    return DesignReport(spec, c, tuple(v))

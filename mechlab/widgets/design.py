@@ -1,0 +1,115 @@
+"""The choosing explorer: change the specification, and every family is synthesised, compared and ranked anew."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import ipywidgets as W
+import matplotlib.pyplot as plt
+import numpy as np
+from IPython.display import display
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from ..design import Specification, candidates
+from ..design.candidates import COLUMNS
+from ..draw.design import ComparisonFigure
+from ..errors import MechanismError
+from . import _uses_ipympl
+
+_STYLE = {"description_width": "150px"}
+_LAYOUT = W.Layout(width="420px")
+
+
+class ChoosingExplorer:
+    """Sliders for the specification's dwell, speed, pressure-angle limit and stations (or amplitude);
+    a table of the candidates ranked by a chosen criterion, the refusals with their reasons, and the
+    trade-off figure moved in place. An impossible specification shows why, and the explorer stays
+    usable."""
+
+    def __init__(self, spec: Specification, *, question: str | None = None, live: bool | None = None):
+        self.base = spec
+        self.live = _uses_ipympl() if live is None else live
+        s = {}
+        s["dwell_fraction"] = W.FloatSlider(value=spec.dwell_fraction, min=0.05, max=0.9, step=0.01,
+                                            description="dwell (of the turn)", style=_STYLE, layout=_LAYOUT,
+                                            continuous_update=False)
+        s["rpm"] = W.FloatSlider(value=spec.rpm, min=5.0, max=200.0, step=5.0, description="crank speed (rpm)",
+                                 style=_STYLE, layout=_LAYOUT, continuous_update=False)
+        s["max_pressure_angle"] = W.FloatSlider(value=round(np.degrees(spec.max_pressure_angle)), min=20.0,
+                                                max=85.0, step=1.0, description="pressure angle ≤ (deg)",
+                                                style=_STYLE, layout=_LAYOUT, continuous_update=False)
+        if spec.motion == "index":
+            s["stations"] = W.IntSlider(value=spec.stations, min=2, max=12, description="stations", style=_STYLE,
+                                        layout=_LAYOUT, continuous_update=False)
+        elif spec.motion == "swing":
+            s["amplitude"] = W.FloatSlider(value=round(np.degrees(spec.amplitude)), min=5.0, max=120.0, step=1.0,
+                                           description="swing (deg)", style=_STYLE, layout=_LAYOUT,
+                                           continuous_update=False)
+        else:
+            s["amplitude"] = W.FloatSlider(value=spec.amplitude, min=5.0, max=300.0, step=5.0,
+                                           description="stroke (mm)", style=_STYLE, layout=_LAYOUT,
+                                           continuous_update=False)
+        self.sliders = s
+        keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure", "D")]
+        self.rank = W.Dropdown(options=keys, value="motor_power", description="rank by", style=_STYLE,
+                               layout=_LAYOUT)
+        self.table = W.HTML()
+        if self.live:
+            with plt.ioff():
+                fig = plt.figure(figsize=(11.0, 4.8), layout="constrained")
+        else:
+            fig = Figure(figsize=(11.0, 4.8), dpi=80, layout="constrained")
+            FigureCanvasAgg(fig)
+        self.comparison = None
+        self.message = ""
+        self.figure = ComparisonFigure(candidates(spec), fig)
+        self.output = None if self.live else W.Output()
+        canvas = fig.canvas if self.live else self.output
+        ask = [W.HTML(f"<b>Investigate:</b> {question}")] if question else []
+        self.widget = W.VBox(ask + [W.HBox([W.VBox(list(s.values())), W.VBox([self.rank])]), canvas, self.table])
+        for w in [*s.values(), self.rank]:
+            w.observe(lambda change: self.rebuild(), names="value")
+        self.rebuild()
+
+    def spec(self) -> Specification:
+        """The specification the sliders describe (radians inside)."""
+        v = {k: w.value for k, w in self.sliders.items()}
+        v["max_pressure_angle"] = np.radians(v["max_pressure_angle"])
+        if self.base.motion == "swing":
+            v["amplitude"] = np.radians(v["amplitude"])
+        return replace(self.base, **v)
+
+    def rebuild(self) -> None:
+        try:
+            comp = candidates(self.spec()).ranked(self.rank.value)
+        except MechanismError as err:
+            self.message = str(err)
+            self.table.value = f"<p style='color:#b00020'>{err}</p>"
+            return
+        self.comparison = comp
+        self.figure.update(comp)
+        if comp.candidates:
+            self.message = ""
+            self.table.value = comp._repr_html_()
+        else:
+            self.message = "No family meets this specification."
+            why = "".join(f"<li><b>{r.family}</b>: {r.reason}</li>" for r in comp.refusals)
+            self.table.value = f"<p style='color:#b00020'><b>{self.message}</b> Why:</p><ul>{why}</ul>"
+        self._redraw()
+
+    def _redraw(self) -> None:
+        if self.live:
+            self.figure.fig.canvas.draw_idle()
+        else:
+            self.output.clear_output(wait=True)
+            with self.output:
+                display(self.figure.fig)
+
+    def _ipython_display_(self):
+        display(self.widget)
+
+
+def choosing_explorer(spec: Specification, *, question: str | None = None) -> ChoosingExplorer:
+    """The choosing explorer for a starting specification (see :class:`ChoosingExplorer`)."""
+    return ChoosingExplorer(spec, question=question)
