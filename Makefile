@@ -57,6 +57,7 @@ bench: venv
 	test -d $(BENCH_DEPS) || $(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps \
 	    --target $(BENCH_DEPS) pylinkage==1.3.0 numba==0.68.1 llvmlite==0.50.0 tqdm==4.70.1
 	PYTHONPATH=$(BENCH_DEPS) $(BIN)/python benchmarks/bench_fourbar.py
+	$(BIN)/python benchmarks/bench_design.py
 
 clean:
 	rm -rf $(VENV) book/_build

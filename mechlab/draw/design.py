@@ -8,6 +8,7 @@ in place.
 from __future__ import annotations
 
 import numpy as np
+import matplotlib.pyplot as plt
 from matplotlib.figure import Figure
 
 from ..design import FAMILIES, Comparison
@@ -31,7 +32,7 @@ class ComparisonFigure:
     """A radar of the criteria (left) and every candidate's output law over the crank turn (right)."""
 
     def __init__(self, comparison: Comparison, fig: Figure | None = None):
-        self.fig = fig if fig is not None else Figure(figsize=(11.0, 4.8), layout="constrained")
+        self.fig = fig if fig is not None else plt.figure(figsize=(11.0, 4.8), layout="constrained")
         self.radar = self.fig.add_subplot(1, 2, 1, projection="polar")
         self.laws = self.fig.add_subplot(1, 2, 2)
         angles = np.linspace(0.0, 2 * np.pi, len(SPOKES), endpoint=False)
