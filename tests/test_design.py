@@ -247,3 +247,15 @@ def test_check_design_reports_each_limit_with_numbers():
         D.check_design(spec, "МЧВ2")
     with pytest.raises(ml.MechanismError, match="scale"):
         D.check_design(spec, six, scale=-1)
+
+
+@pytest.mark.parametrize("z", [4, 6])
+def test_geneva_torque_and_motor_agree_with_the_geneva_chapter(z):
+    # the comparison samples the turn uniformly; kinetostatics.geneva.drive resolves the engagement ends
+    from mechlab.kinetostatics.geneva import drive
+    spec = D.Specification("index", (z + 2) / (2 * z), stations=z, inertia=2.4, rpm=40)
+    cand = D.candidates(spec, ["external Geneva"]).candidates[0]
+    ref = drive(cand.design.mechanism, inertia=2.4, omega1=spec.omega1)
+    assert cand.criteria.peak_torque == pytest.approx(ref.peak_torque, rel=2e-3)
+    assert cand.criteria.rms_torque == pytest.approx(ref.rms_torque, rel=2e-3)
+    assert cand.criteria.motor_power == pytest.approx(ref.nominal_power, rel=2e-3)
