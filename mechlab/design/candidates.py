@@ -44,6 +44,7 @@ COLUMNS = (
     ("B", "B", "", "{:.3f}"),
     ("C", "C", "", "{:.3f}"),
     ("D", "D", "", "{:.3f}"),
+    ("J", "jerk J", "", "{:.3g}"),
     ("impact", "impact", "", "{}"),
     ("pressure_angle", "pressure angle", "deg", "{:.1f}"),
     ("size", "size", "mm", "{:.0f}"),
@@ -89,7 +90,7 @@ class Comparison:
     refusals: tuple[Refusal, ...]
 
     def ranked(self, by: str = "motor_power") -> "Comparison":
-        """The same comparison with the candidates ordered by ``by`` (smallest first; D None last)."""
+        """The same comparison with the candidates ordered by ``by`` (smallest first; a missing J last)."""
         keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure")]
         if by not in keys:
             raise MechanismError(f"ranked(by=...) takes one of {keys}, got {by!r}")

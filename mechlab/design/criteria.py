@@ -1,10 +1,11 @@
 """The comparison criteria of a dwell design, computed from its simulated motion.
 
 Every figure is read off ``mechanism.motion(phi)`` on a fine grid of the crank turn, never
-from a family's own formulas, so that all families are judged alike. Kinematic figures are
-normalised as Kinitsky (1994) normalises cam laws: with h the output's amplitude and
-Φ = 2π(1 − dwell fraction) the crank angle of the motion, B = max|x′|·Φ/h,
-C = max|x″|·Φ²/h, D = max|x‴|·Φ³/h.
+from a family's own formulas, so that all families are judged alike. The kinematic figures are
+those by which Kinitsky (1994) compares six-bars with cam laws, measured over the **rise**
+(from the end of the dwell to the output's farthest position, or to the next dwell of an
+index) with :func:`~mechlab.analysis.motion_laws.rise_invariants`: B (velocity), C
+(acceleration), D (kinetic power, velocity × acceleration); and the jerk J = max|x‴|·Φ³/h.
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..analysis.motion_laws import rise_invariants
 from ..kinetostatics.drive import drive
 from .spec import Specification
 
@@ -44,10 +46,10 @@ class Criteria:
     dwell_residual : float
         Output motion (max − min) over the asked dwell, centred on the achieved one, as a
         fraction of h: the dwell's accuracy (0 for an exact dwell).
-    B, C : float
-        Peak velocity and acceleration invariants.
-    D : float or None
-        Peak jerk invariant; None where the acceleration jumps (the jerk is unbounded).
+    B, C, D : float
+        The rise's invariants of velocity, acceleration and kinetic power (Kinitsky, 1994).
+    J : float or None
+        The rise's peak jerk, max|x‴|·Φ³/h; None where the acceleration jumps (the jerk is unbounded).
     velocity_jump, acceleration_jump : float
         Jumps of x′ and x″ (as fractions of their peaks); non-zero means a hard or soft impact.
     impact : str
@@ -65,7 +67,8 @@ class Criteria:
     dwell_residual: float
     B: float
     C: float
-    D: float | None
+    D: float
+    J: float | None
     velocity_jump: float
     acceleration_jump: float
     impact: str
@@ -153,13 +156,21 @@ def evaluate(mechanism, spec: Specification, *, scale: float, structure: Structu
     # the unwrapped output at any sample k: x[k mod n] + shift·⌊k/n⌋
     window = x[:-1][idx % SAMPLES] + shift * np.floor_divide(idx, SAMPLES)
     residual = float(np.ptp(window)) / h if want else 0.0
-    motion_angle = 2 * np.pi * (1.0 - spec.dwell_fraction)
+    # the rise: from the dwell's end to the farthest position (a swing or stroke) or to the next dwell (an index)
+    end = start + run
+    k = np.arange(end, start + SAMPLES + 1)
+    xs = x[:-1][k % SAMPLES] + shift * np.floor_divide(k, SAMPLES)
+    if spec.motion != "index":
+        k = k[:int(np.argmax(np.abs(xs - xs[0]))) + 1]
+        xs = xs[:len(k)]
+    rise_phi = phi[0] + k * (2 * np.pi / SAMPLES)
+    inv = rise_invariants(rise_phi, xs, d1[:-1][k % SAMPLES], d2[:-1][k % SAMPLES])
     v_jump, a_jump = _jumps(mechanism, phase)
     impact = "hard" if v_jump > 1e-6 else "soft" if a_jump > 1e-6 else "none"
     jerk = None
     if impact == "none":
-        d3 = np.gradient(d2, phi)
-        jerk = float(np.max(np.abs(d3))) * motion_angle**3 / h
+        d3 = np.gradient(d2, phi)[:-1][k % SAMPLES]
+        jerk = float(np.max(np.abs(d3))) * (rise_phi[-1] - rise_phi[0]) ** 3 / abs(xs[-1] - xs[0])
     if pressure_angle is None:
         pressure_angle = float(np.max(mo.pressure_angle))
     pts = [p.p for p in mo.points.values()] + [np.array([[c[0] - r, c[1] - r], [c[0] + r, c[1] + r]])
@@ -172,8 +183,7 @@ def evaluate(mechanism, spec: Specification, *, scale: float, structure: Structu
     w = spec.omega1
     torque = load * (d1 * si) * (d2 * si) * w**2 + spec.resisting * np.abs(d1 * si)
     motor = drive(torque, phi, w, overload=spec.overload)
-    return Criteria(dwell_fraction=dwell, dwell_residual=residual,
-                    B=float(np.max(np.abs(d1))) * motion_angle / h, C=float(np.max(np.abs(d2))) * motion_angle**2 / h,
-                    D=jerk, velocity_jump=v_jump, acceleration_jump=a_jump, impact=impact,
+    return Criteria(dwell_fraction=dwell, dwell_residual=residual, B=inv.B, C=inv.C, D=inv.D,
+                    J=jerk, velocity_jump=v_jump, acceleration_jump=a_jump, impact=impact,
                     pressure_angle=float(pressure_angle), size=size, peak_torque=motor.peak_torque,
                     rms_torque=motor.rms_torque, motor_power=motor.nominal_power, structure=structure)

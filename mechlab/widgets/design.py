@@ -51,7 +51,7 @@ class ChoosingExplorer:
                                            description="stroke (mm)", style=_STYLE, layout=_LAYOUT,
                                            continuous_update=False)
         self.sliders = s
-        keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure", "D")]
+        keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure", "J")]
         self.rank = W.Dropdown(options=keys, value="motor_power", description="rank by", style=_STYLE,
                                layout=_LAYOUT)
         self.table = W.HTML()
