@@ -1,0 +1,188 @@
+"""The course's frame: every chapter opens with objectives, prerequisites, time and its machine,
+keeps its asserts in hidden check cells, ends with the pointer to its assignment, and no
+student-facing text names a source by its seed key or points to a figure the page does not show.
+"""
+
+import ast
+import json
+import re
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import pytest
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from mechlab.draw.machines import MACHINES, schematic  # noqa: E402
+from mechlab.errors import MechanismError  # noqa: E402
+
+ROOT = Path(__file__).parent.parent
+CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+ASSIGNMENTS = ("getting_started", "equivalence", "base_mechanism", "symmetry", "instant_centres", "dwell_curved_slot",
+               "chebyshev_synthesis", "chebyshev_sixbars", "geneva", "geneva_spherical", "forces", "cams")
+FRAME_HEADINGS = ("## Learning objectives", "## Prerequisites", "## Time", "## The machine")
+SEED = re.compile(r"\bseeds?\b", re.I)
+FIGURE = re.compile(r"\bFigs?\.\s*(\d+(?:\.\d+)?)")
+
+
+def cells(path):
+    return json.loads(path.read_text())["cells"]
+
+
+def source(cell):
+    return "".join(cell["source"])
+
+
+def is_check(cell):
+    return "check" in cell.get("metadata", {}).get("tags", [])
+
+
+def asserts_in(code: str) -> int:
+    return sum(isinstance(node, ast.Assert) for node in ast.walk(ast.parse(code)))
+
+
+def test_there_are_chapters():
+    assert len(CHAPTERS) >= 11
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_chapter_opens_with_its_frame(path):
+    first, second = cells(path)[:2]
+    text = source(first)
+    assert first["cell_type"] == "markdown" and re.match(r"# \d+ · \S", text), f"{path.name}: no '# n · title' first"
+    places = [text.find(h + "\n") for h in FRAME_HEADINGS]
+    assert all(p > 0 for p in places) and places == sorted(places), f"{path.name}: headings {FRAME_HEADINGS} in order"
+    objectives = text[places[0]:places[1]]
+    bullets = re.findall(r"^- \S", objectives, re.M)
+    assert 3 <= len(bullets) <= 5, f"{path.name}: {len(bullets)} learning objectives, not 3-5"
+    assert re.search(r"\d+ minutes", text[places[2]:places[3]]), f"{path.name}: the time is not given in minutes"
+    assert len(text[places[3]:].split()) > 30, f"{path.name}: the machine is not described in words"
+    call = re.search(r'schematic\("(\w+)"\)', source(second))
+    assert second["cell_type"] == "code" and call, f"{path.name}: no schematic right after the frame"
+    assert call.group(1) in MACHINES
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_teaching_cells_carry_no_assert(path):
+    code = [c for c in cells(path) if c["cell_type"] == "code"]
+    untagged = {c["id"]: asserts_in(source(c)) for c in code if not is_check(c)}
+    assert sum(untagged.values()) == 0, f"{path.name}: asserts in teaching cells {[k for k, v in untagged.items() if v]}"
+    for c in code:
+        if is_check(c):
+            assert c["metadata"].get("jupyter", {}).get("source_hidden") is True, f"{path.name}: {c['id']} not hidden"
+    assert any(is_check(c) and asserts_in(source(c)) for c in code), f"{path.name}: no check cell asserts anything"
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_chapter_ends_with_its_assignment(path):
+    last = cells(path)[-1]
+    text = source(last)
+    assert last["cell_type"] == "markdown" and text.startswith("## Exercises"), f"{path.name}: no closing Exercises"
+    ids = re.findall(r"assignments/source/(\w+)/(\w+)\.ipynb", text)
+    assert len(ids) == 1 and ids[0][0] == ids[0][1] and ids[0][0] in ASSIGNMENTS, f"{path.name}: {ids}"
+    for c in cells(path):
+        assert "mechlab.course.exercises" not in source(c), f"{path.name}: an old exercise cell is left"
+
+
+def figure_problems(text: str, shown: str) -> list[str]:
+    """'Fig. N' in ``text`` whose number is not in ``shown`` (the page's own drawings)."""
+    return [m.group(0) for m in FIGURE.finditer(text)
+            if not re.search(rf"\bFigs?\.\s*{re.escape(m.group(1))}(?!\d)", shown)]
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_notebook_cites_works_and_shows_its_figures(path):
+    cs = cells(path)
+    for c in cs:
+        assert not SEED.search(source(c)), f"{path.name}: 'seed' in cell {c['id']}"
+    drawings = "\n".join(source(c) for c in cs if c["cell_type"] == "code")
+    prose = "\n".join(source(c) for c in cs if c["cell_type"] == "markdown")
+    assert figure_problems(prose, drawings) == [], f"{path.name}: a source's figure is named but not redrawn"
+
+
+def visible_markdown(text: str) -> str:
+    """A book page without MyST targets '(label)=' and link addresses: what the reader sees."""
+    text = re.sub(r"^\(.*\)=\s*$", "", text, flags=re.M)
+    return re.sub(r"\]\([^)]*\)", "]", text)
+
+
+BOOK_PAGES = [ROOT / "book" / f"{name}.md" for name in ("intro", "glossary", "references", "errata")]
+
+
+@pytest.mark.parametrize("page", [p for p in BOOK_PAGES if p.exists()], ids=lambda p: p.name)
+def test_book_page_cites_works(page):
+    text = visible_markdown(page.read_text())
+    assert not SEED.search(text), f"{page.name}: {SEED.search(text).group(0)!r}"
+    assert figure_problems(text, "") == [], f"{page.name}: a source's figure named on a page without figures"
+
+
+def student_strings(path: Path) -> list[str]:
+    """The string constants of a module that a student reads: everything but docstrings."""
+    tree = ast.parse(path.read_text())
+    docstrings = {id(node.body[0].value) for node in ast.walk(tree)
+                  if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef)) and node.body
+                  and isinstance(node.body[0], ast.Expr) and isinstance(node.body[0].value, ast.Constant)}
+    return [n.value for n in ast.walk(tree)
+            if isinstance(n, ast.Constant) and isinstance(n.value, str) and id(n) not in docstrings]
+
+
+EXERCISE_TEXTS = sorted((ROOT / "mechlab" / "course" / "exercises").glob("*.py"))
+ASSIGNMENT_NOTEBOOKS = sorted((ROOT / "assignments").glob("**/*.ipynb"))
+
+
+@pytest.mark.parametrize("path", EXERCISE_TEXTS + ASSIGNMENT_NOTEBOOKS, ids=lambda p: p.name)
+def test_exercise_texts_cite_works(path):
+    if path.suffix == ".py":
+        texts = student_strings(path)
+    else:
+        texts = [source(c) for c in cells(path) if c["cell_type"] == "markdown"]
+    for text in texts:
+        assert not SEED.search(text), f"{path.name}: {text[:80]!r}"
+        assert figure_problems(text, "") == [], f"{path.name}: {text[:80]!r}"
+
+
+def widget_titles() -> list[tuple[str, str]]:
+    titles = []
+    for path in sorted((ROOT / "mechlab" / "widgets").glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.keyword) and node.arg in ("title", "question") and isinstance(node.value, ast.Constant):
+                titles.append((path.name, node.value.value))
+    return titles
+
+
+@pytest.mark.parametrize("where, title", widget_titles())
+def test_widget_title_cites_works(where, title):
+    assert not SEED.search(title) and not FIGURE.search(title), f"{where}: {title!r}"
+
+
+def test_the_scans_would_see_a_seed_and_a_bare_figure():
+    assert SEED.search("as seed 000 shows") and not SEED.search("seeding")
+    assert figure_problems("see Fig. 7.3 and Figs. 2-4", "# after Kozhevnikov, Fig. 7.3") == ["Figs. 2"]
+    assert asserts_in("x = 1\nfor i in range(2):\n    assert i < 2\n") == 1
+
+
+@pytest.mark.parametrize("name", sorted(MACHINES))
+def test_schematic_is_labelled_and_draws_its_mechanism_where_it_is(name):
+    fig = schematic(name)
+    try:
+        (ax,) = fig.axes
+        assert ax.get_title() and not ax.axison
+        arrows = [t for t in ax.texts if getattr(t, "arrow_patch", None) is not None]
+        assert len(arrows) >= 3, "fewer than three labelled parts"
+        letters = {t.get_text(): np.array(t.get_position()) for t in ax.texts if re.fullmatch(r"[A-Z]", t.get_text())}
+        assert {"O", "A"} <= set(letters)
+        # each joint letter sits next to a joint drawn as a marker of the mechanism
+        markers = np.concatenate([np.asarray(line.get_xydata(), float) for line in ax.lines if line.get_marker()
+                                  not in (None, "None", "")] or [np.empty((0, 2))])
+        x0, x1 = ax.get_xlim()
+        for letter, where in letters.items():
+            assert np.min(np.hypot(*(markers - where).T)) < 0.08 * (x1 - x0), f"{letter} is far from every joint"
+    finally:
+        plt.close(fig)
+
+
+def test_unknown_machine_is_named():
+    with pytest.raises(MechanismError, match=r"name = 'lathe' is not one of .*film_projector"):
+        schematic("lathe")
