@@ -86,6 +86,19 @@ def test_chapter_ends_with_its_assignment(path):
         assert "mechlab.course.exercises" not in source(c), f"{path.name}: an old exercise cell is left"
 
 
+def test_the_intro_gives_the_path_with_each_chapters_time():
+    intro = (ROOT / "book" / "intro.md").read_text()
+    rows = dict(re.findall(r"^\|[^|\n]*\|[^|\n]*\(notebooks/(\w+)\.ipynb\)[^\n]*?\| (\d+) min \|", intro, re.M))
+    times = {}
+    for path in CHAPTERS:
+        frame = source(cells(path)[0])
+        minutes = re.search(r"## Time\s+About (\d+) minutes", frame)
+        times[path.stem] = int(minutes.group(1))
+    assert {k: int(v) for k, v in rows.items()} == {k: v for k, v in times.items() if k in rows}
+    assert set(times) - set(rows) <= {"07_cam_motion_laws"}, "a chapter is missing from the learning path"
+    assert f"In all {sum(int(v) for v in rows.values())} minutes" in intro
+
+
 def figure_problems(text: str, shown: str) -> list[str]:
     """'Fig. N' in ``text`` whose number is not in ``shown`` (the page's own drawings)."""
     return [m.group(0) for m in FIGURE.finditer(text)

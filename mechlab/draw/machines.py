@@ -8,7 +8,8 @@ offset Geneva (Vainer & Shatokhina), screen-printing machines and the nail-makin
 automata of forging-press works for the Chebyshev six-bars (Kinitsky, 1994); otherwise
 well-known ones (a film projector's Geneva, a loom's sley, a cartoning line's pusher).
 
-``schematic(name)`` returns the Figure; :data:`MACHINES` lists the names.
+``schematic(name)`` returns the Figure; :data:`MACHINES` lists the names. ``label_joints``
+writes the joint letters into any mechlab drawing.
 """
 
 from __future__ import annotations
@@ -64,6 +65,14 @@ def _letters(ax, points: dict, names: str, offset=(0.0, 0.0)):
         x, y = points[name]
         ax.text(x + offset[0], y + offset[1], name, fontsize=11, fontweight="bold", color="#1f4e79",
                 ha="left", va="bottom", zorder=7)
+
+
+def label_joints(drawing, i: int = 0):
+    """Write each joint's letter next to it in a mechlab drawing, at frame i (the letters the
+    chapters use: O, A, B, E, ...)."""
+    points = {k: v.p[i] for k, v in drawing.motion.points.items()}
+    x0, x1 = drawing.ax.get_xlim()
+    _letters(drawing.ax, points, list(points), (0.015 * (x1 - x0), 0.015 * (x1 - x0)))
 
 
 def _ground(ax, xy, size):
