@@ -270,7 +270,7 @@ def packaging_line(ax=None):
     _label(ax, "crank O-A with the pin A", pts["A"], pts["A"] + (0.9, 0.5))
     _label(ax, "slotted link about B: its slot\nhas an arc of radius OA (the dwell)", B + (0.3, 0.03),
            B + (0.6, 1.3))
-    _label(ax, "arm and pusher on the link:\nstill while a carton is filled", tip + 0.1 * u, tip + (-1.2, -0.5))
+    _label(ax, "arm and pusher on the link:\nstill while a carton is filled", tip - 0.3 * u, tip + (-1.5, 0.7))
     _label(ax, "filling head", filler + (0.2, 0.0), filler + (1.0, 0.3))
     _label(ax, "cartons on the line", (x1 - 0.4, belt_y - 0.2), (x1 - 0.4, belt_y - 0.8))
     _fit(ax)
