@@ -21,7 +21,8 @@ from mechlab.errors import MechanismError  # noqa: E402
 ROOT = Path(__file__).parent.parent
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 ASSIGNMENTS = ("getting_started", "equivalence", "base_mechanism", "symmetry", "instant_centres", "dwell_curved_slot",
-               "chebyshev_synthesis", "chebyshev_sixbars", "geneva", "geneva_spherical", "forces", "cams")
+               "chebyshev_synthesis", "chebyshev_sixbars", "geneva", "geneva_spherical", "forces", "cams",
+               "choosing")
 FRAME_HEADINGS = ("## Learning objectives", "## Prerequisites", "## Time", "## The machine")
 SEED = re.compile(r"\bseeds?\b", re.I)
 FIGURE = re.compile(r"\bFigs?\.\s*(\d+(?:\.\d+)?)")

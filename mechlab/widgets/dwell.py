@@ -25,7 +25,7 @@ class DwellExplorer(MechanismExplorer):
             "roller_radius": Control("roller ρ", 0.0, 0.5, 0.01, roller_radius, "mm"),
             "transition": Choice("transition", TRANSITIONS, transition),
         }
-        super().__init__(self._build, controls, n=n, title="Curved-slot dwell mechanism (seed 000 §3)")
+        super().__init__(self._build, controls, n=n, title="Curved-slot dwell mechanism (Zinchenko et al., 2013, §3)")
 
     @staticmethod
     def _build(lam, pivot_distance, phi1, phi2, roller_radius, transition):

@@ -50,4 +50,4 @@ def spherical_geneva_explorer(R: float = 40.0, e: float = 15.0, z: int = 4) -> G
     """Sliders for the sphere radius R, the offset e (mm) and z; the wheel in 3-D."""
     controls = {"R": Control("R", 10, 100, 1, R, "mm"), "e": Control("offset e", 0, 100, 0.5, e, "mm"),
                 "z": Control("slots z", 3, 12, 1, z)}
-    return GenevaExplorer(SphericalGeneva, controls, trace="P", title="Spherical offset Geneva (seed 004)")
+    return GenevaExplorer(SphericalGeneva, controls, trace="P", title="Spherical offset Geneva (Vainer & Shatokhina)")

@@ -15,8 +15,8 @@ def _slot_of_seed_example():
 
 exercise(
     "01.1",
-    "FourBar(crank=0.3, coupler=0.8, rocker=1, ground=1) (seed 000's example) moves like a slotted link with a "
-    "circular slot. Give [radius of the slot, distance of its centre from the link's pivot].",
+    "FourBar(crank=0.3, coupler=0.8, rocker=1, ground=1) (the example of Zinchenko et al., 2013) moves like a "
+    "slotted link with a circular slot. Give [radius of the slot, distance of its centre from the link's pivot].",
     _slot_of_seed_example,
     hint="Fix the rocker: A can only move on a circle about B. Which link is its radius, which the distance E-B?",
 )
@@ -27,7 +27,7 @@ exercise(
     "four-bar: at that instant the pin is at rest on the slot, so the link moves like the base mechanism.",
     lambda: float(FourBar(0.3, 0.8, 1.0, 1.0, 1).motion(0.0).dpsi[0]),
     rtol=1e-6,
-    hint="Formula (19) with λ = l_OA/l_OE, at the seed's φ = π: λ/(λ - 1).",
+    hint="Formula (19) with λ = l_OA/l_OE, at the paper's φ = π: λ/(λ - 1).",
 )
 
 

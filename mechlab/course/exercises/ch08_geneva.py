@@ -36,7 +36,7 @@ exercise(
     "Crank angle α0 (degrees) at which the pin enters a slot of the spherical Geneva with R = 50 mm, e = 20 mm, z = 6.",
     lambda: float(np.degrees(SphericalGeneva(50.0, 20.0, 6).alpha0)),
     rtol=1e-4, unit="deg",
-    hint="ρ0 = sqrt(e² + R² sin²(π/z)) and cos α0 = e/ρ0 (seed 004, (1)-(2)).",
+    hint="ρ0 = sqrt(e² + R² sin²(π/z)) and cos α0 = e/ρ0 (Vainer & Shatokhina, formulas (1)-(2)).",
 )
 
 exercise(
