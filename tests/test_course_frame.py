@@ -94,6 +94,7 @@ def test_the_intro_gives_the_path_with_each_chapters_time():
     for path in CHAPTERS:
         frame = source(cells(path)[0])
         minutes = re.search(r"## Time\s+\D*?(\d+) minutes", frame, re.I)
+        assert minutes, f"{path.name}: its Time section gives no minutes"
         times[path.stem] = int(minutes.group(1))
     assert {k: int(v) for k, v in rows.items()} == {k: v for k, v in times.items() if k in rows}
     assert set(times) - set(rows) <= {"07_cam_motion_laws"}, "a chapter is missing from the learning path"
