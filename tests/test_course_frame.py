@@ -69,7 +69,8 @@ def test_chapter_opens_with_its_frame(path):
 def test_teaching_cells_carry_no_assert(path):
     code = [c for c in cells(path) if c["cell_type"] == "code"]
     untagged = {c["id"]: asserts_in(source(c)) for c in code if not is_check(c)}
-    assert sum(untagged.values()) == 0, f"{path.name}: asserts in teaching cells {[k for k, v in untagged.items() if v]}"
+    offending = [k for k, v in untagged.items() if v]
+    assert not offending, f"{path.name}: asserts in teaching cells {offending}"
     for c in code:
         if is_check(c):
             assert c["metadata"].get("jupyter", {}).get("source_hidden") is True, f"{path.name}: {c['id']} not hidden"
@@ -162,7 +163,8 @@ def widget_titles() -> list[tuple[str, str]]:
     titles = []
     for path in sorted((ROOT / "mechlab" / "widgets").glob("*.py")):
         for node in ast.walk(ast.parse(path.read_text())):
-            if isinstance(node, ast.keyword) and node.arg in ("title", "question") and isinstance(node.value, ast.Constant):
+            if (isinstance(node, ast.keyword) and node.arg in ("title", "question")
+                    and isinstance(node.value, ast.Constant)):
                 titles.append((path.name, node.value.value))
     return titles
 

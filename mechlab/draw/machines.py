@@ -128,7 +128,8 @@ def film_projector(ax=None):
     _label(ax, "crank O-A with its pin\n(turns uniformly, one turn per frame)", A, O + (-0.6, 1.5))
     _label(ax, "Geneva wheel (4 slots):\na quarter turn, then locked", W + (0.35, 0.45), W + (0.0, 1.9))
     _label(ax, "sprocket on the\nwheel's shaft", S + (0.0, -rs), S + (-0.2, -1.2))
-    _label(ax, "film gate: the frame stands\nstill while it is projected", (fx, gate_y + 0.3), (fx - 0.2, gate_y + 1.25))
+    _label(ax, "film gate: the frame stands\nstill while it is projected", (fx, gate_y + 0.3),
+           (fx - 0.2, gate_y + 1.25))
     _label(ax, "lamp", (fx - 0.7, gate_y), (fx - 1.2, gate_y + 0.7))
     _label(ax, "lens", (fx + 0.47, gate_y + 0.22), (fx + 0.9, gate_y + 0.75))
     _fit(ax)
