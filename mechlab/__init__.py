@@ -13,6 +13,8 @@ from .analysis.centres import Centre, CentreAtInfinity, IndeterminateCentre, cen
 from .analysis.equivalence import assembly_symmetry, base_law, base_mechanism, equivalent_slot, relative_path
 from .analysis.half_turn import base_peaks, limit_theorem, other_half
 from .analysis.intermittency import compare, intermittency
+from .analysis.textbook import (TransmissionExtremes, crank_ranges_degrees, nearest_assembly, transmission_extremes,
+                                zero_acceleration)
 from .errors import (AssemblyError, DimensionError, InfeasibleDesignError, MechanismError, RotationError,
                      SingularityError, SynthesisError)
 from .kinetostatics import (Body, DriveError, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute,
@@ -22,7 +24,7 @@ from .mechanisms import (Antiparallelogram, CircleSlot, CurvedSlotLink, Elliptic
                          LambdaSliderSixBar, LambdaTranslatingSlot, Mechanism, ParametricSlot, SampledSlot,
                          SineMechanism, SixBarIV, SliderCrank, SlottedLink, SphericalGeneva, TranslatingCurvedSlot)
 from .mechanisms.geneva import OffsetError, SlotCountError
-from .motion import AngularMotion, LinearMotion, Motion
+from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion
 from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
                                    DwellSlotMechanism, compare_transitions, curved_slot_dwell, dwell_limit,
                                    two_branch_slot)
@@ -43,7 +45,9 @@ __all__ = [
     "CurvedSlotLink", "TranslatingCurvedSlot", "CircleSlot", "ParametricSlot", "SampledSlot", "SixBarIV",
     "EllipticTrammel", "Antiparallelogram", "LambdaMechanism",
     "ExternalGeneva", "InternalGeneva", "SphericalGeneva",
-    "Motion", "AngularMotion", "LinearMotion",
+    "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes",
+    # textbook helpers
+    "nearest_assembly", "transmission_extremes", "TransmissionExtremes", "zero_acceleration", "crank_ranges_degrees",
     # equivalence, base mechanism, half-turn relations
     "relative_path", "equivalent_slot", "base_law", "base_mechanism", "assembly_symmetry",
     "other_half", "limit_theorem", "base_peaks",

@@ -1,18 +1,62 @@
-"""The result of ``mechanism.motion(phi)``: joint paths and the output law.
+"""The result of ``mechanism.motion(phi)``: joint paths, the output law and every link's angle.
 
 Analogs are derivatives with respect to the crank angle φ; physical values at a
 crank speed ω1 and crank acceleration ε1 follow from the chain rule:
 ω2 = ψ'·ω1 and ε2 = ψ''·ω1² + ψ'·ε1 (likewise v = s'·ω1, a = s''·ω1² + s'·ε1).
+A scalar φ gives a motion of scalars (positions of shape ``(2,)``), an array of n
+angles a motion of arrays (positions ``(n, 2)``).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import functools
+from dataclasses import dataclass, field, fields
+from numbers import Real
 from typing import Callable, Mapping
 
 import numpy as np
 
-from .geometry import PointPath
+from .errors import DimensionError, SingularityError
+from .geometry import PointPath, relative, vector_angle
+
+
+@dataclass(frozen=True, eq=False)
+class Law:
+    """A quantity of the mechanism with its first and second analogs (d/dφ, d²/dφ²).
+
+    ``kind`` is ``"angle"`` (``value`` in radians, analogs dimensionless and 1/rad) or
+    ``"position"`` (``value`` a length, analogs length/rad and length/rad²). ``name``
+    says what it is: ``"ψ"``, ``"s"`` or ``"θ(A→B)"``. Arrays over the crank angles, or
+    floats for a scalar crank angle.
+    """
+
+    name: str
+    value: np.ndarray | float
+    d: np.ndarray | float
+    dd: np.ndarray | float
+    kind: str = "angle"
+
+    def velocity(self, omega1: float) -> np.ndarray | float:
+        """ω = value'·ω1 (rad/s or length/s) at crank speed ω1 (rad/s)."""
+        return self.d * omega1
+
+    def acceleration(self, omega1: float, eps1: float = 0.0) -> np.ndarray | float:
+        """value''·ω1² + value'·ε1 at crank speed ω1 and crank acceleration ε1 (rad/s²)."""
+        return self.dd * omega1**2 + self.d * eps1
+
+    @property
+    def degrees(self) -> np.ndarray | float:
+        """The value in degrees (angles only)."""
+        if self.kind != "angle":
+            raise DimensionError(f"{self.name} is a {self.kind}, not an angle: it has no value in degrees")
+        return np.degrees(self.value)
+
+    def __repr__(self) -> str:
+        if np.ndim(self.value):
+            return f"Law({self.name}, {self.kind}, n={np.size(self.value)})"
+        value = (f"{self.name} = {float(self.value):.6g} rad = {float(np.degrees(self.value)):.6g}°"
+                 if self.kind == "angle" else f"{self.name} = {float(self.value):.6g}")
+        return f"Law({value}, {self.name}′ = {float(self.d):.6g}, {self.name}″ = {float(self.dd):.6g})"
 
 
 @dataclass(frozen=True, eq=False)
@@ -23,6 +67,7 @@ class Motion:
     and analogs, each ``(n, 2)``). ``transmission`` is the transmission angle μ in
     [0, π] at every φ (π/2 is ideal); ``pressure_angle`` is |π/2 - μ|. A mechanism may
     pass a function of the motion instead of the array: it is evaluated on first use.
+    ``output`` is the output law whatever its kind; :meth:`link_angle` any link's angle.
     """
 
     phi: np.ndarray
@@ -39,17 +84,88 @@ class Motion:
     def pressure_angle(self) -> np.ndarray:
         return np.abs(np.pi / 2 - self.transmission)
 
-    def _law(self):
+    @property
+    def output(self) -> Law:  # pragma: no cover - every motion is angular or linear
         raise NotImplementedError
 
     def velocity(self, omega1: float) -> np.ndarray:
         """Output velocity (rad/s or length/s) at crank speed ω1 (rad/s)."""
-        return self._law()[1] * omega1
+        return self.output.velocity(omega1)
 
     def acceleration(self, omega1: float, eps1: float = 0.0) -> np.ndarray:
         """Output acceleration at crank speed ω1 and crank acceleration ε1."""
-        _, d1, d2 = self._law()
-        return d2 * omega1**2 + d1 * eps1
+        return self.output.acceleration(omega1, eps1)
+
+    def link_angle(self, start: str, end: str) -> Law:
+        """Angle θ of the line from joint ``start`` to joint ``end``, counter-clockwise from +x.
+
+        θ' = (v × v')/|v|² and θ'' = (v × v'')/|v|² - 2θ'(v·v')/|v|², v = end - start
+        (differentiating θ = atan2(v_y, v_x)). Over an array of crank angles θ is
+        continuous along the samples (unwrapped) and starts in (-π, π]. E.g. the coupler
+        of a four-bar: ``mo.link_angle("A", "B")``; its rocker: ``mo.link_angle("E", "B")``.
+        """
+        for name, joint in (("start", start), ("end", end)):
+            if joint not in self.points:
+                raise DimensionError(f"link_angle: {name} = {joint!r} is not a joint of this motion; "
+                                     f"its joints are {sorted(self.points)}")
+        if np.shape(self.points[start].p)[-1] != 2:
+            raise DimensionError(f"link_angle is planar: the joints of this motion are points in space "
+                                 f"(shape {np.shape(self.points[start].p)})")
+        if np.ndim(self.phi) == 0:
+            law = self.as_arrays().link_angle(start, end)
+            return Law(law.name, law.value[0], law.d[0], law.dd[0], law.kind)
+        v = relative(self.points[end], self.points[start])
+        length = np.hypot(v.p[:, 0], v.p[:, 1])
+        if np.any(length == 0.0):
+            i = int(np.argmin(length))
+            raise SingularityError(f"link_angle: joints {start} and {end} coincide at "
+                                   f"φ = {np.degrees(self.phi[i]):.2f}°, so the line between them has no angle")
+        ang = vector_angle(v)
+        return Law(f"θ({start}→{end})", np.unwrap(ang.theta), ang.d, ang.dd, "angle")
+
+    def placed(self, origin=(0.0, 0.0), angle: float = 0.0) -> "Motion":
+        """The motion seen in a frame where the mechanism's own frame has its origin at
+        ``origin`` and its x axis at ``angle`` (radians) from the new x axis.
+
+        Positions rotate by ``angle`` and translate by ``origin``; their analogs rotate;
+        φ, an output angle ψ and every link angle grow by ``angle`` (they are measured from
+        the new x axis); a slider's displacement s and the transmission angle are intrinsic
+        and stay. A Watt linkage with pivots O and E anywhere::
+
+            alpha = np.arctan2(E[1] - O[1], E[0] - O[0])
+            mech = FourBar(crank, coupler, rocker, ground=np.hypot(E[0] - O[0], E[1] - O[1]))
+            mo = mech.motion(theta2 - alpha).placed(O, alpha)   # θ2: the crank from the x axis
+        """
+        if any(np.shape(p.p)[-1] != 2 for p in self.points.values()):
+            raise DimensionError("placed is planar: the joints of this motion are points in space")
+        c, s = np.cos(angle), np.sin(angle)
+        rot = np.array([[c, s], [-s, c]])  # row vectors times rot = rotation by +angle
+        o = np.asarray(origin, dtype=float)
+        points = {k: PointPath(p.p @ rot + o, p.d @ rot, p.dd @ rot) for k, p in self.points.items()}
+        return self._with(points=points, phi=self.phi + angle, **self._placed_output(angle))
+
+    def _placed_output(self, angle: float) -> dict:
+        return {}
+
+    def _with(self, **changes) -> "Motion":
+        values = {f.name: getattr(self, f.name) for f in fields(self)}
+        values["_transmission"] = self.transmission
+        values.update(changes)
+        return type(self)(**values)
+
+    def _map(self, take) -> "Motion":
+        """The same motion with ``take`` applied to every array (positions and analogs row-wise)."""
+        points = {k: PointPath(take(p.p), take(p.d), take(p.dd)) for k, p in self.points.items()}
+        values = {f.name: take(getattr(self, f.name)) for f in fields(self)
+                  if f.name not in ("points", "_transmission")}
+        return self._with(points=points, _transmission=take(self.transmission), **values)
+
+    def _first(self):
+        return self._map(lambda a: a[0])
+
+    def as_arrays(self) -> "Motion":
+        """The motion over an array of crank angles: a motion at a scalar φ becomes one at [φ]."""
+        return self._map(lambda a: np.asarray(a)[None]) if np.ndim(self.phi) == 0 else self
 
     def __len__(self) -> int:
         return len(self.phi)
@@ -63,8 +179,13 @@ class AngularMotion(Motion):
     dpsi: np.ndarray
     ddpsi: np.ndarray
 
-    def _law(self):
-        return self.psi, self.dpsi, self.ddpsi
+    @property
+    def output(self) -> Law:
+        """The output law ψ, ψ', ψ''."""
+        return Law("ψ", self.psi, self.dpsi, self.ddpsi, "angle")
+
+    def _placed_output(self, angle: float) -> dict:
+        return {"psi": self.psi + angle}
 
 
 @dataclass(frozen=True, eq=False)
@@ -75,5 +196,88 @@ class LinearMotion(Motion):
     ds: np.ndarray
     dds: np.ndarray
 
-    def _law(self):
-        return self.s, self.ds, self.dds
+    @property
+    def output(self) -> Law:
+        """The output law s, s', s''."""
+        return Law("s", self.s, self.ds, self.dds, "position")
+
+
+def scalar_in_scalar_out(motion):
+    """Wrap a mechanism's ``motion(phi)`` so that a real scalar φ gives a motion of scalars.
+
+    The wrapped method always receives an array; anything that is not a real scalar
+    passes through unchanged (and is checked there).
+    """
+    @functools.wraps(motion)
+    def wrapped(self, phi, *args, **kwargs):
+        if isinstance(phi, Real) or (isinstance(phi, np.ndarray) and phi.ndim == 0):
+            return motion(self, np.array([phi], dtype=float), *args, **kwargs)._first()
+        return motion(self, phi, *args, **kwargs)
+    return wrapped
+
+
+@dataclass(frozen=True)
+class Extremes:
+    """The two limit (dead-centre) positions of a rocking output driven by a turning crank.
+
+    At ``phi_extended`` the crank and the coupler (rod) lie in line, stretched; at
+    ``phi_folded`` in line, folded over each other (radians, in [0, 2π)). ``extended``
+    and ``folded`` are the output (ψ in radians or s in length) there. Turning
+    counter-clockwise the crank needs ``forward`` = (φ_folded - φ_extended) mod 2π for one
+    stroke and ``back`` = 2π - forward for the other; the time ratio is the slower over
+    the faster stroke, Q = (π + θ)/(π - θ) ≥ 1 with θ = |forward - π|.
+    """
+
+    phi_extended: float
+    phi_folded: float
+    extended: float
+    folded: float
+    kind: str = "angle"
+
+    @property
+    def stroke(self) -> float:
+        """|folded - extended|: the rocker's swing (radians) or the slider's stroke (length)."""
+        return abs(self.folded - self.extended)
+
+    @property
+    def forward(self) -> float:
+        return float(np.mod(self.phi_folded - self.phi_extended, 2 * np.pi))
+
+    @property
+    def back(self) -> float:
+        return 2 * np.pi - self.forward
+
+    @property
+    def time_ratio(self) -> float:
+        return max(self.forward, self.back) / min(self.forward, self.back)
+
+    def __repr__(self) -> str:
+        deg = np.degrees
+        sym, fmt = ("ψ", lambda v: f"{deg(v):.4f}°") if self.kind == "angle" else ("s", lambda v: f"{v:.6g}")
+        return (f"Extremes(extended at φ = {deg(self.phi_extended):.4f}° ({sym} = {fmt(self.extended)}), "
+                f"folded at φ = {deg(self.phi_folded):.4f}° ({sym} = {fmt(self.folded)}); stroke {fmt(self.stroke)}; "
+                f"the crank turns {deg(self.forward):.4f}° then {deg(self.back):.4f}°: "
+                f"time ratio {self.time_ratio:.6f})")
+
+
+def limit_positions(mechanism, joint: str, extended, folded) -> Extremes:
+    """The :class:`Extremes` of a mechanism whose crank turns about the origin.
+
+    ``extended`` and ``folded`` each hold the two mirror candidates for the position of
+    the output ``joint`` when crank and coupler lie in line (|O joint| = coupler ± crank);
+    the crank then points at the joint (stretched) or away from it (folded). Of each
+    pair the one on the mechanism's own assembly branch is kept.
+    """
+    def on_branch(candidates, turn):
+        best = None
+        for xy in candidates:
+            phi = float(np.mod(np.arctan2(xy[1], xy[0]) + turn, 2 * np.pi))
+            mo = mechanism.motion(phi)
+            gap = float(np.hypot(*(mo.points[joint].p - np.asarray(xy))))
+            if best is None or gap < best[0]:
+                best = (gap, phi, float(mo.output.value))
+        return best[1:]
+
+    phi_e, out_e = on_branch(extended, 0.0)
+    phi_f, out_f = on_branch(folded, np.pi)
+    return Extremes(phi_e, phi_f, out_e, out_f, mechanism.output)

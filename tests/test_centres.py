@@ -77,7 +77,7 @@ def check_mechanism(m, phi, tol=1e-9):
     iv = instant_centres(m, phi, method="velocity")
     assert agree(ic, iv) < tol                                    # Kennedy = twists
     assert ic.collinearity() < 1e-9                               # Kennedy's theorem itself
-    law = ic.motion._law()[1]
+    law = ic.motion.output.d
     scale = max(1.0, float(np.abs(law).max()))
     assert np.abs(ic.output_analog() - law).max() < tol * scale   # analogs from the centres
     return ic

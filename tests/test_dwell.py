@@ -164,8 +164,8 @@ def test_max_pressure_angle_against_independent_formula():
         far = np.arctan(2 * (1 + lam) / (p1 * DEG))
         near = np.arctan(2 * (1 - lam) / (np.pi - p2 * DEG))
         # (1e-7: the cubic slot is not smooth at its ends, β(S) has a (S - S_end)^{3/2} term)
-        assert m.motion(0.0).pressure_angle[0] == pytest.approx(far, abs=1e-7)
-        assert m.motion(np.pi).pressure_angle[0] == pytest.approx(near, abs=1e-7)
+        assert m.motion(0.0).pressure_angle == pytest.approx(far, abs=1e-7)
+        assert m.motion(np.pi).pressure_angle == pytest.approx(near, abs=1e-7)
         assert th == pytest.approx(max(far, near), abs=1e-7)
         assert min(abs(where), abs(where - np.pi)) < 1e-5
 

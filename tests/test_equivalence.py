@@ -185,9 +185,9 @@ def test_exercise_answers_are_the_known_values():
     assert np.isclose(solution("02.1"), 0.4 / 0.6)
     assert np.isclose(solution("02.3"), 2 * 0.3 * (0.3 + np.cos(np.radians(40))) / (1.09 + 0.6 * np.cos(np.radians(40))) - 0.35)
     fb = FourBar(1.0, 3.0, 3.0, 4.0, 1)
-    assert np.isclose(solution("03.1"), fb.motion(np.radians(50.0)).dpsi[0])        # mirror relation
-    both = FourBar(1.0, 3.0, 3.0, 4.0, 1).motion(np.radians(70.0)).ddpsi[0] + \
-        FourBar(1.0, 3.0, 3.0, 4.0, -1).motion(np.radians(70.0)).ddpsi[0]
+    assert np.isclose(solution("03.1"), fb.motion(np.radians(50.0)).dpsi)        # mirror relation
+    both = FourBar(1.0, 3.0, 3.0, 4.0, 1).motion(np.radians(70.0)).ddpsi + \
+        FourBar(1.0, 3.0, 3.0, 4.0, -1).motion(np.radians(70.0)).ddpsi
     assert np.isclose(solution("03.2"), both / 2)
     assert np.isclose(solution("03.3"), 2 * np.cos(np.radians(30.0)))
     assert check("02.1", 2 / 3, quiet=True) and not check("02.1", 0.4 / 1.4, quiet=True)

@@ -1256,19 +1256,21 @@ MECHS = {
 
 
 def _law(mo):
-    return (mo.psi, mo.dpsi, mo.ddpsi) if hasattr(mo, "psi") else (mo.s, mo.ds, mo.dds)
+    return mo.output.value, mo.output.d, mo.output.dd
 
 
 @pytest.mark.parametrize("name", sorted(MECHS))
 def test_crank_angle_shapes_documented_by_as_angles(name):
-    """geometry.as_angles: 'a scalar becomes an array of one'; 1-D arrays and lists are taken;
-    a 2-D array or a non-finite angle is a DimensionError. (Empty arrays: see the audit findings.)"""
+    """A scalar crank angle gives a motion of scalars (positions of shape (2,)); 1-D arrays and lists are
+    taken; a 2-D array or a non-finite angle is a DimensionError. (Empty arrays: see the audit findings.)"""
     m = MECHS[name]()
     ref = _law(m.motion(np.array([1.0, 2.0])))
     for v in (1.0, np.float64(1.0), np.array(1.0), 1):
-        out = _law(m.motion(v))
-        assert all(o.shape == (1,) for o in out)
-        assert all(abs(o[0] - r[0]) < 1e-12 for o, r in zip(out, ref))
+        mo = m.motion(v)
+        out = _law(mo)
+        assert all(np.shape(o) == () for o in (*out, mo.phi, mo.transmission))
+        assert all(p.p.shape == p.d.shape == p.dd.shape == (2,) for p in mo.points.values())
+        assert all(abs(o - r[0]) < 1e-12 for o, r in zip(out, ref))
     out = _law(m.motion([1.0, 2.0]))
     assert all(np.allclose(o, r, atol=1e-12) for o, r in zip(out, ref))
     for bad in (np.ones((2, 2)), np.ones((1, 1)), [float("nan")], [1.0, float("inf")]):

@@ -120,5 +120,5 @@ def test_no_crank_angles_give_empty_laws():
     for mech in (SlottedLink(0.5, 1.0), SlottedLink(2.0, 1.0), SliderCrank(1.0, 3.0), SineMechanism(1.0),
                  ExternalGeneva(4, 1.0)):
         mo = mech.motion(np.array([]))
-        out = (mo.psi, mo.dpsi, mo.ddpsi) if hasattr(mo, "psi") else (mo.s, mo.ds, mo.dds)
+        out = (mo.output.value, mo.output.d, mo.output.dd)
         assert all(x.shape == (0,) for x in out)

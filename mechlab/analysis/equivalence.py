@@ -192,15 +192,11 @@ def equivalent_slot(mechanism: Mechanism) -> EquivalentSlot:
                          f"FourBar, SliderCrank and SixBarIV are supported")
 
 
-def _law(mo):
-    return (mo.psi, mo.dpsi, mo.ddpsi) if isinstance(mo, AngularMotion) else (mo.s, mo.ds, mo.dds)
-
-
 def law_difference(m1, m2) -> tuple[float, float, float]:
     """Max |difference| of the law (angles compared mod 2π) and its two analogs."""
-    a, b = _law(m1), _law(m2)
-    d0 = wrap(a[0] - b[0]) if isinstance(m1, AngularMotion) else a[0] - b[0]
-    return float(np.max(np.abs(d0))), float(np.max(np.abs(a[1] - b[1]))), float(np.max(np.abs(a[2] - b[2])))
+    a, b = m1.output, m2.output
+    d0 = wrap(a.value - b.value) if a.kind == "angle" else a.value - b.value
+    return float(np.max(np.abs(d0))), float(np.max(np.abs(a.d - b.d))), float(np.max(np.abs(a.dd - b.dd)))
 
 
 def equivalence_error(mechanism: Mechanism, phi=None) -> float:

@@ -45,7 +45,6 @@ from ..errors import DimensionError
 from .equivalence import base_law, base_mechanism
 from ..geometry import AnglePath, as_angles, wrap
 from ..mechanisms.slotted import SineMechanism
-from ..motion import AngularMotion
 
 
 def formula_18(lam: float, phi) -> AnglePath:
@@ -106,9 +105,8 @@ class HalfTurn(NamedTuple):
 
 
 def _law(mo) -> AnglePath:
-    if isinstance(mo, AngularMotion):
-        return AnglePath(mo.psi, mo.dpsi, mo.ddpsi)
-    return AnglePath(mo.s, mo.ds, mo.dds)
+    out = mo.output
+    return AnglePath(out.value, out.d, out.dd)
 
 
 def other_half(mechanism, phi) -> HalfTurn:

@@ -279,9 +279,9 @@ def plot_law(motion: Motion, axes=None, label: str | None = None, **style):
     """Plot the output law and its two analogs against φ in degrees on three axes."""
     if axes is None:
         _, axes = plt.subplots(3, 1, sharex=True, figsize=(6, 6))
-    angular = hasattr(motion, "psi")
-    law = (motion.psi, motion.dpsi, motion.ddpsi) if angular else (motion.s, motion.ds, motion.dds)
-    names = ("ψ", "ψ′", "ψ″") if angular else ("s", "s′", "s″")
+    out = motion.output
+    law = (out.value, out.d, out.dd)
+    names = (out.name, out.name + "′", out.name + "″")
     deg = np.degrees(motion.phi)
     lines = []
     for ax, y, name in zip(axes, law, names):

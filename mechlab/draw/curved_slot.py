@@ -38,7 +38,7 @@ class _SlotDrawing(LinkageDrawing):
 
     def _slot_world(self, i):
         mo = self.motion
-        if hasattr(mo, "psi"):
+        if mo.output.kind == "angle":
             P = mo.points[self.pivot_name].p[i]
             return P + _rotate(self._slot, mo.psi[i])
         return self._slot + np.array([mo.s[i], 0.0])
@@ -50,7 +50,7 @@ class _SlotDrawing(LinkageDrawing):
     def extras(self, i):
         mo = self.motion
         slot = self._slot_world(i)
-        if hasattr(mo, "psi"):
+        if mo.output.kind == "angle":
             P = mo.points[self.pivot_name].p[i]
             return [np.array([P, slot[0]]), np.array([P, slot[-1]])]
         # translating: the yoke's rod along the guide, from C to the slot
@@ -140,9 +140,10 @@ def plot_against_base(mechanism, phi=None, axes=None):
     phi = mechanism.cycle(361) if phi is None else phi
     mo = mechanism.motion(phi)
     k = base_law(mechanism, phi)
-    angular = hasattr(mo, "psi")
-    law = (mo.psi, mo.dpsi, mo.ddpsi) if angular else (mo.s, mo.ds, mo.dds)
-    names = ("ψ", "ψ′", "ψ″") if angular else ("s", "s′", "s″")
+    out = mo.output
+    angular = out.kind == "angle"
+    law = (out.value, out.d, out.dd)
+    names = (out.name, out.name + "′", out.name + "″")
     if axes is None:
         _, axes = plt.subplots(1, 3, figsize=(10, 2.8))
     deg = np.degrees(phi)

@@ -293,8 +293,10 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
     batch of linear systems in its unknown reactions, solved at every crank angle at
     once. Friction (if any pair has f > 0) is linearised and iterated on its senses, see
     the module docstring. Raises SingularityError where a group cannot carry its loads (a dead
-    point) and SelfLockingError where friction locks the mechanism.
+    point) and SelfLockingError where friction locks the mechanism. A motion at one scalar φ
+    gives results at that one angle (arrays of one).
     """
+    motion = motion.as_arrays()
     omega1, eps1 = float(omega1), float(eps1)
     if not (np.isfinite(omega1) and np.isfinite(eps1)):
         raise DimensionError(f"crank speed and acceleration must be finite, got ω1 = {omega1}, ε1 = {eps1}")

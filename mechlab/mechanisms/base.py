@@ -8,7 +8,7 @@ import numpy as np
 
 from ..errors import AssemblyError, RotationError
 from ..geometry import lift
-from ..motion import Motion
+from ..motion import Motion, scalar_in_scalar_out
 
 TWO_PI = 2.0 * np.pi
 FULL_TURN = ((0.0, TWO_PI),)
@@ -56,6 +56,12 @@ class Mechanism:
     links: ClassVar[tuple[tuple[str, ...], ...]] = ()
     pivots: ClassVar[tuple[str, ...]] = ("O",)
     output: ClassVar[str] = "angle"
+
+    def __init_subclass__(cls, **kwargs):
+        # every family's motion(phi): a scalar φ in, a motion of scalars out
+        super().__init_subclass__(**kwargs)
+        if "motion" in cls.__dict__:
+            cls.motion = scalar_in_scalar_out(cls.__dict__["motion"])
 
     def crank_ranges(self) -> tuple[tuple[float, float], ...]:
         """Open intervals of crank angles (radians) where the mechanism assembles."""

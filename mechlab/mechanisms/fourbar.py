@@ -4,10 +4,14 @@ Frame: crank pivot O at the origin, output pivot E at (ground, 0). The crank ang
 and the output angle ψ (of the rocker E→B) are measured counter-clockwise from the
 ray O→E. Lengths are dimensionless or in mm, as long as they agree.
 
-Assembly (seed 000, §1, the text after Fig. 6): ``assembly = +1`` is kc = +1, the
-points A, B, E traversed clockwise, i.e. B lies on the left of the directed line
-A→E (above the frame line in the usual drawing of a crank-rocker); ``assembly = -1``
-(kc = -1) is the other, counter-clockwise assembly. The two are mirror images:
+Assembly (Zinchenko et al., 2013, §1, the text after Fig. 6): ``assembly = +1`` is
+kc = +1, the points A, B, E traversed clockwise, i.e. B lies on the left of the directed
+line A→E (above the frame line in the usual drawing of a crank-rocker); ``assembly = -1``
+(kc = -1) is the other, counter-clockwise assembly. In the textbook names (Norton's
+"open" and "crossed" circuits) ``"open"`` = +1 and ``"crossed"`` = -1: while the crank is
+above the frame line (0 < φ < π) the +1 branch has B and O on opposite sides of the
+diagonal AE, the quadrilateral O-A-B-E drawn uncrossed. A name labels a branch for every
+φ; below the frame line the open branch's drawing may look crossed. The two are mirror images:
 ``FourBar(..., -1).motion(phi)`` equals ``FourBar(..., +1).motion(-phi)`` reflected
 in the frame line, so ψ₋(φ) = -ψ₊(-φ), ψ'₋(φ) = ψ'₊(-φ), ψ''₋(φ) = -ψ''₊(-φ).
 """
@@ -16,21 +20,50 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
-from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import AssemblyError
-from ..geometry import _re_conj, as_angles, as_complex, check_length, check_sign, circle_circle, crank_point, fixed_point, rocker_dyad
-from ..motion import AngularMotion
+from ..errors import AssemblyError, DimensionError, RotationError
+from ..geometry import (_re_conj, as_angles, as_complex, check_length, circle_circle, crank_point, fixed_point,
+                        rocker_dyad)
+from ..motion import AngularMotion, Extremes, limit_positions
 from .base import Mechanism, arc_set, branch_references, fmt_ranges, lift_on_ranges
 
 # Relative tolerance for Grashof's equality s + l = p + q (a change-point linkage).
 _CHANGE_POINT_TOL = 1e-12
+# The textbook names of the two assemblies (see the module docstring).
+ASSEMBLY_NAMES = {"open": 1, "crossed": -1}
 
 
-class Grashof(NamedTuple):
-    """Grashof classification of a four-bar with the numbers behind it."""
+def assembly_sign(value) -> int:
+    """The assembly sign from +1, -1 or a name in ``ASSEMBLY_NAMES`` ("open" = +1, "crossed" = -1)."""
+    if isinstance(value, str) and value in ASSEMBLY_NAMES:
+        return ASSEMBLY_NAMES[value]
+    if not isinstance(value, str) and value in (1, -1):
+        return int(value)
+    raise DimensionError(f"assembly must be +1, -1, 'open' (= +1) or 'crossed' (= -1), got {value!r}")
+
+
+def circle_pair(r1: float, centre2, r2: float) -> tuple[np.ndarray, np.ndarray]:
+    """Both intersections of the circle of radius r1 about the origin with the circle of radius r2
+    about ``centre2``, as two points (mirror images in the line of the centres)."""
+    c = np.asarray(centre2, dtype=float)
+    d = float(np.hypot(*c))
+    along = (r1 * r1 - r2 * r2 + d * d) / (2 * d)
+    across = np.sqrt(max(r1 * r1 - along * along, 0.0))
+    u = c / d
+    v = np.array([-u[1], u[0]])
+    return along * u + across * v, along * u - across * v
+
+
+@dataclass(frozen=True)
+class Grashof:
+    """Grashof classification of a four-bar with the numbers behind it.
+
+    ``kind`` names the linkage by its crank and rocker (Norton's table); ``grashof_class``
+    says whether Grashof's condition s + l ≤ p + q holds: "Grashof", "non-Grashof" (every
+    triple-rocker) or "change-point" (equality).
+    """
 
     kind: str            # crank-rocker, double-crank, rocker-crank, double-rocker, change-point, triple-rocker
     s: float             # shortest link
@@ -48,23 +81,29 @@ class Grashof(NamedTuple):
             rel = "<" if lhs < rhs else ">"
         return f"s + l = {lhs:.2f} {rel} p + q = {rhs:.2f}"
 
+    @property
+    def grashof_class(self) -> str:
+        return {"change-point": "change-point", "triple-rocker": "non-Grashof"}.get(self.kind, "Grashof")
+
     def __str__(self) -> str:
-        return f"{self.kind} ({self.inequality}, shortest link: {self.shortest} = {self.s:g})"
+        name = "triple-rocker, non-Grashof" if self.kind == "triple-rocker" else self.kind
+        return f"{name} ({self.inequality}, shortest link: {self.shortest} = {self.s:g})"
 
 
 @dataclass(frozen=True)
 class FourBar(Mechanism):
     """Crank O-A, coupler A-B, rocker B-E, frame O-E; output ψ = angle of E→B.
 
-    Raises DimensionError for a length that is not positive and finite,
-    AssemblyError if the linkage closes at no crank angle.
+    ``assembly`` is +1 or "open", -1 or "crossed" (stored as the sign). Raises
+    DimensionError for a length that is not positive and finite, AssemblyError if the
+    linkage closes at no crank angle.
     """
 
     crank: float
     coupler: float
     rocker: float
     ground: float
-    assembly: int = 1
+    assembly: int | str = 1
 
     links = (("O", "A"), ("A", "B"), ("B", "E"))
     pivots = ("O", "E")
@@ -73,7 +112,7 @@ class FourBar(Mechanism):
     def __post_init__(self):
         for name in ("crank", "coupler", "rocker", "ground"):
             object.__setattr__(self, name, check_length(name, getattr(self, name)))
-        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
+        object.__setattr__(self, "assembly", assembly_sign(self.assembly))
         if not self.crank_ranges():
             a, c, r, g = self.crank, self.coupler, self.rocker, self.ground
             raise AssemblyError(
@@ -98,6 +137,20 @@ class FourBar(Mechanism):
             kind = {"ground": "double-crank", "crank": "crank-rocker",
                     "rocker": "rocker-crank", "coupler": "double-rocker"}[shortest]
         return Grashof(kind, s, l, p, q, shortest)
+
+    def extremes(self) -> Extremes:
+        """The rocker's limit positions, its swing and the time ratio of a crank-rocker.
+
+        B is at a limit when O, A, B lie in line: |OB| = coupler + crank (extended) or
+        coupler - crank (folded), and |EB| = rocker (the law of cosines in triangle O-B-E).
+        Raises RotationError unless the linkage is a crank-rocker.
+        """
+        kind = self.grashof().kind
+        if kind != "crank-rocker":
+            raise RotationError(f"limit positions and a time ratio belong to a crank-rocker (a turning crank, a "
+                                f"rocking output); this four-bar is a {kind}: {self.grashof().inequality}")
+        a, c, r, g = self.crank, self.coupler, self.rocker, self.ground
+        return limit_positions(self, "B", circle_pair(c + a, (g, 0.0), r), circle_pair(c - a, (g, 0.0), r))
 
     def crank_ranges(self):
         # |AE|² = a² + g² - 2ag·cos φ must lie strictly between (c - r)² and (c + r)².

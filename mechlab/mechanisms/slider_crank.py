@@ -2,8 +2,8 @@
 
 Frame: crank pivot O at the origin; the slider's guide is the line y = ``offset``;
 φ is measured counter-clockwise from the +x axis; the output s is the slider's x
-coordinate. ``assembly = +1`` puts the slider ahead of the pin along +x (the usual
-drawing), ``-1`` behind it (the mirror image in the y axis of the offset-mirrored
+coordinate. ``assembly = +1`` (or "open") puts the slider ahead of the pin along +x (the
+usual drawing), ``-1`` (or "crossed") behind it (the mirror image in the y axis of the offset-mirrored
 mechanism: s₋(φ; e) = -s₊(π - φ; e), with the same offset e).
 """
 
@@ -13,10 +13,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import AssemblyError
-from ..geometry import as_angles, check_length, check_number, check_sign, crank_point, dyad_rrp, fixed_point
-from ..motion import LinearMotion
+from ..errors import AssemblyError, RotationError
+from ..geometry import as_angles, check_length, check_number, crank_point, dyad_rrp, fixed_point
+from ..motion import Extremes, LinearMotion, limit_positions
 from .base import Mechanism, arc_set, fmt_ranges
+from .fourbar import assembly_sign
 
 
 @dataclass(frozen=True)
@@ -30,7 +31,7 @@ class SliderCrank(Mechanism):
     crank: float
     rod: float
     offset: float = 0.0
-    assembly: int = 1
+    assembly: int | str = 1
 
     links = (("O", "A"), ("A", "B"))
     pivots = ("O",)
@@ -40,12 +41,28 @@ class SliderCrank(Mechanism):
         object.__setattr__(self, "crank", check_length("crank", self.crank))
         object.__setattr__(self, "rod", check_length("rod", self.rod))
         object.__setattr__(self, "offset", check_number("offset", self.offset))
-        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
+        object.__setattr__(self, "assembly", assembly_sign(self.assembly))
         if not self.crank_ranges():
             raise AssemblyError(
                 f"the slider-crank cannot be assembled at any crank angle: the pin's distance from "
                 f"the guide, |crank·sin φ - offset|, is at least {abs(self.offset) - self.crank:.4g} "
                 f"≥ rod = {self.rod:.4g}")
+
+    def extremes(self) -> Extremes:
+        """The slider's limit positions, its stroke and the time ratio (a turning crank only).
+
+        B is at a limit when crank and rod lie in line: |OB| = rod ± crank with B on the
+        guide, x = ±√((rod ± crank)² - offset²); with no offset at ±(rod ± crank), φ = 0 and π.
+        """
+        if not self.can_turn:
+            raise RotationError(f"limit positions and a time ratio need a turning crank; {self.rotation_failure()}")
+        a, e, l = self.crank, self.offset, self.rod
+
+        def on_guide(r):
+            x = np.sqrt(r * r - e * e)
+            return np.array([x, e]), np.array([-x, e])
+
+        return limit_positions(self, "B", on_guide(l + a), on_guide(l - a))
 
     def crank_ranges(self):
         # |a sin φ - e| < rod  <=>  (e - rod)/a < cos(φ - π/2) < (e + rod)/a

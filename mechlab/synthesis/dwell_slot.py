@@ -591,7 +591,7 @@ class DwellSlotMechanism(Mechanism):
         lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, n - 1)]
         res = minimize_scalar(lambda x: -self.law.pressure_angle(x)[0], bounds=(lo, hi), method="bounded",
                               options={"xatol": 1e-10})
-        refined = float(self.motion(res.x).pressure_angle[0])
+        refined = float(self.motion(res.x).pressure_angle)
         if refined > best:
             best_phi, best = float(res.x), refined
         return best, best_phi

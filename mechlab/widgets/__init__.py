@@ -282,7 +282,7 @@ class MechanismExplorer(Explorer):
         was_hidden = not self.ax_mech.get_visible()
         self.drawing.set_motion(mechanism, motion)
         deg = np.degrees(phi)
-        law = motion._law()
+        law = (motion.output.value, motion.output.d, motion.output.dd)
         names = ("ψ (rad)", "ψ′", "ψ″") if mechanism.output == "angle" else ("s", "s′", "s″")
         relabel = False
         for line, y, name in zip(self.law_lines.values(), law, names):
@@ -314,7 +314,7 @@ class MechanismExplorer(Explorer):
         else:
             self.frame = int(np.clip(np.searchsorted(phi, target), 0, len(phi) - 1))
         self.drawing.set_frame(self.frame)
-        law = self.motion._law()[0]
+        law = self.motion.output.value
         self.law_marker.set_data([phi[self.frame]], [law[self.frame]])
 
     def _moving_artists(self):

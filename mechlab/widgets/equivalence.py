@@ -105,7 +105,7 @@ class EquivalenceExplorer:
         self.ax_rel.set_title("pin in the output link's frame", fontsize=10)
         deg = np.degrees(phi)
         angular = mech.output == "angle"
-        d0, d1, d2 = (mo.psi, mo.dpsi, mo.ddpsi) if angular else (mo.s, mo.ds, mo.dds)
+        d0, d1, d2 = mo.output.value, mo.output.d, mo.output.dd
         k0 = base.theta
         if angular:   # continuous angles, the base law on the linkage's branch
             d0, k0 = np.unwrap(d0), np.unwrap(k0)

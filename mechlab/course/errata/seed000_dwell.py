@@ -75,7 +75,7 @@ def _distance():
     m = curved_slot_dwell(LAM, P1, P2)
     lOA, lOB = m.crank, m.pivot_distance
     printed = np.sqrt((lOA * np.cos(0.0) - lOB) ** 2 + (lOA * np.sin(0.0)) ** 2)
-    A = m.motion(0.0).points["A"].p[0]
+    A = m.motion(0.0).points["A"].p
     true = float(np.hypot(*(A - np.array([-lOB, 0.0]))))
     assert abs(true - (lOA + lOB)) < 1e-15 and abs(printed - true) > 0.5
     return (f"l_OA = 0.5, l_OB = 1, φ = 0: the printed S(0) = {printed:.3f} is the pin's nearest distance, but in the "
@@ -84,7 +84,7 @@ def _distance():
 
 def _pressure_at_phi1():
     m = curved_slot_dwell(LAM, P1, P2)
-    theta = m.motion(P1).pressure_angle[0]
+    theta = m.motion(P1).pressure_angle
     psiK = base_law(LAM, P1).psi[0]
     printed = np.pi / 2 - (P1 - m.law.psi_dwell)
     correct = abs(np.pi / 2 - (P1 - psiK))

@@ -24,7 +24,7 @@ exercise(
 exercise(
     "00.3",
     "Angular velocity of the rocker, in rad/s, of FourBar(1, 3, 3, 4) at φ = 90° when the crank turns at 10 rad/s.",
-    lambda: float(FourBar(1.0, 3.0, 3.0, 4.0).motion(np.pi / 2).velocity(10.0)[0]),
+    lambda: float(FourBar(1.0, 3.0, 3.0, 4.0).motion(np.pi / 2).velocity(10.0)),
     rtol=1e-4, unit="rad/s",
     hint="ω2 = ψ'·ω1: read ψ' from motion(phi).dpsi.",
 )

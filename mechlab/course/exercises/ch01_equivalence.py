@@ -25,7 +25,7 @@ exercise(
     "01.2",
     "ψ′ of FourBar(0.3, 0.8, 1, 1, +1) at φ = 0 (A on the segment O-E, nearest to E), without solving the "
     "four-bar: at that instant the pin is at rest on the slot, so the link moves like the base mechanism.",
-    lambda: float(FourBar(0.3, 0.8, 1.0, 1.0, 1).motion(0.0).dpsi[0]),
+    lambda: float(FourBar(0.3, 0.8, 1.0, 1.0, 1).motion(0.0).dpsi),
     rtol=1e-6,
     hint="Formula (19) with λ = l_OA/l_OE, at the paper's φ = π: λ/(λ - 1).",
 )

@@ -11,7 +11,7 @@ exercise(
     "03.1",
     "ψ′ of the kc = -1 assembly FourBar(1, 3, 3, 4, -1) at φ = 310°, computed from the kc = +1 assembly only "
     "(FourBar(1, 3, 3, 4, +1)).",
-    lambda: float(FourBar(1.0, 3.0, 3.0, 4.0, -1).motion(np.radians(310.0)).dpsi[0]),
+    lambda: float(FourBar(1.0, 3.0, 3.0, 4.0, -1).motion(np.radians(310.0)).dpsi),
     rtol=1e-6,
     hint="The two assemblies are mirror images in the frame line: ψ′₋(φ) = ψ′₊(-φ).",
 )
@@ -27,7 +27,7 @@ exercise(
 exercise(
     "03.3",
     "s₊ + s₋ of SliderCrank(1, 3, offset=0.5) at φ = 30° (the two assemblies).",
-    lambda: float(SliderCrank(1.0, 3.0, 0.5, 1).motion(np.radians(30.0)).s[0]
-                  + SliderCrank(1.0, 3.0, 0.5, -1).motion(np.radians(30.0)).s[0]),
+    lambda: float(SliderCrank(1.0, 3.0, 0.5, 1).motion(np.radians(30.0)).s
+                  + SliderCrank(1.0, 3.0, 0.5, -1).motion(np.radians(30.0)).s),
     hint="The two roots of the slider's quadratic add up to twice the sine mechanism's x_K.",
 )

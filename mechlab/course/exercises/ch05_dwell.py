@@ -11,7 +11,7 @@ exercise(
     "05.1",
     "The link's dwell angle ψ_B, in degrees, of the cubic design with λ = 0.4 and dwell [70°, 140°] "
     "(link frame chosen so that ψ(0) = 0).",
-    lambda: float(np.degrees(curved_slot_dwell(0.4, _D(70), _D(140)).motion(_D(105)).psi[0])),
+    lambda: float(np.degrees(curved_slot_dwell(0.4, _D(70), _D(140)).motion(_D(105)).psi)),
     rtol=1e-6, unit="deg",
     hint="From (21) and (24): ψ(0) = ψ_B + a1·φ1³ = 0 with a1 = -λ/(3(λ+1)φ1²) — mind the sign.",
 )
@@ -19,7 +19,7 @@ exercise(
 exercise(
     "05.2",
     "Pressure angle, in degrees, at the start of the dwell (φ = φ1 = 70°) of the design λ = 0.4, [70°, 140°].",
-    lambda: float(np.degrees(curved_slot_dwell(0.4, _D(70), _D(140)).motion(_D(70)).pressure_angle[0])),
+    lambda: float(np.degrees(curved_slot_dwell(0.4, _D(70), _D(140)).motion(_D(70)).pressure_angle)),
     rtol=1e-6, unit="deg",
     hint="On the dwell arc the pin pushes along OA; the link point moves perpendicular to BA: "
          "θ = |90° - (φ - ψ_K(φ))| with tan ψ_K = λ sin φ/(1 + λ cos φ).",

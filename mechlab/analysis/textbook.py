@@ -1,0 +1,117 @@
+"""What textbooks read off a linkage: the branch of a sketch, the transmission angle's
+extremes, the crank angles of zero output acceleration, crank ranges in degrees.
+
+The limit positions and the time ratio are methods of the mechanisms that have them
+(``FourBar.extremes()``, ``SliderCrank.extremes()``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from ..errors import DimensionError
+from ..geometry import check_number
+
+
+def nearest_assembly(mechanism, phi: float, **joints):
+    """The assembly of ``mechanism`` whose joints at crank angle ``phi`` (radians) lie nearest
+    the given points, e.g. ``nearest_assembly(FourBar(1, 3, 3, 4), np.radians(60), B=(2.8, 2.7))``.
+
+    Picks a branch from a sketch: both assemblies (+1 and -1) are solved at φ and the one
+    with the smaller sum of distances from the named joints to their points is returned.
+    """
+    if not any(f.name == "assembly" for f in dataclasses.fields(mechanism)):
+        raise DimensionError(f"{type(mechanism).__name__} has no assembly to choose")
+    if not joints:
+        raise DimensionError("nearest_assembly needs at least one joint and its sketched point, e.g. B=(x, y)")
+    phi = check_number("phi", phi)
+    points = {}
+    for name, xy in joints.items():
+        xy = np.asarray(xy, dtype=float)
+        if xy.shape != (2,) or not np.all(np.isfinite(xy)):
+            raise DimensionError(f"the sketched point {name} must be two finite numbers (x, y), got {joints[name]!r}")
+        points[name] = xy
+    best = None
+    for sign in (1, -1):
+        candidate = dataclasses.replace(mechanism, assembly=sign)
+        mo = candidate.motion(phi)
+        missing = sorted(set(points) - set(mo.points))
+        if missing:
+            raise DimensionError(f"{missing} are not joints of {type(mechanism).__name__}; its joints are "
+                                 f"{sorted(mo.points)}")
+        gap = sum(float(np.hypot(*(mo.points[k].p - xy))) for k, xy in points.items())
+        if best is None or gap < best[0]:
+            best = (gap, candidate)
+    return best[1]
+
+
+@dataclass(frozen=True)
+class TransmissionExtremes:
+    """The least and greatest transmission angle μ over the crank's range and where they occur (radians)."""
+
+    mu_min: float
+    phi_min: float
+    mu_max: float
+    phi_max: float
+
+    @property
+    def worst_deviation(self) -> float:
+        """max |μ - 90°| over the cycle (the largest pressure angle), radians."""
+        return max(np.pi / 2 - self.mu_min, self.mu_max - np.pi / 2)
+
+    def __repr__(self) -> str:
+        d = np.degrees
+        return (f"TransmissionExtremes(μ_min = {d(self.mu_min):.4f}° at φ = {d(self.phi_min):.4f}°, "
+                f"μ_max = {d(self.mu_max):.4f}° at φ = {d(self.phi_max):.4f}°; "
+                f"worst |μ - 90°| = {d(self.worst_deviation):.4f}°)")
+
+
+def _refine(f, phi, i):
+    """The extremum of ``f`` near sample ``i`` of the grid ``phi``, by a bounded 1-D search."""
+    lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, len(phi) - 1)]
+    res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
+    return (float(res.x), float(res.fun)) if res.fun < f(phi[i]) else (float(phi[i]), float(f(phi[i])))
+
+
+def transmission_extremes(mechanism, n: int = 3601) -> TransmissionExtremes:
+    """Least and greatest transmission angle over the crank's cycle and the crank angles of both.
+
+    Sampled on ``mechanism.cycle(n)`` and refined by a bounded search between the grid's
+    neighbours of each extreme. For a four-bar, μ is extreme where the crank lies along the
+    frame line (φ = 0 and π, from cos μ = (c² + r² - |AE|²)/(2cr)).
+    """
+    phi = mechanism.cycle(n)
+    mu = mechanism.motion(phi).transmission
+
+    def mu_at(x):
+        return float(mechanism.motion(float(x)).transmission)
+
+    phi_min, mu_min = _refine(mu_at, phi, int(np.argmin(mu)))
+    phi_max, neg_max = _refine(lambda x: -mu_at(x), phi, int(np.argmax(mu)))
+    return TransmissionExtremes(mu_min, float(np.mod(phi_min, 2 * np.pi)), -neg_max, float(np.mod(phi_max, 2 * np.pi)))
+
+
+def zero_acceleration(mechanism, n: int = 3601) -> np.ndarray:
+    """Crank angles (radians, ascending in the cycle) where the output's second analog changes sign.
+
+    There the output acceleration at a constant crank speed vanishes and its velocity is
+    extreme, e.g. the slider-crank's s″ = 0. Each sign change of s″ (or ψ″) on
+    ``mechanism.cycle(n)`` is polished by Brent's method on the exact analog.
+    """
+    phi = mechanism.cycle(n)
+    dd = mechanism.motion(phi).output.dd
+    change = np.flatnonzero(np.sign(dd[:-1]) * np.sign(dd[1:]) < 0)
+
+    def dd_at(x):
+        return float(mechanism.motion(float(x)).output.dd)
+
+    return np.array([brentq(dd_at, phi[i], phi[i + 1], xtol=1e-14) for i in change])
+
+
+def crank_ranges_degrees(mechanism) -> tuple[tuple[float, float], ...]:
+    """``mechanism.crank_ranges()`` in degrees: ((0.0, 360.0),) for a crank that turns fully."""
+    return tuple((float(np.degrees(s)), float(np.degrees(e))) for s, e in mechanism.crank_ranges())
