@@ -9,10 +9,13 @@ in :mod:`mechlab.widgets`.
 from . import design
 from . import kinetostatics as forces
 from .analysis import motion_laws
-from .analysis.centres import Centre, CentreAtInfinity, IndeterminateCentre, centrodes, instant_centres
-from .analysis.equivalence import assembly_symmetry, base_law, base_mechanism, equivalent_slot, relative_path
-from .analysis.half_turn import base_peaks, limit_theorem, other_half
-from .analysis.intermittency import compare, intermittency
+from .analysis.centres import (Centre, CentreAtInfinity, IndeterminateCentre, centre_count, centrodes, instant_centres,
+                               rolling_speeds)
+from .analysis.centres.kennedy import five_link_higher_pair
+from .analysis.equivalence import (assembly_symmetry, base_law, base_mechanism, equivalent_slot, law_difference,
+                                   relative_path)
+from .analysis.half_turn import base_peaks, formula_18, limit_theorem, other_half
+from .analysis.intermittency import compare, detect_impacts, intermittency
 from .analysis.textbook import (TransmissionExtremes, crank_ranges_degrees, nearest_assembly, transmission_extremes,
                                 zero_acceleration)
 from .errors import (AssemblyError, DimensionError, InfeasibleDesignError, MechanismError, RotationError,
@@ -24,16 +27,19 @@ from .mechanisms import (Antiparallelogram, CircleSlot, CurvedSlotLink, Elliptic
                          LambdaSliderSixBar, LambdaTranslatingSlot, Mechanism, ParametricSlot, SampledSlot,
                          SineMechanism, SixBarIV, SliderCrank, SlottedLink, SphericalGeneva, TranslatingCurvedSlot)
 from .mechanisms.geneva import OffsetError, SlotCountError
+from .mechanisms.lambda_mechanism import classic_lambda
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion
 from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
-                                   DwellSlotMechanism, compare_transitions, curved_slot_dwell, dwell_limit,
-                                   two_branch_slot)
-from .synthesis.geneva import spherical_table
-from .synthesis.lambda_guiding import (circle_guiding, existence_map, existence_region, straight_guiding,
+                                   DwellSlotMechanism, best_placement, compare_transitions, curved_slot_dwell,
+                                   dwell_limit, two_branch_slot)
+from .synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison
+from .synthesis.lambda_guiding import (band_touches, circle_guiding, existence_map, existence_region,
+                                       fifth_order_line, straight_guiding, thesis_iteration, transmission_lines,
                                        whole_turn_guiding, whole_turn_line)
-from .synthesis.lambda_sixbars import mchv1, mchv3_full_turn, mchv3_full_turn_best, slot_residual_first_order
-from .synthesis.lambda_sliders import mchv2, mchv2_stroke, mchv5, slider_invariants, slider_report
-from .synthesis.slot_export import slot_profile, write_csv, write_dxf
+from .synthesis.lambda_sixbars import (dwell_extent, mchv1, mchv3_full_turn, mchv3_full_turn_best, mchv3_half_turn,
+                                       mchv3_oscillating, rise_law, slot_residual_first_order, time_ratio_far_angle)
+from .synthesis.lambda_sliders import mchv2, mchv2_far_position, mchv2_stroke, mchv5, slider_invariants, slider_report
+from .synthesis.slot_export import read_csv, slot_profile, write_csv, write_dxf
 
 __version__ = "0.1.0"
 
@@ -49,21 +55,25 @@ __all__ = [
     # textbook helpers
     "nearest_assembly", "transmission_extremes", "TransmissionExtremes", "zero_acceleration", "crank_ranges_degrees",
     # equivalence, base mechanism, half-turn relations
-    "relative_path", "equivalent_slot", "base_law", "base_mechanism", "assembly_symmetry",
-    "other_half", "limit_theorem", "base_peaks",
+    "relative_path", "equivalent_slot", "base_law", "base_mechanism", "assembly_symmetry", "law_difference",
+    "other_half", "limit_theorem", "base_peaks", "formula_18",
     # instantaneous centres
-    "instant_centres", "centrodes", "Centre", "CentreAtInfinity", "IndeterminateCentre",
+    "instant_centres", "centrodes", "Centre", "CentreAtInfinity", "IndeterminateCentre", "centre_count",
+    "rolling_speeds", "five_link_higher_pair",
     # dwell synthesis
     "curved_slot_dwell", "DwellSlotMechanism", "DwellLaw", "TRANSITIONS", "compare_transitions", "dwell_limit",
-    "two_branch_slot", "DwellError", "DwellIntervalError", "DwellRatioError",
-    "slot_profile", "write_csv", "write_dxf",
+    "two_branch_slot", "best_placement", "DwellError", "DwellIntervalError", "DwellRatioError",
+    "slot_profile", "write_csv", "write_dxf", "read_csv",
     # Chebyshev
     "circle_guiding", "straight_guiding", "whole_turn_line", "whole_turn_guiding", "existence_map",
-    "existence_region", "LambdaRockerSixBar", "LambdaSlottedSixBar", "LambdaSliderSixBar", "LambdaTranslatingSlot",
-    "mchv1", "mchv2", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best", "slot_residual_first_order", "mchv5",
+    "existence_region", "band_touches", "fifth_order_line", "thesis_iteration", "transmission_lines",
+    "classic_lambda", "LambdaRockerSixBar", "LambdaSlottedSixBar", "LambdaSliderSixBar", "LambdaTranslatingSlot",
+    "mchv1", "mchv2", "mchv2_far_position", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best",
+    "mchv3_half_turn", "mchv3_oscillating", "slot_residual_first_order", "mchv5", "dwell_extent", "rise_law", "time_ratio_far_angle",
     "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError",
     # Geneva
-    "spherical_table", "compare", "intermittency", "SlotCountError", "OffsetError",
+    "spherical_table", "table1_comparison", "TABLE1_PRINTED", "compare", "intermittency", "detect_impacts",
+    "SlotCountError", "OffsetError",
     # forces
     "forces", "motion_laws", "design", "Kinetostatics", "ForceModel", "Body", "Revolute", "Prismatic", "HigherPair",
     "Force", "Torque", "model_for", "SelfLockingError", "DriveError",
