@@ -69,7 +69,8 @@ __all__ = [
     "existence_region", "band_touches", "fifth_order_line", "thesis_iteration", "transmission_lines",
     "classic_lambda", "LambdaRockerSixBar", "LambdaSlottedSixBar", "LambdaSliderSixBar", "LambdaTranslatingSlot",
     "mchv1", "mchv2", "mchv2_far_position", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best",
-    "mchv3_half_turn", "mchv3_oscillating", "slot_residual_first_order", "mchv5", "dwell_extent", "rise_law", "time_ratio_far_angle",
+    "mchv3_half_turn", "mchv3_oscillating", "slot_residual_first_order", "mchv5", "dwell_extent", "rise_law",
+    "time_ratio_far_angle",
     "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError",
     # Geneva
     "spherical_table", "table1_comparison", "TABLE1_PRINTED", "compare", "intermittency", "detect_impacts",
