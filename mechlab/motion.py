@@ -1,4 +1,5 @@
-"""The result of ``mechanism.motion(phi)``: joint paths, the output law and every link's angle.
+"""The result of ``mechanism.motion(phi)``: joint paths, the output law and every link's angle;
+and the one convention for results: frozen dataclasses, a table a :class:`Table` of them.
 
 Analogs are derivatives with respect to the crank angle φ; physical values at a
 crank speed ω1 and crank acceleration ε1 follow from the chain rule:
@@ -10,6 +11,7 @@ angles a motion of arrays (positions ``(n, 2)``).
 from __future__ import annotations
 
 import functools
+import html
 from dataclasses import dataclass, field, fields
 from numbers import Real
 from typing import Callable, Mapping
@@ -281,3 +283,59 @@ def limit_positions(mechanism, joint: str, extended, folded) -> Extremes:
     phi_e, out_e = on_branch(extended, 0.0)
     phi_f, out_f = on_branch(folded, np.pi)
     return Extremes(phi_e, phi_f, out_e, out_f, mechanism.output)
+
+
+def _cell(value) -> str:
+    if isinstance(value, bool) or not isinstance(value, Real):
+        return str(value)
+    return f"{float(value):.6g}"
+
+
+@dataclass(frozen=True)
+class Table:
+    """Rows, each a frozen dataclass of one type; the columns are the rows' shown fields.
+
+    Iterates over its rows, indexes like a tuple, looks rows up by a column
+    (``table.by("z")[4]``), gives a column as an array (``table.column("eps_max")``) and
+    shows as an HTML table in a notebook.
+    """
+
+    rows: tuple
+
+    def __post_init__(self):
+        object.__setattr__(self, "rows", tuple(self.rows))
+
+    def __iter__(self):
+        return iter(self.rows)
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+    def __getitem__(self, i):
+        return self.rows[i]
+
+    @property
+    def columns(self) -> tuple[str, ...]:
+        return tuple(f.name for f in fields(self.rows[0]) if f.repr) if self.rows else ()
+
+    def column(self, name: str) -> np.ndarray:
+        """One column over the rows, as an array."""
+        return np.array([getattr(r, name) for r in self.rows])
+
+    def by(self, name: str) -> dict:
+        """The rows keyed by the values of one column."""
+        return {getattr(r, name): r for r in self.rows}
+
+    def _text_rows(self) -> list[list[str]]:
+        return [[_cell(getattr(r, c)) for c in self.columns] for r in self.rows]
+
+    def __repr__(self) -> str:
+        body = [list(self.columns), *self._text_rows()]
+        widths = [max(len(line[i]) for line in body) for i in range(len(self.columns))]
+        return "\n".join("  ".join(s.rjust(w) for s, w in zip(line, widths)) for line in body)
+
+    def _repr_html_(self) -> str:
+        head = "".join(f"<th>{html.escape(c)}</th>" for c in self.columns)
+        body = "".join("<tr>" + "".join(f"<td>{html.escape(s)}</td>" for s in line) + "</tr>"
+                       for line in self._text_rows())
+        return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"

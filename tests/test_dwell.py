@@ -64,8 +64,8 @@ def test_law_analogs_are_derivatives_and_continuous(design):
     e = 1e-9
     for x in (0.0, p1, p2, np.pi):
         a, b = law(np.array([x - e])), law(np.array([x + e]))
-        for m, tol in ((0, 1e-7), (1, 1e-6), (2, 1e-5 * scale)):
-            assert abs(a[m][0] - b[m][0]) < tol, (x, m)
+        for m, tol in (("psi", 1e-7), ("d", 1e-6), ("dd", 1e-5 * scale)):
+            assert abs(getattr(a, m)[0] - getattr(b, m)[0]) < tol, (x, m)
         if tr != "cubic":
             assert abs(a.ddd[0] - b.ddd[0]) < 1e-4 * (1 + abs(a.ddd[0])), x
 
@@ -178,18 +178,18 @@ def test_sextic_zero_pressure_angle_at_ends_and_curvature_on_dwell():
 
 
 def test_comparison_table_orders_the_laws():
-    rows = {r["transition"]: r for r in compare_transitions(0.5, 60 * DEG, 150 * DEG)}
+    rows = compare_transitions(0.5, 60 * DEG, 150 * DEG).by("transition")
     assert set(rows) == set(TRANSITIONS)
     # the quintic lowers the peak acceleration and keeps the slot's curvature bounded
-    assert rows["quintic"]["peak_ddpsi"] < rows["cubic"]["peak_ddpsi"]
-    assert rows["cubic"]["curvature_end"] > 100 * rows["quintic"]["curvature_end"]
-    assert rows["cubic"]["jerk_jump"] > 0.1 and rows["quintic"]["jerk_jump"] < 1e-3
+    assert rows["quintic"].peak_ddpsi < rows["cubic"].peak_ddpsi
+    assert rows["cubic"].curvature_end > 100 * rows["quintic"].curvature_end
+    assert rows["cubic"].jerk_jump > 0.1 and rows["quintic"].jerk_jump < 1e-3
     # the sextic moves the worst pressure angle away from the slot's ends and lowers it
-    assert rows["sextic"]["max_pressure_deg"] < rows["cubic"]["max_pressure_deg"] - 5
-    assert rows["cubic"]["where_deg"] == pytest.approx(0.0, abs=1e-3)
+    assert rows["sextic"].max_pressure_deg < rows["cubic"].max_pressure_deg - 5
+    assert rows["cubic"].where_deg == pytest.approx(0.0, abs=1e-3)
     # peak |ψ'| is never below the base mechanism's λ/(1 - λ) (limit theorem)
     for r in rows.values():
-        assert r["peak_dpsi"] >= 0.5 / 0.5 - 1e-12
+        assert r.peak_dpsi >= 0.5 / 0.5 - 1e-12
 
 
 def test_dwell_limit_is_set_by_the_slot_end_not_by_120_degrees():
@@ -197,19 +197,19 @@ def test_dwell_limit_is_set_by_the_slot_end_not_by_120_degrees():
     res = dwell_limit(lam, limit, transition="cubic")
     # cubic: θ(0) ≤ θ_max needs φ1 ≥ 2(1 + λ)/tan θ_max, θ(π) ≤ θ_max needs π - φ2 ≥ 2(1 - λ)/tan θ_max
     p1, p2 = 2 * (1 + lam) / np.tan(limit), np.pi - 2 * (1 - lam) / np.tan(limit)
-    assert res["max_dwell_deg"] == pytest.approx(np.degrees(p2 - p1), abs=0.02)
-    assert res["max_dwell_deg"] < 120.0 and "slot end" in res["where"]
-    m = curved_slot_dwell(lam, res["phi1"], res["phi2"])
+    assert res.max_dwell_deg == pytest.approx(np.degrees(p2 - p1), abs=0.02)
+    assert res.max_dwell_deg < 120.0 and "slot end" in res.where
+    m = curved_slot_dwell(lam, res.phi1, res.phi2)
     assert m.max_pressure_angle()[0] <= limit + 1e-5
 
 
 # -- the two-branch slot and λ > 1 ---------------------------------------------------------
 def test_two_branch_slot_jams_and_jumps():
     tb = two_branch_slot(0.5, 100 * DEG)
-    assert tb["velocity_jump"] == pytest.approx(2 * 0.5 / 1.5, rel=1e-12)
-    assert tb["pressure_angle_at_E"] == pytest.approx(np.pi / 2, abs=1e-12)
-    assert tb["dpsi_after"] == pytest.approx(0.0, abs=1e-12)
-    link = tb["link"]()
+    assert tb.velocity_jump == pytest.approx(2 * 0.5 / 1.5, rel=1e-12)
+    assert tb.pressure_angle_at_E == pytest.approx(np.pi / 2, abs=1e-12)
+    assert tb.dpsi_after == pytest.approx(0.0, abs=1e-12)
+    link = tb.link()
     with pytest.raises(SingularityError, match="pressure angle 90°"):
         link.motion(0.0)
     near = link.motion(np.array([1e-3, 0.5, 1.0]))

@@ -262,7 +262,7 @@ def test_spherical_without_offset_has_soft_impact():
 # -- Table 1 ------------------------------------------------------------------------------------
 def test_table1_reproduces_and_documents_differences():
     rows = spherical_table(40, 15, [3, 4, 5, 6, 8])
-    assert [r["z"] for r in rows] == [3, 4, 5, 6, 8]
+    assert [r.z for r in rows] == [3, 4, 5, 6, 8]
     cells = {(c.z, c.column): c for c in table1_comparison()}
     assert len(cells) == 30
     # these columns reproduce in every row (to the printed two decimals)
@@ -284,9 +284,9 @@ def test_table1_reproduces_and_documents_differences():
     assert a1 > g8.alpha0
     assert round(np.degrees(a1), 1) == 53.0 and round(abs(g8.position(a1).dd), 2) == 0.46
     assert round(np.degrees(g8.position(a1).theta), 1) == 24.8 > 22.5
-    assert rows[-1]["alpha1"] == pytest.approx(rows[-1]["alpha0"]) and rows[-1]["beta1"] == pytest.approx(22.5)
+    assert rows[-1].alpha1 == pytest.approx(rows[-1].alpha0) and rows[-1].beta1 == pytest.approx(22.5)
     # more slots, smaller accelerations (seed conclusion 4)
-    eps = [r["eps_max"] for r in rows]
+    eps = [r.eps_max for r in rows]
     assert all(a > b for a, b in zip(eps, eps[1:]))
 
 
@@ -424,19 +424,19 @@ def test_impact_detection_and_comparison():
     assert detect_impacts(SlottedLink(2.0, 1.0)) == "none"
     assert detect_impacts(FourBar(1.0, 3.0, 3.0, 4.0)) == "none"
     ext = intermittency(ExternalGeneva(4, 1.0), n=14401)
-    assert ext["dwell_fraction"] == pytest.approx(0.75, abs=2e-4) and ext["index_deg"] == pytest.approx(90.0)
-    assert ext["max_dpsi"] == pytest.approx(np.sqrt(2) + 1, rel=1e-9)
-    assert ext["Cv"] == pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3)
+    assert ext.dwell_fraction == pytest.approx(0.75, abs=2e-4) and ext.index_deg == pytest.approx(90.0)
+    assert ext.max_dpsi == pytest.approx(np.sqrt(2) + 1, rel=1e-9)
+    assert ext.Cv == pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3)
     shifted = intermittency(ExternalGeneva(4, 1.0), n=14401, phase=0.3)
-    assert shifted["dwell_fraction"] == pytest.approx(0.75, abs=2e-4) and shifted["impact"] == "soft"
+    assert shifted.dwell_fraction == pytest.approx(0.75, abs=2e-4) and shifted.impact == "soft"
     loose = intermittency(ExternalGeneva(4, 1.0), n=14401, dwell_tol=0.5)
-    assert loose["dwell_fraction"] > 0.8  # a loose tolerance counts the slow ends of the motion as dwell
+    assert loose.dwell_fraction > 0.8  # a loose tolerance counts the slow ends of the motion as dwell
     rows = compare({"external": ExternalGeneva(4, 1.0), "spherical": SphericalGeneva(40, 15, 4),
                     "whitworth": SlottedLink(2.0, 1.0)})
-    assert [r["name"] for r in rows] == ["external", "spherical", "whitworth"]
-    assert rows[2]["dwell_fraction"] == 0.0 and rows[2]["index_deg"] == pytest.approx(360.0)
+    assert [r.name for r in rows] == ["external", "spherical", "whitworth"]
+    assert rows[2].dwell_fraction == 0.0 and rows[2].index_deg == pytest.approx(360.0)
     # seed 004's motivation: the spherical drive accelerates less than the external planar one
-    assert rows[1]["max_ddpsi"] < rows[0]["max_ddpsi"]
+    assert rows[1].max_ddpsi < rows[0].max_ddpsi
 
 
 # -- exercises and errata -------------------------------------------------------------------------

@@ -339,3 +339,31 @@ def test_every_computation_helper_the_notebooks_import_is_exported():
                 wanted |= {n for n in re.split(r"[,\s]+", names) if n}
     assert "classic_lambda" in wanted
     assert sorted(wanted - MODULE_ONLY - set(ml.__all__)) == []
+
+
+# ----------------------------------------------------------------------------------------------
+# results: frozen dataclasses, tables that show in a notebook
+# ----------------------------------------------------------------------------------------------
+def test_public_results_are_frozen_dataclasses_and_tables_show_as_tables():
+    import dataclasses
+    results = [ml.dwell_limit(0.5, 60 * DEG), ml.two_branch_slot(0.5, 100 * DEG),
+               ml.intermittency(ml.ExternalGeneva(4, 1.0), n=1441), ml.FourBar(1, 3, 3, 4).grashof(),
+               ml.FourBar(1, 3, 3, 4).extremes(), ml.transmission_extremes(ml.FourBar(1, 3, 3, 4), n=361),
+               ml.FourBar(1, 3, 3, 4).motion(0.2).output]
+    for r in results:
+        assert dataclasses.is_dataclass(r) and not isinstance(r, (dict, tuple))
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            setattr(r, dataclasses.fields(r)[0].name, 0)
+    table = ml.spherical_table(40, 15, [4, 6])
+    assert isinstance(table, ml.Table) and len(table) == 2 and table[1].z == 6
+    assert table.columns == ("z", "alpha0", "beta0", "omega_max", "eps_max", "alpha1", "beta1")
+    assert np.array_equal(table.column("z"), [4, 6]) and table.by("z")[6] is table[1]
+    # ρ0 = 25 mm for z = 6 gives α0 = arccos(0.6) (Vainer & Shatokhina's Table 1: 53.13°)
+    assert table.by("z")[6].alpha0 == pytest.approx(np.degrees(np.arccos(0.6)), abs=1e-9)
+    html = table._repr_html_()
+    assert html.count("<tr>") == 3 and "<th>eps_max</th>" in html and "53.1301" in html
+    text = repr(table).splitlines()
+    assert len(text) == 3 and text[0].split() == list(table.columns) and text[2].split()[0] == "6"
+    rows = ml.compare({"external": ml.ExternalGeneva(4, 1.0), "whitworth": ml.SlottedLink(2.0, 1.0)}, n=1441)
+    assert [r.name for r in rows] == ["external", "whitworth"] and rows.by("name")["whitworth"].dwell_fraction == 0
+    assert "link" not in ml.Table([ml.two_branch_slot(0.5, 100 * DEG)]).columns   # a factory is no column

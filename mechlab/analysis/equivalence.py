@@ -46,7 +46,6 @@ relative paths mirror in the slot frame's vertical axis: x₋ = -x₊, y₋ = y�
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import NamedTuple
 
 import numpy as np
 
@@ -254,7 +253,8 @@ def other_assembly(mechanism: Mechanism) -> Mechanism:
     raise DimensionError(f"assembly symmetry is stated for FourBar and SliderCrank, not {type(mechanism).__name__}")
 
 
-class AssemblySymmetry(NamedTuple):
+@dataclass(frozen=True)
+class AssemblySymmetry:
     """Max residuals of the exact relations between the two assemblies (see the module docstring)."""
 
     mirror: float        # ψ₋(φ) = -ψ₊(-φ) … / s₋(φ) = -s₊(π - φ) …, over the law and both analogs
@@ -262,7 +262,7 @@ class AssemblySymmetry(NamedTuple):
     branches: float      # the relative paths are mirror images (α1–α1 ↔ α2–α2)
 
     def holds(self, tol: float = 1e-9) -> bool:
-        return max(self) <= tol
+        return max(self.mirror, self.mean_is_base, self.branches) <= tol
 
 
 def assembly_symmetry(mechanism: Mechanism, phi) -> AssemblySymmetry:

@@ -37,7 +37,8 @@ form in :func:`base_peaks`). The same holds for translating links with x_K = l_O
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+
 
 import numpy as np
 
@@ -87,7 +88,8 @@ def mirror_angle(mechanism, phi) -> np.ndarray:
     return (np.pi - phi) if _is_translating(mechanism) else (2 * np.pi - phi)
 
 
-class HalfTurn(NamedTuple):
+@dataclass(frozen=True)
+class HalfTurn:
     """The law at φ* predicted from the law at φ (Tables 1-2) and the law actually found there."""
 
     phi: np.ndarray
@@ -120,7 +122,8 @@ def other_half(mechanism, phi) -> HalfTurn:
     return HalfTurn(phi, star, predicted, actual, not _is_translating(mechanism))
 
 
-class LimitCheck(NamedTuple):
+@dataclass(frozen=True)
+class LimitCheck:
     """Peaks of the output's analogs and of its base mechanism's, over one symmetric grid."""
 
     peak_velocity: float

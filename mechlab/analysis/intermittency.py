@@ -3,8 +3,12 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
+
 from ..mechanisms.geneva import TWO_PI
+from ..motion import Table
 
 
 # ----------------------------------------------------------------------------------
@@ -30,13 +34,28 @@ def detect_impacts(mechanism, n: int = 4096, phase: float = 0.0) -> str:
     return "none"
 
 
-def intermittency(mechanism, *, n: int = 7201, dwell_tol: float = 1e-9, phase: float = 0.0) -> dict:
+@dataclass(frozen=True)
+class Intermittency:
+    """The invariants of one crank turn (:func:`intermittency`); ``index_deg`` = |Δψ| in degrees."""
+
+    name: str
+    dwell_fraction: float
+    index_deg: float
+    max_dpsi: float
+    max_ddpsi: float
+    Cv: float
+    Ca: float
+    impact: str
+
+
+def intermittency(mechanism, *, n: int = 7201, dwell_tol: float = 1e-9, phase: float = 0.0,
+                  name: str | None = None) -> Intermittency:
     """Invariants of one crank turn: dwell fraction (share of φ with |ψ'| ≤ dwell_tol·max|ψ'|),
     output turn Δψ per crank turn, max |ψ'| and |ψ''|, and the dimensionless invariants
     C_v = max|ψ'|·Φ/|Δψ| and C_a = max|ψ''|·Φ²/|Δψ| with Φ = (1 - dwell)·2π the crank
     angle of the motion: the cam-law coefficients (cycloidal law: C_v = 2, C_a = 2π).
     An approximate dwell (a linkage's) needs a larger ``dwell_tol``; the samples start at
-    ``phase``."""
+    ``phase``; ``name`` labels the row (by default the mechanism's class)."""
     phi = phase + np.linspace(0.0, TWO_PI, n)
     mo = mechanism.motion(phi)
     vmax = float(np.max(np.abs(mo.dpsi)))
@@ -45,12 +64,12 @@ def intermittency(mechanism, *, n: int = 7201, dwell_tol: float = 1e-9, phase: f
     dpsi_turn = float(mo.psi[-1] - mo.psi[0])
     amax = float(np.max(np.abs(mo.ddpsi)))
     Phi = (1.0 - dwell) * TWO_PI
-    return {"dwell_fraction": dwell, "index_deg": float(np.degrees(abs(dpsi_turn))), "max_dpsi": vmax,
-            "max_ddpsi": amax, "Cv": vmax * Phi / abs(dpsi_turn), "Ca": amax * Phi**2 / abs(dpsi_turn),
-            "impact": detect_impacts(mechanism, phase=phase)}
+    return Intermittency(type(mechanism).__name__ if name is None else name, dwell,
+                         float(np.degrees(abs(dpsi_turn))), vmax, amax, vmax * Phi / abs(dpsi_turn),
+                         amax * Phi**2 / abs(dpsi_turn), detect_impacts(mechanism, phase=phase))
 
 
-def compare(mechanisms: dict, **kw) -> list[dict]:
+def compare(mechanisms: dict, **kw) -> Table:
     """:func:`intermittency` of each named mechanism, one row each."""
-    return [{"name": name, **intermittency(m, **kw)} for name, m in mechanisms.items()]
+    return Table(intermittency(m, name=name, **kw) for name, m in mechanisms.items())
 

@@ -204,7 +204,7 @@ def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.
         mo = m.motion(phi)
         sense = np.sign(mo.psi[-1] - mo.psi[0])
         inv = intermittency(m, n=2 * n, phase=phase, dwell_tol=(dwell_tol or {}).get(name, 1e-9))
-        label = f"{name}: dwell {inv['dwell_fraction']:.2f}, impact: {inv['impact']}"
+        label = f"{name}: dwell {inv.dwell_fraction:.2f}, impact: {inv.impact}"
         axes[0].plot(np.degrees(phi), sense * mo.dpsi, label=label)
         axes[1].plot(np.degrees(phi), sense * mo.ddpsi, label=name)
     axes[0].set_ylabel("ψ′")

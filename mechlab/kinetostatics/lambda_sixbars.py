@@ -13,7 +13,8 @@ instantaneous efficiencies over the crank angles where the output moves.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+
 
 import numpy as np
 
@@ -43,7 +44,8 @@ def mchv1_model(six: LambdaRockerSixBar, inertia: float, friction: float = 0.0, 
     return model.with_friction(friction, radius) if friction else model
 
 
-class ForceInvariants(NamedTuple):
+@dataclass(frozen=True)
+class ForceInvariants:
     """Peak dimensionless reactions in O, A, B, D, E, F, crank torque and cycle efficiency."""
 
     reactions: dict

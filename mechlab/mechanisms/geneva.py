@@ -39,7 +39,6 @@ exactly, for any e. The seed's cos γ = cos α·sin ψ (11) is exact as well: it
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import NamedTuple
 import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, crank_point, fixed_point, lift, relative, vector_angle
@@ -87,7 +86,8 @@ def impact_kind(velocity_jump: float, acceleration_jump: float, tol: float = 1e-
     return "none"
 
 
-class Impact(NamedTuple):
+@dataclass(frozen=True)
+class Impact:
     """Jumps of ψ' and ψ'' (output analogs) where the pin enters and leaves a slot."""
 
     entry_velocity_jump: float

@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import NamedTuple
 import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, vector_angle
@@ -16,7 +15,8 @@ from .geneva import Impact, OffsetError, TWO_PI, check_slots, mid_motion_angle
 # ----------------------------------------------------------------------------------
 # spherical offset Geneva (seed 004)
 # ----------------------------------------------------------------------------------
-class SphericalModel(NamedTuple):
+@dataclass(frozen=True)
+class SphericalModel:
     """The exact 3-D model at crank angles α: contact point A (3-D PointPath), pin axis
     direction d, distance u = |O1A|, wheel angle β (azimuth of A), γ (angle between
     O1A and the wheel axis), ρ (A's distance from the crank axis), r (from the wheel axis)."""

@@ -53,12 +53,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import cached_property
 from math import comb
-from typing import NamedTuple
+from typing import Callable
 import numpy as np
 from numpy.polynomial import Polynomial
 from ..errors import DimensionError, MechanismError
 from ..geometry import as_angles, check_length, wrap
 from ..mechanisms.base import Mechanism
+from ..motion import Table
 
 
 TRANSITIONS = ("cubic", "quintic", "sextic")
@@ -94,7 +95,8 @@ def check_lambda(lam) -> float:
     return lam
 
 
-class BaseLaw(NamedTuple):
+@dataclass(frozen=True)
+class BaseLaw:
     """ψ_K and its first three analogs (base mechanism, seed 000 (18)-(20))."""
 
     psi: np.ndarray
@@ -617,11 +619,55 @@ def _jerk_jump(law: DwellLaw) -> float:
     return float(np.abs(law(x + e).ddd - law(x - e).ddd).max())
 
 
-def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: int = 721) -> list[dict]:
-    """One row per transition law: ψ_B, peak |ψ'|, |ψ''| (through the slot, whole turn),
-    peak |ψ'''| and its largest jump at 0, φ1, φ2, π (from the law), the largest pressure
-    angle and where it occurs, the largest |κ| of the slot for φ ∈ [1°, 179°] and |κ| at its
-    ends (1e-6 rad inside them), and the smallest radius of curvature."""
+@dataclass(frozen=True)
+class TransitionRow:
+    """One transition law of a dwell slot (a row of :func:`compare_transitions`); angles in degrees
+    where the name says ``_deg``, curvatures in 1/length, the radius in length."""
+
+    transition: str
+    psi_dwell_deg: float     # ψ_B, the dwell's output angle
+    peak_dpsi: float         # max |ψ'| over the turn, through the slot
+    peak_ddpsi: float        # max |ψ''|
+    peak_jerk: float         # max |ψ'''| of the law
+    jerk_jump: float         # largest jump of ψ''' at 0, φ1, φ2, π
+    max_pressure_deg: float  # largest pressure angle
+    where_deg: float         # the crank angle where it occurs
+    curvature_max: float     # largest |κ| of the slot for φ ∈ [1°, 179°]
+    curvature_end: float     # |κ| at the slot's ends
+    min_radius: float        # smallest radius of curvature
+
+
+@dataclass(frozen=True)
+class DwellLimit:
+    """The longest dwell under a pressure-angle bound (:func:`dwell_limit`): its length and place
+    (φ1, φ2 in radians), the largest pressure angle reached and where, named."""
+
+    max_dwell_deg: float
+    phi1: float
+    phi2: float
+    theta_deg: float
+    where_deg: float
+    where: str
+
+
+@dataclass(frozen=True)
+class TwoBranchSlot:
+    """The two-branch slot (:func:`two_branch_slot`): the pressure angle at the far point E
+    (radians), ψ' just after and just before φ = 0, their difference, and ``link()`` building
+    the curved-slot mechanism."""
+
+    pressure_angle_at_E: float
+    dpsi_after: float
+    dpsi_before: float
+    velocity_jump: float
+    link: Callable = field(repr=False)
+
+
+def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: int = 721) -> Table:
+    """One :class:`TransitionRow` per transition law: ψ_B, peak |ψ'|, |ψ''| (through the slot,
+    whole turn), peak |ψ'''| and its largest jump at 0, φ1, φ2, π (from the law), the largest
+    pressure angle and where it occurs, the largest |κ| of the slot for φ ∈ [1°, 179°] and |κ|
+    at its ends (1e-6 rad inside them), and the smallest radius of curvature."""
     from .slot_export import min_radius_of_curvature
 
     rows = []
@@ -632,7 +678,7 @@ def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: int = 721) -> li
         law = m.law(phi)
         th, where = m.max_pressure_angle()
         inner = np.linspace(np.radians(1.0), np.radians(179.0), 1001)
-        rows.append(dict(
+        rows.append(TransitionRow(
             transition=tr,
             psi_dwell_deg=float(np.degrees(m.law.psi_dwell)),
             peak_dpsi=float(np.abs(mo.dpsi).max()),
@@ -645,7 +691,7 @@ def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: int = 721) -> li
             curvature_end=float(np.abs(m.law.curvature(np.array([0.0, np.pi]))).max()),
             min_radius=min_radius_of_curvature(m)[0],
         ))
-    return rows
+    return Table(rows)
 
 
 def _worst(law: DwellLaw, n: int = 361):
@@ -690,7 +736,7 @@ def best_placement(lam, length, transition="cubic", pivot_distance=1.0, n_grid: 
     return (float(res.fun), float(res.x)) if res.fun < vals[i] else (float(vals[i]), float(grid[i]))
 
 
-def dwell_limit(lam, theta_max, transition="cubic", pivot_distance=1.0) -> dict:
+def dwell_limit(lam, theta_max, transition="cubic", pivot_distance=1.0) -> DwellLimit:
     """The longest dwell whose largest pressure angle stays ≤ ``theta_max`` (radians) with the
     best placement, by bisection on the dwell length. Seed 000 §3 says a dwell over 120°
     makes the pressure angle large; this computes the actual limit and where θ is worst."""
@@ -709,15 +755,15 @@ def dwell_limit(lam, theta_max, transition="cubic", pivot_distance=1.0) -> dict:
     th, p1 = best_placement(lam, lo, transition, pivot_distance)
     law = DwellLaw(lam, p1, p1 + lo, transition, pivot_distance)
     _, where = _worst(law, 3601)
-    return dict(max_dwell_deg=float(np.degrees(lo)), phi1=p1, phi2=p1 + lo, theta_deg=float(np.degrees(th)),
-                where_deg=float(np.degrees(where)), where=where_kind(law, where))
+    return DwellLimit(max_dwell_deg=float(np.degrees(lo)), phi1=p1, phi2=float(p1 + lo),
+                      theta_deg=float(np.degrees(th)), where_deg=float(np.degrees(where)), where=where_kind(law, where))
 
 
-def two_branch_slot(lam, phi2, pivot_distance=1.0) -> dict:
+def two_branch_slot(lam, phi2, pivot_distance=1.0) -> TwoBranchSlot:
     """The two-branch slot of seed 000 Fig. 10: the dwell starts at φ1 = 0, so the dwell arc
     (radius l_OA about O, link at ψ_B = 0) passes through the slot's far point E.
 
-    Returns ``pressure_angle_at_E`` (π/2: the arc is tangent to the circle about B there),
+    Returns a :class:`TwoBranchSlot`: ``pressure_angle_at_E`` (π/2: the arc is tangent to the circle about B there),
     ``dpsi_after`` = ψ'(0+) through the solver (the link dwells), ``dpsi_before`` = ψ'(0-) when
     the pin comes back along the same branch (Table 2: 2ψ_K'(0) - ψ'(0+)), their difference
     ``velocity_jump`` (= 2λ/(λ+1), times ω1), and ``link``: a factory of the curved-slot
@@ -740,6 +786,6 @@ def two_branch_slot(lam, phi2, pivot_distance=1.0) -> dict:
     # at E the slot point is c(0) = (d + r, 0) in the link frame (= B→E); θ = angle(tangent, radius)
     E = link().slot.evaluate(np.array([0.0]))
     cos_t = abs(float(E.p[0] @ E.d[0])) / (np.hypot(*E.p[0]) * np.hypot(*E.d[0]))
-    return dict(pressure_angle_at_E=float(np.arccos(cos_t)), dpsi_after=after,
-                dpsi_before=before, velocity_jump=before - after, link=link)
+    return TwoBranchSlot(pressure_angle_at_E=float(np.arccos(cos_t)), dpsi_after=after,
+                         dpsi_before=before, velocity_jump=before - after, link=link)
 

@@ -3,22 +3,37 @@
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+
 import numpy as np
+
 from ..mechanisms.spherical_geneva import SphericalGeneva
+from ..motion import Table
 
 
-def spherical_table(R: float, e: float, z_values, pin_diameter: float = 10.0) -> list[dict]:
-    """Seed 004 Table 1, recomputed: per z, α0 and β0 (deg), ω_max/ω1, the largest
+@dataclass(frozen=True)
+class SphericalRow:
+    """One row of Table 1 (Vainer & Shatokhina): angles in degrees, ω_max/ω1 and |ε|max/ω1²."""
+
+    z: int
+    alpha0: float
+    beta0: float
+    omega_max: float
+    eps_max: float
+    alpha1: float
+    beta1: float
+
+
+def spherical_table(R: float, e: float, z_values, pin_diameter: float = 10.0) -> Table:
+    """Table 1 of Vainer & Shatokhina, recomputed: per z, α0 and β0 (deg), ω_max/ω1, the largest
     |ε|/ω1² while the wheel moves (|α| ≤ α0), and α1, β1 (deg) where it is reached."""
     rows = []
     for z in z_values:
         g = SphericalGeneva(R, e, z, pin_diameter)
         eps, al = g.max_acceleration()
-        rows.append({"z": g.z, "alpha0": float(np.degrees(g.alpha0)), "beta0": float(np.degrees(g.beta0)),
-                     "omega_max": g.max_velocity(), "eps_max": eps, "alpha1": float(np.degrees(al)),
-                     "beta1": float(np.degrees(g.position(al).theta))})
-    return rows
+        rows.append(SphericalRow(g.z, float(np.degrees(g.alpha0)), float(np.degrees(g.beta0)), g.max_velocity(),
+                                 eps, float(np.degrees(al)), float(np.degrees(g.position(al).theta))))
+    return Table(rows)
 
 
 # Seed 004, Table 1 as printed (R = 40 mm, e = 15 mm, d = 10 mm).
@@ -34,7 +49,8 @@ TABLE1_PRINTED = {
 TABLE1_COLUMNS = ("alpha0", "beta0", "omega_max", "eps_max", "alpha1", "beta1")
 
 
-class Cell(NamedTuple):
+@dataclass(frozen=True)
+class Cell:
     """One cell of Table 1: ``status`` is "agrees" (the computed value rounds to the
     printed one), "last digit" (off by at most 1.5 units of the printed last digit,
     0.01) or "differs"."""
@@ -50,16 +66,16 @@ class Cell(NamedTuple):
         return self.status == "agrees"
 
 
-def table1_comparison(R: float = 40.0, e: float = 15.0) -> list[Cell]:
+def table1_comparison(R: float = 40.0, e: float = 15.0) -> Table:
     """Every cell of seed 004's Table 1 (:data:`TABLE1_PRINTED`, two decimals printed)
     against :func:`spherical_table`."""
-    rows = {r["z"]: r for r in spherical_table(R, e, sorted(TABLE1_PRINTED))}
+    rows = spherical_table(R, e, sorted(TABLE1_PRINTED)).by("z")
     out = []
     for z, printed in TABLE1_PRINTED.items():
         for col in TABLE1_COLUMNS:
-            p, c = printed[col], float(rows[z][col])
+            p, c = printed[col], float(getattr(rows[z], col))
             diff = abs(p - c)
             status = "agrees" if diff <= 0.005 + 1e-12 else "last digit" if diff <= 0.015 else "differs"
             out.append(Cell(z, col, p, c, status))
-    return out
+    return Table(out)
 

@@ -30,7 +30,8 @@ The distance of D from any point Q = C + c·e on the axis is then a function of 
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+
 import numpy as np
 from scipy.optimize import brentq, minimize, root
 from ..errors import MechanismError
@@ -44,7 +45,8 @@ __all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding",
 # --------------------------------------------------------------------------------------------
 # Circle-guiding synthesis
 # --------------------------------------------------------------------------------------------
-class CircleGuide(NamedTuple):
+@dataclass(frozen=True)
+class CircleGuide:
     """Equal-ripple circle-guiding design (seed 001, Fig. 1b, formulas (1), (9)-(11)).
 
     Lengths in units of l. ``c`` is the distance C→Q of the arc centre Q along the axis
@@ -95,7 +97,8 @@ class CircleGuide(NamedTuple):
         return self.mechanism.radius_about(self.centre, phi)[0] - self.R
 
 
-class StraightGuide(NamedTuple):
+@dataclass(frozen=True)
+class StraightGuide:
     """Equal-ripple straight-line guide (R → ∞): D's coordinate x along the axis stays within
     Y ± E over the dwell, touching Y ± E alternately at t = 0, ±t1 and ±α."""
 
@@ -479,7 +482,8 @@ def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray
     return r[ok], a[ok], (p * a)[ok]
 
 
-class WholeTurnLine(NamedTuple):
+@dataclass(frozen=True)
+class WholeTurnLine:
     """Points of the whole-turn boundary (2α = 360°) in the (r, a) plane, with the band's centre
     offset c (Q = C + c·e) and the touch angles t3 < t2 of each point (arrays)."""
 
@@ -615,7 +619,7 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     out = {"rotation": rotation_boundary(), "fifth": fifth_order_line(delta)[:2]}
     line = whole_turn_line(delta)
-    out["whole"] = line[:2]
+    out["whole"] = (line.r, line.a)
     out["whole_line"] = line
     out["region"] = existence_region(delta, line)
     out.update(transmission_lines())

@@ -26,7 +26,8 @@ Frames and angles as in :mod:`mechlab.synthesis.lambda_guiding`: the dwell is ce
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+
 import numpy as np
 from scipy.optimize import brentq
 from ..errors import MechanismError
@@ -47,7 +48,8 @@ def time_ratio_far_angle(K: float, dwell: float) -> float:
     return 2 * K * (np.pi - alpha) / (1 + K)
 
 
-class SixBarReport(NamedTuple):
+@dataclass(frozen=True)
+class SixBarReport:
     """What a simulation of a dwell six-bar shows (angles in radians)."""
 
     dwell: float          # crank angle of the designed dwell 2α

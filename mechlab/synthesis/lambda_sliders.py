@@ -46,7 +46,8 @@ Frames as in :mod:`mechlab.synthesis.lambda_guiding`: O = (0, 0), C = (a, 0), th
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+
 import numpy as np
 from scipy.optimize import brentq
 from ..errors import MechanismError
@@ -257,7 +258,8 @@ class _AsAngle:
         return AngularMotion(mo.phi, mo.points, lambda _: mo.transmission, mo.s, mo.ds, mo.dds)
 
 
-class SliderReport(NamedTuple):
+@dataclass(frozen=True)
+class SliderReport:
     """What a simulation of a translating-output dwell six-bar shows (lengths in units of l)."""
 
     dwell: float      # crank angle of the designed dwell 2α
@@ -275,7 +277,8 @@ def slider_report(mech, dwell: float | None = None) -> SliderReport:
     """Simulate МЧВ2 or МЧВ5 over a turn (the measures of :func:`.sixbars.report`): residual motion
     in the dwell centred on φ = π, stroke, far extreme, measured K, transmission angles."""
     dwell = mech.dwell if dwell is None else dwell
-    return SliderReport(*report(_AsAngle(mech), dwell))
+    r = report(_AsAngle(mech), dwell)
+    return SliderReport(r.dwell, r.residual, r.swing, r.far, r.K, r.mu_min, r.mu_max, r.mu2_min, r.mu2_max)
 
 
 def slider_rise(mech, dwell: float | None = None, n: int = 4001):

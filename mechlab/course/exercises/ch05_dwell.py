@@ -29,7 +29,7 @@ exercise(
     "05.3",
     "Two-branch slot with λ = 0.6 (dwell from φ1 = 0): the jump ψ'(0-) - ψ'(0+) of the velocity analog when the "
     "pin comes back along the branch it arrived on.",
-    lambda: float(two_branch_slot(0.6, _D(100))["velocity_jump"]),
+    lambda: float(two_branch_slot(0.6, _D(100)).velocity_jump),
     rtol=1e-9,
     hint="Table 2: ψ'(-φ) = 2ψ_K'(φ) - ψ'(φ); on the dwell ψ'(0+) = 0, and ψ_K'(0) = λ/(λ+1).",
 )
