@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import MechanismError
-from .criteria import Criteria, Structure, evaluate, output_law
+from .criteria import Criteria, Structure, evaluate
 from .families import FAMILIES, Design, Unsuitable
 from .spec import IMPACTS, Specification
 
@@ -217,7 +217,7 @@ def check_design(spec: Specification, mechanism, *, scale: float = 1.0, phase: f
         raise MechanismError(f"scale must be a positive number (mm per length unit), got {scale!r}")
     c = evaluate(mechanism, spec, scale=scale, structure=Structure(0, 0, 0), phase=phase)
     phi = phase + np.linspace(0.0, 2 * np.pi, 2881)
-    x = np.asarray(output_law(mechanism.motion(phi))[0], float) * (1.0 if spec.rotary else scale)
+    x = np.asarray(mechanism.motion(phi).output.value, float) * (1.0 if spec.rotary else scale)
     reached = abs(x[-1] - x[0]) if spec.motion == "index" else float(np.ptp(x))
     unit, shown = ("deg", np.degrees) if spec.rotary else ("mm", lambda v: v)
     amp_ok = abs(reached - spec.amplitude) <= 0.01 * spec.amplitude

@@ -80,13 +80,6 @@ class Criteria:
     structure: Structure
 
 
-def output_law(motion) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The output x, x′, x″ of a motion, angular or linear."""
-    if hasattr(motion, "psi"):
-        return motion.psi, motion.dpsi, motion.ddpsi
-    return motion.s, motion.ds, motion.dds
-
-
 def longest_still(x: np.ndarray, shift: float, band: float) -> tuple[int, int]:
     """Longest run (start, length in samples) of the periodic samples ``x`` whose range stays ≤ band.
 
@@ -122,7 +115,8 @@ def _jumps(mechanism, phase: float) -> tuple[float, float]:
     out = []
     for n in (SAMPLES, 2 * SAMPLES):
         phi = phase + np.linspace(0.0, 2 * np.pi, n + 1)
-        _, d1, d2 = output_law(mechanism.motion(phi))
+        law = mechanism.motion(phi).output
+        d1, d2 = law.d, law.dd
         out.append((np.max(np.abs(np.diff(d1))), np.max(np.abs(np.diff(d2))), np.max(np.abs(d1)),
                     np.max(np.abs(d2))))
     (v1, a1, _, _), (v2, a2, vmax, amax) = out
@@ -142,7 +136,7 @@ def evaluate(mechanism, spec: Specification, *, scale: float, structure: Structu
     """
     phi = phase + np.linspace(0.0, 2 * np.pi, SAMPLES + 1)
     mo = mechanism.motion(phi)
-    x, d1, d2 = (np.asarray(a, float) for a in output_law(mo))
+    x, d1, d2 = (np.asarray(a, float) for a in (mo.output.value, mo.output.d, mo.output.dd))
     length = 1.0 if spec.rotary else scale  # a translating output's analogs in mm
     x, d1, d2 = x * length, d1 * length, d2 * length
     h = spec.amplitude

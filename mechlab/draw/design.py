@@ -12,7 +12,6 @@ import matplotlib.pyplot as plt
 from matplotlib.figure import Figure
 
 from ..design import FAMILIES, Comparison
-from ..design.criteria import output_law
 
 # radar spokes: (criterion, label); each is scaled by the largest among the candidates (smaller is better)
 SPOKES = (("B", "peak velocity B"), ("C", "peak acceleration C"), ("pressure_angle", "pressure angle"),
@@ -66,7 +65,7 @@ class ComparisonFigure:
                 continue
             r = [_spoke(c, k) / worst[k] for k, _ in SPOKES]
             spoke.set_data(self._angles, r + r[:1])
-            x = np.asarray(output_law(c.design.mechanism.motion(c.design.phase + phi))[0], float)
+            x = np.asarray(c.design.mechanism.motion(c.design.phase + phi).output.value, float)
             scale = 1.0 if comparison.spec.rotary else c.design.scale
             x = (x - x[0]) * scale / comparison.spec.amplitude
             if comparison.spec.motion == "index":
