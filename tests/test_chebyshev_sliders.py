@@ -256,12 +256,12 @@ def test_mchv5_stroke_synthesis_and_refusals(line):
 def test_invariants_of_the_rise(line, guide):
     # a guide turned by γ scales s by 1/cos γ: the normalised invariants do not change
     i0, i1 = slider_invariants(mchv5(line)), slider_invariants(mchv5(line, guide_angle=35 * DEG))
-    assert np.allclose(i0, i1, rtol=1e-9)
+    assert np.allclose(i0.values, i1.values, rtol=1e-9)
     six = mchv2(guide, 1.25, mu_min=None)
     phi, s, ds, dds = slider_rise(six)
     assert abs(phi[0] - (np.pi + guide.alpha)) < 1e-12 and abs(ds[-1]) < 1e-9
     inv = slider_invariants(six)
-    assert np.allclose(inv, rise_invariants(phi, s, ds, dds))
+    assert np.allclose(inv.values, rise_invariants(phi, s, ds, dds).values)
     # max|y'| ≥ 1 (mean slope over the rise); the constant-acceleration law has C = 4 as the least C
     assert inv.B >= 1 and inv.C >= 4
 

@@ -28,15 +28,22 @@ __all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "rise_invariants",
            "thesis_mchv1_rows"]
 
 
-class Invariants(tuple):
-    """(B, C, D) with names."""
+@dataclass(frozen=True)
+class Invariants:
+    """The rise's invariants B (velocity), C (acceleration) and D (kinetic power)."""
 
-    def __new__(cls, B, C, D):
-        return super().__new__(cls, (float(B), float(C), float(D)))
+    B: float
+    C: float
+    D: float
 
-    B = property(lambda self: self[0])
-    C = property(lambda self: self[1])
-    D = property(lambda self: self[2])
+    def __post_init__(self):
+        for name in ("B", "C", "D"):
+            object.__setattr__(self, name, float(getattr(self, name)))
+
+    @property
+    def values(self) -> tuple[float, float, float]:
+        """(B, C, D)."""
+        return self.B, self.C, self.D
 
     def __repr__(self):
         return f"Invariants(B={self.B:.4f}, C={self.C:.4f}, D={self.D:.4f})"
