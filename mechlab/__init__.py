@@ -28,7 +28,7 @@ from .mechanisms import (Antiparallelogram, CircleSlot, CurvedSlotLink, Elliptic
                          SineMechanism, SixBarIV, SliderCrank, SlottedLink, SphericalGeneva, TranslatingCurvedSlot)
 from .mechanisms.geneva import OffsetError, SlotCountError
 from .mechanisms.lambda_mechanism import classic_lambda
-from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Table
+from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
 from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
                                    DwellSlotMechanism, best_placement, compare_transitions, curved_slot_dwell,
                                    dwell_limit, two_branch_slot)
@@ -51,7 +51,7 @@ __all__ = [
     "CurvedSlotLink", "TranslatingCurvedSlot", "CircleSlot", "ParametricSlot", "SampledSlot", "SixBarIV",
     "EllipticTrammel", "Antiparallelogram", "LambdaMechanism",
     "ExternalGeneva", "InternalGeneva", "SphericalGeneva",
-    "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table",
+    "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
     # textbook helpers
     "nearest_assembly", "transmission_extremes", "TransmissionExtremes", "zero_acceleration", "crank_ranges_degrees",
     # equivalence, base mechanism, half-turn relations

@@ -285,6 +285,14 @@ def limit_positions(mechanism, joint: str, extended, folded) -> Extremes:
     return Extremes(phi_e, phi_f, out_e, out_f, mechanism.output)
 
 
+@dataclass(frozen=True)
+class Quantity:
+    """A named value of a design sheet (the unit in the name where it has one)."""
+
+    name: str
+    value: float
+
+
 def _cell(value) -> str:
     if isinstance(value, bool) or not isinstance(value, Real):
         return str(value)
@@ -332,7 +340,10 @@ class Table:
     def __repr__(self) -> str:
         body = [list(self.columns), *self._text_rows()]
         widths = [max(len(line[i]) for line in body) for i in range(len(self.columns))]
-        return "\n".join("  ".join(s.rjust(w) for s, w in zip(line, widths)) for line in body)
+        # numbers right-aligned, words left-aligned
+        numeric = [all(isinstance(getattr(r, c), Real) for r in self.rows) for c in self.columns]
+        return "\n".join("  ".join(s.rjust(w) if num else s.ljust(w)
+                                   for s, w, num in zip(line, widths, numeric)).rstrip() for line in body)
 
     def _repr_html_(self) -> str:
         head = "".join(f"<th>{html.escape(c)}</th>" for c in self.columns)

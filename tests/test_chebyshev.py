@@ -71,7 +71,7 @@ def test_rotation_conditions_and_bad_input():
 def test_transmission_angle_lines():
     lines = transmission_lines()
     for key, mu in (("mu_min", 30 * DEG), ("mu_max", 150 * DEG)):
-        r, a = lines[key]
+        r, a = getattr(lines, key)
         i = len(r) // 3
         m = LambdaMechanism(r[i], a[i], np.pi) if r[i] < a[i] and r[i] + a[i] < 2 else None
         if m is not None:
@@ -146,9 +146,9 @@ def test_infeasible_requests_raise_named_errors():
 
 def test_existence_map_curves():
     em = existence_map(150 * DEG, dwells=(120 * DEG,), n=9)
-    r, a = em[120]
+    r, a = em.iso_dwell[120]
     assert len(r) >= 4 and np.all(r < np.minimum(a, 2 - a))
-    r5, a5 = em["fifth"]
+    r5, a5 = em.fifth
     assert np.all((r5 > 0) & (r5 < a5) & (r5 + a5 < 2))
 
 

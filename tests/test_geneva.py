@@ -110,7 +110,7 @@ def test_planar_dimensions():
     assert i.dwell_fraction == pytest.approx(1 / 3) and i.max_velocity() == pytest.approx(1 / 3)
     assert i.slot_length == pytest.approx(50 + 25 + i.roller_radius - i.inner_radius)
     assert i.inner_radius < i.entry_radius < i.slot_bottom < i.outer_radius
-    assert set(g.design()) >= {"crank radius a", "slot length", "dwell fraction"}
+    assert set(g.design().by("name")) >= {"crank radius a", "slot length", "dwell fraction"}
 
 
 def test_geneva_turns_accumulate():
@@ -567,7 +567,7 @@ def test_small_helpers():
     g = SphericalGeneva(40.0, 15.0, 4)
     d = g.pin_direction(np.linspace(-3, 3, 7))
     assert np.allclose(np.linalg.norm(d, axis=1), 1.0) and np.allclose(d[:, 0], np.cos(g.cone_angle))
-    assert set(g.design()) >= {"α0 (deg)", "ρ0", "r_H", "min slot length"}
+    assert set(g.design().by("name")) >= {"α0 (deg)", "ρ0", "r_H", "min slot length"}
     from mechlab.mechanisms.geneva import PlanarGeneva
     with pytest.raises(TypeError, match="ExternalGeneva or InternalGeneva"):
         PlanarGeneva(4, 1.0)

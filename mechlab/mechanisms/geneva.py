@@ -43,7 +43,7 @@ import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, crank_point, fixed_point, lift, relative, vector_angle
 from .base import Mechanism
-from ..motion import AngularMotion
+from ..motion import AngularMotion, Quantity, Table
 
 
 TWO_PI = 2.0 * np.pi
@@ -259,13 +259,15 @@ class PlanarGeneva(Mechanism):
         """True where the pin is in a slot."""
         return np.abs(mid_motion_angle(as_angles(phi))) <= self.engagement_half_angle
 
-    def design(self) -> dict:
-        """The main sizes (lengths in the unit of C, angles in degrees)."""
-        return {"z": self.z, "C": self.centre_distance, "crank radius a": self.crank_radius,
-                "pin radius at entry |WA|": self.entry_radius, "roller radius": self.roller_radius,
-                "slot bottom from W": self.slot_bottom, "slot length": self.slot_length,
-                "dwell fraction": self.dwell_fraction, "index angle (deg)": np.degrees(abs(self.index_angle)),
-                "max |ψ'|": self.max_velocity(), "max |ψ''|": self.max_acceleration()}
+    def design(self) -> Table:
+        """The main sizes (lengths in the unit of C, angles in degrees), a :class:`Table` of
+        :class:`Quantity` rows."""
+        return Table(Quantity(k, v) for k, v in (
+            ("z", self.z), ("C", self.centre_distance), ("crank radius a", self.crank_radius),
+            ("pin radius at entry |WA|", self.entry_radius), ("roller radius", self.roller_radius),
+            ("slot bottom from W", self.slot_bottom), ("slot length", self.slot_length),
+            ("dwell fraction", self.dwell_fraction), ("index angle (deg)", np.degrees(abs(self.index_angle))),
+            ("max |ψ'|", self.max_velocity()), ("max |ψ''|", self.max_acceleration())))
 
 
 @dataclass(frozen=True)

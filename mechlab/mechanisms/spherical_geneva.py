@@ -8,7 +8,7 @@ import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, vector_angle
 from .base import Mechanism
-from ..motion import AngularMotion
+from ..motion import AngularMotion, Quantity, Table
 from .geneva import Impact, OffsetError, TWO_PI, check_slots, mid_motion_angle
 
 
@@ -282,11 +282,13 @@ class SphericalGeneva(Mechanism):
         return AngularMotion(phi, {"O": fixed3([0.0, 0.0, 0.0]), "O1": fixed3(o1), "A": m.A, "P": P, "B": B},
                              mu, psi, dpsi, ddpsi)
 
-    def design(self) -> dict:
-        """Seed 004's design quantities (mm, degrees)."""
-        return {"R": self.R, "e": self.e, "z": self.z, "α0 (deg)": np.degrees(self.alpha0),
-                "β0 (deg)": np.degrees(self.beta0), "ρ0": self.rho0, "ψ (deg)": np.degrees(self.cone_angle),
-                "γ0 (deg)": np.degrees(self.gamma0), "ρ_H": self.rho_H, "r_H": self.r_H,
-                "pin travel (ρ_H-ρ0)/sinψ": self.pin_travel, "min slot length": self.min_slot_length,
-                "dwell fraction": self.dwell_fraction}
+    def design(self) -> Table:
+        """The design quantities of Vainer & Shatokhina (mm, degrees), a :class:`Table` of
+        :class:`Quantity` rows."""
+        return Table(Quantity(k, v) for k, v in (
+            ("R", self.R), ("e", self.e), ("z", self.z), ("α0 (deg)", np.degrees(self.alpha0)),
+            ("β0 (deg)", np.degrees(self.beta0)), ("ρ0", self.rho0), ("ψ (deg)", np.degrees(self.cone_angle)),
+            ("γ0 (deg)", np.degrees(self.gamma0)), ("ρ_H", self.rho_H), ("r_H", self.r_H),
+            ("pin travel (ρ_H-ρ0)/sinψ", self.pin_travel), ("min slot length", self.min_slot_length),
+            ("dwell fraction", self.dwell_fraction)))
 

@@ -39,7 +39,7 @@ from ..geometry import check_length, perp
 from ..errors import SynthesisError
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
 
-__all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches", "WholeTurnLine", "whole_turn_line", "whole_turn_guiding", "existence_region"]
+__all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches", "WholeTurnLine", "ExistenceMap", "TransmissionLines", "whole_turn_line", "whole_turn_guiding", "existence_region"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -446,13 +446,21 @@ def rotation_boundary(n: int = 101) -> tuple[np.ndarray, np.ndarray]:
     return np.minimum(a, 2 - a), a
 
 
-def transmission_lines(mu_min: float = np.radians(30), mu_max: float = np.radians(150), n: int = 101):
+@dataclass(frozen=True)
+class TransmissionLines:
+    """The lines μ = μ_min and μ = μ_max in the (r, a) plane, each a pair of arrays (r, a)."""
+
+    mu_min: tuple[np.ndarray, np.ndarray]
+    mu_max: tuple[np.ndarray, np.ndarray]
+
+
+def transmission_lines(mu_min: float = np.radians(30), mu_max: float = np.radians(150),
+                       n: int = 101) -> TransmissionLines:
     """Working region of the base four-bar: μ = ∠ABC ranges over [2 asin(|a−r|/2), 2 asin((a+r)/2)],
-    so μ ≥ μ_min is the line a − r = 2 sin(μ_min/2) and μ ≤ μ_max is a + r = 2 sin(μ_max/2).
-    Returns {"mu_min": (r, a), "mu_max": (r, a)}."""
+    so μ ≥ μ_min is the line a − r = 2 sin(μ_min/2) and μ ≤ μ_max is a + r = 2 sin(μ_max/2)."""
     s1, s2 = 2 * np.sin(mu_min / 2), 2 * np.sin(mu_max / 2)
     r = np.linspace(0.0, 1.0, n)
-    return {"mu_min": (r, r + s1), "mu_max": (r, s2 - r)}
+    return TransmissionLines((r, r + s1), (r, s2 - r))
 
 
 def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -606,26 +614,35 @@ def existence_region(delta: float, line: WholeTurnLine | None = None) -> tuple[n
     return np.array(r), np.array(a)
 
 
-def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radians(180), np.radians(240)),
-                  n: int = 25) -> dict:
-    """Curves of Fig. 2a for break angle δ in the (r, a) plane.
+@dataclass(frozen=True)
+class ExistenceMap:
+    """The curves of Fig. 2a (Kinitsky, 1994) in the (r, a) plane, each a pair of arrays (r, a):
+    ``rotation`` (r = a, r + a = 2), ``fifth`` (fifth-order contact), ``whole`` (2α = 360°, all of
+    it in ``whole_line``), the closed outline ``region`` of the existence region, the transmission
+    lines μ = 30° and 150° (``mu_min``, ``mu_max``) and ``iso_dwell``: one curve per dwell, keyed by
+    the dwell in whole degrees."""
 
-    ``rotation`` (r = a, r + a = 2), ``fifth`` (fifth-order contact), one iso-dwell curve per
-    requested dwell (key = dwell in degrees, rounded) computed by continuation in a, and the
-    transmission lines μ = 30°, 150°, the whole-turn line ``whole`` (2α = 360°, :func:`whole_turn_line`)
-    (all of :class:`WholeTurnLine` under ``whole_line``) and the closed outline ``region`` of the existence region (:func:`existence_region`).
-    Each curve is a pair of arrays (r, a).
-    """
+    rotation: tuple[np.ndarray, np.ndarray]
+    fifth: tuple[np.ndarray, np.ndarray]
+    whole: tuple[np.ndarray, np.ndarray]
+    whole_line: WholeTurnLine
+    region: tuple[np.ndarray, np.ndarray]
+    mu_min: tuple[np.ndarray, np.ndarray]
+    mu_max: tuple[np.ndarray, np.ndarray]
+    iso_dwell: dict
+
+
+def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radians(180), np.radians(240)),
+                  n: int = 25) -> ExistenceMap:
+    """The curves of Fig. 2a for break angle δ (:class:`ExistenceMap`); the iso-dwell curves by
+    continuation in a, the whole-turn line by :func:`whole_turn_line`, the region by
+    :func:`existence_region`."""
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
-    out = {"rotation": rotation_boundary(), "fifth": fifth_order_line(delta)[:2]}
     line = whole_turn_line(delta)
-    out["whole"] = (line.r, line.a)
-    out["whole_line"] = line
-    out["region"] = existence_region(delta, line)
-    out.update(transmission_lines())
-    for key, dw in [(int(round(np.degrees(w))), w) for w in dwells]:
-        out[key] = _iso_dwell(delta, dw, n)
-    return out
+    mu = transmission_lines()
+    iso = {int(round(np.degrees(w))): _iso_dwell(delta, w, n) for w in dwells}
+    return ExistenceMap(rotation_boundary(), fifth_order_line(delta)[:2], (line.r, line.a), line,
+                        existence_region(delta, line), mu.mu_min, mu.mu_max, iso)
 
 
 def _iso_dwell(delta, dwell, n):
