@@ -39,7 +39,9 @@ from ..geometry import check_length, perp
 from ..errors import SynthesisError
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
 
-__all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches", "WholeTurnLine", "ExistenceMap", "TransmissionLines", "whole_turn_line", "whole_turn_guiding", "existence_region"]
+__all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "fifth_order_line",
+           "existence_map", "rotation_boundary", "transmission_lines", "band_touches", "WholeTurnLine", "ExistenceMap",
+           "TransmissionLines", "whole_turn_line", "whole_turn_guiding", "existence_region"]
 
 
 # --------------------------------------------------------------------------------------------
