@@ -367,3 +367,8 @@ def test_public_results_are_frozen_dataclasses_and_tables_show_as_tables():
     rows = ml.compare({"external": ml.ExternalGeneva(4, 1.0), "whitworth": ml.SlottedLink(2.0, 1.0)}, n=1441)
     assert [r.name for r in rows] == ["external", "whitworth"] and rows.by("name")["whitworth"].dwell_fraction == 0
     assert "link" not in ml.Table([ml.two_branch_slot(0.5, 100 * DEG)]).columns   # a factory is no column
+
+
+def test_a_triple_rocker_refuses_to_turn_naming_non_grashof():
+    with pytest.raises(ml.RotationError, match=r"s \+ l = 10\.00 > p \+ q = 6\.00 \(non-Grashof, a triple-rocker"):
+        ml.FourBar(3, 3, 3, 7).turn()

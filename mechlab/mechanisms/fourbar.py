@@ -163,7 +163,7 @@ class FourBar(Mechanism):
         if info.kind == "change-point":
             why = f"{info.inequality} (Grashof: a change-point linkage folds flat at a dead point)"
         elif info.kind == "triple-rocker":
-            why = f"{info.inequality} (Grashof: no link turns fully)"
+            why = f"{info.inequality} (non-Grashof, a triple-rocker: no link turns fully)"
         else:
             why = (f"{info.inequality} (Grashof), but the shortest link is the {info.shortest} "
                    f"({info.s:g}), not the crank or the ground")
