@@ -204,6 +204,10 @@ class LinearMotion(Motion):
         return Law("s", self.s, self.ds, self.dds, "position")
 
 
+def _real_scalar(phi) -> bool:
+    return isinstance(phi, Real) or (isinstance(phi, np.ndarray) and phi.ndim == 0)
+
+
 def scalar_in_scalar_out(motion):
     """Wrap a mechanism's ``motion(phi)`` so that a real scalar φ gives a motion of scalars.
 
@@ -212,9 +216,23 @@ def scalar_in_scalar_out(motion):
     """
     @functools.wraps(motion)
     def wrapped(self, phi, *args, **kwargs):
-        if isinstance(phi, Real) or (isinstance(phi, np.ndarray) and phi.ndim == 0):
+        if _real_scalar(phi):
             return motion(self, np.array([phi], dtype=float), *args, **kwargs)._first()
         return motion(self, phi, *args, **kwargs)
+    return wrapped
+
+
+def scalar_law(law_of):
+    """Wrap ``law_of(x, phi, ...)``, which returns a law (a frozen dataclass or a named tuple of
+    arrays over φ), so that a real scalar φ gives the law's values at that φ as scalars."""
+    @functools.wraps(law_of)
+    def wrapped(x, phi, *args, **kwargs):
+        if not _real_scalar(phi):
+            return law_of(x, phi, *args, **kwargs)
+        law = law_of(x, np.array([phi], dtype=float), *args, **kwargs)
+        if hasattr(law, "_fields"):   # a named tuple
+            return law._make(v[0] for v in law)
+        return type(law)(**{f.name: getattr(law, f.name)[0] for f in fields(law)})
     return wrapped
 
 

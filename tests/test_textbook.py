@@ -372,3 +372,18 @@ def test_public_results_are_frozen_dataclasses_and_tables_show_as_tables():
 def test_a_triple_rocker_refuses_to_turn_naming_non_grashof():
     with pytest.raises(ml.RotationError, match=r"s \+ l = 10\.00 > p \+ q = 6\.00 \(non-Grashof, a triple-rocker"):
         ml.FourBar(3, 3, 3, 7).turn()
+
+
+def test_base_laws_take_a_scalar_and_give_scalars():
+    """ψ_K(φ) = atan2(λ sin φ, 1 + λ cos φ) (the base mechanism, Zinchenko et al., 2013, (18)), λ = 0.5 here."""
+    from mechlab.synthesis.dwell_slot import base_law as dwell_base_law
+    lam, x = 0.5, 0.7
+    expected = np.arctan2(lam * np.sin(x), 1 + lam * np.cos(x))
+    for law in (dwell_base_law(lam, x), ml.formula_18(lam, x)):
+        values = [getattr(law, f) for f in ("d", "dd")] + [getattr(law, "psi", getattr(law, "theta", None))]
+        assert all(np.ndim(v) == 0 for v in values)
+        assert values[-1] == pytest.approx(expected, abs=1e-14)
+        assert values[0] == pytest.approx(lam * (lam + np.cos(x)) / (1 + lam * lam + 2 * lam * np.cos(x)), abs=1e-14)
+    one, many = ml.base_law(ml.FourBar(1, 3, 3, 4), x), ml.base_law(ml.FourBar(1, 3, 3, 4), [x, 1.0])
+    assert np.ndim(one.theta) == 0 and one.theta == pytest.approx(many.theta[0], abs=1e-15)
+    assert one.d == pytest.approx(many.d[0], abs=1e-15) and one.dd == pytest.approx(many.dd[0], abs=1e-15)

@@ -57,7 +57,7 @@ from ..mechanisms.slotted import SineMechanism, SlottedLink
 from ..mechanisms.slider_crank import SliderCrank
 from ..mechanisms.base import FULL_TURN
 from ..mechanisms.curved_slot import CircleSlot, CurvedSlotLink, ParametricSlot, TranslatingCurvedSlot
-from ..motion import AngularMotion, LinearMotion
+from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..mechanisms.sixbar_iv import SixBarIV
 
 # Where the output link turns (point name) and the crank-angle shift from the
@@ -229,6 +229,7 @@ def frame_phase(mechanism: Mechanism) -> float:
     return 0.0
 
 
+@scalar_law
 def base_law(mechanism: Mechanism, phi) -> AnglePath:
     """The base mechanism's law in the mechanism's own frame: ψ_K(φ) = angle of A - pivot
     (formulas (18)-(20) with λ = l_OA/l_OB), or x_K = l_OA cos φ (formulas (2), (5))."""

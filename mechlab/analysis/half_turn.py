@@ -45,9 +45,11 @@ import numpy as np
 from ..errors import DimensionError
 from .equivalence import base_law, base_mechanism
 from ..geometry import AnglePath, as_angles, wrap
+from ..motion import scalar_law
 from ..mechanisms.slotted import SineMechanism
 
 
+@scalar_law
 def formula_18(lam: float, phi) -> AnglePath:
     """The base mechanism's law from seed 000 (18)-(20) (the printed formulas, verified correct):
     tan ψ_K = λ sin φ/(λ cos φ + 1), ψ_K' = λ(λ + cos φ)/D, ψ_K'' = λ(λ² - 1) sin φ/D², D = λ² + 1 + 2λ cos φ.

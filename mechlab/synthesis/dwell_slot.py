@@ -59,7 +59,7 @@ from numpy.polynomial import Polynomial
 from ..errors import DimensionError, MechanismError
 from ..geometry import as_angles, check_length, wrap
 from ..mechanisms.base import Mechanism
-from ..motion import Table
+from ..motion import Table, scalar_law
 
 
 TRANSITIONS = ("cubic", "quintic", "sextic")
@@ -105,6 +105,7 @@ class BaseLaw:
     ddd: np.ndarray
 
 
+@scalar_law
 def base_law(lam: float, phi) -> BaseLaw:
     """The base mechanism's law ψ_K(φ) with ψ_K', ψ_K'', ψ_K''' (seed 000, (18)-(20)).
 
@@ -782,7 +783,7 @@ def two_branch_slot(lam, phi2, pivot_distance=1.0) -> TwoBranchSlot:
         return CurvedSlotLink(r, d, CircleSlot((d, 0.0), r), start=0.0)
 
     after = float(link().motion(np.array([0.5 * phi2])).dpsi[0])   # the link dwells on (0, φ2)
-    before = float(2 * base_law(lam, 0.0).d[0] - after)
+    before = float(2 * base_law(lam, 0.0).d - after)
     # at E the slot point is c(0) = (d + r, 0) in the link frame (= B→E); θ = angle(tangent, radius)
     E = link().slot.evaluate(np.array([0.0]))
     cos_t = abs(float(E.p[0] @ E.d[0])) / (np.hypot(*E.p[0]) * np.hypot(*E.d[0]))

@@ -35,7 +35,7 @@ def _a2():
     W = np.pi - P2
     printed = LAM / (3 * (1 - LAM) * W**2)
     correct = LAM / (3 * (LAM - 1) * W**2)
-    target = base_law(LAM, np.pi).d[0]                       # (25): ψ_K'(π) = λ/(λ - 1)
+    target = base_law(LAM, np.pi).d                       # (25): ψ_K'(π) = λ/(λ - 1)
     assert abs(3 * correct * W**2 - target) < 1e-12 and abs(3 * printed * W**2 - target) > 1.0
     assert abs(_law().right.coef[3] - correct) < 1e-12
     return (f"λ = 0.5, φ2 = 150°: ψ'(π) = 3a2(π - φ2)² is {3 * printed * W**2:+.3f} with the printed a2 = "
@@ -62,12 +62,12 @@ def _beta_right():
     law = _law()
     W = np.pi - P2
     Kpi = base_law(LAM, np.pi)
-    printed_dbeta_pi = Kpi.d[0] - LAM / ((1 - LAM) * W**2) * W**2   # derivative of the printed cubic term at π
-    psi_d_printed = Kpi.d[0] - printed_dbeta_pi
+    printed_dbeta_pi = Kpi.d - LAM / ((1 - LAM) * W**2) * W**2   # derivative of the printed cubic term at π
+    psi_d_printed = Kpi.d - printed_dbeta_pi
     correct = law.beta(np.pi)[1][0]
-    assert abs(correct) < 1e-12 and abs(psi_d_printed - Kpi.d[0]) > 1.0
+    assert abs(correct) < 1e-12 and abs(psi_d_printed - Kpi.d) > 1.0
     return (f"λ = 0.5, φ2 = 150°: with the printed β, β'(π) = {printed_dbeta_pi:+.3f} and ψ'(π) = ψ_K'(π) - β'(π) = "
-            f"{psi_d_printed:+.3f} instead of ψ_K'(π) = {Kpi.d[0]:+.3f} (a velocity jump of "
+            f"{psi_d_printed:+.3f} instead of ψ_K'(π) = {Kpi.d:+.3f} (a velocity jump of "
             f"{abs(2 * printed_dbeta_pi):.3f}·ω1 at φ = π); corrected β'(π) = {correct:.1e}")
 
 
@@ -85,7 +85,7 @@ def _distance():
 def _pressure_at_phi1():
     m = curved_slot_dwell(LAM, P1, P2)
     theta = m.motion(P1).pressure_angle
-    psiK = base_law(LAM, P1).psi[0]
+    psiK = base_law(LAM, P1).psi
     printed = np.pi / 2 - (P1 - m.law.psi_dwell)
     correct = abs(np.pi / 2 - (P1 - psiK))
     assert abs(theta - correct) < 1e-12 and abs(printed - theta) > np.radians(5)

@@ -23,7 +23,7 @@ exercise(
 exercise(
     "02.3",
     "A curved-slot link with λ = 0.3 has ψ′(40°) = 0.35. What is ψ′(320°)? (Table 2, corrected.)",
-    lambda: float(2 * formula_18(0.3, np.radians(40.0)).d[0] - 0.35),
+    lambda: float(2 * formula_18(0.3, np.radians(40.0)).d - 0.35),
     rtol=1e-6,
     hint="ψ′(φ) + ψ′(2π - φ) = 2ψ′_K(φ).",
 )

@@ -19,7 +19,7 @@ exercise(
 exercise(
     "03.2",
     "(ψ″₊ + ψ″₋)/2 of FourBar(1, 3, 3, 4) at φ = 70°, both assemblies.",
-    lambda: float(base_law(FourBar(1.0, 3.0, 3.0, 4.0), np.radians(70.0)).dd[0]),
+    lambda: float(base_law(FourBar(1.0, 3.0, 3.0, 4.0), np.radians(70.0)).dd),
     rtol=1e-6,
     hint="The mean of the two assemblies is the base mechanism (λ = 1/4), seen from the four-bar's frame.",
 )
