@@ -22,10 +22,12 @@ from .errors import (AssemblyError, DimensionError, InfeasibleDesignError, Mecha
                      SingularityError, SynthesisError)
 from .kinetostatics import (Body, DriveError, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute,
                             SelfLockingError, Torque, model_for)
-from .mechanisms import (Antiparallelogram, CircleSlot, CurvedSlotLink, EllipticTrammel, ExternalGeneva, FourBar,
+from .mechanisms import (Antiparallelogram, CamUndercutError, CircleSlot, CurvedSlotLink,
+                         EllipticTrammel, ExternalGeneva, FourBar,
                          Grashof, InternalGeneva, LambdaMechanism, LambdaRockerSixBar, LambdaSlottedSixBar,
                          LambdaSliderSixBar, LambdaTranslatingSlot, Mechanism, ParametricSlot, SampledSlot,
-                         SineMechanism, SixBarIV, SliderCrank, SlottedLink, SphericalGeneva, TranslatingCurvedSlot)
+                         SineMechanism, SixBarIV, SliderCrank, SlottedLink, SphericalGeneva, TranslatingCurvedSlot,
+                         OscillatingRollerCam, TranslatingRollerCam)
 from .mechanisms.geneva import OffsetError, SlotCountError
 from .mechanisms.lambda_mechanism import classic_lambda
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
@@ -39,7 +41,8 @@ from .synthesis.lambda_guiding import (band_touches, circle_guiding, existence_m
 from .synthesis.lambda_sixbars import (dwell_extent, mchv1, mchv3_full_turn, mchv3_full_turn_best, mchv3_half_turn,
                                        mchv3_oscillating, rise_law, slot_residual_first_order, time_ratio_far_angle)
 from .synthesis.lambda_sliders import mchv2, mchv2_far_position, mchv2_stroke, mchv5, slider_invariants, slider_report
-from .synthesis.slot_export import read_csv, slot_profile, write_csv, write_dxf
+from .synthesis.cam_design import CamProgramme
+from .synthesis.slot_export import read_csv, slot_profile, write_cam_csv, write_cam_dxf, write_csv, write_dxf
 
 __version__ = "0.1.0"
 
@@ -64,6 +67,9 @@ __all__ = [
     "curved_slot_dwell", "DwellSlotMechanism", "DwellLaw", "TRANSITIONS", "compare_transitions", "dwell_limit",
     "two_branch_slot", "best_placement", "DwellError", "DwellIntervalError", "DwellRatioError",
     "slot_profile", "write_csv", "write_dxf", "read_csv",
+    # cams
+    "CamProgramme", "TranslatingRollerCam", "OscillatingRollerCam", "CamUndercutError", "write_cam_csv",
+    "write_cam_dxf",
     # Chebyshev
     "circle_guiding", "straight_guiding", "whole_turn_line", "whole_turn_guiding", "existence_map",
     "existence_region", "band_touches", "fifth_order_line", "thesis_iteration", "transmission_lines",

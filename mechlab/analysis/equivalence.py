@@ -45,33 +45,30 @@ relative paths mirror in the slot frame's vertical axis: x₋ = -x₊, y₋ = y�
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, perp, wrap
-from ..mechanisms.fourbar import FourBar
-from ..mechanisms.base import Mechanism
+from ..mechanisms.base import FULL_TURN, Mechanism
 from ..mechanisms.slotted import SineMechanism, SlottedLink
-from ..mechanisms.slider_crank import SliderCrank
-from ..mechanisms.base import FULL_TURN
-from ..mechanisms.curved_slot import CircleSlot, CurvedSlotLink, ParametricSlot, TranslatingCurvedSlot
 from ..motion import AngularMotion, LinearMotion, scalar_law
-from ..mechanisms.sixbar_iv import SixBarIV
-
-# Where the output link turns (point name) and the crank-angle shift from the
-# mechanism's frame to seed 000's (seed φ = own φ - phase; the frames differ by a half turn).
-_PIVOT = {FourBar: ("E", np.pi), SixBarIV: ("E", np.pi), CurvedSlotLink: ("B", 0.0), SlottedLink: ("B", 0.0)}
 
 
-def _angular_info(mechanism):
-    for klass, info in _PIVOT.items():
-        if isinstance(mechanism, klass):
-            return info
-    if isinstance(mechanism, EquivalentSlot):
-        return _angular_info(mechanism.linkage)
-    raise DimensionError(f"{type(mechanism).__name__} has no output link turning about a fixed pivot known to mechlab")
+def _output_pivot(mechanism) -> str:
+    """The fixed joint the output link turns about: the pivot other than the crank's O."""
+    others = [p for p in mechanism.pivots if p != "O"]
+    if mechanism.output != "angle" or len(others) != 1:
+        raise DimensionError(f"{type(mechanism).__name__} has no output link turning about one fixed pivot "
+                             f"(pivots {', '.join(mechanism.pivots)})")
+    return others[0]
+
+
+def _pivot_position(mechanism) -> np.ndarray:
+    """Where the output link's fixed pivot is (it does not move: read at one crank angle)."""
+    phi = mechanism.cycle(3)[1:2]
+    return mechanism.motion(phi).points[_output_pivot(mechanism)].p[0]
 
 
 def _rot(angle, v):
@@ -96,8 +93,7 @@ def relative_path(mechanism: Mechanism, phi) -> PointPath:
         z = np.zeros_like(mo.s)
         return PointPath(A.p - np.stack([mo.s, z], -1), A.d - np.stack([mo.ds, z], -1),
                          A.dd - np.stack([mo.dds, z], -1))
-    name, _ = _angular_info(mechanism)
-    piv = mo.points[name]
+    piv = mo.points[_output_pivot(mechanism)]
     v, dv, ddv = A.p - piv.p, A.d - piv.d, A.dd - piv.dd
     w1, w2 = mo.dpsi[:, None], mo.ddpsi[:, None]
     return PointPath(_rot(-mo.psi, v), _rot(-mo.psi, dv - w1 * perp(v)),
@@ -107,12 +103,6 @@ def relative_path(mechanism: Mechanism, phi) -> PointPath:
 # ---------------------------------------------------------------------------------------------
 # the equivalent curved-slot mechanism
 # ---------------------------------------------------------------------------------------------
-def _coupler_slot(six: SixBarIV) -> ParametricSlot:
-    """The coupler curve of the six-bar's inner four-bar R-Q-P-T (the relative path), θ = angle of R→Q."""
-    return ParametricSlot(lambda t: six.relative_pin(t).p, lambda t: six.relative_pin(t).d,
-                          lambda t: six.relative_pin(t).dd, -np.pi, np.pi, periodic=True)
-
-
 @dataclass(frozen=True, eq=False)
 class EquivalentSlot(Mechanism):
     """A linkage's curved-slot twin, expressed in the linkage's own frame.
@@ -128,6 +118,10 @@ class EquivalentSlot(Mechanism):
     phase: float = 0.0
 
     links = (("O", "A"),)
+
+    @property
+    def crank(self) -> float:
+        return self.slot_mechanism.crank
 
     @property
     def pivots(self):
@@ -168,27 +162,11 @@ class EquivalentSlot(Mechanism):
 
 
 def equivalent_slot(mechanism: Mechanism) -> EquivalentSlot:
-    """The curved-slot mechanism whose slot is the linkage's relative path (seed 000 §1).
-
-    FourBar(a, c, r, g, kc) → slotted link pivoted at E, slot = circle of radius c
-    about (r, 0) in the rocker's frame, on the arc chosen by kc (Fig. 2).
-    SliderCrank(a, l, e, k) → translating slot, circle of radius l about (0, e) (Fig. 4).
-    SixBarIV → slotted link whose slot is the coupler curve of its inner four-bar.
-    """
-    if isinstance(mechanism, FourBar):
-        slot = CircleSlot((mechanism.rocker, 0.0), mechanism.coupler)
-        twin = CurvedSlotLink(mechanism.crank, mechanism.ground, slot, start=mechanism.assembly * np.pi / 2)
-        return EquivalentSlot(mechanism, twin, np.pi)
-    if isinstance(mechanism, SliderCrank):
-        slot = CircleSlot((0.0, mechanism.offset), mechanism.rod)
-        twin = TranslatingCurvedSlot(mechanism.crank, slot, start=np.pi if mechanism.assembly == 1 else 0.0)
-        return EquivalentSlot(mechanism, twin, 0.0)
-    if isinstance(mechanism, SixBarIV):
-        twin = CurvedSlotLink(mechanism.crank, mechanism.ground, _coupler_slot(mechanism),
-                              start=mechanism.start_angle)
-        return EquivalentSlot(mechanism, twin, np.pi)
-    raise DimensionError(f"no curved-slot equivalent known for {type(mechanism).__name__}: "
-                         f"FourBar, SliderCrank and SixBarIV are supported")
+    """The curved-slot mechanism whose slot is the linkage's relative path (seed 000 §1), from the
+    family's ``curved_slot_twin()``: FourBar → a circular slot of radius l_AB about B (Fig. 2),
+    SliderCrank → a translating circular slot (Fig. 4), SixBarIV → its inner four-bar's coupler curve."""
+    twin, phase = mechanism.curved_slot_twin()
+    return EquivalentSlot(mechanism, twin, phase)
 
 
 def law_difference(m1, m2) -> tuple[float, float, float]:
@@ -210,23 +188,18 @@ def equivalence_error(mechanism: Mechanism, phi=None) -> float:
 def base_mechanism(mechanism: Mechanism):
     """The base mechanism (seed 000 Fig. 5, 6): same crank, straight slot through the output
     pivot (``SlottedLink(l_OA, l_OE)``), or the sine mechanism for a translating output."""
-    m = mechanism.linkage if isinstance(mechanism, EquivalentSlot) else mechanism
-    if isinstance(m, (FourBar, SixBarIV)):
-        return SlottedLink(m.crank, m.ground)
-    if isinstance(m, (CurvedSlotLink, SlottedLink)):
-        return SlottedLink(m.crank, m.pivot_distance)
-    if isinstance(m, (SliderCrank, TranslatingCurvedSlot, SineMechanism)):
-        return SineMechanism(m.crank)
-    raise DimensionError(f"no base mechanism known for {type(m).__name__}")
+    if mechanism.output == "position":
+        return SineMechanism(mechanism.crank)
+    return SlottedLink(mechanism.crank, float(np.hypot(*_pivot_position(mechanism))))
 
 
 def frame_phase(mechanism: Mechanism) -> float:
-    """Crank-angle shift from the mechanism's frame to seed 000's (π when the output pivot is on +x)."""
-    if isinstance(mechanism, EquivalentSlot):
-        return mechanism.phase
-    if isinstance(mechanism, (FourBar, SixBarIV)):
-        return np.pi
-    return 0.0
+    """Crank-angle shift from the mechanism's frame to seed 000's, whose output pivot lies at angle π
+    from O: the pivot's angle − π (π when the output pivot is on +x, as E of a four-bar)."""
+    if mechanism.output == "position":
+        return 0.0
+    x, y = _pivot_position(mechanism)
+    return float(np.mod(np.arctan2(y, x) - np.pi, 2 * np.pi))
 
 
 @scalar_law
@@ -247,11 +220,10 @@ def base_law(mechanism: Mechanism, phi) -> AnglePath:
 # ---------------------------------------------------------------------------------------------
 def other_assembly(mechanism: Mechanism) -> Mechanism:
     """The same linkage in the other assembly (kc → -kc)."""
-    if isinstance(mechanism, FourBar):
-        return FourBar(mechanism.crank, mechanism.coupler, mechanism.rocker, mechanism.ground, -mechanism.assembly)
-    if isinstance(mechanism, SliderCrank):
-        return SliderCrank(mechanism.crank, mechanism.rod, mechanism.offset, -mechanism.assembly)
-    raise DimensionError(f"assembly symmetry is stated for FourBar and SliderCrank, not {type(mechanism).__name__}")
+    if "assembly" not in {f.name for f in fields(mechanism)}:
+        raise DimensionError(f"assembly symmetry is stated for FourBar and SliderCrank (two assemblies ±1), "
+                             f"not {type(mechanism).__name__}")
+    return replace(mechanism, assembly=-mechanism.assembly)
 
 
 @dataclass(frozen=True)
@@ -274,7 +246,7 @@ def assembly_symmetry(mechanism: Mechanism, phi) -> AssemblySymmetry:
     m, base = minus.motion(phi), base_law(plus, phi)
     p = plus.motion(phi)
     rp, rm = relative_path(plus, phi), relative_path(minus, phi)
-    if isinstance(plus, FourBar):
+    if plus.output == "angle":
         q = plus.motion(-phi)
         mirror = max(np.max(np.abs(wrap(m.psi + q.psi))), np.max(np.abs(m.dpsi - q.dpsi)),
                      np.max(np.abs(m.ddpsi + q.ddpsi)))

@@ -34,8 +34,8 @@ with metres, kilograms and rad/s, forces come out in N and torques in N·m):
   groups (tuples of body names) in solving order, output first; ``crank`` is the
   leading link turning about the joint ``pivot``. Pair ``a`` or ``b`` may be ``FRAME``.
   ``model.with_body(name, mass=…, inertia=…, com=…)``, ``model.with_friction(f, radius)``
-  return modified copies. ``model_for(mechanism)`` builds the model of a FourBar,
-  SliderCrank, SlottedLink or SineMechanism (massless, frictionless, com mid-link).
+  return modified copies. ``model_for(mechanism)`` builds the model of any mechanism from its
+  ``structure()`` (massless, frictionless, com mid-link).
 
 Loads: ``Force(body, at, value)`` (``at`` a joint name or link coordinates) and
 ``Torque(body, value)``; a value is a constant, an array over the crank angles, or a
@@ -94,11 +94,10 @@ from dataclasses import dataclass, replace
 from typing import Any, Sequence
 import numpy as np
 from ..errors import DimensionError, MechanismError
+from ..mechanisms.base import FRAME
 
 __all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque", "model_for", "slender_bar", "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"]
 
-
-FRAME = "frame"
 
 
 G = 9.81
@@ -356,54 +355,33 @@ class Torque:
 
 # --------------------------------------------------------------------------- models of the core mechanisms
 def model_for(mechanism) -> ForceModel:
-    """Force model of a core mechanism: massless frictionless links, centres of mass mid-link.
+    """Force model of a mechanism from its ``structure()``: massless frictionless links, a bar's centre
+    of mass half-way along its axis, the structure's pairs and groups, the input link as the crank.
 
-    * FourBar: links crank (O→A), coupler (A→B), rocker (E→B); pairs O, A, B, E; group RRR
-      (coupler, rocker).
-    * SliderCrank: crank, rod (A→B), slider (at B, translating); pairs O, A, B and the
-      prismatic ``guide``; group RRP (rod, slider).
-    * SlottedLink: crank, block (at A, turning with the link), link (B→A); pairs O, A,
-      the prismatic ``slot`` (block in the link) and B; group RPR (block, link).
-    * SineMechanism: crank, block (at A), yoke (at K); pairs O, A, ``slot`` (block in
-      the yoke, vertical) and ``guide`` (yoke on the frame); group (block, yoke).
+    E.g. FourBar: crank (O→A), coupler (A→B), rocker (E→B), pairs O, A, B, E, group (coupler, rocker);
+    SliderCrank: crank, rod, slider with the prismatic ``guide``; SlottedLink: crank, block, link with
+    the prismatic ``slot``; the cams: cam, follower with the higher pair ``contact``.
+    TypeError for an object that is no mechanism; MechanismError for a family with no ``structure()``.
     """
-    from ..mechanisms.fourbar import FourBar
-    from ..mechanisms.slotted import SineMechanism, SlottedLink
-    from ..mechanisms.slider_crank import SliderCrank
+    describe = getattr(mechanism, "structure", None)
+    if not callable(describe):
+        raise TypeError(f"no force model for {type(mechanism).__name__}: it describes no structure(); "
+                        f"build a ForceModel for it")
+    st = describe()
+    bodies = tuple(Body(k.name, k.origin, k.axis, com=(k.length / 2, 0.0), length=k.length) for k in st.links)
+    pairs = tuple(_pair(p) for p in st.pairs)
+    pivot = next((p for p in st.pairs if p.kind == "revolute" and {p.a, p.b} == {FRAME, st.input}), None)
+    if pivot is None:
+        raise StructureError(f"the input link {st.input} turns about no pivot on the frame: it is not a crank")
+    return ForceModel(bodies, pairs, st.groups, st.input, pivot.point)
 
-    if not isinstance(mechanism, (FourBar, SliderCrank, SlottedLink, SineMechanism)):
-        raise TypeError(f"no force model for {type(mechanism).__name__}; build a ForceModel for it")
-    crank = Body("crank", "O", ("O", "A"), com=(mechanism.crank / 2, 0.0), length=mechanism.crank)
-    crank_pair = Revolute("O", FRAME, "crank", "O")
-    if isinstance(mechanism, FourBar):
-        return ForceModel(
-            (crank, Body("coupler", "A", ("A", "B"), com=(mechanism.coupler / 2, 0.0), length=mechanism.coupler),
-             Body("rocker", "E", ("E", "B"), com=(mechanism.rocker / 2, 0.0), length=mechanism.rocker)),
-            (crank_pair, Revolute("A", "crank", "coupler", "A"), Revolute("B", "coupler", "rocker", "B"),
-             Revolute("E", FRAME, "rocker", "E")),
-            (("coupler", "rocker"),), "crank", "O")
-    if isinstance(mechanism, SliderCrank):
-        return ForceModel(
-            (crank, Body("rod", "A", ("A", "B"), com=(mechanism.rod / 2, 0.0), length=mechanism.rod),
-             Body("slider", "B", 0.0)),
-            (crank_pair, Revolute("A", "crank", "rod", "A"), Revolute("B", "rod", "slider", "B"),
-             Prismatic("guide", FRAME, "slider", "B", 0.0)),
-            (("rod", "slider"),), "crank", "O")
-    if isinstance(mechanism, SlottedLink):
-        reach = mechanism.pivot_distance + mechanism.crank
-        return ForceModel(
-            (crank, Body("block", "A", ("B", "A")),
-             Body("link", "B", ("B", "A"), com=(reach / 2, 0.0), length=reach)),
-            (crank_pair, Revolute("A", "crank", "block", "A"), Prismatic("slot", "link", "block", "A", 0.0),
-             Revolute("B", FRAME, "link", "B")),
-            (("block", "link"),), "crank", "O")
-    if isinstance(mechanism, SineMechanism):
-        return ForceModel(
-            (crank, Body("block", "A", np.pi / 2), Body("yoke", "K", 0.0)),
-            (crank_pair, Revolute("A", "crank", "block", "A"), Prismatic("slot", "yoke", "block", "A", np.pi / 2),
-             Prismatic("guide", FRAME, "yoke", "K", 0.0)),
-            (("block", "yoke"),), "crank", "O")
-    raise TypeError(f"no force model for {type(mechanism).__name__}; build a ForceModel for it")
+
+def _pair(p):
+    if p.kind == "revolute":
+        return Revolute(p.name, p.a, p.b, p.point)
+    if p.kind == "prismatic":
+        return Prismatic(p.name, p.a, p.b, p.point, p.angle)
+    return HigherPair(p.name, p.a, p.b, p.point, p.normal)
 
 
 def slender_bar(mass: float, length: float) -> float:

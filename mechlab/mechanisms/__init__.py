@@ -7,6 +7,7 @@ analogs, and the output law.
 
 from .antiparallelogram import Antiparallelogram
 from .base import Mechanism
+from .cam import CamUndercutError, OscillatingRollerCam, TranslatingRollerCam
 from .curved_slot import CircleSlot, CurvedSlotLink, ParametricSlot, SampledSlot, TranslatingCurvedSlot
 from .fourbar import FourBar, Grashof
 from .geneva import ExternalGeneva, InternalGeneva
@@ -22,4 +23,5 @@ from .trammel import EllipticTrammel
 __all__ = ["Mechanism", "FourBar", "Grashof", "SliderCrank", "SlottedLink", "SineMechanism",
            "CurvedSlotLink", "TranslatingCurvedSlot", "CircleSlot", "ParametricSlot", "SampledSlot", "SixBarIV",
            "EllipticTrammel", "Antiparallelogram", "LambdaMechanism", "LambdaRockerSixBar", "LambdaSlottedSixBar",
-           "LambdaSliderSixBar", "LambdaTranslatingSlot", "ExternalGeneva", "InternalGeneva", "SphericalGeneva"]
+           "LambdaSliderSixBar", "LambdaTranslatingSlot", "ExternalGeneva", "InternalGeneva", "SphericalGeneva",
+           "TranslatingRollerCam", "OscillatingRollerCam", "CamUndercutError"]

@@ -46,6 +46,8 @@ class Antiparallelogram(Mechanism):
                 f"crank = ground = {self.crank:g}: all four links equal (a rhombus), the crossed branch "
                 f"degenerates (the rocker folds onto the frame); take crank ≠ ground")
 
+    structure = FourBar.structure   # the four-bar's links and pairs, crossed
+
     @property
     def coupler(self) -> float:
         return self.ground

@@ -1,13 +1,16 @@
-"""What every mechanism shares: the crank's reachable angles and the cycle."""
+"""What every mechanism shares: the crank's reachable angles, the cycle, and the description of its
+structure (links, pairs, structural groups) from which the instantaneous centres, the kinetostatics
+and the curved-slot equivalence are derived."""
 
 from __future__ import annotations
 
-from typing import ClassVar
+from dataclasses import dataclass
+from typing import Any, ClassVar
 
 import numpy as np
 
-from ..errors import AssemblyError, RotationError
-from ..geometry import lift
+from ..errors import AssemblyError, DimensionError, MechanismError, RotationError
+from ..geometry import AnglePath, lift, relative, vector_angle
 from ..motion import Motion, scalar_in_scalar_out
 
 TWO_PI = 2.0 * np.pi
@@ -38,6 +41,105 @@ def arc_set(lo: float, hi: float, phase: float = 0.0) -> tuple[tuple[float, floa
     else:
         arcs = ((a, b), (-b, -a))
     return tuple((s + phase, e + phase) for s, e in arcs)
+
+
+# the frame's name in a structure's pairs
+FRAME = "frame"
+PAIR_KINDS = ("revolute", "prismatic", "higher")
+
+
+@dataclass(frozen=True)
+class Link:
+    """A moving link: a joint ``origin`` fixed on it and its x axis.
+
+    ``axis``: a pair of joint names (P, Q), the direction P→Q fixed in the link; an angle (radians) for a
+    link that translates; or ``axis(motion) → (θ, θ′, θ″)``. ``length`` is a bar's length (a uniform
+    bar's centre of mass lies half-way along the axis). ``block``: a sliding block, which the
+    instantaneous centres merge with its two pairs into one higher pair (Kozhevnikov, §7.1).
+    ``label``: the link's name in the centres' numbering, where it differs from ``name``.
+    """
+
+    name: str
+    origin: str
+    axis: Any = 0.0
+    length: float = 0.0
+    block: bool = False
+    label: str = ""
+
+    @property
+    def translates(self) -> bool:
+        """True when the axis is a constant angle: the link only translates."""
+        return not (callable(self.axis) or isinstance(self.axis, tuple))
+
+    def angle(self, motion: Motion) -> AnglePath:
+        """The axis' angle θ with θ′, θ″ over the motion."""
+        if callable(self.axis):
+            return AnglePath(*(np.asarray(v, dtype=float) for v in self.axis(motion)))
+        if isinstance(self.axis, tuple):
+            P, Q = self.axis
+            return vector_angle(relative(motion.points[Q], motion.points[P]))
+        n = len(motion.phi)
+        return AnglePath(np.full(n, float(self.axis)), np.zeros(n), np.zeros(n))
+
+
+@dataclass(frozen=True)
+class Pair:
+    """A kinematic pair of links ``a`` and ``b`` (or :data:`FRAME`) at the joint ``point``.
+
+    ``kind``: ``"revolute"``; ``"prismatic"`` (b slides on a along a guide at ``angle`` to a's axis);
+    ``"higher"`` (contact along a common normal: ``normal`` is its angle to a's axis, or
+    ``normal(motion) → (n, 2)`` unit vectors in the fixed frame).
+    """
+
+    kind: str
+    name: str
+    a: str
+    b: str
+    point: str
+    angle: float = 0.0
+    normal: Any = np.pi / 2
+
+    def __post_init__(self):
+        if self.kind not in PAIR_KINDS:
+            raise MechanismError(f"pair {self.name}: kind must be one of {PAIR_KINDS}, got {self.kind!r}")
+
+
+@dataclass(frozen=True)
+class Structure:
+    """How a mechanism is built, described once.
+
+    ``links``: the moving links, the input (driving) link first; ``pairs``: every kinematic pair;
+    ``groups``: the structural (Assur) groups of links, from the output back to the input, which
+    is attached to the frame by its own revolute pair; ``output``: the link whose law the motion
+    reports; ``scale``: a typical length. ``numbering``: the links' labels, the frame included,
+    in the order the instantaneous centres number them (default: the links, then the frame);
+    ``input_rate``: dθ/dφ of the input link (1 for a crank).
+    """
+
+    links: tuple[Link, ...]
+    pairs: tuple[Pair, ...]
+    groups: tuple[tuple[str, ...], ...]
+    output: str
+    scale: float
+    numbering: tuple[str, ...] = ()
+    input_rate: float = 1.0
+
+    @property
+    def input(self) -> str:
+        return self.links[0].name
+
+    def link(self, name: str) -> Link:
+        for link in self.links:
+            if name in (link.name, link.label):
+                return link
+        raise MechanismError(f"no link {name!r}; links: {', '.join(k.name for k in self.links)}")
+
+    def frame_pair(self, link: str) -> Pair:
+        """The pair joining ``link`` to the frame."""
+        for p in self.pairs:
+            if FRAME in (p.a, p.b) and link in (p.a, p.b):
+                return p
+        raise MechanismError(f"the {link} is not joined to the frame")
 
 
 def fmt_ranges(ranges) -> str:
@@ -117,6 +219,16 @@ class Mechanism:
 
     def motion(self, phi) -> Motion:  # pragma: no cover - abstract
         raise NotImplementedError
+
+    def structure(self) -> Structure:
+        """The mechanism's links, pairs and structural groups (a family describes itself here once)."""
+        raise MechanismError(f"{type(self).__name__} describes no structure: define its structure() method")
+
+    def curved_slot_twin(self) -> tuple[Mechanism, float]:
+        """The curved-slot mechanism that moves like this one (seed 000 §1), in seed 000's frame, and the
+        crank-angle shift ``phase`` from this mechanism's frame to it (a family that has one overrides this)."""
+        raise DimensionError(f"no curved-slot equivalent known for {type(self).__name__}: it defines no "
+                             f"curved_slot_twin()")
 
 
 def branch_references(ranges, raw_angle, samples: int = 2049):

@@ -27,7 +27,8 @@ from ..errors import AssemblyError, DimensionError, RotationError
 from ..geometry import (_re_conj, as_angles, as_complex, check_length, circle_circle, crank_point, fixed_point,
                         rocker_dyad)
 from ..motion import AngularMotion, Extremes, limit_positions
-from .base import Mechanism, arc_set, branch_references, fmt_ranges, lift_on_ranges
+from .base import FRAME, Link, Mechanism, Pair, Structure, arc_set, branch_references, fmt_ranges, lift_on_ranges
+from .curved_slot import CircleSlot, CurvedSlotLink
 
 # Relative tolerance for Grashof's equality s + l = p + q (a change-point linkage).
 _CHANGE_POINT_TOL = 1e-12
@@ -175,6 +176,21 @@ class FourBar(Mechanism):
         if d >= c + r:
             return f"|AE| = {d:.4g} ≥ coupler + rocker = {c + r:.4g}"
         return f"|AE| = {d:.4g} ≤ |coupler - rocker| = {abs(c - r):.4g}"
+
+    def structure(self) -> Structure:
+        """Crank O→A, coupler A→B, rocker E→B; revolute pairs O, A, B, E; one RRR group."""
+        return Structure(
+            (Link("crank", "O", ("O", "A"), self.crank), Link("coupler", "A", ("A", "B"), self.coupler),
+             Link("rocker", "E", ("E", "B"), self.rocker)),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "coupler", "A"),
+             Pair("revolute", "B", "coupler", "rocker", "B"), Pair("revolute", "E", FRAME, "rocker", "E")),
+            (("coupler", "rocker"),), "rocker", scale=max(self.crank, self.coupler, self.rocker, self.ground))
+
+    def curved_slot_twin(self):
+        """Seed 000 Fig. 2: a link pivoted at E whose slot is the circle of radius l_AB about B, on the arc
+        chosen by kc; in seed 000's frame (crank angle φ − π)."""
+        slot = CircleSlot((self.rocker, 0.0), self.coupler)
+        return CurvedSlotLink(self.crank, self.ground, slot, start=self.assembly * np.pi / 2), np.pi
 
     # -- kinematics -------------------------------------------------------------------
     @cached_property

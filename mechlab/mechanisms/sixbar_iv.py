@@ -46,6 +46,7 @@ from scipy.optimize import brentq
 from ..errors import AssemblyError, DimensionError, RotationError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_sign, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit, vector_angle
 from .base import Mechanism
+from .curved_slot import CurvedSlotLink, ParametricSlot
 from ..motion import AngularMotion
 
 _GRID = 720
@@ -278,6 +279,13 @@ class SixBarIV(Mechanism):
         return self._grid[3]
 
     # -- motion --------------------------------------------------------------------------------------
+    def curved_slot_twin(self):
+        """Seed 000 §1: a link pivoted at E whose slot is the coupler curve of the inner four-bar R-Q-P-T
+        (the relative path, parametrised by θ = angle of R→Q); in seed 000's frame (crank angle φ − π)."""
+        slot = ParametricSlot(lambda t: self.relative_pin(t).p, lambda t: self.relative_pin(t).d,
+                              lambda t: self.relative_pin(t).dd, -np.pi, np.pi, periodic=True)
+        return CurvedSlotLink(self.crank, self.ground, slot, start=self.start_angle), np.pi
+
     def motion(self, phi) -> AngularMotion:
         """Joint paths (O, A, Q, P, R, T, E) and ψ, ψ', ψ'' of link 4 at crank angles φ (radians)."""
         phi = as_angles(phi)

@@ -16,7 +16,8 @@ import numpy as np
 from ..errors import AssemblyError, RotationError
 from ..geometry import as_angles, check_length, check_number, crank_point, dyad_rrp, fixed_point
 from ..motion import Extremes, LinearMotion, limit_positions
-from .base import Mechanism, arc_set, fmt_ranges
+from .base import FRAME, Link, Mechanism, Pair, Structure, arc_set, fmt_ranges
+from .curved_slot import CircleSlot, TranslatingCurvedSlot
 from .fourbar import assembly_sign
 
 
@@ -77,6 +78,20 @@ class SliderCrank(Mechanism):
     def assembly_failure(self, phi: float) -> str:
         gap = abs(self.crank * np.sin(phi) - self.offset)
         return f"the pin is {gap:.4g} from the guide, ≥ rod = {self.rod:.4g}"
+
+    def structure(self) -> Structure:
+        """Crank O→A, rod A→B, slider at B on the guide (the x axis); one RRP group (rod, slider)."""
+        return Structure(
+            (Link("crank", "O", ("O", "A"), self.crank), Link("rod", "A", ("A", "B"), self.rod),
+             Link("slider", "B", 0.0)),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "rod", "A"),
+             Pair("revolute", "B", "rod", "slider", "B"), Pair("prismatic", "guide", FRAME, "slider", "B", 0.0)),
+            (("rod", "slider"),), "slider", scale=self.crank + self.rod + abs(self.offset))
+
+    def curved_slot_twin(self):
+        """Seed 000 Fig. 4: a translating link whose slot is the circle of radius l_AB about (0, e)."""
+        slot = CircleSlot((0.0, self.offset), self.rod)
+        return TranslatingCurvedSlot(self.crank, slot, start=np.pi if self.assembly == 1 else 0.0), 0.0
 
     def motion(self, phi) -> LinearMotion:
         """Paths of O, A, B and the law s, s', s'' at crank angles φ (radians)."""

@@ -19,7 +19,7 @@ import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, crank_point, dyad_rpr, fixed_point, lift
 from ..motion import AngularMotion, LinearMotion
-from .base import Mechanism
+from .base import FRAME, Link, Mechanism, Pair, Structure
 
 
 class PivotedSlot:
@@ -79,6 +79,16 @@ class SlottedLink(PivotedSlot, Mechanism):
         mu = np.full(n, np.pi / 2)  # the pin pushes along the slot's normal: no pressure angle
         return AngularMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "B": B}, mu, psi, ang.d, ang.dd)
 
+    def structure(self) -> Structure:
+        """Crank O→A; a block at A slides in the link's slot B→A; the link turns about B; one RPR group."""
+        reach = self.pivot_distance + self.crank
+        return Structure(
+            (Link("crank", "O", ("O", "A"), self.crank), Link("block", "A", ("B", "A"), block=True),
+             Link("link", "B", ("B", "A"), reach, label="slotted link")),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "block", "A"),
+             Pair("prismatic", "slot", "link", "block", "A", 0.0), Pair("revolute", "B", FRAME, "link", "B")),
+            (("block", "link"),), "link", scale=self.crank + self.pivot_distance)
+
 
 @dataclass(frozen=True)
 class SineMechanism(Mechanism):
@@ -106,3 +116,14 @@ class SineMechanism(Mechanism):
         K = PointPath(*(np.stack([x, np.zeros(n)], axis=-1) for x in law))
         mu = np.full(n, np.pi / 2)
         return LinearMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "K": K}, mu, *law)
+
+    def structure(self) -> Structure:
+        """Crank O→A; a block at A slides in the yoke's slot (perpendicular to the guide); the yoke at K
+        slides on the frame along x; one group (block, yoke)."""
+        return Structure(
+            (Link("crank", "O", ("O", "A"), self.crank), Link("block", "A", np.pi / 2, block=True),
+             Link("yoke", "K", 0.0)),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "block", "A"),
+             Pair("prismatic", "slot", "yoke", "block", "A", np.pi / 2),
+             Pair("prismatic", "guide", FRAME, "yoke", "K", 0.0)),
+            (("block", "yoke"),), "yoke", scale=self.crank)

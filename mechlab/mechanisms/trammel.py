@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from ..errors import DimensionError
 from ..geometry import PointPath, as_angles, check_length, fixed_point, unit
-from .base import Mechanism
+from .base import FRAME, Link, Mechanism, Pair, Structure
 from ..motion import LinearMotion
 
 
@@ -69,6 +69,17 @@ class EllipticTrammel(Mechanism):
     def rod_angle(self, phi) -> np.ndarray:
         """Angle θ of the rod A→B at crank angles φ: θ = π/2 + β - φ."""
         return np.pi / 2 + self.beta - as_angles(phi)
+
+    def structure(self) -> Structure:
+        """The rod A→B (the input: Cardan's crank only parametrises it, θ′ = −1) and the sliders A, B on
+        their guides; numbered as in seed 002, Fig. 7.5: 1 = frame, 2 = slider A, 3 = slider B, 4 = rod."""
+        return Structure(
+            (Link("rod", "A", ("A", "B"), self.rod), Link("slider A", "A", 0.0), Link("slider B", "B", self.beta)),
+            (Pair("prismatic", "guide A", FRAME, "slider A", "A", 0.0),
+             Pair("prismatic", "guide B", FRAME, "slider B", "B", self.beta),
+             Pair("revolute", "A", "slider A", "rod", "A"), Pair("revolute", "B", "slider B", "rod", "B")),
+            (), "slider A", scale=self.fixed_radius, numbering=("frame", "slider A", "slider B", "rod"),
+            input_rate=-1.0)
 
     def motion(self, phi) -> LinearMotion:
         """Paths of O, C, A, B and the slider law s = x_A, s', s'' at crank angles φ (rad)."""

@@ -1,4 +1,4 @@
-"""The designed slot for manufacture: centre line, the two flanks for a roller, CSV and DXF.
+"""The designed slot and the disc cams' profiles for manufacture: centre lines, flanks, CSV and DXF.
 
 A roller of radius ρ on the crank pin runs between two flanks, the offsets of the slot's
 centre line by ±ρ along its normal (link frame, origin at the link pivot B, x axis the
@@ -13,6 +13,11 @@ The slot's ends (where the pin turns back, φ = 0 and π) are closed by half cir
 radius ρ. The DXF (written with ezdxf, units mm) has layers ``CENTRE`` (the centre line,
 an LWPOLYLINE), ``DWELL`` (the dwell part of the centre line as an exact ARC of radius
 l_OA about the link-frame image of O), ``FLANKS`` (two LWPOLYLINEs and the two end ARCs).
+
+A disc cam (:mod:`mechlab.mechanisms.cam`) is exported in its own frame (O at the origin, the
+position at φ = 0): :func:`write_cam_csv` and :func:`write_cam_dxf` with layers ``PROFILE`` (the
+machined surface, a closed LWPOLYLINE), ``PITCH`` (the roller centre's path) and ``BASE`` (the
+base circle). Both refuse an undercut profile (:class:`~mechlab.mechanisms.cam.CamUndercutError`).
 """
 
 from __future__ import annotations
@@ -159,5 +164,41 @@ def write_dxf(mechanism, path, roller_radius: float | None = None, n: int = 721)
             else:
                 start, end = a_right, a_left
             msp.add_arc(prof.centre[i].tolist(), rho, start, end, dxfattribs={"layer": "FLANKS"})
+    doc.saveas(str(path))
+    return doc
+
+
+def write_cam_csv(cam, path=None, n: int = 721) -> str:
+    """A disc cam's profile as CSV (columns theta_deg, x_pitch, y_pitch, x, y, nx, ny, curvature,
+    pressure_angle_deg; x, y the surface, n the outward normal, curvature the pitch curve's), at n
+    cam angles over one turn; written to ``path`` if given; returns the text."""
+    prof = cam.profile(n)
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["theta_deg", "x_pitch", "y_pitch", "x", "y", "nx", "ny", "curvature", "pressure_angle_deg"])
+    cols = np.column_stack([np.degrees(prof.theta), prof.pitch, prof.surface, prof.normal, prof.curvature,
+                            np.degrees(prof.pressure_angle)])
+    for row in cols:
+        w.writerow([repr(float(v)) for v in row])
+    text = buf.getvalue()
+    if path is not None:
+        Path(path).write_text(text)
+    return text
+
+
+def write_cam_dxf(cam, path, n: int = 721):
+    """Write a disc cam as DXF (R2010, units mm) with ezdxf: the closed profile, the pitch curve and
+    the base circle, at n cam angles over one turn; returns the ezdxf document."""
+    import ezdxf
+
+    prof = cam.profile(n)
+    doc = ezdxf.new("R2010", units=4)
+    for name, color in (("PROFILE", 1), ("PITCH", 5), ("BASE", 3)):
+        doc.layers.add(name, color=color)
+    msp = doc.modelspace()
+    # the last sample repeats the first (θ = 2π): the polylines are closed instead
+    msp.add_lwpolyline(prof.surface[:-1].tolist(), close=True, dxfattribs={"layer": "PROFILE"})
+    msp.add_lwpolyline(prof.pitch[:-1].tolist(), close=True, dxfattribs={"layer": "PITCH"})
+    msp.add_circle((0.0, 0.0), cam.base_radius, dxfattribs={"layer": "BASE"})
     doc.saveas(str(path))
     return doc

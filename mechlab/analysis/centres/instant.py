@@ -8,6 +8,8 @@ P13 = AB ∩ OE (crank relative to rocker) and P24 = OA ∩ BE (the coupler's po
 The slotted link and the sine mechanism are read as three links with a higher pair
 (pin A in the slot, seed 002 Fig. 7.3's method): 1 = crank, 2 = slotted link or yoke,
 3 = frame; P12 lies on the common normal at A, i.e. on the slot's normal through A.
+All of it is read from the mechanism's ``structure()`` (:func:`centre_model`): a new family
+needs nothing here.
 
 From the centres alone (Kennedy's angular-velocity-ratio theorem; no loop-closure
 analogs used): ω_k/ω_1 = (P1k - P1f)/(P1k - Pkf) along their common line (f = frame),
@@ -18,30 +20,21 @@ the crank, ω_1·perp(P1k - P1f).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Callable, Mapping
+from typing import Mapping
 
 import numpy as np
 
 from ...errors import MechanismError, SingularityError
-from ...geometry import AnglePath, PointPath, as_angles, dot, perp, relative, vector_angle
-from ...mechanisms.fourbar import FourBar
-from ...mechanisms.slotted import SineMechanism, SlottedLink
-from ...mechanisms.slider_crank import SliderCrank
+from ...geometry import AnglePath, PointPath, as_angles, dot, fixed_point, perp, unit
+from ...mechanisms.base import FRAME, Structure
 from ...motion import Motion
 from .homogeneous import Centre, at_infinity, finite, line_with_direction
 from .kennedy import Pair, centres_from_twists, kennedy, pair
-from ...mechanisms.antiparallelogram import Antiparallelogram
-from ...mechanisms.trammel import EllipticTrammel
-
-
-def _still(n: int) -> AnglePath:
-    z = np.zeros(n)
-    return AnglePath(z, z.copy(), z.copy())
 
 
 @dataclass(frozen=True, eq=False)
-class Structure:
-    """How a mechanism's links meet, for the centres.
+class CentreModel:
+    """How a mechanism's links meet, for the centres, over one motion.
 
     ``links``: names in seed-002 order (numbers 1..N); ``frame``/``input``/``output``:
     link names; ``known``: centres fixed by the pairs (0-based index pairs);
@@ -62,96 +55,66 @@ class Structure:
     input_rate: float = 1.0     # dθ_input/dφ: 1 for a crank; -1 for the trammel's rod
 
 
-_STRUCTURES: dict[type, Callable] = {}
+def centre_model(mechanism, motion: Motion) -> CentreModel:
+    """The centres' view of ``mechanism.structure()``: a revolute pair fixes its centre at the joint,
+    a prismatic pair at infinity normal to the guide, a higher pair puts the centre on the common
+    normal; a sliding block and its two pairs count as one higher pair (the pin in the slot, seed 002
+    Fig. 7.3's method), whose normal is the slot's."""
+    st: Structure = mechanism.structure()
+    label = {link.name: link.label or link.name for link in st.links}
+    label[FRAME] = FRAME
+    order = st.numbering or tuple(label[k.name] for k in st.links if not k.block) + (FRAME,)
+    index = {name: i for i, name in enumerate(order)}
+    n = len(motion.phi)
+    angles = {FRAME: AnglePath(np.zeros(n), np.zeros(n), np.zeros(n))}
+    poses = {FRAME: (fixed_point((0.0, 0.0), n), angles[FRAME])}
+    for link in st.links:
+        angles[link.name] = link.angle(motion)
+        if not link.block:
+            poses[label[link.name]] = (motion.points[link.origin], angles[link.name])
+
+    def guide(p):   # the unit direction of a prismatic pair's guide over the motion
+        return unit(angles[p.a].theta + p.angle)
+
+    known, normals, blocks = {}, {}, {k.name: [] for k in st.links if k.block}
+    for p in st.pairs:
+        if p.a in blocks or p.b in blocks:
+            blocks[p.b if p.b in blocks else p.a].append(p)
+            continue
+        ij = pair(index[label[p.a]], index[label[p.b]])
+        at = motion.points[p.point].p
+        if p.kind == "revolute":
+            known[ij] = finite(at)
+        elif p.kind == "prismatic":
+            known[ij] = at_infinity(perp(guide(p)), n)
+        else:
+            normals[ij] = line_with_direction(at, _normal(p, motion, angles))
+    for name, held in blocks.items():
+        if sorted(p.kind for p in held) != ["prismatic", "revolute"]:
+            raise MechanismError(f"block {name} must carry one revolute and one prismatic pair, "
+                                 f"not {', '.join(p.kind for p in held) or 'none'}")
+        pin, slot = sorted(held, key=lambda p: p.kind != "revolute")
+
+        def other(p):
+            return p.a if p.b == name else p.b
+
+        # the slide's direction is fixed in both of its links: the slot's normal is the contact's
+        ij = pair(index[label[other(pin)]], index[label[other(slot)]])
+        normals[ij] = line_with_direction(motion.points[pin.point].p, perp(guide(slot)))
+    out = st.link(st.output)
+    return CentreModel(order, FRAME, label[st.input], label[out.name], known, normals, poses, scale=st.scale,
+                       guide=guide(st.frame_pair(out.name))[0] if out.translates else None,
+                       input_rate=st.input_rate)
 
 
-def structure_of(mechanism_type: type):
-    """Decorator registering a function ``(mechanism, motion) -> Structure`` for a type."""
-    def deco(fn):
-        _STRUCTURES[mechanism_type] = fn
-        return fn
-    return deco
+def _normal(p, motion, angles) -> np.ndarray:
+    """A higher pair's common normal as (n, 2) directions."""
+    if callable(p.normal):
+        return p.normal(motion)
+    return unit(angles[p.a].theta + p.normal)
 
 
-def structure(mechanism, motion: Motion) -> Structure:
-    for klass in type(mechanism).__mro__:
-        if klass in _STRUCTURES:
-            return _STRUCTURES[klass](mechanism, motion)
-    raise MechanismError(f"no instantaneous-centre model for {type(mechanism).__name__}; known: "
-                         + ", ".join(sorted(k.__name__ for k in _STRUCTURES)))
-
-
-def _crank_pose(motion):
-    A = motion.points["A"]
-    return motion.points["O"], AnglePath(motion.phi.copy(), np.ones(len(A.p)), np.zeros(len(A.p)))
-
-
-@structure_of(FourBar)
-@structure_of(Antiparallelogram)
-def _fourbar(m, mo) -> Structure:
-    O, A, B, E = (mo.points[k] for k in "OABE")
-    n = len(mo.phi)
-    ang_ab = vector_angle(relative(B, A))
-    ang_eb = vector_angle(relative(B, E))
-    psi = AnglePath(mo.psi, ang_eb.d, ang_eb.dd)
-    known = {(0, 1): finite(A.p), (1, 2): finite(B.p), (2, 3): finite(E.p), (0, 3): finite(O.p)}
-    poses = {"crank": _crank_pose(mo), "coupler": (A, ang_ab), "rocker": (E, psi), "frame": (O, _still(n))}
-    return Structure(("crank", "coupler", "rocker", "frame"), "frame", "crank", "rocker", known, {}, poses,
-                     scale=max(m.crank, m.coupler, m.rocker, m.ground))
-
-
-@structure_of(SliderCrank)
-def _slider_crank(m, mo) -> Structure:
-    O, A, B = (mo.points[k] for k in "OAB")
-    n = len(mo.phi)
-    known = {(0, 1): finite(A.p), (1, 2): finite(B.p), (0, 3): finite(O.p), (2, 3): at_infinity((0.0, 1.0), n)}
-    poses = {"crank": _crank_pose(mo), "rod": (A, vector_angle(relative(B, A))), "slider": (B, _still(n)),
-             "frame": (O, _still(n))}
-    return Structure(("crank", "rod", "slider", "frame"), "frame", "crank", "slider", known, {}, poses,
-                     scale=m.crank + m.rod + abs(m.offset), guide=np.array([1.0, 0.0]))
-
-
-@structure_of(SlottedLink)
-def _slotted(m, mo) -> Structure:
-    O, A, B = (mo.points[k] for k in "OAB")
-    n = len(mo.phi)
-    slot = A.p - B.p
-    known = {(0, 2): finite(O.p), (1, 2): finite(B.p)}
-    normals = {(0, 1): line_with_direction(A.p, perp(slot))}   # the pin's contact normal
-    poses = {"crank": _crank_pose(mo), "slotted link": (B, AnglePath(mo.psi, mo.dpsi, mo.ddpsi)),
-             "frame": (O, _still(n))}
-    return Structure(("crank", "slotted link", "frame"), "frame", "crank", "slotted link", known, normals,
-                     poses, scale=m.crank + m.pivot_distance)
-
-
-@structure_of(SineMechanism)
-def _sine(m, mo) -> Structure:
-    O, A, K = (mo.points[k] for k in "OAK")
-    n = len(mo.phi)
-    known = {(0, 2): finite(O.p), (1, 2): at_infinity((0.0, 1.0), n)}
-    normals = {(0, 1): line_with_direction(A.p, np.broadcast_to([1.0, 0.0], (n, 2)))}
-    poses = {"crank": _crank_pose(mo), "yoke": (K, _still(n)), "frame": (O, _still(n))}
-    return Structure(("crank", "yoke", "frame"), "frame", "crank", "yoke", known, normals, poses,
-                     scale=m.crank, guide=np.array([1.0, 0.0]))
-
-
-@structure_of(EllipticTrammel)
-def _trammel(m, mo) -> Structure:
-    O, A, B = (mo.points[k] for k in "OAB")
-    n = len(mo.phi)
-    nb = np.array([-np.sin(m.beta), np.cos(m.beta)])
-    # seed 002 Fig. 7.5: 1 = guides (frame), 2 = slider A, 3 = slider B, 4 = rod. Cardan's crank
-    # only parametrises the motion (θ_rod = π/2 + β - φ): the rod is the input, at rate -1.
-    known = {(0, 1): at_infinity((0.0, 1.0), n), (0, 2): at_infinity(nb, n), (1, 3): finite(A.p),
-             (2, 3): finite(B.p)}
-    theta = m.rod_angle(mo.phi)
-    poses = {"frame": (O, _still(n)), "slider A": (A, _still(n)), "slider B": (B, _still(n)),
-             "rod": (A, AnglePath(theta, -np.ones(n), np.zeros(n)))}
-    return Structure(("frame", "slider A", "slider B", "rod"), "frame", "rod", "slider A", known,
-                     {}, poses, scale=m.fixed_radius, guide=np.array([1.0, 0.0]), input_rate=-1.0)
-
-
-def twists(st: Structure) -> tuple[list[np.ndarray], list[np.ndarray]]:
+def twists(st: CentreModel) -> tuple[list[np.ndarray], list[np.ndarray]]:
     """Each link's twist from its pose's analogs: ω = θ', v₀ = o' - θ'·perp(o)."""
     om, v0 = [], []
     for name in st.links:
@@ -171,7 +134,7 @@ class InstantCentres:
 
     mechanism: object
     motion: Motion
-    structure: Structure
+    structure: CentreModel
     centres: Mapping[Pair, Centre]
     method: str
     steps: list = field(default_factory=list)
@@ -280,7 +243,7 @@ def instant_centres(mechanism, phi=None, method: str = "kennedy") -> InstantCent
     """
     phi = mechanism.cycle() if phi is None else as_angles(phi)
     motion = mechanism.motion(phi)
-    st = structure(mechanism, motion)
+    st = centre_model(mechanism, motion)
     nums = [str(k + 1) for k in range(len(st.links))]
     if method == "kennedy":
         centres, steps = kennedy(len(st.links), st.known, st.normals, scale=st.scale, phi=phi, names=nums)

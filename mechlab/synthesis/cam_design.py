@@ -1,0 +1,87 @@
+"""The follower's programme of a disc cam over one turn: rise, outer dwell, return, inner dwell.
+
+Each transition is one of the laws of :mod:`mechlab.analysis.motion_laws` on the normalised
+time x = (φ − start)/duration (Kinitsky, 1994, chapter 2, compares them with linkages); the
+lift is y = h·Y(x) on the rise and h·(1 − Y(x)) on the return. The cams of
+:mod:`mechlab.mechanisms.cam` turn it into a profile.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..analysis.motion_laws import LAWS, RiseLaw
+from ..errors import DimensionError
+from ..geometry import AnglePath, check_length
+from ..mechanisms.base import TWO_PI
+
+__all__ = ["CamProgramme"]
+
+
+def _law(law) -> RiseLaw:
+    if isinstance(law, RiseLaw):
+        return law
+    if law not in LAWS:
+        raise DimensionError(f"unknown motion law {law!r}; known: {', '.join(LAWS)}")
+    return LAWS[law]
+
+
+@dataclass(frozen=True)
+class CamProgramme:
+    """Rise – outer dwell – return – inner dwell over one cam turn (angles in radians).
+
+    ``stroke`` h is a length (translating follower) or an angle in radians (oscillating);
+    ``law`` shapes the rise, ``return_law`` (default: the same) the return, y = h·(1 − Y(x)).
+    The inner dwell is what is left of the turn. Raises DimensionError naming the parameter.
+    """
+
+    stroke: float
+    rise: float
+    ret: float
+    outer_dwell: float = 0.0
+    law: str | RiseLaw = "cycloidal (sine)"
+    return_law: str | RiseLaw | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "stroke", check_length("stroke", self.stroke))
+        for name in ("rise", "ret"):
+            object.__setattr__(self, name, check_length(f"{name} angle", getattr(self, name)))
+        object.__setattr__(self, "outer_dwell", check_length("outer dwell", self.outer_dwell, allow_zero=True))
+        object.__setattr__(self, "law", _law(self.law))
+        object.__setattr__(self, "return_law", self.law if self.return_law is None else _law(self.return_law))
+        total = self.rise + self.outer_dwell + self.ret
+        if total > TWO_PI * (1 + 1e-12):
+            raise DimensionError(
+                f"rise + outer dwell + return = {np.degrees(self.rise):.4g}° + {np.degrees(self.outer_dwell):.4g}° "
+                f"+ {np.degrees(self.ret):.4g}° = {np.degrees(total):.4g}° exceeds one turn (360°)")
+
+    @property
+    def breaks(self) -> tuple[float, float, float, float, float]:
+        """Cam angles where the phases start: rise, outer dwell, return, inner dwell, and 2π."""
+        a = self.rise
+        b = a + self.outer_dwell
+        c = b + self.ret
+        return 0.0, a, b, min(c, TWO_PI), TWO_PI
+
+    def __call__(self, phi) -> AnglePath:
+        """The follower's lift y(φ) (stroke units) with its analogs y′, y″ at cam angles φ."""
+        t = np.mod(np.asarray(phi, dtype=float), TWO_PI)
+        _, a, b, c, _ = self.breaks
+        h = self.stroke
+        y, d, dd = np.zeros_like(t), np.zeros_like(t), np.zeros_like(t)
+        y[(t >= a) & (t < b)] = h
+        up = t < a
+        Y, dY, ddY = self.law(t[up] / self.rise)
+        y[up], d[up], dd[up] = h * Y, h * dY / self.rise, h * ddY / self.rise**2
+        down = (t >= b) & (t < c)
+        Y, dY, ddY = self.return_law((t[down] - b) / self.ret)
+        y[down], d[down], dd[down] = h * (1 - Y), -h * dY / self.ret, -h * ddY / self.ret**2
+        return AnglePath(y, d, dd)
+
+    def in_dwell(self, phi) -> np.ndarray:
+        """True where the follower stands still (either dwell)."""
+        t = np.mod(np.asarray(phi, dtype=float), TWO_PI)
+        _, a, b, c, _ = self.breaks
+        return ((t >= a) & (t < b)) | (t >= c)
