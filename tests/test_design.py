@@ -93,7 +93,7 @@ def test_every_candidate_meets_its_specification_when_simulated_anew(spec):
 
 def test_the_property_test_saw_candidates_of_several_families():
     # runs after the property test (file order): it must not have passed on refusals alone
-    assert {"external Geneva", "spherical Geneva", "curved slot", "МЧВ1 six-bar", "МЧВ2 six-bar"} <= SEEN
+    assert {"external Geneva", "spherical Geneva", "curved slot", "МЧВ1 six-bar", "МЧВ2 six-bar", "disc cam"} <= SEEN
 
 
 def test_refusals_name_their_reason_with_numbers():
@@ -103,6 +103,7 @@ def test_refusals_name_their_reason_with_numbers():
     assert refused["external Geneva"] == "4 stations give a dwell fraction of 0.750; 0.600 was asked (± 0.030)"
     assert "0.250" in refused["internal Geneva"]
     assert refused["curved slot"].startswith("rocks its output")
+    assert refused["disc cam"].startswith("lifts or rocks its follower")
     assert "180°" in refused["МЧВ3-2М six-bar"] and "4 stations" in refused["МЧВ3-2М six-bar"]
     tight = D.candidates(D.Specification("swing", 50 / 360, amplitude=np.radians(40),
                                          max_pressure_angle=np.radians(55)), ["curved slot"])
@@ -267,3 +268,24 @@ def test_geneva_torque_and_motor_agree_with_the_geneva_chapter(z):
     assert cand.criteria.peak_torque == pytest.approx(ref.peak_torque, rel=2e-3)
     assert cand.criteria.rms_torque == pytest.approx(ref.rms_torque, rel=2e-3)
     assert cand.criteria.motor_power == pytest.approx(ref.nominal_power, rel=2e-3)
+
+
+@pytest.mark.parametrize("motion, amplitude", [("stroke", 80.0), ("swing", np.radians(30))])
+def test_the_cam_candidate_carries_its_law_and_exports_its_profile(motion, amplitude, tmp_path):
+    # the cam's rise is the cycloidal law solved through the profile: its invariants are the law's,
+    # over the rise as measured (from where the follower leaves the dwell band, as for the stand-in above)
+    spec = D.Specification(motion, 0.3, amplitude=amplitude, max_pressure_angle=np.radians(35), impacts="none")
+    cand = D.candidates(spec, ["disc cam"]).candidates[0]
+    law = law_invariants("cycloidal (sine)")
+    u = brentq(lambda u: u - np.sin(2 * np.pi * u) / (2 * np.pi) - spec.dwell_precision, 1e-6, 0.5)
+    t, k = 1 - u, 1 - spec.dwell_precision
+    c = cand.criteria
+    assert (c.B, c.C) == pytest.approx((law.B * t / k, law.C * t**2 / k), rel=3e-3)
+    assert c.pressure_angle <= spec.max_pressure_angle and c.impact == "none"
+    # the base circle is the smallest within the limit: 2 % smaller breaks it
+    cam = cand.design.mechanism
+    phi = np.linspace(0, 2 * np.pi, 1441)
+    assert np.max(np.abs(cam.pressure_angle(phi))) == pytest.approx(spec.max_pressure_angle, rel=1e-3)
+    assert cam.undercut() is None
+    cand.design.export(tmp_path / "cam.dxf")
+    assert (tmp_path / "cam.dxf").stat().st_size > 1000 and (tmp_path / "cam.csv").exists()

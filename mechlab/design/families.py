@@ -14,12 +14,14 @@ from scipy.optimize import brentq
 
 from ..errors import MechanismError
 from ..mechanisms import ExternalGeneva, InternalGeneva, SphericalGeneva
+from ..mechanisms.cam import OscillatingRollerCam, TranslatingRollerCam
+from ..synthesis.cam_design import CamProgramme
 from ..synthesis.dwell_slot import DwellLaw, best_placement, curved_slot_dwell
 from ..synthesis.lambda_guiding import circle_guiding, straight_guiding
 from ..synthesis.lambda_sixbars import mchv1, mchv3_half_turn
 from ..synthesis.lambda_sliders import mchv2, mchv5
-from ..synthesis.slot_export import write_csv, write_dxf
-from .criteria import Structure
+from ..synthesis.slot_export import write_cam_csv, write_cam_dxf, write_csv, write_dxf
+from .criteria import SAMPLES, Structure
 from .spec import Specification
 
 # lambda mechanisms tried, (δ, a): inside the existence region of Kinitsky (1994), Fig. 2a
@@ -213,6 +215,61 @@ def mchv5_slotted(spec: Specification) -> Design:
     return _stroke_design(spec, six, "МЧВ5 six-bar")
 
 
+CAM_LAW = "cycloidal (sine)"  # continuous acceleration: no impact
+ROLLER_FRACTIONS = (0.3, 0.2, 0.1)  # roller radius / base radius, tried until the profile is not undercut
+
+
+def disc_cam(spec: Specification) -> Design:
+    """A disc cam with a roller follower (translating for a stroke, oscillating for a swing): rise and
+    return by the cycloidal law over the motion, the base circle the smallest that keeps the pressure
+    angle within the limit, the roller the largest that does not undercut the profile."""
+    _needs(spec, "swing", "stroke", what="lifts or rocks its follower (an index needs a barrel or globoidal cam)")
+    motion = 2 * np.pi - spec.dwell_angle
+    programme = CamProgramme(spec.amplitude, motion / 2, motion / 2, 0.0, law=CAM_LAW)
+    phi = np.linspace(0.0, 2 * np.pi, 2 * SAMPLES + 1)  # finer than the judge's grid: its peak is not missed
+    arm = 2 * spec.crank_radius
+
+    def build(rb, roller):
+        if spec.motion == "stroke":
+            return TranslatingRollerCam(programme, rb, roller * rb)
+        prime = rb * (1 + roller)
+        return OscillatingRollerCam(programme, rb, roller * rb, float(np.hypot(arm, prime)), arm)
+
+    def excess(rb, roller):
+        try:
+            return float(np.max(np.abs(build(rb, roller).pressure_angle(phi)))) - spec.max_pressure_angle
+        except MechanismError:
+            return np.pi  # the follower cannot be assembled: as bad as it gets
+
+    lo, hi = (0.2 * spec.amplitude, 20 * spec.amplitude) if spec.motion == "stroke" else (0.1 * arm, 3 * arm)
+    reasons = []
+    for roller in ROLLER_FRACTIONS:
+        if excess(hi, roller) > 0:
+            reasons.append(f"roller {roller:g} r_b: even r_b = {hi:.4g} mm leaves the pressure angle above "
+                           f"{np.degrees(spec.max_pressure_angle):.1f}°")
+            continue
+        rb = lo if excess(lo, roller) <= 0 else brentq(lambda r: excess(r, roller), lo, hi, xtol=1e-6 * hi)
+        rb *= 1 + 1e-4  # just inside the limit
+        cam = build(rb, roller)
+        cut = cam.undercut()
+        if cut is not None:
+            reasons.append(f"roller {roller:g} r_b: {cut}")
+            continue
+
+        def export(path, cam=cam):
+            """The profile in mm: DXF at ``path`` and CSV beside it."""
+            write_cam_dxf(cam, path)
+            write_cam_csv(cam, str(path).rsplit(".", 1)[0] + ".csv")
+            return path
+
+        follower = "translating" if spec.motion == "stroke" else "oscillating"
+        return Design("disc cam", cam, 1.0, Structure(parts=3, lower_pairs=3, higher_pairs=1),
+                      circles=(((0.0, 0.0), float(np.max(np.hypot(*cam.profile().surface.T)))),), export=export,
+                      note=f"{follower} roller follower, base radius {rb:.4g} mm, roller {roller * rb:.3g} mm, "
+                           f"{CAM_LAW} law")
+    raise Unsuitable("; ".join(reasons))
+
+
 FAMILIES: dict[str, Callable[[Specification], Design]] = {
     "external Geneva": external_geneva,
     "internal Geneva": internal_geneva,
@@ -222,4 +279,5 @@ FAMILIES: dict[str, Callable[[Specification], Design]] = {
     "МЧВ3-2М six-bar": mchv3_half,
     "МЧВ2 six-bar": mchv2_slider,
     "МЧВ5 six-bar": mchv5_slotted,
+    "disc cam": disc_cam,
 }

@@ -16,8 +16,7 @@ from ..design import FAMILIES, Comparison
 # radar spokes: (criterion, label); each is scaled by the largest among the candidates (smaller is better)
 SPOKES = (("B", "peak velocity B"), ("C", "peak acceleration C"), ("pressure_angle", "pressure angle"),
           ("size", "size"), ("motor_power", "motor power"), ("parts", "parts and pairs"))
-COLOURS = dict(zip(FAMILIES, ("#1f4e79", "#6a3d9a", "#2a7f62", "#d62728", "#ff7f0e", "#8c564b", "#17becf",
-                              "#7f7f7f")))
+COLOURS = {f: plt.get_cmap("tab10")(i % 10) for i, f in enumerate(FAMILIES)}
 
 
 def _spoke(c, key):
