@@ -363,7 +363,7 @@ def test_explorers_show_designs_and_refusals():
     assert ex5.message == "" and isinstance(ex5.mechanism, LambdaTranslatingSlot)
     ex5.sliders["gamma"].value = 30.0
     assert abs(ex5.mechanism.transmission_angle - 60 * DEG) < 1e-12
-    ex5.sliders["dwell"].value = 120.0  # no straight-line design there: the reason is shown
+    ex5.sliders["delta"].value = 150.0  # no straight-line design for δ = 150°, a = 0.8: the reason is shown
     assert "no straight-line lambda mechanism" in ex5.message
 
 

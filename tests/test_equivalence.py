@@ -197,7 +197,7 @@ def test_seed000_errata_recompute_their_evidence():
     from mechlab.course.errata import seed000_equivalence
     assert len(seed000_equivalence.ERRATA) == 3
     for e in seed000_equivalence.ERRATA:
-        text = e.check()
+        text = e.evidence()
         assert e.source == "000" and e.notebook == "02_base_mechanism.ipynb"
         assert ("φ = 60°" in text or "λ = 0.3" in text) and len(text.splitlines()) == 1
 

@@ -94,12 +94,13 @@ def test_errata_markdown(tmp_path):
         return "printed gives 1.25, correct gives 1.5"
 
     e = Erratum(source="000", where="formula (21)", printed="$a | b$", correct="$c$\nsplit", check=check,
-                notebook="07_chapter.ipynb")
+                notebook="07_chapter.ipynb", kind="remark")
     f = Erratum(source="004", where="Table 1", printed="2.51", correct="2.536", check=lambda: "z = 3: 2.536",
-                notebook="07_chapter.ipynb")
+                notebook="07_chapter.ipynb", kind="remark")
     md = errata_page.errata_markdown([f, e], notebooks_dir=tmp_path)
     assert calls == [1]  # the evidence is recomputed at build time
-    assert md.startswith(f"2 mistakes in 2 of the {len(SOURCES)} source texts.")
+    assert md.startswith(f"0 printed mistakes, 2 remarks and 0 unreadable passages in 2 of the {len(SOURCES)} "
+                         f"source texts.")
     lines = md.splitlines()
     # grouped by source in key order, each with its title and a link to the References page
     head0 = lines.index(f'**Source <a href="references.html#seed-000">000</a>: {SOURCES["000"]}**')
@@ -121,10 +122,10 @@ def test_errata_markdown_fails_loudly(tmp_path):
         errata_page.errata_markdown([Erratum("000", "eq. 1", "a", "b", wrong, "07_chapter.ipynb")],
                                     notebooks_dir=tmp_path)
     with pytest.raises(ValueError, match="not in"):
-        errata_page.errata_markdown([Erratum("000", "eq. 1", "a", "b", lambda: "ok", "99_missing.ipynb")],
+        errata_page.errata_markdown([Erratum("000", "eq. 1", "a", "b", lambda: "ok", "99_missing.ipynb", "remark")],
                                     notebooks_dir=tmp_path)
     with pytest.raises(ValueError, match="source '123'"):
-        errata_page.errata_markdown([Erratum("123", "eq. 1", "a", "b", lambda: "ok", "07_chapter.ipynb")],
+        errata_page.errata_markdown([Erratum("123", "eq. 1", "a", "b", lambda: "ok", "07_chapter.ipynb", "remark")],
                                     notebooks_dir=tmp_path)
     assert errata_page.errata_markdown([], notebooks_dir=tmp_path).startswith("No errata")
 

@@ -70,14 +70,19 @@ def _inline(text: str) -> str:
     return " ".join(str(text).split())
 
 
+def _plural(n: int, one: str, many: str) -> str:
+    return f"{n} {one if n == 1 else many}"
+
+
 def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = "notebooks/") -> str:
-    """MyST Markdown for the errata (default: :func:`mechlab.course.errata.collect`), grouped by source.
+    """MyST Markdown for the errata (default: :func:`mechlab.course.errata.collect`): one section per
+    kind (printed mistakes, remarks, unreadable passages), counted separately, grouped by source within.
 
     Each erratum: the source key (linked to the References page) and where, the chapter
     cell that shows it, then printed, correct and the evidence returned by
-    ``Erratum.check()`` (which raises if the claim stopped being true, failing the build).
+    ``Erratum.evidence()`` (which raises if the claim stopped being true, failing the build).
     """
-    from mechlab.course.errata import SOURCES, collect
+    from mechlab.course.errata import KINDS, SOURCES, collect, count
 
     rows = collect() if errata is None else list(errata)
     if not rows:
@@ -85,16 +90,24 @@ def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = 
     for e in rows:
         if e.source not in SOURCES:
             raise ValueError(f"erratum cites source {e.source!r}; known: {', '.join(SOURCES)}")
+    n = count(rows)
     sources = sorted({e.source for e in rows})
-    noun = "mistake" if len(rows) == 1 else "mistakes"
-    out = [f"{len(rows)} {noun} in {len(sources)} of the {len(SOURCES)} source texts.", ""]
-    for key in sources:
-        out += [f'**Source <a href="references.html#seed-{key}">{key}</a>: {SOURCES[key]}**', ""]
-        for e in (e for e in rows if e.source == key):
-            evidence = e.evidence()
-            out += [f"- **{_inline(e.where)}** — shown in {chapter_link(e.notebook, notebooks_dir, prefix)}",
-                    f"  - printed: {_inline(e.printed)}",
-                    f"  - correct: {_inline(e.correct)}",
-                    f"  - evidence: {_inline(evidence)}"]
-        out.append("")
+    out = [f"{_plural(n['mistake'], 'printed mistake', 'printed mistakes')}, "
+           f"{_plural(n['remark'], 'remark', 'remarks')} and "
+           f"{_plural(n['unreadable'], 'unreadable passage', 'unreadable passages')} "
+           f"in {len(sources)} of the {len(SOURCES)} source texts.", ""]
+    for kind, title in KINDS.items():
+        mine = [e for e in rows if e.kind == kind]
+        if not mine:
+            continue
+        out += [f"## {title[0].upper()}{title[1:]} ({len(mine)})", ""]
+        for key in sorted({e.source for e in mine}):
+            out += [f'**Source <a href="references.html#seed-{key}">{key}</a>: {SOURCES[key]}**', ""]
+            for e in (e for e in mine if e.source == key):
+                evidence = e.evidence()
+                out += [f"- **{_inline(e.where)}** — shown in {chapter_link(e.notebook, notebooks_dir, prefix)}",
+                        f"  - printed: {_inline(e.printed)}",
+                        f"  - correct: {_inline(e.correct)}",
+                        f"  - evidence: {_inline(evidence)}"]
+            out.append("")
     return "\n".join(out)

@@ -1,14 +1,18 @@
-"""Classic cam motion laws over a rise and their dimensionless invariants (seed 001, chapter 2 table).
+"""Classic cam motion laws over a rise and their dimensionless invariants (Kinitsky, 1994, chapter 2 table).
 
 A rise law is written on the normalised time x ∈ [0, 1] (crank angle over the rise / its
 duration Φ) with the normalised stroke y ∈ [0, 1] (output displacement / stroke h).
-Seed 001 compares linkages with cams by three invariants of the rise:
+Kinitsky (1994) compares linkages with cams by three invariants of the rise:
 
 * B = max |y'| — velocity, the physical peak is B·h·ω/Φ;
 * C = max |y''| — acceleration, the peak is C·h·ω²/Φ²;
 * D = max |y'·y''| — "kinetic power" (velocity × acceleration), the peak of the inertia
-  power is D·J·h²·ω³/Φ³. (The absolute value: the thesis' МЧВ1 rows are reproduced only with
-  it; for the symmetric cam laws it equals the signed maximum.)
+  power is D·J·h²·ω³/Φ³.
+
+C and D are **absolute** extremes by default: the thesis' МЧВ1 rows are reproduced only with
+them. ``signed=True`` gives the signed maxima max y'' and max y'y'' instead (the driving phase
+only). They differ where the law is not odd about mid-rise: for the double harmonic law
+D = 9.8948 (absolute) against 7.7516 (signed), and the thesis prints 7.00, neither.
 
 :func:`rise_invariants` measures the same numbers on any output law ψ(φ) sampled by a
 mechanism (analogs ψ', ψ'' with respect to φ), so linkages and cams go in one table.
@@ -146,10 +150,12 @@ LAWS["4-5-6-7 polynomial"] = RiseLaw(*[getattr(LAWS["4-5-6-7 polynomial"], k) fo
                                      (35 / 16, _closed_4567(), None))
 
 
-def law_invariants(law: RiseLaw | str, n: int = 20001) -> Invariants:
+def law_invariants(law: RiseLaw | str, n: int = 20001, *, signed: bool = False) -> Invariants:
     """B, C, D of a rise law, measured on n samples of x ∈ [0, 1] and polished by a bounded
-    scalar search around the best sample (independent of the closed forms)."""
+    scalar search around the best sample (independent of the closed forms). C and D are the
+    absolute extremes, or with ``signed`` the signed maxima (module docstring)."""
     law = LAWS[law] if isinstance(law, str) else law
+    size = (lambda v: v) if signed else np.abs
     x = np.linspace(0.0, 1.0, n)
 
     def peak(f):
@@ -162,27 +168,31 @@ def law_invariants(law: RiseLaw | str, n: int = 20001) -> Invariants:
                               options=dict(xatol=1e-12))
         return max(float(v[i]), -res.fun)
 
-    return Invariants(peak(lambda s: np.abs(law.dy(s))), peak(lambda s: np.abs(law.ddy(s))),
-                      peak(lambda s: np.abs(law.dy(s) * law.ddy(s))))
+    return Invariants(peak(lambda s: np.abs(law.dy(s))), peak(lambda s: size(law.ddy(s))),
+                      peak(lambda s: size(law.dy(s) * law.ddy(s))))
 
 
-def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: np.ndarray) -> Invariants:
+def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: np.ndarray, *,
+                    signed: bool = False) -> Invariants:
     """B, C, D of an output law sampled over one rise (φ from its start to its end).
 
     With Φ = φ_end − φ_start and h = ψ_end − ψ_start: B = max|ψ'|·Φ/|h|, C = max|ψ''|·Φ²/|h|,
-    D = max|ψ'ψ''|·Φ³/h² (seed 001, chapter 2: invariants of velocity, acceleration and kinetic
-    power). Raises MechanismError if the output does not move.
+    D = max|ψ'ψ''|·Φ³/h² (Kinitsky, 1994, chapter 2: invariants of velocity, acceleration and kinetic
+    power); with ``signed`` C and D are the signed maxima in the direction of the rise.
+    Raises MechanismError if the output does not move.
     """
     Phi = float(phi[-1] - phi[0])
     h = float(psi[-1] - psi[0])
     if not abs(h) > 0 or not Phi > 0:
         raise MechanismError(f"no rise to normalise: stroke h = {h:.3g}, duration Φ = {Phi:.3g}")
-    return Invariants(np.max(np.abs(dpsi)) * Phi / abs(h), np.max(np.abs(ddpsi)) * Phi**2 / abs(h),
-                      np.max(np.abs(dpsi * ddpsi)) * Phi**3 / h**2)
+    acc, power = np.asarray(ddpsi) * np.sign(h), np.asarray(dpsi) * np.asarray(ddpsi)  # along the rise
+    if not signed:
+        acc, power = np.abs(acc), np.abs(power)
+    return Invariants(np.max(np.abs(dpsi)) * Phi / abs(h), np.max(acc) * Phi**2 / abs(h), np.max(power) * Phi**3 / h**2)
 
 
 def thesis_cam_rows() -> dict:
-    """The cam rows of the table on page 21 of seed 001 as printed (B, C, D), where the OCR is
+    """The cam rows of the table on page 21 of Kinitsky (1994) as printed (B, C, D), where the OCR is
     readable; keys are the laws of :data:`LAWS`. The rows "Stoddart", "Kurd" and the power law
     with sine-type acceleration are not decodable reliably and are left out."""
     return {

@@ -1,10 +1,10 @@
 """The symmetric lambda mechanism of Chebyshev and its circle- and straight-line-guiding synthesis.
 
-Source: seed 001 (Ya.T. Kinitsky, thesis abstract, Khmelnytskyi 1994), chapter 1,
+Source: Kinitsky (1994), Ya.T. Kinitsky's thesis abstract (Khmelnytskyi), chapter 1,
 Fig. 1a-b and formulas (1)-(13). The OCR of (2)-(11) is unreadable; everything here
 is re-derived from the geometry the text describes and checked numerically.
 
-Geometry (seed 001, Fig. 1a): crank O-A (length r), coupler A-B-D, rocker B-C with
+Geometry (Kinitsky, 1994, Fig. 1a): crank O-A (length r), coupler A-B-D, rocker B-C with
 l_AB = l_BC = l_BD = l = 1 (all lengths in units of l), frame O-C of length a, coupler
 break angle δ = ∠ABD. Frame of this module: O = (0, 0), C = (a, 0); φ is measured
 counter-clockwise from the ray O→C (as in :class:`mechlab.mechanisms.FourBar`), so A is
@@ -31,49 +31,69 @@ The distance of D from any point Q = C + c·e on the axis is then a function of 
 from __future__ import annotations
 
 from dataclasses import dataclass
-
 import numpy as np
-from scipy.optimize import brentq, minimize, root
-from ..errors import MechanismError
-from ..geometry import check_length, perp
-from ..errors import SynthesisError
+from scipy.optimize import brentq, minimize, minimize_scalar, root
+
+from ..errors import DimensionError, MechanismError, SynthesisError
+from ..geometry import check_length, check_number
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
 
-__all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "fifth_order_line",
-           "existence_map", "rotation_boundary", "transmission_lines", "band_touches", "WholeTurnLine", "ExistenceMap",
-           "TransmissionLines", "whole_turn_line", "whole_turn_guiding", "existence_region"]
+__all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "ThesisIteration",
+           "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches",
+           "WholeTurnLine", "ExistenceMap", "TransmissionLines", "whole_turn_line", "whole_turn_guiding",
+           "existence_region"]
+
+MAX_SAMPLES = 100_000  # samples of a curve
+RIPPLE_FLOOR = 1e-12   # (in l) the equal-ripple equations are solved to about this; a finer band is not resolved
+MAX_ISO_POINTS = 400   # frames a per iso-dwell line: each is a synthesis (≈ 10 ms)
+MAX_ARC = 40.0         # arclength of a traced line in (r, a, k, t3, t2): the region is far smaller
 
 
 # --------------------------------------------------------------------------------------------
 # Circle-guiding synthesis
 # --------------------------------------------------------------------------------------------
+def _mu_at(r, a, t):
+    """Transmission angle μ at thesis angles t: |CA| = 2 sin(μ/2) = √(a² + r² + 2ar cos t) (formula (5))."""
+    t = np.asarray(t, dtype=float)
+    return 2 * np.arcsin(np.clip(0.5 * np.sqrt(a * a + r * r + 2 * a * r * np.cos(t)), 0, 1))
+
+
+def _band_terms(r, a, delta, mu):
+    """P = |D − C|², X = (D − C)·e and dP/dμ, dX/dμ in closed form: |CD| = 2 sin((δ − μ)/2) and the
+    angle β of D − C from e has cos β = (a² − r² + d²)/(2ad), d = |CA| = 2 sin(μ/2) (module docstring)."""
+    d, dd = 2 * np.sin(mu / 2), np.cos(mu / 2)
+    rc, drc = 2 * np.sin((delta - mu) / 2), -np.cos((delta - mu) / 2)
+    g = a * a - r * r
+    with np.errstate(invalid="ignore", divide="ignore"):  # a solver's trial point may leave the curve
+        cb, dcb = (g + d * d) / (2 * a * d), (d * d - g) * dd / (2 * a * d * d)
+    return rc * rc, rc * cb, 2 * rc * drc, drc * cb + rc * dcb
+
+
+def _offset(k, P, X):
+    """u = (kP − 2X)/(1 + s), s = √(1 − 2kX + k²P): for Q = C + e/k, |D − Q| − |1/k| = sign(k)·u.
+    Smooth through k = 0, where the band is straight and u = −X."""
+    s = np.sqrt(np.maximum((1 - k * X) ** 2 + k * k * (P - X * X), 0.0))
+    return (k * P - 2 * X) / (1 + s)
+
+
 @dataclass(frozen=True)
 class CircleGuide:
-    """Equal-ripple circle-guiding design (seed 001, Fig. 1b, formulas (1), (9)-(11)).
+    """Equal-ripple circle-guiding design (Kinitsky, 1994, Fig. 1b, formulas (1), (9)-(11)).
 
-    Lengths in units of l. ``c`` is the distance C→Q of the arc centre Q along the axis
-    e (towards D0); R0 is the radius touched at the axis point D0 (φ = π) and at ±t2,
-    R1 the one touched at ±t3 and reached again at the dwell ends ±α, where D leaves the
-    band; R = (R0 + R1)/2, E = |R0 − R1|/2. Touch angles t are thesis angles t = φ − π.
+    Lengths in units of l. The band's centre is Q = C + e/k on the axis e (towards D0): ``k`` is
+    the reciprocal of the offset c = |CQ| (signed), 0 for a straight band, so a design passes
+    smoothly through the straight crossing. R0 is the radius touched at the axis point D0 (t = 0)
+    and at ±t2, R1 the one touched at ±t3 and again at the dwell ends ±α, where D leaves the band;
+    R = (R0 + R1)/2 (1), E = |R0 − R1|/2 (11). Thesis angles t = φ − π.
     """
 
     delta: float
     a: float
     dwell: float
     r: float
-    c: float
-    R0: float
-    R1: float
+    k: float
     t3: float
     t2: float
-
-    @property
-    def R(self) -> float:
-        return 0.5 * (self.R0 + self.R1)
-
-    @property
-    def E(self) -> float:
-        return 0.5 * abs(self.R0 - self.R1)
 
     @property
     def alpha(self) -> float:
@@ -84,9 +104,49 @@ class CircleGuide:
         return LambdaMechanism(self.r, self.a, self.delta)
 
     @property
+    def straight(self) -> bool:
+        return self.k == 0.0
+
+    def _u(self, t):
+        x, y = self.mechanism.axis_coordinates(np.pi + np.asarray(t, dtype=float))
+        return _offset(self.k, x * x + y * y, x)
+
+    @property
+    def E(self) -> float:
+        u = self._u([0.0, self.t3])
+        return 0.5 * float(abs(u[0] - u[1]))
+
+    @property
+    def kappa(self) -> float:
+        """Signed curvature 1/R of the mean circle (> 0: its centre lies on the side of e); 0: straight."""
+        return float(self.k / (1 + self.k * self._u([0.0, self.t3]).mean()))
+
+    @property
+    def c(self) -> float:
+        """Offset |CQ| of the band's centre along e (±inf for a straight band)."""
+        return np.copysign(np.inf, self.k) if self.straight else 1 / self.k
+
+    def _radius(self, t) -> float:
+        return np.inf if self.straight else float((1 + self.k * self._u([t])[0]) / abs(self.k))
+
+    @property
+    def R0(self) -> float:
+        return self._radius(0.0)
+
+    @property
+    def R1(self) -> float:
+        return self._radius(self.t3)
+
+    @property
+    def R(self) -> float:
+        return np.inf if self.straight else 1 / abs(self.kappa)
+
+    @property
     def centre(self) -> np.ndarray:
+        if self.straight:
+            raise SynthesisError("the band is straight (κ = 0): it has no centre; use it as a straight guide")
         m = self.mechanism
-        return m.C + self.c * m.axis
+        return m.C + m.axis / self.k
 
     @property
     def guided(self) -> "GuidedLambda":
@@ -95,14 +155,16 @@ class CircleGuide:
         return GuidedLambda(self.r, self.a, self.delta, 1, float(q[0]), float(q[1]), self.R0, self.R1, self.dwell)
 
     def deviation(self, phi) -> np.ndarray:
-        """ρ(φ) − R: the signed distance of D from the mean circle."""
-        return self.mechanism.radius_about(self.centre, phi)[0] - self.R
+        """Signed distance of D from the mean circle, ρ(φ) − R (for a straight band: x − Y along e)."""
+        x, y = self.mechanism.axis_coordinates(phi)
+        sign = np.sign(self.k) if self.k else -1.0
+        return sign * (_offset(self.k, x * x + y * y, x) - self._u([0.0, self.t3]).mean())
 
 
 @dataclass(frozen=True)
 class StraightGuide:
     """Equal-ripple straight-line guide (R → ∞): D's coordinate x along the axis stays within
-    Y ± E over the dwell, touching Y ± E alternately at t = 0, ±t1 and ±α."""
+    Y ± E over the dwell, touching Y ± E alternately at three or more thesis angles ``touches``."""
 
     delta: float
     a: float
@@ -110,7 +172,7 @@ class StraightGuide:
     r: float
     Y: float
     E: float
-    t1: float
+    touches: tuple
 
     @property
     def mechanism(self) -> LambdaMechanism:
@@ -120,41 +182,15 @@ class StraightGuide:
         return self.mechanism.axis_coordinates(phi)[0] - self.Y
 
 
-def _make(r, a, delta):
-    return LambdaMechanism(r, a, delta)
-
-
-def _rho(r, c, a, delta, t):
-    """ρ = |D − Q| and dρ/dt at thesis angles t (Q = C + c·e), through μ(t) (closed form, fast)."""
-    m = _make(r, a, delta)
-    t = np.asarray(t, dtype=float)
-    d = np.sqrt(a * a + r * r + 2 * a * r * np.cos(t))
-    mu = 2 * np.arcsin(np.clip(d / 2, 0, 1))
-    dmu = (-a * r * np.sin(t) / d) / np.cos(mu / 2)
-    rho, drho = _rho_mu(m, c, mu)
-    with np.errstate(invalid="ignore"):
-        return rho, drho * dmu
-
-
-def _curvature_offset(r, a, delta) -> float:
-    """Distance from C along the axis to the centre of curvature of the coupler curve at D0."""
-    m = _make(r, a, delta)
-    D = m.motion(np.array([np.pi])).points["D"]
-    d, dd = D.d[0], D.dd[0]
-    kappa = (d[0] * dd[1] - d[1] * dd[0]) / np.hypot(*d) ** 3
-    n = perp(d / np.hypot(*d))
-    centre = D.p[0] + n / kappa
-    return float((centre - m.C) @ m.axis)
-
-
 def _interior_extrema(f, t):
-    """Indices of the interior local extrema of samples f over t."""
+    """Indices of the interior local extrema of samples f over t (a flat top of equal samples counts once,
+    at its first sample)."""
     df = np.diff(f)
-    return np.nonzero(np.sign(df[1:]) * np.sign(df[:-1]) < 0)[0] + 1
+    return np.nonzero(((df[:-1] > 0) & (df[1:] <= 0)) | ((df[:-1] < 0) & (df[1:] >= 0)))[0] + 1
 
 
 def _initial_r(a: float) -> float:
-    # seed 001, text after (13): r0 = a/4 (0 < a < 1) or (2 − a)/4 (1 < a < 2)
+    # Kinitsky (1994), text after (13): r0 = a/4 (0 < a < 1) or (2 − a)/4 (1 < a < 2)
     return a / 4 if a < 1 else (2 - a) / 4
 
 
@@ -167,29 +203,28 @@ def _check_inputs(delta, a, dwell, what):
     return delta, a, dwell
 
 
+def _circle_eqs(delta, a, alpha):
+    """Equal ripple in (r, k, t3, t2): ρ(0) = ρ(t2), ρ(t3) = ρ(α), ρ'(t3) = ρ'(t2) = 0 about Q = C + e/k.
+    With ρ² = (P − 2X/k + 1/k²): ρ(u) = ρ(v) ⇔ k(P(u) − P(v)) − 2(X(u) − X(v)) = 0 and ρ' = 0 ⇔
+    kP' − 2X' = 0 (derivatives in μ; dμ/dt ≠ 0 inside the dwell): smooth through k = 0."""
+    def eqs(y):
+        r, k, t3, t2 = y
+        P, X, dP, dX = _band_terms(r, a, delta, _mu_at(r, a, [0.0, t3, t2, alpha]))
+        out = np.array([k * (P[0] - P[2]) - 2 * (X[0] - X[2]), k * (P[1] - P[3]) - 2 * (X[1] - X[3]),
+                        k * dP[1] - 2 * dX[1], k * dP[2] - 2 * dX[2]])
+        return np.where(np.isfinite(out), out, 1e3)
+    return eqs
+
+
 def _fifth_point(delta: float, a: float):
-    """(r, c) of the fifth-order-contact mechanism with frame a (None if the line misses a)."""
-    r5, a5, c5 = fifth_order_line(delta, 801)
-    if len(a5) < 2:
-        return None
+    """(r, k) of the fifth-order-contact mechanism with frame a (None if the line misses a)."""
+    r5, a5, k5 = fifth_order_line(delta, 801)
     i = np.nonzero(np.sign(a5[1:] - a) * np.sign(a5[:-1] - a) <= 0)[0]
-    if len(i) == 0:
+    if len(a5) < 2 or len(i) == 0:
         return None
     i = i[0]
     w = (a - a5[i]) / (a5[i + 1] - a5[i])
-    return r5[i] + w * (r5[i + 1] - r5[i]), c5[i] + w * (c5[i + 1] - c5[i])
-
-
-def _continuation_guess(delta, a, alpha, eqs_at):
-    """Follow the equal-ripple solution from the fifth-order contact (2α → 0) up to α."""
-    start = _fifth_point(delta, a)
-    if start is None:
-        return None
-    for first in (25.0, 15.0, 8.0):  # the first step's size matters; try a few
-        x = _follow(eqs_at, start, alpha, min(alpha, np.radians(first)))
-        if x is not None:
-            return x
-    return None
+    return r5[i] + w * (r5[i + 1] - r5[i]), k5[i] + w * (k5[i + 1] - k5[i])
 
 
 def _merged(t3, t2, alpha) -> bool:
@@ -197,73 +232,86 @@ def _merged(t3, t2, alpha) -> bool:
     return min(t3, t2 - t3, alpha - t2) < 1e-3 * alpha
 
 
-def _follow(eqs_at, start, alpha, a0):
-    x = np.array([start[0], start[1], 0.5 * a0, np.sqrt(3) / 2 * a0])
-    prev = a0
-    for al in np.linspace(a0, alpha, max(2, int(np.ceil((alpha - a0) / np.radians(6.0))) + 1)):
-        x[2:] *= al / prev  # keep the touch angles in proportion to the dwell
-        sol = root(lambda y: eqs_at(y, al), x, method="hybr", options=dict(xtol=1e-13))
-        if not np.all(np.isfinite(sol.x)) or not 0 < sol.x[2] < sol.x[3] < al or _merged(sol.x[2], sol.x[3], al):
-            return None
-        x, prev = sol.x, al
-    return tuple(x)
+@dataclass(frozen=True)
+class _Reach:
+    """How far the continuation from the fifth-order contact got: the solution at 2α = ``dwell``."""
+
+    x: np.ndarray
+    dwell: float
+
+
+def _continuation(delta, a, alpha) -> _Reach | None:
+    """Follow the equal-ripple solution from the fifth-order contact (2α → 0) towards α, touches
+    started at t = α sin 30°, α sin 60° (the equal-ripple nodes of a quadratic in t²); the step in α
+    halves where a solve fails and grows again after a success. Returns the last solution reached
+    (at α itself when it succeeds), None when the fifth-order line misses a."""
+    start = _fifth_point(delta, a)
+    if start is None:
+        return None
+    al = min(alpha, np.radians(2.0))
+    x, step, prev = np.array([start[0], start[1], 0.5 * al, np.sqrt(3) / 2 * al]), np.radians(4.0), al
+    reached = None
+    while True:
+        x0 = np.r_[x[:2], x[2:] * al / prev]
+        eqs = _circle_eqs(delta, a, al)
+        sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13))
+        good = (np.max(np.abs(eqs(sol.x))) < 1e-10 and 0 < sol.x[0] < min(a, 2 - a)
+                and 0 < sol.x[2] < sol.x[3] < al and not _merged(sol.x[2], sol.x[3], al))
+        if good:
+            reached = _Reach(sol.x, 2 * al)
+            if al == alpha:
+                return reached
+            x, prev, step = sol.x, al, min(1.5 * step, np.radians(12.0))
+        elif reached is None or step < np.radians(0.05):
+            return reached
+        else:
+            step /= 2
+        al = min(alpha, prev + step)
 
 
 def _minimax_guess(delta, a, alpha):
-    """Nelder-Mead on (r, c) minimising the spread of ρ over the dwell (fallback start)."""
+    """Nelder-Mead on (r, k) minimising the spread of ρ over the dwell (fallback start)."""
     ts = np.linspace(0.0, alpha, 121)
 
+    def offsets(r, k):
+        P, X, _, _ = _band_terms(r, a, delta, _mu_at(r, a, ts))
+        return _offset(k, P, X)
+
     def spread(x):
-        r, c = x
-        try:
-            rho, _ = _rho(r, c, a, delta, ts)
-        except MechanismError:
+        if not 0 < x[0] < min(a, 2 - a):
             return 1e3
-        return float(rho.max() - rho.min())
+        u = offsets(*x)
+        return float(u.max() - u.min()) if np.all(np.isfinite(u)) else 1e3
 
-    r0 = _initial_r(a)
-    try:
-        c0 = _curvature_offset(r0, a, delta)
-    except MechanismError:
-        c0 = 0.0
-    best = minimize(spread, [r0, c0], method="Nelder-Mead", options=dict(xatol=1e-6, fatol=1e-12, maxiter=400))
-    r0, c0 = best.x
-    try:
-        rho, _ = _rho(r0, c0, a, delta, ts)
-        ext = _interior_extrema(rho, ts)
-    except MechanismError:
-        ext = []
-    if len(ext) >= 2:
-        return r0, c0, ts[ext[0]], ts[ext[-1]]
-    return r0, c0, 0.5 * alpha, np.sqrt(3) / 2 * alpha
+    start = _fifth_point(delta, a) or (_initial_r(a), 0.0)
+    best = minimize(spread, start, method="Nelder-Mead", options=dict(xatol=1e-7, fatol=1e-13, maxiter=600))
+    ext = _interior_extrema(offsets(*best.x), ts)
+    if len(ext) < 2:
+        return None
+    return best.x[0], best.x[1], ts[ext[0]], ts[ext[-1]]
 
 
-def _solve_circle(delta, a, dwell, eqs, x0):
+def _solve_circle(delta, a, dwell, x0):
     """Solve the equal-ripple equations from x0 and check the result on a dense sample;
     returns (CircleGuide, None) or (None, reason)."""
     alpha = dwell / 2
+    eqs = _circle_eqs(delta, a, alpha)
     sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13))
-    r, c, t3, t2 = (float(v) for v in sol.x)
-    if not np.all(np.isfinite(sol.x)) or np.max(np.abs(eqs(sol.x))) > 1e-9:
+    r, k, t3, t2 = (float(v) for v in sol.x)
+    if np.max(np.abs(eqs(sol.x))) > 1e-10:
         return None, f"the equal-ripple equations did not converge ({sol.message.strip()})"
-    if not 1e-4 < r:
-        return None, f"the crank degenerates (r = {r:.3g})"
-    if not 0.0 < t3 < t2 < alpha:
-        return None, f"the touch points are out of order (t3 = {np.degrees(t3):.3g}°, t2 = {np.degrees(t2):.3g}°)"
-    if _merged(t3, t2, alpha):
-        return None, (f"the touch points merge (t3 = {np.degrees(t3):.6g}°, t2 = {np.degrees(t2):.6g}°, "
-                      f"α = {np.degrees(alpha):.6g}°)")
-    try:
-        rho, _ = _rho(r, c, a, delta, [0.0, t3])
-        g = CircleGuide(delta, a, dwell, r, c, float(rho[0]), float(rho[1]), t3, t2)
-        dense = g.deviation(np.pi + np.linspace(-alpha, alpha, 4001))
-    except MechanismError as err:
-        return None, str(err)
-    if np.max(np.abs(eqs(sol.x)[:2])) > 1e-3 * g.E:  # the radii equal to far less than the ripple
+    if not 1e-4 < r < min(a, 2 - a):
+        return None, f"the crank leaves (0, min(a, 2 − a)) = (0, {min(a, 2 - a):.4g}): r = {r:.4g}"
+    if not 0.0 < t3 < t2 < alpha or _merged(t3, t2, alpha):
+        return None, (f"the touch points are not four distinct ones (t3 = {np.degrees(t3):.6g}°, "
+                      f"t2 = {np.degrees(t2):.6g}°, α = {np.degrees(alpha):.6g}°)")
+    g = CircleGuide(delta, a, dwell, r, 0.0 if k == 0 else k, t3, t2)
+    if np.max(np.abs(eqs(sol.x))) > 1e-4 * g.E + 1e-15:
         return None, f"the equations are not solved finely enough to resolve the band E = {g.E:.3g}"
-    if np.max(np.abs(dense)) > g.E * (1 + 1e-6) + 1e-12:
+    dense = g.deviation(np.pi + np.linspace(-alpha, alpha, 4001))
+    if np.max(np.abs(dense)) > g.E * (1 + 1e-6) + RIPPLE_FLOOR:
         return None, (f"the best circle leaves the band inside the dwell (max |ρ − R| = "
-                      f"{np.max(np.abs(dense)):.3g} > E = {g.E:.3g})")
+                      f"{np.max(np.abs(dense)):.3g} > E = {g.E:.3g}; a ripple near {RIPPLE_FLOOR:g} l is not resolved)")
     return g, None
 
 
@@ -271,166 +319,240 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
                    minimax: bool = True) -> CircleGuide:
     """Circle-guiding lambda mechanism for break angle δ, frame a and dwell 2α (radians).
 
-    Finds r, the arc centre Q on the axis and R0, R1 such that ρ(t) = |D − Q| over the dwell
+    Finds r and the band's centre Q = C + e/k such that ρ(t) = |D − Q| over the dwell
     t ∈ [−α, α] equioscillates: ρ(0) = ρ(±t2) = R0 and ρ(±t3) = ρ(±α) = R1 with ρ'(t3) =
     ρ'(t2) = 0 (four alternating touches on each half, the Chebyshev best approximation with
-    the three free parameters r, c, R). Solved with scipy's ``root`` (hybr), started by
-    continuation in α from the closed-form fifth-order contact (2α → 0, :func:`fifth_order_line`)
-    or, failing that, from a minimax estimate (Nelder-Mead on (r, c)); ``guess`` =
-    (r, c, t3, t2) starts from a neighbouring solution instead; ``minimax=False`` skips the
-    (slow) Nelder-Mead fallback.
-    Raises SynthesisError when no such design exists (outside the existence limits of Fig. 2a).
+    the three free parameters r, Q, R). The unknowns are (r, k, t3, t2): k = 1/|CQ| passes
+    through 0 where the best band is straight, so no design near the straight crossing is lost.
+    Solved with scipy's ``root`` (hybr), started by continuation in α from the closed-form
+    fifth-order contact (2α → 0, :func:`fifth_order_line`) or, failing that, from a minimax
+    estimate (Nelder-Mead on (r, k)); ``guess`` = (r, k, t3, t2) starts from a neighbouring
+    solution instead; ``minimax=False`` skips the (slower) Nelder-Mead fallback.
+    Raises SynthesisError, with the reason, where no design exists (outside the map of Fig. 2a).
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
     alpha = dwell / 2
-
-    def eqs(x, alpha=alpha):
-        r, c, t3, t2 = x
-        try:
-            rho, drho = _rho(r, c, a, delta, [0.0, t3, t2, alpha])
-        except MechanismError:
-            return np.full(4, 1e3)
-        return [rho[0] - rho[2], rho[1] - rho[3], drho[1], drho[2]]
-
-    starts = [guess] if guess is not None else [lambda: _continuation_guess(delta, a, alpha, eqs)]
-    if guess is None and minimax:
-        starts.append(lambda: _minimax_guess(delta, a, alpha))
-    for start in starts:
-        x0 = start() if callable(start) else start
-        if x0 is None:
-            fail = "no starting point"
-            continue
-        g, fail = _solve_circle(delta, a, dwell, eqs, x0)
-        if fail is None:
+    span = _frame_span(delta)
+    if not span[0] < a < span[1]:
+        raise SynthesisError(
+            f"no circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}: the existence "
+            f"region of Fig. 2a spans a ∈ ({span[0]:.4g}, {span[1]:.4g}) only (the ends of the fifth-order line)")
+    fail = "the continuation from the fifth-order contact does not start"
+    if guess is not None:
+        g, fail = _solve_circle(delta, a, dwell, guess)
+        if g is not None:
             return g
+    reach = _continuation(delta, a, alpha)
+    if reach is not None and reach.dwell == dwell:
+        g, fail = _solve_circle(delta, a, dwell, reach.x)
+        if g is not None:
+            return g
+    if minimax:
+        x0 = _minimax_guess(delta, a, alpha)
+        g, fail = _solve_circle(delta, a, dwell, x0) if x0 is not None else (None, "no minimax start")
+        if g is not None:
+            return g
+    if reach is not None and reach.dwell < dwell:
+        fail = (f"followed from the fifth-order contact, the design reaches only 2α = {np.degrees(reach.dwell):.4g}°, "
+                f"with r = {reach.x[0]:.4g} against the rotation limit min(a, 2 − a) = {min(a, 2 - a):.4g}")
     raise SynthesisError(
         f"no circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}, "
         f"2α = {np.degrees(dwell):.4g}°: {fail}; choose (δ, a, 2α) inside the existence map")
 
 
-def thesis_iteration(delta: float, a: float, dwell: float, tol: float = 1e-6, maxiter: int = 100):
-    """The thesis' own scheme for r (seed 001, (12)-(13)), reconstructed; for comparison only.
+def _frame_span(delta: float) -> tuple[float, float]:
+    """The frames a the existence region spans: between the ends of the fifth-order line on r = 0,
+    a = 2 sin((δ − π)/2) (0 for δ ≤ π) and a = 2 sin(δ/4) (point A)."""
+    return 2 * np.sin(max(delta - np.pi, 0.0) / 2), 2 * np.sin(delta / 4)
 
-    Start from r0 = a/4 (a < 1) or (2 − a)/4 (a > 1). With the current r0, formula (5)
-    gives the end angle μ1 of the dwell (sin μ1/2 = ½√(a² + r0² + 2a·r0·cos α)); the
-    equal-ripple conditions, written in μ (the curve is a function of μ only), are solved for
-    μ0, the centre offset c and μ3, μ2; "formula (6)" sin μ0/2 = (a + r)/2 returns a new
-    r1 = 2 sin(μ0/2) − a. Stop when |r1 − r0| ≤ ε = 1e-6 (13), else r0 ← (r0 + r1)/2 (the
-    thesis' halving). Returns (r, iterations, history of r0). Agrees with
-    :func:`circle_guiding` to about ε where it converges.
+
+@dataclass(frozen=True)
+class ThesisIteration:
+    """The thesis' iteration for r: the result, the number of steps and every step's (r0, r1, μ0, μ1, μ3, μ2)."""
+
+    r: float
+    steps: int
+    history: np.ndarray
+
+
+def _touch_angles(delta, mu0, mu1, start):
+    """Formulas (2)-(4) as we read them: given δ and the end angles μ0 > μ1 of the dwell, the inner
+    touches μ3 > μ2 and (p, q) = (c/a, c(a² − r²)/a) of the band ρ² = ρ_C² + c² − pρ_C d − qρ_C/d.
+    The equalities ρ(μ0) = ρ(μ2), ρ(μ3) = ρ(μ1) and ρ'(μ3) = ρ'(μ2) = 0 are linear in (p, q):
+    the two derivative conditions give (p, q), the two equalities then fix μ3, μ2."""
+    def terms(mu):
+        d, dd = 2 * np.sin(mu / 2), np.cos(mu / 2)
+        rc, drc = 2 * np.sin((delta - mu) / 2), -np.cos((delta - mu) / 2)
+        return rc * rc, rc * d, rc / d, 2 * rc * drc, drc * d + rc * dd, (drc * d - rc * dd) / d**2
+
+    def pq(m3, m2):
+        _, _, _, dF, dG, dH = terms(np.array([m3, m2]))
+        return np.linalg.solve(np.array([dG, dH]).T, dF)
+
+    def eqs(x):
+        p, q = pq(*x)
+        F, G, H, *_ = terms(np.array([mu0, x[0], x[1], mu1]))
+        rho2 = F - p * G - q * H
+        return [rho2[0] - rho2[2], rho2[1] - rho2[3]]
+
+    sol = root(eqs, start, method="hybr", options=dict(xtol=1e-14))
+    return sol.x, pq(*sol.x), float(np.max(np.abs(eqs(sol.x))))
+
+
+def thesis_iteration(delta: float, a: float, dwell: float, tol: float = 1e-6, maxiter: int = 200) -> ThesisIteration:
+    """The thesis' own scheme for r (Kinitsky, 1994, (12)-(13)), step by step; for comparison.
+
+    From r0 = a/4 (a < 1) or (2 − a)/4 (a > 1): μ0 from a + r0 = 2 sin(μ0/2) and μ1 from (5),
+    sin(μ1/2) = ½√(a² + r0² + 2a·r0·cos α); then (2)-(4) give the inner touches μ3, μ2 and
+    k = a² − r² of the band (:func:`_touch_angles`); (6) returns r1 = ½(d0 − k/d0), d0 = 2 sin(μ0/2)
+    (from a + r = d0, a − r = k/d0). Stop when |r1 − r0| ≤ ε = 10⁻⁶ (13), else r0 ← (r0 + r1)/2
+    (the thesis' "halving"). Converges in 8 steps at (150°, 0.9, 60°) and 26-27 at (180°, 0.5, 120°),
+    (180°, 0.8, 180°), to within a few ε of :func:`circle_guiding`; it converged at every one of 60
+    designs sampled over δ 90°-270° (median 27 steps, at most 90).
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "thesis iteration")
+    maxiter = int(_bounded("maxiter", maxiter, 1, 10_000))
+    tol = _bounded("tol", tol, 1e-14, 1.0)
     alpha = dwell / 2
-    r0 = _initial_r(a)
-    # the inner equal-ripple solve is warm-started from the shape of the scipy solution
-    # (μ0, c, μ3, μ2); the outer loop on r is the thesis' own
-    g = circle_guiding(delta, a, dwell)
-    inner = np.array([2 * np.arcsin((a + g.r) / 2), g.c, *_mu_at(g.r, a, [g.t3, g.t2])])
-    history = [r0]
-    for it in range(1, maxiter + 1):
-        m = _make(r0, a, delta)
-        mu1 = _mu_at(r0, a, [alpha])[0]
-
-        def eqs(x, m=m, mu1=mu1):
-            mu0, c, m3, m2 = x
-            with np.errstate(invalid="ignore"):
-                rho, drho = _rho_mu(m, c, np.array([mu0, m3, m2, mu1]))
-            return [rho[0] - rho[2], rho[1] - rho[3], drho[1], drho[2]]
-
-        sol = root(eqs, inner, method="hybr", options=dict(xtol=1e-13))
-        if not np.all(np.isfinite(sol.x)):
+    r0, rows = _initial_r(a), []
+    for step in range(1, maxiter + 1):
+        mu0, mu1 = _mu_at(r0, a, [0.0, alpha])
+        (m3, m2), (p, q), res = _touch_angles(delta, mu0, mu1, _mu_at(r0, a, [alpha / 2, alpha * np.sqrt(3) / 2]))
+        d0 = 2 * np.sin(mu0 / 2)
+        r1 = 0.5 * (d0 - (q / p) / d0)
+        rows.append((r0, r1, mu0, mu1, m3, m2))
+        if res > 1e-9 or not np.isfinite(r1) or not mu1 < m2 < m3 < mu0:
             break
-        inner = sol.x
-        r1 = float(2 * np.sin(inner[0] / 2) - a)
         if abs(r1 - r0) <= tol:
-            history.append(r1)
-            if r1 < 1e-3:
-                break  # the degenerate fixed point r → 0 (D at rest), not a design
-            return r1, it, history
+            return ThesisIteration(float(r1), step, np.array(rows))
         r0 = 0.5 * (r0 + r1)
-        history.append(r0)
-        try:
-            _make(r0, a, delta)
-        except MechanismError:
+        if not 0 < r0 < min(a, 2 - a):
             break
     raise SynthesisError(f"the thesis' iteration did not converge for δ = {np.degrees(delta):.4g}°, "
-                         f"a = {a:.4g}, 2α = {np.degrees(dwell):.4g}° (last r = {r0:.6g})")
+                         f"a = {a:.4g}, 2α = {np.degrees(dwell):.4g}° after {len(rows)} steps (last r = {r0:.6g})")
 
 
-def _mu_at(r, a, t):
-    t = np.asarray(t, dtype=float)
-    d = np.sqrt(a * a + r * r + 2 * a * r * np.cos(t))
-    return 2 * np.arcsin(np.clip(d / 2, 0, 1))
-
-
-def _rho_mu(m: LambdaMechanism, c: float, mus):
-    """ρ = |D − Q| and dρ/dμ as functions of μ (D in the axis frame: x = ρ_C cos β, y = ρ_C sin β)."""
-    mus = np.asarray(mus, dtype=float)
-    a, r, delta = m.a, m.r, m.delta
-    d = 2 * np.sin(mus / 2)
-    dd = np.cos(mus / 2)
-    rc = 2 * np.sin((delta - mus) / 2)
-    drc = -np.cos((delta - mus) / 2)
-    k = a * a - r * r
-    cb = (k + d * d) / (2 * a * d)
-    dcb = (2 * d * dd * 2 * a * d - (k + d * d) * 2 * a * dd) / (2 * a * d) ** 2
-    rho2 = rc * rc + c * c - 2 * c * rc * cb
-    drho2 = 2 * rc * drc - 2 * c * (drc * cb + rc * dcb)
-    with np.errstate(invalid="ignore", divide="ignore"):  # trial points of a solver may be off the curve
-        rho = np.sqrt(rho2)
-        return rho, drho2 / (2 * rho)
+def _bounded(name, value, lo, hi):
+    """``value`` as a float in [lo, hi], else a DimensionError naming it and the bounds."""
+    x = check_number(name, value)
+    if not lo <= x <= hi:
+        raise DimensionError(f"{name} = {x:g} must lie in [{lo:g}, {hi:g}]")
+    return x
 
 
 # --------------------------------------------------------------------------------------------
 # Straight-line guiding
 # --------------------------------------------------------------------------------------------
-def straight_guiding(delta: float, a: float, dwell: float) -> StraightGuide:
-    """Straight-line lambda mechanism (R → ∞): x(t) = (D − C)·e equioscillates over the dwell.
+def _axis_x(r, a, delta, t):
+    """x = (D − C)·e at thesis angles t (closed form), and dx/dμ."""
+    _, X, _, dX = _band_terms(r, a, delta, _mu_at(r, a, t))
+    return X, dX
 
-    Free parameters r and the line's offset Y: three alternation points, x(0) = x(±α) = Y + σE,
-    x(±t1) = Y − σE with x'(t1) = 0. Solved by brentq on r for x(0) = x(α) (brackets from a scan
-    of r over the full-rotation range), keeping the root whose x has one interior extremum and
-    stays within Y ± E over the dwell. Chebyshev's lambda (δ = π, a = 0.8) is the case 2α = 180°:
-    x(0) = x(±90°) = 1.6 exactly (and x'(±90°) = 0), so r = 0.4 comes out.
+
+def _extremes(r, a, delta, alpha, n=201):
+    """(t, x) of every local extreme of x over [0, α], ends included, the interior ones polished
+    by a bounded scalar search between the neighbouring samples."""
+    ts = np.linspace(0.0, alpha, n)
+    xs = _axis_x(r, a, delta, ts)[0]
+    out = [(0.0, xs[0]), (alpha, xs[-1])]
+    for j in _interior_extrema(xs, ts):
+        sign = 1.0 if xs[j] > xs[j - 1] else -1.0  # a maximum: minimise −x
+        res = minimize_scalar(lambda t: -sign * _axis_x(r, a, delta, t)[0], bounds=(ts[j - 1], ts[j + 1]),
+                              method="bounded", options=dict(xatol=1e-13))
+        out.append((float(res.x), -sign * float(res.fun)))
+    return sorted(out)
+
+
+def _alternation(ext, E, Y, rtol=1e-6):
+    """The touches of Y ± E among the extremes, with consecutive same-side touches merged: (t, side)."""
+    touches = []
+    for t, x in ext:
+        side = np.sign(x - Y)
+        if abs(abs(x - Y) - E) <= rtol * E + 1e-15 and (not touches or touches[-1][1] != side):
+            touches.append((t, side))
+    return touches
+
+
+def straight_guiding(delta: float, a: float, dwell: float) -> StraightGuide:
+    """Straight-line lambda mechanism (R → ∞): the minimax (equal-ripple) straight band of x(t) = (D − C)·e
+    over the half dwell t ∈ [0, α] (the other half is its mirror image).
+
+    The free parameters are r and the line's offset Y. E(r) = (max x − min x)/2 over t = 0, α and the
+    interior extremes of x is minimised by scipy's bounded scalar search from a scan of r over the
+    full-rotation range. Where E(r) has a kink at its minimum the band touches Y ± E alternately at three
+    (or more) points (Chebyshev's alternation) and r is polished on the equations of that pattern (x equal
+    at the same-side touches, x' = 0 at the interior ones); where E(r) is smooth there (dE/dr = 0, the
+    family is not Haar) two alternate touches suffice. ``touches`` lists them (thesis angles t ≥ 0).
+    Chebyshev's lambda (δ = π, a = 0.8) comes out r = 0.4 for every 2α from 180° to 208.955°
+    (x(0) = x(±90°) = 1.6, x'(±90°) = 0, E = 1.9507·10⁻³).
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "straight-line guiding")
     alpha = dwell / 2
-    ts = np.linspace(0.0, alpha, 801)
-
-    def x_of(r, t):
-        return _make(r, a, delta).axis_coordinates(np.pi + np.asarray(t))[0]
-
-    def f(r):
-        x = x_of(r, [0.0, alpha])
-        return x[0] - x[1]
-
     hi = min(a, 2 - a)
-    rs = np.linspace(hi * 1e-3, hi * (1 - 1e-6), 241)
-    fs = np.array([f(r) for r in rs])
-    for i in np.nonzero(np.sign(fs[1:]) * np.sign(fs[:-1]) <= 0)[0]:
-        r = brentq(f, rs[i], rs[i + 1], xtol=1e-15, rtol=4 * np.finfo(float).eps)
-        x = x_of(r, ts)
-        j = _interior_extrema(x, ts)
-        if len(j) != 1:
-            continue
-        Y, E = 0.5 * (x[0] + x[j[0]]), 0.5 * abs(x[0] - x[j[0]])
-        if np.max(np.abs(x - Y)) <= E * (1 + 1e-6) + 1e-12:
-            break
-    else:
+    if alpha >= np.pi:
+        raise SynthesisError(f"straight-line guiding needs a dwell 2α < 360°, got {np.degrees(dwell):.4g}°")
+    ts = np.linspace(0.0, alpha, 401)
+    rs = np.linspace(hi * 1e-3, hi * (1 - 1e-3), 300)
+    xs = _axis_x(rs[:, None], a, delta, ts[None, :])[0]
+    spread = 0.5 * (xs.max(1) - xs.min(1))
+
+    def half_spread(r):
+        x = np.array([v for _, v in _extremes(r, a, delta, alpha)])
+        return 0.5 * float(x.max() - x.min())
+
+    best = None
+    for i in _interior_extrema(spread, rs):
+        if spread[i] > spread[i - 1]:
+            continue  # a local maximum of the sampled spread
+        res = minimize_scalar(half_spread, bounds=(rs[i - 1], rs[i + 1]), method="bounded",
+                              options=dict(xatol=1e-14))
+        if best is None or res.fun < best[1]:
+            best = (float(res.x), float(res.fun))
+    if best is None:
         raise SynthesisError(
             f"no straight-line lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}, "
-            f"2α = {np.degrees(dwell):.4g}°: no crank r in (0, {hi:.4g}) makes x(0) = x(α) with one "
-            f"alternation inside the dwell")
-    m = _make(r, a, delta)
-    # polish the interior extremum: x'(t1) = 0
-    def dx(t):
-        D = m.motion(np.array([np.pi + t])).points["D"]
-        return float(D.d[0] @ m.axis)
-    t1 = brentq(dx, ts[j[0] - 1], ts[j[0] + 1], xtol=1e-15)
-    x0, x1 = x_of(r, [0.0, t1])
-    return StraightGuide(delta, a, dwell, float(r), float(0.5 * (x0 + x1)), float(0.5 * abs(x0 - x1)), float(t1))
+            f"2α = {np.degrees(dwell):.4g}°: the band's half-width E(r) has no minimum inside the crank's range "
+            f"(0, {hi:.4g}) (it falls towards the rotation limit or towards r = 0)")
+    r = _polish_straight(delta, a, alpha, best[0])
+    ext = _extremes(r, a, delta, alpha)
+    x = np.array([v for _, v in ext])
+    Y, E = 0.5 * float(x.max() + x.min()), 0.5 * float(x.max() - x.min())
+    touches = _alternation(ext, E, Y, rtol=1e-5)
+    return StraightGuide(delta, a, dwell, r, Y, E, tuple(t for t, _ in touches))
 
 
+def _polish_straight(delta, a, alpha, r):
+    """Solve the equal-ripple equations of the alternation pattern found at r; keeps r if that fails
+    or makes the band wider."""
+    ext = _extremes(r, a, delta, alpha)
+    x = np.array([v for _, v in ext])
+    Y, E = 0.5 * (x.max() + x.min()), 0.5 * (x.max() - x.min())
+    pattern = _alternation(ext, E, Y, rtol=1e-4)[:3]
+    if len(pattern) < 3:
+        return r
+    inner = [i for i, (t, _) in enumerate(pattern) if 0 < t < alpha]
+
+    def eqs(y):
+        tt = [t for t, _ in pattern]
+        for i, v in zip(inner, y[1:]):
+            tt[i] = v
+        X, dX = _axis_x(y[0], a, delta, np.array(tt))
+        return [X[0] - X[2], *dX[inner]]
+
+    sol = root(eqs, [r, *(pattern[i][0] for i in inner)], method="hybr", options=dict(xtol=1e-15))
+    if not np.all(np.isfinite(sol.x)) or np.max(np.abs(eqs(sol.x))) > 1e-12 or not 0 < sol.x[0] < min(a, 2 - a):
+        return r
+    if inner == [1]:  # touches at 0 and α on one side: x(0) = x(α) involves r alone, bracket it to the last bit
+        def ends(rr):
+            X = LambdaMechanism(rr, a, delta).axis_coordinates(np.pi + np.array([0.0, alpha]))[0]
+            return X[0] - X[1]
+        lo, hi = sol.x[0] * (1 - 1e-9), sol.x[0] * (1 + 1e-9)
+        if ends(lo) * ends(hi) < 0:
+            sol.x[0] = brentq(ends, lo, hi, xtol=1e-16, rtol=4 * np.finfo(float).eps)
+    def width(rr):
+        return np.ptp([v for _, v in _extremes(rr, a, delta, alpha)])
+
+    return float(sol.x[0]) if width(sol.x[0]) <= width(r) * (1 + 1e-9) else r
 def band_touches(deviation: np.ndarray, E: float, rtol: float = 1e-6) -> np.ndarray:
     """Indices where a sampled deviation reaches ±E (local extrema of |dev| within rtol·E of E),
     with alternating signs required: used by the tests to find touches rather than assume them."""
@@ -440,7 +562,7 @@ def band_touches(deviation: np.ndarray, E: float, rtol: float = 1e-6) -> np.ndar
 
 
 # --------------------------------------------------------------------------------------------
-# Existence map (seed 001, Fig. 2a)
+# Existence map (Kinitsky, 1994, Fig. 2a)
 # --------------------------------------------------------------------------------------------
 def rotation_boundary(n: int = 101) -> tuple[np.ndarray, np.ndarray]:
     """Full-rotation limit in the (r, a) plane: r = a (a ≤ 1) and r = 2 − a (a ≥ 1); (r, a) arrays."""
@@ -468,28 +590,30 @@ def transmission_lines(mu_min: float = np.radians(30), mu_max: float = np.radian
 def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Fifth-order contact of the coupler curve with a circle at D0 (2α → 0, E = 0; line AN of Fig. 2a).
 
-    ρ² about Q = C + c·e is F(μ) = ρ_C² + c² − (c/a)(ρ_C d + k ρ_C/d) with d = 2 sin(μ/2),
-    ρ_C = 2 sin((δ − μ)/2), k = a² − r². As μ − μ0 ∝ t² near t = 0, six-point contact at
-    D0 means F'(μ0) = F''(μ0) = 0: linear in p = c/a and q = p·k, then a + r = 2 sin(μ0/2)
-    and a − r = k/(a + r). Returns (r, a, c) along the line, parametrised by μ0 ∈ (0, δ).
+    ρ² about Q = C + c·e is F(μ) = ρ_C² + c² − (c/a)(ρ_C d + g ρ_C/d) with d = 2 sin(μ/2),
+    ρ_C = 2 sin((δ − μ)/2), g = a² − r². As μ − μ0 ∝ t² near t = 0, six-point contact at
+    D0 means F'(μ0) = F''(μ0) = 0: linear in w = a/c and g, then a + r = 2 sin(μ0/2)
+    and a − r = g/(a + r). Returns (r, a, k = 1/c) along the line, parametrised by μ0 ∈ (0, δ)
+    (k = 0 where the contact circle is a straight line).
     """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
+    n = int(_bounded("n", n, 2, MAX_SAMPLES))
     mu = np.linspace(1e-3, delta - 1e-3, n)
     u, v = (delta - mu) / 2, mu / 2
     rc, drc, ddrc = 2 * np.sin(u), -np.cos(u), -0.5 * np.sin(u)
     d, dd, ddd = 2 * np.sin(v), np.cos(v), -0.5 * np.sin(v)
-    g1, g2 = 2 * rc * drc, 2 * drc**2 + 2 * rc * ddrc
+    f1, f2 = 2 * rc * drc, 2 * drc**2 + 2 * rc * ddrc
     h1a, h1b = drc * d + rc * dd, ddrc * d + 2 * drc * dd + rc * ddd
     h2a = (drc * d - rc * dd) / d**2
     h2b = ddrc / d - 2 * drc * dd / d**2 - rc * ddd / d**2 + 2 * rc * dd**2 / d**3
-    det = h1a * h2b - h2a * h1b
-    p = (g1 * h2b - h2a * g2) / det
-    q = (h1a * g2 - g1 * h1b) / det
-    k = q / p
-    a = 0.5 * (d + k / d)
-    r = 0.5 * (d - k / d)
+    # w·F' = h1 + g·h2 at first and second order (F' = f − (c/a)(h1 + g h2) = 0, w = a/c)
+    det = -f1 * h2b + h2a * f2
+    w = (-h1a * h2b + h2a * h1b) / det
+    g = (f1 * h1b - f2 * h1a) / det
+    a = 0.5 * (d + g / d)
+    r = 0.5 * (d - g / d)
     ok = (r > 0) & (r < a) & (r + a < 2)
-    return r[ok], a[ok], (p * a)[ok]
+    return r[ok], a[ok], (w / a)[ok]
 
 
 @dataclass(frozen=True)
@@ -514,7 +638,7 @@ def _whole_turn_eqs(delta):
     def eqs(y):
         r, a, k, t3, t2 = y
         try:
-            m = _make(r, a, delta)
+            m = LambdaMechanism(r, a, delta)
             D = m.motion(np.pi + np.array([0.0, t3, t2, np.pi])).points["D"]
         except MechanismError:
             return np.full(4, 1e3)
@@ -526,7 +650,7 @@ def _whole_turn_eqs(delta):
 
 
 def whole_turn_line(delta: float, ds: float = 0.02, r_start: float = 0.005) -> WholeTurnLine:
-    """The boundary "the whole coupler curve approximated by a circle", α = π (seed 001, text
+    """The boundary "the whole coupler curve approximated by a circle", α = π (Kinitsky, 1994, text
     before (12), boundary 2, lines KU and AP of Fig. 2a).
 
     On it the equal-ripple circle fit of :func:`circle_guiding` spans the whole crank turn: ρ
@@ -540,6 +664,8 @@ def whole_turn_line(delta: float, ds: float = 0.02, r_start: float = 0.005) -> W
     For a < 1 beyond that end the iso-dwell lines crowd onto r = a instead (2α → 360° as r → a).
     """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
+    ds = _bounded("ds", ds, 1e-3, 0.2)
+    r_start = _bounded("r_start", r_start, 1e-4, 0.05)
     eqs = _whole_turn_eqs(delta)
     a0 = 2 * np.sin(delta / 4)
     pts, guess = [], np.array([a0, 1 / a0, np.pi / 3, 2 * np.pi / 3])
@@ -550,7 +676,7 @@ def whole_turn_line(delta: float, ds: float = 0.02, r_start: float = 0.005) -> W
                                  f"near r = 0, a = 2 sin(δ/4) = {a0:.4g}")
         guess = sol.x
         pts.append(np.r_[r, sol.x])
-    for _ in range(2000):
+    for _ in range(int(np.ceil(MAX_ARC / ds))):
         tan = pts[-1] - pts[-2]
         tan /= np.linalg.norm(tan)
 
@@ -587,9 +713,7 @@ def whole_turn_guiding(delta: float, a: float, line: WholeTurnLine | None = None
     r, k, t3, t2 = (float(v) for v in sol.x)
     if np.max(np.abs(eqs([r, a, k, t3, t2]))) > 1e-10 or not 0 < t3 < t2 < np.pi:
         raise SynthesisError(f"the whole-turn solve did not converge for δ = {np.degrees(delta):.4g}°, a = {a:.4g}")
-    c = 1 / k
-    rho, _ = _rho(r, c, a, delta, [0.0, t3])
-    g = CircleGuide(delta, a, 2 * np.pi, r, c, float(rho[0]), float(rho[1]), t3, t2)
+    g = CircleGuide(delta, a, 2 * np.pi, r, k, t3, t2)
     dense = g.deviation(np.linspace(0, 2 * np.pi, 4001))
     if np.max(np.abs(dense)) > g.E * (1 + 1e-6):
         raise SynthesisError(f"δ = {np.degrees(delta):.4g}°, a = {a:.4g}: the whole-turn fit leaves its band "
@@ -598,22 +722,19 @@ def whole_turn_guiding(delta: float, a: float, line: WholeTurnLine | None = None
 
 
 def existence_region(delta: float, line: WholeTurnLine | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Closed polygon (r, a) of the existence region of Fig. 2a for break angle δ: from O along the
-    fifth-order line (2α → 0) to A, along the whole-turn line (2α = 360°) to the rotation limit, then
-    along the rotation limit (r + a = 2 to (1, 1) if it ends there, r = a) back to O. Checked for
-    δ = 150° (the iso-dwell lines 60°…330° lie inside, 2α → 360° converges onto the whole-turn line);
-    for δ = 90° :func:`circle_guiding` does not reach long dwells near that line, so it is unchecked."""
+    """Closed polygon (r, a) of the existence region of Fig. 2a for break angle δ: along the fifth-order
+    line (2α → 0) from its lower end (0, a_lo) to A = (0, 2 sin(δ/4)), along the whole-turn line
+    (2α = 360°) to the rotation limit, down the rotation limit r = min(a, 2 − a) to a = a_lo, and back to
+    (0, a_lo); a_lo = 2 sin((δ − π)/2) for δ > π (where the fifth-order line leaves r = 0), else 0.
+    Checked by designs of :func:`circle_guiding` inside it and refusals outside (tests, δ = 150°, 240°)."""
     r5, a5 = fifth_order_line(delta, 200)[:2]
     wt = whole_turn_line(delta) if line is None else line
-    r, a = list(r5), list(a5)
-    r += list(wt.r)
-    a += list(wt.a)
-    if wt.a[-1] > 1:  # ends on r + a = 2: along it to the corner (1, 1)
-        r.append(1.0)
-        a.append(1.0)
-    r.append(0.0)
-    a.append(0.0)  # along r = a back to O
-    return np.array(r), np.array(a)
+    a_lo = _frame_span(delta)[0]
+    down = np.linspace(wt.a[-1], a_lo, 60)[1:]
+    down = np.sort(np.r_[down, [1.0] if a_lo < 1 < wt.a[-1] else []])[::-1]  # keep the corner (1, 1)
+    r = np.r_[0.0, r5, wt.r, np.minimum(down, 2 - down), 0.0]
+    a = np.r_[a_lo, a5, wt.a, down, a_lo]
+    return r, a
 
 
 @dataclass(frozen=True)
@@ -638,8 +759,9 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
                   n: int = 25) -> ExistenceMap:
     """The curves of Fig. 2a for break angle δ (:class:`ExistenceMap`); the iso-dwell curves by
     continuation in a, the whole-turn line by :func:`whole_turn_line`, the region by
-    :func:`existence_region`."""
+    :func:`existence_region`; ``n`` frames a per iso-dwell curve (at most MAX_ISO_POINTS)."""
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
+    n = int(_bounded("n", n, 2, MAX_ISO_POINTS))
     line = whole_turn_line(delta)
     mu = transmission_lines()
     iso = {int(round(np.degrees(w))): _iso_dwell(delta, w, n) for w in dwells}
@@ -663,7 +785,7 @@ def _iso_dwell(delta, dwell, n):
         if g is None:
             guess = None
             continue
-        guess = (g.r, g.c, g.t3, g.t2)
+        guess = (g.r, g.k, g.t3, g.t2)
         rs.append(g.r)
         as_.append(a)
     return np.array(rs), np.array(as_)

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...synthesis.dwell_slot import DwellLaw, base_law, curved_slot_dwell
-from . import Erratum
+from . import Claim, Erratum
 
 NB = "05_dwell_curved_slot.ipynb"
 LAM, P1, P2 = 0.5, np.radians(60.0), np.radians(150.0)
@@ -25,21 +25,21 @@ def _psi_b():
     printed = -LAM * P1 / (3 * (LAM + 1))
     correct = LAM * P1 / (3 * (LAM + 1))
     psi0_printed = printed + a1 * P1**3                      # ψ(0) from (21) with the printed ψ_B
-    assert abs(correct - law.psi_dwell) < 1e-15 and abs(psi0_printed) > 0.1
-    assert abs(law.half(0.0).psi[0]) < 1e-15
-    return (f"λ = 0.5, φ1 = 60°: (21) gives ψ(0) = ψ_B + a1 φ1³ = {np.degrees(psi0_printed):.3f}° with the printed "
-            f"ψ_B = {np.degrees(printed):.3f}°, not 0; ψ_B = +{np.degrees(correct):.3f}° gives ψ(0) = 0")
+    assert abs(correct - law.psi_dwell) < 1e-15
+    return Claim(0.0, psi0_printed, correct + a1 * P1**3, 1e-12,
+                 f"λ = 0.5, φ1 = 60°: ψ(0) must be 0; (21) gives ψ(0) = ψ_B + a1 φ1³ = {np.degrees(psi0_printed):.3f}° "
+                 f"with the printed ψ_B = {np.degrees(printed):.3f}°, 0 with ψ_B = +{np.degrees(correct):.3f}°")
 
 
 def _a2():
     W = np.pi - P2
     printed = LAM / (3 * (1 - LAM) * W**2)
     correct = LAM / (3 * (LAM - 1) * W**2)
-    target = base_law(LAM, np.pi).d                       # (25): ψ_K'(π) = λ/(λ - 1)
-    assert abs(3 * correct * W**2 - target) < 1e-12 and abs(3 * printed * W**2 - target) > 1.0
+    target = base_law(LAM, np.pi).d                     # (25): ψ_K'(π) = λ/(λ - 1)
     assert abs(_law().right.coef[3] - correct) < 1e-12
-    return (f"λ = 0.5, φ2 = 150°: ψ'(π) = 3a2(π - φ2)² is {3 * printed * W**2:+.3f} with the printed a2 = "
-            f"{printed:.4f}, but (25) requires λ/(λ - 1) = {target:+.3f}: a2 = {correct:.4f}")
+    return Claim(target, 3 * printed * W**2, 3 * correct * W**2, 1e-12,
+                 f"λ = 0.5, φ2 = 150°: ψ'(π) = 3a2(π - φ2)² is {3 * printed * W**2:+.3f} with the printed a2 = "
+                 f"{printed:.4f}, but (25) requires λ/(λ - 1) = {target:+.3f}: a2 = {correct:.4f}")
 
 
 def _beta_left():
@@ -51,11 +51,10 @@ def _beta_left():
     printed0 = K0.psi[0] + c + k * P1
     printed_d1 = K0.d[1] - k                                # β'(φ1) printed; the dwell needs β' = ψ_K'(φ1)
     b = law.beta(np.array([0.0, P1]))
-    assert abs(b[0][0]) < 1e-15 and abs(b[1][1] - K0.d[1]) < 1e-12
-    assert abs(printed0) > 0.1 and abs(printed_d1 - K0.d[1]) > 0.1
-    return (f"λ = 0.5, φ1 = 60°: the printed β(0) = {np.degrees(printed0):.3f}° (must be ψ_K(0) - ψ(0) = 0) and "
+    corrected = [K0.psi[0] - c + k * P1**3, K0.d[1] - 3 * k * (P1 - P1) ** 2]
+    return Claim([0.0, K0.d[1]], [printed0, printed_d1], corrected, 1e-12, text=(f"λ = 0.5, φ1 = 60°: the printed β(0) = {np.degrees(printed0):.3f}° (must be ψ_K(0) - ψ(0) = 0) and "
             f"β'(φ1) = {printed_d1:.4f} ≠ ψ_K'(φ1) = {K0.d[1]:.4f} (the slot would not join the dwell arc "
-            f"smoothly); the corrected β gives β(0) = {b[0][0]:.1e}, β'(φ1) = {b[1][1]:.4f}")
+            f"smoothly); the corrected β gives β(0) = {b[0][0]:.1e}, β'(φ1) = {b[1][1]:.4f}"))
 
 
 def _beta_right():
@@ -65,10 +64,9 @@ def _beta_right():
     printed_dbeta_pi = Kpi.d - LAM / ((1 - LAM) * W**2) * W**2   # derivative of the printed cubic term at π
     psi_d_printed = Kpi.d - printed_dbeta_pi
     correct = law.beta(np.pi)[1][0]
-    assert abs(correct) < 1e-12 and abs(psi_d_printed - Kpi.d) > 1.0
-    return (f"λ = 0.5, φ2 = 150°: with the printed β, β'(π) = {printed_dbeta_pi:+.3f} and ψ'(π) = ψ_K'(π) - β'(π) = "
+    return Claim(Kpi.d, psi_d_printed, Kpi.d - correct, 1e-12, text=(f"λ = 0.5, φ2 = 150°: with the printed β, β'(π) = {printed_dbeta_pi:+.3f} and ψ'(π) = ψ_K'(π) - β'(π) = "
             f"{psi_d_printed:+.3f} instead of ψ_K'(π) = {Kpi.d:+.3f} (a velocity jump of "
-            f"{abs(2 * printed_dbeta_pi):.3f}·ω1 at φ = π); corrected β'(π) = {correct:.1e}")
+            f"{abs(2 * printed_dbeta_pi):.3f}·ω1 at φ = π); corrected β'(π) = {correct:.1e}"))
 
 
 def _distance():
@@ -77,9 +75,9 @@ def _distance():
     printed = np.sqrt((lOA * np.cos(0.0) - lOB) ** 2 + (lOA * np.sin(0.0)) ** 2)
     A = m.motion(0.0).points["A"].p
     true = float(np.hypot(*(A - np.array([-lOB, 0.0]))))
-    assert abs(true - (lOA + lOB)) < 1e-15 and abs(printed - true) > 0.5
-    return (f"l_OA = 0.5, l_OB = 1, φ = 0: the printed S(0) = {printed:.3f} is the pin's nearest distance, but in the "
-            f"frame of (18) (B at (-l_OB, 0)) A is farthest from B at φ = 0: |AB| = {true:.3f}")
+    correct = np.sqrt((lOA * np.cos(0.0) + lOB) ** 2 + (lOA * np.sin(0.0)) ** 2)
+    return Claim(true, printed, correct, 1e-12, text=(f"l_OA = 0.5, l_OB = 1, φ = 0: the printed S(0) = {printed:.3f} is the pin's nearest distance, but in the "
+            f"frame of (18) (B at (-l_OB, 0)) A is farthest from B at φ = 0: |AB| = {true:.3f}"))
 
 
 def _pressure_at_phi1():
@@ -88,10 +86,9 @@ def _pressure_at_phi1():
     psiK = base_law(LAM, P1).psi
     printed = np.pi / 2 - (P1 - m.law.psi_dwell)
     correct = abs(np.pi / 2 - (P1 - psiK))
-    assert abs(theta - correct) < 1e-12 and abs(printed - theta) > np.radians(5)
-    return (f"λ = 0.5, [60°, 150°]: through the slot θ(φ1) = {np.degrees(theta):.3f}°; the printed formula with "
+    return Claim(theta, printed, correct, 1e-12, text=(f"λ = 0.5, [60°, 150°]: through the slot θ(φ1) = {np.degrees(theta):.3f}°; the printed formula with "
             f"ψ1 = ψ_B = {np.degrees(m.law.psi_dwell):.3f}° gives {np.degrees(printed):.3f}°; with the angle of the "
-            f"line BA, ψ_K(φ1) = {np.degrees(psiK):.3f}°, it gives {np.degrees(correct):.3f}°")
+            f"line BA, ψ_K(φ1) = {np.degrees(psiK):.3f}°, it gives {np.degrees(correct):.3f}°"))
 
 
 def _limit_120():
@@ -142,5 +139,5 @@ ERRATA = [
             printed="a dwell over 120° makes the pressure angle large (the danger is on the dwell, θ at φ1)",
             correct="with the cubic law the worst pressure angle is at the slot's ends, set by φ1 and π - φ2, not "
                     "by the dwell's length",
-            check=_limit_120, notebook=NB),
+            check=_limit_120, notebook=NB, kind="remark"),
 ]
