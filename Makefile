@@ -28,9 +28,9 @@ lab: venv
 	    --ServerApp.root_dir=notebooks --LabApp.news_url=None \
 	    --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate --LabApp.extension_manager=readonly
 
-test: venv
+test: venv nbgrader
 	$(BIN)/python -m pytest tests -q
-	$(BIN)/python -m pytest --nbval-lax --nbval-current-env -q -p no:cacheprovider notebooks
+	$(BIN)/python -m pytest --nbval-lax --nbval-current-env -q -p no:cacheprovider notebooks assignments/source
 
 # `make book`: the course as static HTML in book/_build/html, every notebook executed at build
 # time (the execution cache is book/_build/.jupyter_cache); warnings fail the build.
@@ -61,3 +61,30 @@ bench: venv
 
 clean:
 	rm -rf $(VENV) book/_build
+
+# -- assignments (nbgrader) -------------------------------------------------------------------
+# nbgrader lives in a folder of its own, not in the course's venv, so its JupyterLab extensions stay
+# out of the students' lab; `make student` writes the student edition to assignments/release,
+# `make grade SUBMISSIONS=<folder>` grades <folder>/<student>/<id>.ipynb into assignments/graded
+# (grades.csv, feedback/<student>/<id>.html), `make book-instructor` executes the worked solutions
+# to HTML in assignments/instructor (all three folders git-ignored).
+NBGRADER_DEPS := assignments/.nbgrader-deps
+NBGRADER_PINS := nbgrader==0.9.6 alembic==1.20.1 Mako==1.4.3 RapidFuzz==3.14.6
+NBGRADER_ENV  := PATH="$(CURDIR)/$(NBGRADER_DEPS)/bin:$$PATH" PYTHONPATH="$(CURDIR)/$(NBGRADER_DEPS):$(CURDIR)"
+.PHONY: nbgrader student grade book-instructor
+nbgrader: venv
+	test -d $(NBGRADER_DEPS)/nbgrader || $(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps \
+	    --target $(NBGRADER_DEPS) $(NBGRADER_PINS)
+
+student: nbgrader
+	$(NBGRADER_ENV) $(BIN)/python assignments/course.py student
+
+grade: nbgrader
+	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade SUBMISSIONS=<folder of <student>/<id>.ipynb>"; exit 1; }
+	$(NBGRADER_ENV) $(BIN)/python assignments/course.py grade "$(SUBMISSIONS)"
+
+book-instructor: venv
+	rm -rf assignments/instructor
+	PYTHONPATH="$(CURDIR)" $(BIN)/jupyter nbconvert --to html --execute --output-dir assignments/instructor \
+	    --ExecutePreprocessor.timeout=120 assignments/source/*/*.ipynb
+	@echo "worked solutions: assignments/instructor/<id>.html"

@@ -203,13 +203,12 @@ def test_circle_guiding_is_valid_or_a_named_error(delta, a, dwell):
     assert len(band_touches(dev, g.E, rtol=1e-4)) >= 5
 
 
-def test_widgets_exercises_and_errata():
+def test_widgets_and_errata():
     import matplotlib
 
     matplotlib.use("Agg")
     from mechlab.course.errata import table
     from mechlab.course.errata.seed001_chebyshev import ERRATA
-    from mechlab.course.exercises import check, solution
     from mechlab.widgets.chebyshev import lambda_explorer, mchv1_explorer
 
     ex = lambda_explorer()
@@ -224,9 +223,6 @@ def test_widgets_exercises_and_errata():
     assert "transmission angle D-E-F reaches 28.8°, outside 30°…150°" in six.message
     six.sliders["mu_min"].value = 0.0  # no limit: the design is shown
     assert six.message == ""
-    for key in ("06.1", "06.2", "06.3", "07.1", "07.2", "07.3"):
-        assert check(key, solution(key), quiet=True)
-        assert not check(key, 1.1 * solution(key) + 0.01, quiet=True)
     for e in ERRATA:
         assert e.source == "001" and e.evidence()
     assert table(notebook="06_chebyshev_dwell_synthesis.ipynb").count("\n| 001") == 4

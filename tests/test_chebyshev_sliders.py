@@ -12,7 +12,6 @@ from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
 from mechlab.mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
 from mechlab.synthesis.lambda_sliders import mchv2, mchv2_far_position, mchv2_stroke, mchv5, slider_invariants, slider_report, slider_rise
 from mechlab.errors import DimensionError, MechanismError
-from mechlab.course.exercises import check, solution
 from mechlab.analysis.motion_laws import rise_invariants
 
 DEG = np.pi / 180
@@ -289,10 +288,6 @@ def test_drawings_highlight_the_dwell(guide, line):
         assert type(d).__module__ == "mechlab.draw.chebyshev_sliders"
 
 
-def test_exercises():
-    for key in ("07.4", "07.5"):
-        assert check(key, solution(key), quiet=True)
-        assert not check(key, 1.01 * solution(key), quiet=True)
 
 
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])

@@ -263,16 +263,6 @@ def test_errata_of_section_3_hold():
     assert table(notebook="05_dwell_curved_slot.ipynb").count("\n") == len(chapter) + 1
 
 
-def test_exercises_have_independent_answers():
-    from mechlab.course.exercises import check, solution
-
-    lam, p1 = 0.4, 70 * DEG
-    assert solution("05.1") == pytest.approx(np.degrees(lam * p1 / (3 * (lam + 1))), rel=1e-12)
-    assert solution("05.2") == pytest.approx(np.degrees(abs(np.pi / 2 - (p1 - base_law(lam, p1).psi))), rel=1e-12)
-    assert solution("05.3") == pytest.approx(2 * 0.6 / 1.6, rel=1e-12)
-    assert check("05.3", 0.75, quiet=True) and not check("05.3", 0.6, quiet=True)
-
-
 def test_drawing_moves_slot_with_link():
     import matplotlib.pyplot as plt
 

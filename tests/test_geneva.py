@@ -440,18 +440,6 @@ def test_impact_detection_and_comparison():
 
 
 # -- exercises and errata -------------------------------------------------------------------------
-def test_exercises_08():
-    from mechlab.course.exercises import check, solution
-    assert solution("08.1") == pytest.approx(60.0)
-    assert solution("08.2") == pytest.approx((0.7, 0.3))
-    assert solution("08.3") == pytest.approx(10.0)
-    rho0 = np.hypot(20.0, 50.0 * np.sin(np.pi / 6))
-    assert solution("08.4") == pytest.approx(np.degrees(np.arccos(20.0 / rho0)))
-    assert solution("08.6") == "soft"
-    for key in ("08.1", "08.2", "08.3", "08.4", "08.5", "08.6"):
-        assert check(key, solution(key), quiet=True)
-        assert not check(key, ..., quiet=True)
-    assert not check("08.1", 59.0, quiet=True) and not check("08.6", "hard", quiet=True)
 
 
 def test_errata_seed004_geneva():

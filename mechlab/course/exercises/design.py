@@ -1,0 +1,326 @@
+"""Design and code checks: run a student's design (or function) through mechlab and report each
+specification met or missed, with the numbers ("pressure angle 52.3° > 45° at φ = 12°").
+
+Every checker returns a :class:`DesignReport` (truthy when every specification is met; ``require``
+raises :class:`~mechlab.course.exercises.feedback.NotYet` with the whole report). Angles are asked and
+reported in degrees; lengths in the design's own unit.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Callable, Iterable, Sequence
+
+import numpy as np
+
+from ...errors import MechanismError
+from .feedback import NotYet
+
+_TEST = {"<": np.less, "≤": np.less_equal, ">": np.greater, "≥": np.greater_equal}
+_NEGATION = {"<": "≥", "≤": ">", ">": "≤", "≥": "<"}
+
+
+@dataclass(frozen=True)
+class Spec:
+    """One specification: ``value op limit`` (op one of < ≤ > ≥), or ``|value − limit| ≤ tol`` when ``op``
+    is "≈"; ``where`` says where the value was measured (e.g. "φ = 12°")."""
+
+    name: str
+    value: float
+    op: str
+    limit: float
+    unit: str = ""
+    where: str = ""
+    tol: float = 0.0
+
+    @property
+    def met(self) -> bool:
+        if not np.isfinite(self.value):
+            return False
+        if self.op == "≈":
+            return abs(self.value - self.limit) <= self.tol
+        return bool(_TEST[self.op](self.value, self.limit))
+
+    def __str__(self) -> str:
+        u = self.unit
+        at = f" at {self.where}" if self.where else ""
+        if self.op == "≈":
+            rel = "within" if self.met else "outside"
+            return (f"{'✓' if self.met else '✗'} {self.name} {self.value:.4g}{u}{at}: {rel} "
+                    f"{self.limit:.4g}{u} ± {self.tol:.2g}{u}")
+        op = self.op if self.met else _NEGATION[self.op]
+        return f"{'✓' if self.met else '✗'} {self.name} {self.value:.4g}{u} {op} {self.limit:.4g}{u}{at}"
+
+
+@dataclass(frozen=True)
+class DesignReport:
+    """The specifications of one design, each met or missed; ``problem`` is set when the design could
+    not be examined at all (wrong type, not buildable, a function that raised)."""
+
+    title: str
+    specs: tuple[Spec, ...] = ()
+    problem: str = ""
+
+    @property
+    def ok(self) -> bool:
+        return not self.problem and all(s.met for s in self.specs)
+
+    def __bool__(self) -> bool:
+        return self.ok
+
+    def __repr__(self) -> str:
+        head = f"{self.title}: {'every specification met ✓' if self.ok else 'not yet ✗'}"
+        lines = [f"  {s}" for s in self.specs] + ([f"  ✗ {self.problem}"] if self.problem else [])
+        return "\n".join([head, *lines])
+
+    def require(self) -> None:
+        """Print the report if every specification is met, else raise NotYet with it."""
+        if not self.ok:
+            raise NotYet(repr(self))
+        print(repr(self))
+
+
+def _deg(x) -> float:
+    return float(np.degrees(x))
+
+
+def _kind(obj, cls, title: str, what: str) -> DesignReport | None:
+    if obj is None or obj is Ellipsis:
+        return DesignReport(title, problem=f"no design yet: build {what}")
+    if not isinstance(obj, cls):
+        return DesignReport(title, problem=f"expected {what}, got {type(obj).__name__}")
+    return None
+
+
+def _full_turn(mech, cls, title: str, what: str):
+    """The motion over one crank turn, or the report of why there is none (no design, wrong type, no full turn)."""
+    if (bad := _kind(mech, cls, title, what)) is not None:
+        return bad
+    try:
+        return mech.motion(mech.turn(3601))
+    except MechanismError as err:
+        return DesignReport(title, problem=f"the crank does not turn fully: {err}")
+
+
+def _turn(n: int = 3601) -> np.ndarray:
+    return np.linspace(0.0, 2 * np.pi, n)
+
+
+def time_ratio(psi: np.ndarray, phi: np.ndarray) -> float:
+    """K = (crank angle of the slower stroke)/(of the faster) between the output's extremes over one turn."""
+    i, j = int(np.argmin(psi)), int(np.argmax(psi))
+    forward = (phi[j] - phi[i]) % (2 * np.pi)
+    return float(max(forward, 2 * np.pi - forward) / min(forward, 2 * np.pi - forward))
+
+
+def fourbar_design(fb, *, swing: float | None = None, swing_tol: float = 0.5, min_transmission: float | None = None,
+                   time_ratio_at_least: float | None = None) -> DesignReport:
+    """A crank-rocker four-bar: the crank turns fully; rocker swing ``swing`` ± ``swing_tol`` (degrees);
+    transmission angle μ within [min_transmission, 180° − min_transmission] over the turn; time ratio
+    K ≥ ``time_ratio_at_least``."""
+    from ...mechanisms.fourbar import FourBar
+
+    mo = _full_turn(fb, FourBar, "four-bar design", "a mechlab FourBar(crank, coupler, rocker, ground)")
+    if isinstance(mo, DesignReport):
+        return mo
+    specs = []
+    if swing is not None:
+        specs.append(Spec("rocker swing", _deg(np.ptp(mo.psi)), "≈", swing, "°", tol=swing_tol))
+    if min_transmission is not None:
+        dev = np.minimum(mo.transmission, np.pi - mo.transmission)
+        k = int(np.argmin(dev))
+        specs.append(Spec("smallest transmission angle min(μ, 180° − μ)", _deg(dev[k]), "≥", min_transmission,
+                          "°", f"φ = {_deg(mo.phi[k]):.0f}°"))
+    if time_ratio_at_least is not None:
+        specs.append(Spec("time ratio K", time_ratio(mo.psi, mo.phi), "≥", time_ratio_at_least))
+    return DesignReport("four-bar design", tuple(specs))
+
+
+def output_design(mech, *, min_swing: float | None = None, max_velocity: float | None = None) -> DesignReport:
+    """Any mechanism whose crank turns fully and whose output is an angle (a slotted link, a four-bar, …):
+    swing of the output over a turn ≥ ``min_swing`` (degrees); largest |ψ′| ≤ ``max_velocity``."""
+    from ...mechanisms.base import Mechanism
+
+    mo = _full_turn(mech, Mechanism, "output design", "a mechlab mechanism")
+    if isinstance(mo, DesignReport):
+        return mo
+    specs = []
+    if min_swing is not None:
+        specs.append(Spec("output swing", _deg(np.ptp(mo.psi)), "≥", min_swing, "°"))
+    if max_velocity is not None:
+        k = int(np.argmax(np.abs(mo.dpsi)))
+        specs.append(Spec("largest |ψ′|", float(abs(mo.dpsi[k])), "≤", max_velocity, "",
+                          f"φ = {_deg(mo.phi[k]):.0f}°"))
+    return DesignReport("output design", tuple(specs))
+
+
+def guide_design(guide, *, min_dwell: float, max_band: float, min_crank: float) -> DesignReport:
+    """A lambda mechanism's circle-guiding design (``circle_guiding``, Kinitsky, 1994): dwell 2α ≥ ``min_dwell``
+    (degrees), half-width E of the band around the arc ≤ ``max_band``, crank r ≥ ``min_crank`` (units of l)."""
+    from ...synthesis.lambda_guiding import CircleGuide
+
+    title = "circle-guiding design"
+    if (bad := _kind(guide, CircleGuide, title, "circle_guiding(delta, a, dwell)")) is not None:
+        return bad
+    return DesignReport(title, (Spec("dwell 2α", _deg(guide.dwell), "≥", min_dwell, "°"),
+                                Spec("band half-width E", guide.E, "≤", max_band, " l"),
+                                Spec("crank r", guide.r, "≥", min_crank, " l")))
+
+
+def dwell_slot_design(mech, *, min_dwell: float, max_pressure: float, dxf: str | os.PathLike | None = None,
+                      n: int = 721) -> DesignReport:
+    """A curved-slot dwell mechanism (Zinchenko et al., 2013, §3): dwell φ2 − φ1 ≥ ``min_dwell`` (degrees),
+    the largest pressure angle over the turn < ``max_pressure`` (degrees), and — when ``dxf`` is given — that
+    file a readable DXF whose centre line (layer CENTRE) lies within 1e-3 pivot distances of the designed
+    slot's centre line."""
+    from ...synthesis.dwell_slot import DwellSlotMechanism
+
+    title = "curved-slot dwell design"
+    if (bad := _kind(mech, DwellSlotMechanism, title, "curved_slot_dwell(lam, phi1, phi2, ...)")) is not None:
+        return bad
+    theta, at = mech.max_pressure_angle(n)
+    specs = [Spec("dwell φ2 − φ1", _deg(mech.phi2 - mech.phi1), "≥", min_dwell, "°"),
+             Spec("pressure angle", _deg(theta), "<", max_pressure, "°", f"φ = {_deg(at):.0f}°")]
+    problem = ""
+    if dxf is not None:
+        gap, problem = _dxf_gap(mech, dxf)
+        if not problem:
+            specs.append(Spec("DXF centre line's distance from the designed slot", gap, "≤",
+                              1e-3 * mech.pivot_distance))
+    return DesignReport(title, tuple(specs), problem)
+
+
+def _dxf_gap(mech, path) -> tuple[float, str]:
+    """Largest distance from the designed slot's centre line to the DXF's (layer CENTRE), or why none."""
+    import ezdxf
+
+    where = repr(os.fspath(path))
+    if not os.path.isfile(path):
+        return np.inf, f"no DXF file at {where}: write it with mechlab.synthesis.slot_export.write_dxf"
+    try:
+        doc = ezdxf.readfile(path)
+    except (OSError, ezdxf.DXFError) as err:
+        return np.inf, f"{where} is not a readable DXF: {err}"
+    pts = [np.asarray(list(e.vertices()))[:, :2] for e in doc.modelspace().query("LWPOLYLINE POLYLINE")
+           if e.dxf.layer == "CENTRE"]
+    if not pts:
+        return np.inf, f"{where} has no polyline on layer CENTRE"
+    got, want = np.concatenate(pts), mech.slot_points(401)
+    gap = float(np.min(np.hypot(*(want[:, None, :] - got[None, :, :]).transpose(2, 0, 1)), axis=1).max())
+    if gap > 1e-3 * mech.pivot_distance:
+        return gap, f"the DXF's centre line is {gap:.3g} away from this design's slot: export the design you checked"
+    return gap, ""
+
+
+def sixbar_design(mech, dwell: float, *, time_ratio: float, swing: float, time_ratio_tol: float = 0.02,
+                  swing_tol: float = 0.5, max_residual: float = 0.5) -> DesignReport:
+    """A dwell six-bar (Kinitsky, 1994) simulated over a turn (``lambda_sixbars.report``): time ratio K
+    ± ``time_ratio_tol``, swing ± ``swing_tol`` (degrees), residual motion over the dwell
+    ``dwell`` (degrees, centred on φ = 180°) ≤ ``max_residual`` degrees."""
+    from ...mechanisms.lambda_sixbars import LambdaRockerSixBar
+    from ...synthesis.lambda_sixbars import report
+
+    title = "dwell six-bar design"
+    if (bad := _kind(mech, LambdaRockerSixBar, title, "a six-bar from mchv1(guide, K, swing)")) is not None:
+        return bad
+    rep = report(mech, np.radians(dwell))
+    return DesignReport(title, (
+        Spec("time ratio K", rep.K, "≈", time_ratio, tol=time_ratio_tol),
+        Spec("swing", _deg(rep.swing), "≈", swing, "°", tol=swing_tol),
+        Spec(f"residual motion over the {dwell:g}° dwell", _deg(rep.residual), "≤", max_residual, "°"),
+    ))
+
+
+def motor_specs(motor_power: float, drive, catalogue: Sequence[float] | None = None) -> tuple[Spec, ...]:
+    """The chosen motor (W) against a :class:`~mechlab.kinetostatics.drive.Drive`: it covers the nominal power,
+    and — with a ``catalogue`` — it is the smallest catalogue size that does."""
+    specs = [Spec(f"motor power vs the nominal power ({drive.governing} governs)", float(motor_power), "≥",
+                  drive.nominal_power, " W")]
+    if catalogue is not None:
+        smallest = min((p for p in catalogue if p >= drive.nominal_power), default=np.inf)
+        specs.append(Spec("motor power vs the smallest catalogue motor that suffices", float(motor_power), "≤",
+                          smallest, " W"))
+    return tuple(specs)
+
+
+def geneva_design(geneva, *, rpm: float, inertia: float, index_time: float, motor_power: float,
+                  min_rpm: float | None = None, min_dwell_fraction: float | None = None,
+                  catalogue: Sequence[float] | None = None, overload: float = 2.0,
+                  impacts: Sequence[str] | None = None) -> DesignReport:
+    """A Geneva drive (planar or spherical) at ``rpm`` indexing ``inertia`` (kg·m²): at least ``min_rpm``
+    cycles a minute; a share ≥ ``min_dwell_fraction`` of the turn at rest; the wheel's motion takes at most
+    ``index_time`` seconds; the motor of ``motor_power`` W covers the nominal power of
+    :func:`mechlab.kinetostatics.geneva.drive` (rms torque, peak/overload) and is the smallest of
+    ``catalogue`` that does (:func:`motor_specs`); ``impacts`` lists the admissible kinds at entry ("none",
+    "soft", "hard")."""
+    from ...kinetostatics.geneva import drive
+    from ...mechanisms.geneva import PlanarGeneva
+    from ...mechanisms.spherical_geneva import SphericalGeneva
+
+    title = "Geneva drive design"
+    if (bad := _kind(geneva, (PlanarGeneva, SphericalGeneva), title, "an ExternalGeneva, InternalGeneva or "
+                     "SphericalGeneva")) is not None:
+        return bad
+    omega1 = float(rpm) * 2 * np.pi / 60
+    d = drive(geneva, inertia=inertia, omega1=omega1, overload=overload, n=2001)
+    specs = [Spec("cycles per minute", float(rpm), "≥", min_rpm)] if min_rpm is not None else []
+    if min_dwell_fraction is not None:
+        specs.append(Spec("dwell fraction", geneva.dwell_fraction, "≥", min_dwell_fraction))
+    specs += [Spec("index time", 2 * geneva.engagement_half_angle / omega1, "≤", index_time, " s"),
+              *motor_specs(motor_power, d, catalogue)]
+    problem = ""
+    if impacts is not None and (kind := geneva.impacts().kind) not in impacts:
+        problem = f"impact at entry is {kind!r}, admissible: {', '.join(impacts)}"
+    return DesignReport(title, tuple(specs), problem)
+
+
+def press_design(k, motor_power: float, *, stroke: float, stroke_tol: float, max_pressure: float,
+                 catalogue: Sequence[float] | None = None, overload: float = 2.0) -> DesignReport:
+    """A press (``mechlab.kinetostatics.press``, metres): slider stroke ``stroke`` ± ``stroke_tol``; largest
+    pressure angle at the slider < ``max_pressure`` (degrees); ``motor_power`` (W) covers the nominal power
+    of the course's drive rule (:func:`motor_specs`)."""
+    from ...kinetostatics.drive import drive
+    from ...kinetostatics.machines import Kinetostatics
+
+    title = "press design"
+    if (bad := _kind(k, Kinetostatics, title, "a press from mechlab.forces.press(crank, rod, ...)")) is not None:
+        return bad
+    mo = k.mechanism.motion(_turn())
+    r = k.forces(k.turn(721))
+    d = drive(r.torque, r.phi, r.omega1, overload=overload)
+    i = int(np.argmax(mo.pressure_angle))
+    return DesignReport(title, (
+        Spec("stroke", float(np.ptp(mo.s)), "≈", stroke, " m", tol=stroke_tol),
+        Spec("pressure angle", _deg(mo.pressure_angle[i]), "<", max_pressure, "°", f"φ = {_deg(mo.phi[i]):.0f}°"),
+        *motor_specs(motor_power, d, catalogue),
+    ))
+
+
+def function_check(fn: Callable, reference: Callable, cases: Iterable[tuple], *, name: str,
+                   rtol: float = 1e-6, atol: float = 1e-9) -> DesignReport:
+    """Call the student's ``fn(*case)`` and mechlab's ``reference(*case)`` on every case (e.g. random
+    geometries); report how many agree and the first that does not, with its inputs and both values."""
+    title = f"function {name}"
+    if not callable(fn):
+        return DesignReport(title, problem=f"expected a function, got {type(fn).__name__}")
+    cases = list(cases)
+    for n, case in enumerate(cases):
+        want = np.asarray(reference(*case), dtype=float)
+        try:
+            got = np.asarray(fn(*case), dtype=float)
+        except Exception as err:  # the student's code: any failure is reported, not raised
+            return DesignReport(title, problem=f"{name}{_args(case)} raised {type(err).__name__}: {err}")
+        if got.shape != want.shape:
+            return DesignReport(title, problem=f"{name}{_args(case)} returned shape {got.shape}, expected "
+                                               f"{want.shape}")
+        if not np.allclose(got, want, rtol=rtol, atol=atol):
+            return DesignReport(title, (Spec("cases that agree with mechlab", n, "≥", len(cases)),),
+                                problem=f"{name}{_args(case)} = {np.array2string(got, precision=5)}, mechlab gives "
+                                        f"{np.array2string(want, precision=5)}")
+    return DesignReport(title, (Spec(f"cases that agree with mechlab (rtol {rtol:g})", len(cases), "≥",
+                                     len(cases)),))
+
+
+def _args(case: tuple) -> str:
+    return "(" + ", ".join(f"{c:.4g}" if isinstance(c, float) else repr(c) for c in case) + ")"

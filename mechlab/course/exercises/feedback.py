@@ -1,0 +1,154 @@
+"""Feedback on a computed answer: textbook tolerance, "give more digits", and the usual slips named.
+
+The expected value is passed in by whoever grades (an nbgrader hidden test); this module stores
+no answer. A :class:`Verdict` shows as one line and is truthy when the answer is right;
+:meth:`Verdict.require` raises :class:`NotYet`, whose notebook traceback is the message alone, so a
+grader's feedback never shows the test's source (where the expected value is computed).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from numbers import Real
+
+import numpy as np
+
+#: A textbook answer: three significant figures.
+SIGNIFICANT = 3
+#: Within this relative error an answer is "close": the method is right, the digits are too few.
+CLOSE = 0.01
+
+# unit asked -> (factor the slip multiplies the right value by, what the student gave, how to fix it)
+UNIT_SLIPS = {
+    "deg": [(math.pi / 180, "radians", "the answer is asked in degrees: convert with np.degrees")],
+    "rad": [(180 / math.pi, "degrees", "the answer is asked in radians: convert with np.radians")],
+    "rad/s": [(180 / math.pi, "deg/s", "the answer is asked in rad/s: convert with np.radians"),
+              (30 / math.pi, "rpm", "the answer is asked in rad/s: ω = 2π·n/60")],
+    "mm": [(1e-3, "metres", "the answer is asked in mm: multiply by 1000")],
+    "m": [(1e3, "millimetres", "the answer is asked in metres: divide by 1000")],
+    "N·m": [(1e3, "N·mm", "the answer is asked in N·m: divide by 1000")],
+    "W": [(1e-3, "kW", "the answer is asked in watts: multiply by 1000")],
+    "s": [(1e3, "ms", "the answer is asked in seconds: divide by 1000")],
+}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The outcome of a check: ``ok``, a ``kind`` ("correct", "close", "units", "sign", "alternative",
+    "choice", "wrong", "missing", "form") and the one-line ``message`` a student reads."""
+
+    ok: bool
+    kind: str
+    message: str
+
+    def __bool__(self) -> bool:
+        return self.ok
+
+    def __repr__(self) -> str:
+        return self.message
+
+    def require(self) -> None:
+        """Print the message if the answer is right, else raise :class:`NotYet` with it (for graded cells)."""
+        if not self.ok:
+            raise NotYet(self.message)
+        print(self.message)
+
+
+class NotYet(AssertionError):
+    """A graded check that failed. In a notebook its traceback is the message alone (IPython's
+    ``_render_traceback_``), so the test's source — the expected value — is not shown."""
+
+    def _render_traceback_(self) -> list[str]:
+        return [str(self)]
+
+
+def tolerance(expected: float, significant: int = SIGNIFICANT) -> float:
+    """Half a unit in the last of ``significant`` figures of ``expected``: a correctly rounded answer passes."""
+    if expected == 0:
+        return 0.5 * 10.0 ** (-significant)
+    return 0.5 * 10.0 ** (math.floor(math.log10(abs(expected))) - significant + 1)
+
+
+def _parsed(answer, name: str, unit: str) -> float | Verdict:
+    """The answer as a float, or the verdict on why it is none (no answer yet, not one finite number)."""
+    if answer is None or answer is Ellipsis:
+        return Verdict(False, "missing", f"✗ {name}: no answer yet — replace ... with your value"
+                                         f"{' in ' + unit if unit else ''}.")
+    a = _number(answer)
+    if a is None:
+        return Verdict(False, "form", f"✗ {name}: expected one finite number{' in ' + unit if unit else ''}, "
+                                      f"got {answer!r} ({type(answer).__name__}).")
+    return a
+
+
+def _number(answer) -> float | None:
+    if isinstance(answer, bool) or not isinstance(answer, (Real, np.number)) and not (
+            isinstance(answer, np.ndarray) and answer.size == 1):
+        return None
+    x = float(np.asarray(answer).reshape(()))
+    return x if math.isfinite(x) else None
+
+
+def _near(a: float, b: float, rel: float = CLOSE) -> bool:
+    return abs(a - b) <= rel * abs(b) + 1e-12
+
+
+def check(answer, expected: float, *, name: str = "answer", unit: str = "", significant: int = SIGNIFICANT,
+          alternatives: dict[str, float] | None = None, hint: str = "") -> Verdict:
+    """Compare a numeric ``answer`` with ``expected`` to ``significant`` figures and name the slip if any.
+
+    Tried in order: right to the textbook tolerance (:func:`tolerance`); within 1 % ("close — give more
+    digits"); the right value in another unit (``UNIT_SLIPS[unit]``: degrees for radians and back, m for
+    mm, rpm for rad/s, …); the right magnitude with the sign flipped; one of ``alternatives`` (name →
+    the value that slip gives, e.g. ``{"the other assembly (kc = −1)": …}``). Otherwise "not yet" and
+    ``hint``. No message contains ``expected``.
+    """
+    u = f" {unit}" if unit else ""
+    a = _parsed(answer, name, unit)
+    if isinstance(a, Verdict):
+        return a
+    e = float(expected)
+    tol = tolerance(e, significant)
+    if abs(a - e) <= tol:
+        return Verdict(True, "correct", f"✓ {name} = {a:.4g}{u}: right to {significant} significant figures.")
+    if _near(a, e):
+        return Verdict(False, "close", f"≈ {name} = {a:.4g}{u} is within 1 % but not within {significant} "
+                                       f"significant figures (±{tol:.2g}{u}): close — give more digits.")
+    for factor, gave, fix in UNIT_SLIPS.get(unit, []):
+        if _near(a, e * factor):
+            return Verdict(False, "units", f"✗ {name} = {a:.4g} is the right value in {gave}: {fix}.")
+    if e != 0 and _near(a, -e):
+        return Verdict(False, "sign", f"✗ {name} = {a:.4g}{u}: the size is right, the sign is flipped — check the "
+                                      f"sign convention (which sense is positive).")
+    for slip, value in (alternatives or {}).items():
+        if _near(a, float(value)):
+            return Verdict(False, "alternative",
+                           f"✗ {name} = {a:.4g}{u} is what {slip} gives: {hint or 'reread the question'}.")
+    more = f" Hint: {hint}" if hint else ""
+    return Verdict(False, "wrong", f"✗ {name} = {a:.4g}{u}: not yet (more than 1 % off, and not a unit or sign "
+                                   f"slip).{more}")
+
+
+def check_choice(answer, expected: str, options: dict[str, str], *, name: str = "choice",
+                 hints: dict[str, str] | None = None) -> Verdict:
+    """Check a multiple-choice ``answer`` (a key of ``options``, case and spaces ignored); a wrong key gets
+    its own hint from ``hints`` when there is one."""
+    if answer is None or answer is Ellipsis:
+        return Verdict(False, "missing", f"✗ {name}: no choice yet — one of {', '.join(map(repr, options))}.")
+    key = str(answer).strip().lower()
+    if key not in options:
+        return Verdict(False, "form", f"✗ {name}: {answer!r} is not one of {', '.join(map(repr, options))}.")
+    if key == expected:
+        return Verdict(True, "correct", f"✓ {name}: ({key}) {options[key]}.")
+    why = (hints or {}).get(key, "reread the question and test your reasoning with the explorer")
+    return Verdict(False, "choice", f"✗ {name}: ({key}) is not it — {why}.")
+
+
+def check_form(answer, *, name: str = "answer", unit: str = "") -> Verdict:
+    """What a student can be told before grading: is ``answer`` one finite number? (No expected value.)"""
+    a = _parsed(answer, name, unit)
+    if isinstance(a, Verdict):
+        return a
+    return Verdict(True, "form", f"{name} = {a:.6g}{' ' + unit if unit else ''} — a number; it is graded to "
+                                 f"{SIGNIFICANT} significant figures when you submit.")

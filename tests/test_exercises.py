@@ -1,0 +1,202 @@
+"""mechlab.course.exercises: the feedback of `check` (each slip recognised with its slip), the design and code
+checks (each with a passing and a failing design), and the assignments' shape (no answer in the package)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import mechlab as ml
+from mechlab.course import exercises as ex
+from mechlab.course.exercises import (NotYet, check, check_choice, check_form, dwell_slot_design, fourbar_design,
+                                      function_check, geneva_design, guide_design, output_design, press_design,
+                                      sixbar_design, tolerance)
+from mechlab.synthesis.slot_export import write_dxf
+
+SOURCE = Path(__file__).resolve().parents[1] / "assignments" / "source"
+CAT = [90, 120, 180, 250, 370, 550, 750, 1100, 1500, 2200]
+
+
+# -- check: tolerance, close, slips -----------------------------------------------------------------------
+def test_textbook_tolerance_is_three_significant_figures_and_said():
+    assert tolerance(2 / 3) == pytest.approx(5e-4) and tolerance(57.4) == pytest.approx(0.05)
+    v = check(0.667, 2 / 3)
+    assert v and v.kind == "correct" and "3 significant figures" in repr(v)
+    assert check(57.40, 150 * np.sin(np.pi / 8), unit="mm")          # 57.4025 rounded
+    assert not check(0.6685, 2 / 3)                                   # beyond half a unit in the 3rd figure
+
+
+def test_close_answers_are_asked_for_more_digits():
+    v = check(0.67, 2 / 3)
+    assert not v and v.kind == "close" and "give more digits" in v.message and "±0.0005" in v.message
+    assert check(0.6617, 2 / 3).kind == "close" and check(0.6567, 2 / 3).kind == "wrong"   # 0.75 %, 1.5 % off
+
+
+@pytest.mark.parametrize("unit, right, slipped, words", [
+    ("rad", 0.6, np.degrees(0.6), "degrees"),
+    ("deg", 34.38, np.radians(34.38), "radians"),
+    ("mm", 57.4, 0.0574, "metres"),
+    ("m", 0.25, 250.0, "millimetres"),
+    ("rad/s", 9.42, 9.42 * 30 / np.pi, "rpm"),
+    ("rad/s", 9.42, np.degrees(9.42), "deg/s"),
+    ("N·m", 85.7, 85700.0, "N·mm"),
+    ("W", 225.0, 0.225, "kW"),
+])
+def test_unit_slips_are_named(unit, right, slipped, words):
+    v = check(slipped, right, unit=unit)
+    assert not v and v.kind == "units" and words in v.message
+    assert check(right, right, unit=unit)
+
+
+def test_flipped_sign_and_other_assembly_are_named_without_the_answer():
+    v = check(10.0, -10.0)
+    assert v.kind == "sign" and "sign" in v.message and "-10" not in v.message
+    other = ml.FourBar(1, 3, 3, 4, -1).motion(np.pi / 2).dpsi[0]
+    right = ml.FourBar(1, 3, 3, 4, 1).motion(np.pi / 2).dpsi[0]
+    v = check(other, right, alternatives={"the other assembly (−1)": other}, hint="use assembly=+1")
+    assert v.kind == "alternative" and "the other assembly" in v.message and "use assembly=+1" in v.message
+    assert f"{right:.3g}" not in v.message
+    assert check(123.0, 1.0, hint="look at Table 2").message.endswith("Hint: look at Table 2")
+
+
+def test_missing_and_malformed_answers():
+    assert check(..., 1.0).kind == "missing" and check(None, 1.0).kind == "missing"
+    for bad in ("12", [1.0, 2.0], np.nan, True):
+        assert check(bad, 1.0).kind == "form"
+    assert check(np.float64(1.0), 1.0) and check(np.array([1.0]), 1.0) and check(0.0004, 0.0)
+
+
+def test_a_verdict_is_one_line_and_can_be_asserted():
+    v = check(0.6, 0.6, name="λ")
+    assert "\n" not in repr(v) and bool(v) is True
+    with pytest.raises(NotYet, match="give more digits") as err:
+        check(0.67, 2 / 3).require()
+    assert err.value._render_traceback_() == [str(err.value)]      # the notebook shows the message alone
+    assert isinstance(err.value, AssertionError)
+
+
+def test_choice_and_form():
+    opts = {"a": "grows", "b": "stays", "c": "shrinks"}
+    assert check_choice(" A ", "a", opts)
+    v = check_choice("c", "a", opts, hints={"c": "a longer crank moves A further"})
+    assert v.kind == "choice" and "a longer crank" in v.message
+    assert check_choice("d", "a", opts).kind == "form" and check_choice(..., "a", opts).kind == "missing"
+    assert check_form(1.5, unit="mm") and not check_form("x") and not check_form(...)
+
+
+def test_the_package_holds_no_answer():
+    assert not hasattr(ex, "solution") and not hasattr(ex, "get")
+    names = {p.stem for p in Path(ex.__file__).parent.glob("*.py")}
+    assert names == {"__init__", "feedback", "design"}
+
+
+# -- design and code checks: one passing, one failing design each --------------------------------------------
+def test_fourbar_design():
+    good = fourbar_design(ml.FourBar(1.12, 3.5, 3.0, 4.0), swing=45, min_transmission=40)
+    assert good and "✓ rocker swing 44.9" in repr(good)
+    bad = fourbar_design(ml.FourBar(1.0, 3.5, 3.0, 4.0), swing=45, min_transmission=56, time_ratio_at_least=1.1)
+    assert not bad and [s.met for s in bad.specs] == [False, False, False]
+    assert "✗ smallest transmission angle min(μ, 180° − μ) 54.31° < 56° at φ = 0°" in repr(bad)
+    assert "does not turn fully" in fourbar_design(ml.FourBar(2, 4, 3.5, 1.5)).problem
+    assert not fourbar_design(...) and "expected a mechlab FourBar" in fourbar_design(1.0).problem
+
+
+def test_output_design():
+    assert output_design(ml.SlottedLink(0.45, 1.0), min_swing=50, max_velocity=1.0)
+    bad = output_design(ml.SlottedLink(0.6, 1.0), min_swing=50, max_velocity=1.0)
+    assert not bad and "largest |ψ′| 1.5 > 1" in repr(bad)          # λ/(1 − λ) = 1.5
+
+
+def test_guide_design():
+    good = ml.circle_guiding(np.radians(150), 0.9, np.radians(110))
+    assert guide_design(good, min_dwell=110, max_band=5e-5, min_crank=0.2)
+    bad = guide_design(ml.circle_guiding(np.radians(150), 0.9, np.radians(120)), min_dwell=110, max_band=5e-5,
+                       min_crank=0.2)
+    assert not bad and "✗ band half-width E" in repr(bad)
+
+
+def test_dwell_slot_design_with_its_dxf(tmp_path):
+    design = ml.curved_slot_dwell(0.3, np.radians(59), np.radians(149.5), transition="quintic")
+    path = tmp_path / "slot.dxf"
+    report = dwell_slot_design(design, min_dwell=90, max_pressure=70, dxf=path)
+    assert not report and "no DXF file" in report.problem
+    write_dxf(design, path)
+    assert dwell_slot_design(design, min_dwell=90, max_pressure=70, dxf=path)
+    bad = dwell_slot_design(design, min_dwell=90, max_pressure=45, dxf=path)
+    assert not bad and "✗ pressure angle 67.92° ≥ 45° at φ = 180°" in repr(bad)
+    other = ml.curved_slot_dwell(0.5, np.radians(40), np.radians(140))
+    assert "export the design you checked" in dwell_slot_design(other, min_dwell=90, max_pressure=90, dxf=path).problem
+
+
+def test_sixbar_design():
+    guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    assert sixbar_design(ml.mchv1(guide, 1.25, np.radians(30), side=-1), 120, time_ratio=1.25, swing=30)
+    bad = sixbar_design(ml.mchv1(guide, 1.0, np.radians(20)), 120, time_ratio=1.25, swing=30)
+    assert not bad and [s.met for s in bad.specs] == [False, False, True]
+
+
+def test_geneva_design():
+    from mechlab.kinetostatics.geneva import drive
+
+    g = ml.ExternalGeneva(6, 0.2)
+    need = drive(g, inertia=0.8, omega1=85 * np.pi / 30, n=2001).nominal_power
+    motor = min(p for p in CAT if p >= need)
+    assert geneva_design(g, rpm=85, inertia=0.8, index_time=0.25, motor_power=motor, min_rpm=60, catalogue=CAT)
+    slow = geneva_design(g, rpm=70, inertia=0.8, index_time=0.25, motor_power=max(CAT), min_rpm=60, catalogue=CAT)
+    assert not slow and "✗ index time 0.2857 s > 0.25 s" in repr(slow)
+    assert "smallest catalogue motor" in repr(slow)                   # 2200 W is far more than needed
+    sph = geneva_design(ml.SphericalGeneva(40.0, 5.0, 4), rpm=60, inertia=0.02, index_time=0.45, motor_power=2200,
+                        min_dwell_fraction=0.6, impacts=("soft", "none"))
+    assert not sph and "✗ dwell fraction 0.5557 < 0.6" in repr(sph) and "impact at entry is 'hard'" in sph.problem
+
+
+def test_press_design():
+    k = ml.forces.press(0.125, 0.5)
+    r = k.forces(k.turn(721))
+    motor = min(p for p in CAT if p >= ml.forces.drive(r.torque, r.phi, r.omega1).nominal_power)
+    assert press_design(k, motor, stroke=0.25, stroke_tol=0.002, max_pressure=15, catalogue=CAT)
+    bad = press_design(ml.forces.press(0.125, 0.4), motor, stroke=0.25, stroke_tol=0.002, max_pressure=15)
+    assert not bad and "✗ pressure angle 18.21° ≥ 15° at φ = 90°" in repr(bad)
+
+
+def test_function_check():
+    ref = lambda z: ml.ExternalGeneva(z, 1.0).max_velocity()
+    cases = [(z,) for z in range(3, 10)]
+    good = lambda z: np.sin(np.pi / z) / (1 - np.sin(np.pi / z))
+    assert function_check(good, ref, cases, name="peak", rtol=1e-9)
+    wrong = function_check(lambda z: np.sin(np.pi / z), ref, cases, name="peak")
+    assert not wrong and "peak(3) = 0.86603, mechlab gives 6.4641" in repr(wrong)
+    assert "raised ZeroDivisionError" in function_check(lambda z: 1 / 0, ref, cases, name="peak").problem
+    assert "returned shape (2,)" in function_check(lambda z: (1, 2), ref, cases, name="peak").problem
+
+
+# -- the assignments ------------------------------------------------------------------------------------------
+def _notebooks():
+    return sorted(SOURCE.glob("*/*.ipynb"))
+
+
+def test_every_chapter_has_an_assignment_of_four_exercises_of_three_kinds():
+    ids = {p.stem for p in _notebooks()}
+    assert ids == {"getting_started", "equivalence", "base_mechanism", "symmetry", "instant_centres",
+                   "dwell_curved_slot", "chebyshev_synthesis", "chebyshev_sixbars", "geneva", "geneva_spherical",
+                   "forces"}
+    for path in _notebooks():
+        nb = json.loads(path.read_text())
+        heads = [c["source"] if isinstance(c["source"], str) else "".join(c["source"]) for c in nb["cells"]
+                 if c["cell_type"] == "markdown" and "".join(c["source"]).startswith("## Exercise")]
+        heads = [" ".join(h.split()) for h in heads]
+        kinds = [h.split("·")[1].split("(")[0].strip() for h in heads]
+        assert len(kinds) >= 4 and len(set(kinds)) >= 3, (path.stem, kinds)
+        assert set(kinds) <= {"predict", "compute", "design", "code"}
+        assert "design" in kinds or "code" in kinds, path.stem
+        for h in heads:                                              # each states its unit or what is checked
+            if "· compute" in h:
+                assert "3 significant figures" in h or "in mm" in h.lower() or "**in" in h, (path.stem, h)
+        for c in nb["cells"]:
+            meta = c["metadata"].get("nbgrader", {})
+            if meta.get("grade"):
+                assert meta["points"] >= 0 and c["cell_type"] == "code"
+            assert not c.get("outputs") and c.get("execution_count") is None

@@ -1,0 +1,168 @@
+"""End to end through nbgrader (assignments/course.py, as `make student` and `make grade` run it), in tmp dirs.
+
+One student edition; submissions of every assignment with the worked solutions (full marks); and, for
+the Geneva assignment, the cases instructors report: wrong answers, no answers, a deleted graded cell, a
+duplicated cell, a cell that never finishes. nbgrader lives in assignments/.nbgrader-deps (`make nbgrader`).
+"""
+
+from __future__ import annotations
+
+import copy
+import csv
+import html
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import nbformat
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+SOURCE = ROOT / "assignments" / "source"
+DEPS = ROOT / "assignments" / ".nbgrader-deps"
+IDS = sorted(p.name for p in SOURCE.iterdir() if (p / f"{p.name}.ipynb").is_file())
+CASES = "geneva"  # the assignment every misbehaving submission is made of
+TIMEOUT = 10      # seconds before the never-ending cell is interrupted
+
+pytestmark = pytest.mark.skipif(not (DEPS / "nbgrader").is_dir(), reason="nbgrader: run `make nbgrader` first")
+
+
+def _run(*args: str) -> str:
+    env = dict(os.environ, PYTHONPATH=f"{DEPS}{os.pathsep}{ROOT}",
+               PATH=f"{DEPS / 'bin'}{os.pathsep}{os.environ['PATH']}")
+    res = subprocess.run([sys.executable, str(ROOT / "assignments" / "course.py"), *args], env=env,
+                         capture_output=True, text=True, timeout=900)
+    assert res.returncode == 0, res.stdout + res.stderr
+    return res.stdout
+
+
+def _solution(cell) -> str:
+    """A source cell's answer as a student would write it: the template line replaced by the solution."""
+    lines = cell.source.splitlines()
+    i, j = lines.index("### BEGIN SOLUTION"), lines.index("### END SOLUTION")
+    return "\n".join(lines[i + 1:j])
+
+
+def _regions(source: str, begin: str, end: str) -> list[str]:
+    return [block for block in re.findall(f"{begin}\n(.*?)\n{end}", source, flags=re.S)]
+
+
+def _cells(nb, kind: str):
+    return [c for c in nb.cells if c.metadata.get("nbgrader", {}).get(kind)]
+
+
+def _answered(aid: str, release: Path, good: int | None = None):
+    """The student edition of ``aid`` with the first ``good`` exercises answered right (all by default)
+    and the others answered by a wrong number."""
+    src = nbformat.read(SOURCE / aid / f"{aid}.ipynb", as_version=4)
+    nb = nbformat.read(release / aid / f"{aid}.ipynb", as_version=4)
+    solved = {c.metadata.nbgrader.grade_id: _solution(c) for c in _cells(src, "solution")}
+    for k, cell in enumerate(_cells(nb, "solution")):
+        right = good is None or k < good
+        cell.source = solved[cell.metadata.nbgrader.grade_id] if right else cell.source.split("\n")[0].replace(
+            "...", "0.123")
+    return nb
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("course")
+    release, subs, out = tmp / "release", tmp / "submissions", tmp / "graded"
+    _run("student", "--out", str(release))
+    books = {"alice": {aid: _answered(aid, release) for aid in IDS}}
+    n = len(_cells(books["alice"][CASES], "solution"))
+    books["bob"] = {CASES: nbformat.read(release / CASES / f"{CASES}.ipynb", as_version=4)}   # nothing answered
+    books["carol"] = {CASES: _answered(CASES, release, good=2)}                                 # two right
+    deleted = _answered(CASES, release)
+    gone = (_cells(deleted, "grade")[2], _cells(deleted, "solution")[2])     # the check of ex. 2, the answer to ex. 3
+    deleted.cells = [c for c in deleted.cells if all(c is not g for g in gone)]
+    books["dave"] = {CASES: deleted}
+    copied = _answered(CASES, release)
+    k = copied.cells.index(_cells(copied, "solution")[0])
+    copied.cells.insert(k + 1, copy.deepcopy(copied.cells[k]))
+    books["erin"] = {CASES: copied}
+    endless = _answered(CASES, release)
+    endless.cells.insert(2, nbformat.v4.new_code_cell("import time\nwhile True:\n    time.sleep(0.1)"))
+    books["frank"] = {CASES: endless}
+    for student, nbs in books.items():
+        for aid, nb in nbs.items():
+            (subs / student).mkdir(parents=True, exist_ok=True)
+            nbformat.write(nb, subs / student / f"{aid}.ipynb")
+    _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT))
+    with open(out / "grades.csv", newline="") as f:
+        rows = {(r["student_id"], r["assignment"]): r for r in csv.DictReader(f)}
+    return dict(release=release, out=out, rows=rows, n=n)
+
+
+def _score(graded, student, aid=CASES) -> tuple[float, float]:
+    row = graded["rows"][(student, aid)]
+    return float(row["raw_score"]), float(row["max_score"])
+
+
+def _feedback(graded, student, aid=CASES) -> str:
+    """The feedback page's text (its style sheets left out)."""
+    page = (graded["out"] / "feedback" / student / f"{aid}.html").read_text()
+    return html.unescape(re.sub(r"<style.*?</style>", "", page, flags=re.S))
+
+
+def _points(aid: str) -> list[float]:
+    src = nbformat.read(SOURCE / aid / f"{aid}.ipynb", as_version=4)
+    return [c.metadata.nbgrader.points for c in _cells(src, "grade")]
+
+
+def test_worked_solutions_get_full_marks(graded):
+    for aid in IDS:
+        score, top = _score(graded, "alice", aid)
+        assert top == sum(_points(aid)) > 0 and score == top, (aid, score, top)
+        assert "✓" in _feedback(graded, "alice", aid)
+
+
+def test_wrong_and_empty_answers_get_partial_and_zero_marks_with_feedback(graded):
+    pts = _points(CASES)
+    assert _score(graded, "carol") == (sum(pts[1:3]), sum(pts))     # the setup cell counts 0 points
+    assert _score(graded, "bob") == (0.0, sum(pts))
+    assert "✗" in _feedback(graded, "carol") and "no answer yet" in _feedback(graded, "bob")
+
+
+def test_what_students_do_does_not_stop_grading(graded):
+    pts = _points(CASES)
+    # the deleted check cell comes back and is graded; the deleted answer loses its exercise only
+    assert _score(graded, "dave") == (sum(pts) - pts[3], sum(pts))
+    assert "was missing from the submission" in _feedback(graded, "dave")
+    assert _score(graded, "erin")[0] == sum(pts)
+    assert _score(graded, "frank")[0] == sum(pts)
+    assert "interrupt" in _feedback(graded, "frank").lower() or "KeyboardInterrupt" in _feedback(graded, "frank")
+
+
+def _right_values(graded) -> set[str]:
+    """The numbers the worked solutions are praised for ("✓ crank radius = 57.4 mm: …")."""
+    text = "".join(_feedback(graded, "alice", aid) for aid in IDS)
+    return set(re.findall(r"✓ [^=<>\n]* = (-?[0-9.]+(?:e[-+]?\d+)?)", text))
+
+
+def test_hidden_tests_and_answers_stay_hidden(graded):
+    values = _right_values(graded)
+    assert len(values) >= len(IDS), values
+    own = set(re.findall(r"✓ [^=<>\n]* = (-?[0-9.]+)", _feedback(graded, "carol")))  # carol's two right answers
+    for student in ("bob", "carol"):
+        page = _feedback(graded, student)
+        assert "BEGIN HIDDEN" not in page and "check(crank_radius, ml." not in page
+        assert not [v for v in values - own if re.search(rf"(?<![\d.]){re.escape(v)}(?!\d)", page)]
+
+
+def test_student_edition_has_no_solution_and_no_answer(graded):
+    values = _right_values(graded)
+    for aid in IDS:
+        src = (SOURCE / aid / f"{aid}.ipynb").read_text()
+        text = (graded["release"] / aid / f"{aid}.ipynb").read_text()
+        nb = nbformat.reads(src, as_version=4)
+        secret = [line.strip() for c in nb.cells
+                  for block in _regions(c.source, "### BEGIN SOLUTION", "### END SOLUTION")
+                  + _regions(c.source, "### BEGIN HIDDEN TESTS", "### END HIDDEN TESTS")
+                  for line in block.splitlines() if len(line.strip()) > 12]
+        student = "\n".join(c.source for c in nbformat.reads(text, as_version=4).cells)
+        assert secret and not [s for s in secret if s in student], aid
+        assert "BEGIN SOLUTION" not in student and "HIDDEN TESTS" not in student
+        assert not [v for v in values if len(v) > 3 and v in student], aid
