@@ -14,6 +14,7 @@ writes ``grades.csv`` (nbgrader's gradebook export) and ``feedback/<student>/<as
 from __future__ import annotations
 
 import argparse
+import csv
 import shutil
 import sys
 import tempfile
@@ -88,10 +89,11 @@ def _without_copies(nb):
     every cell gets an id of its own: nbgrader 0.9.6 stops on a repeated grade_id."""
     seen, ids = set(), set()
     for cell in nb.cells:
-        role = cell.metadata.get("nbgrader", {})
-        if role.get("grade_id") in seen or (role and "grade_id" not in role):
+        role = cell.metadata.get("nbgrader")
+        if role is not None and (role.get("grade_id") in seen or "grade_id" not in role):
             del cell.metadata["nbgrader"]
-        seen.add(role.get("grade_id"))
+        elif role is not None:
+            seen.add(role["grade_id"])
         if cell.get("id") in ids or "id" not in cell:
             cell["id"] = uuid.uuid4().hex[:8]
         ids.add(cell["id"])
@@ -120,6 +122,10 @@ def grade(submissions: Path, out: Path, timeout: int) -> None:
             dest = out / "feedback" / html.parts[-3] / html.name
             dest.parent.mkdir(parents=True, exist_ok=True)
             shutil.copy(html, dest)
+    with open(out / "grades.csv", newline="") as f:
+        for row in csv.DictReader(f):
+            score, top = float(row["score"]), float(row["max_score"])
+            print(f"{row['student_id']:>16} {row['assignment']:<22} {score:5.1f} / {top:g}")
     print(f"graded {sum(map(len, found.values()))} notebooks: {out / 'grades.csv'}, feedback in {out / 'feedback'}")
 
 

@@ -2,7 +2,8 @@
 
 One student edition; submissions of every assignment with the worked solutions (full marks); and, for
 the Geneva assignment, the cases instructors report: wrong answers, no answers, a deleted graded cell, a
-duplicated cell, a cell that never finishes. nbgrader lives in assignments/.nbgrader-deps (`make nbgrader`).
+duplicated cell, a cell that never finishes and an error in an ungraded cell. nbgrader lives in
+assignments/.nbgrader-deps (`make nbgrader`).
 """
 
 from __future__ import annotations
@@ -38,8 +39,11 @@ def _run(*args: str) -> str:
     return res.stdout
 
 
+STUB = "# YOUR ANSWER HERE (replace the ... above)"   # nbgrader_config.py's ClearSolutions.code_stub
+
+
 def _solution(cell) -> str:
-    """A source cell's answer as a student would write it: the template line replaced by the solution."""
+    """A source cell's worked solution (the lines of its solution region)."""
     lines = cell.source.splitlines()
     i, j = lines.index("### BEGIN SOLUTION"), lines.index("### END SOLUTION")
     return "\n".join(lines[i + 1:j])
@@ -60,9 +64,10 @@ def _answered(aid: str, release: Path, good: int | None = None):
     nb = nbformat.read(release / aid / f"{aid}.ipynb", as_version=4)
     solved = {c.metadata.nbgrader.grade_id: _solution(c) for c in _cells(src, "solution")}
     for k, cell in enumerate(_cells(nb, "solution")):
+        assert STUB in cell.source
         right = good is None or k < good
-        cell.source = solved[cell.metadata.nbgrader.grade_id] if right else cell.source.split("\n")[0].replace(
-            "...", "0.123")
+        cell.source = (cell.source.replace(STUB, solved[cell.metadata.nbgrader.grade_id]) if right
+                       else cell.source.replace(STUB, "").replace("...", "0.123"))
     return nb
 
 
@@ -85,6 +90,7 @@ def graded(tmp_path_factory):
     books["erin"] = {CASES: copied}
     endless = _answered(CASES, release)
     endless.cells.insert(2, nbformat.v4.new_code_cell("import time\nwhile True:\n    time.sleep(0.1)"))
+    endless.cells.insert(3, nbformat.v4.new_code_cell("1 / 0  # an error in an ungraded cell"))
     books["frank"] = {CASES: endless}
     for student, nbs in books.items():
         for aid, nb in nbs.items():
@@ -132,20 +138,21 @@ def test_what_students_do_does_not_stop_grading(graded):
     assert _score(graded, "dave") == (sum(pts) - pts[3], sum(pts))
     assert "was missing from the submission" in _feedback(graded, "dave")
     assert _score(graded, "erin")[0] == sum(pts)
-    assert _score(graded, "frank")[0] == sum(pts)
+    assert _score(graded, "frank")[0] == sum(pts)                   # a cell left running, an ungraded error
+    assert "ZeroDivisionError" in _feedback(graded, "frank")
     assert "interrupt" in _feedback(graded, "frank").lower() or "KeyboardInterrupt" in _feedback(graded, "frank")
 
 
 def _right_values(graded) -> set[str]:
-    """The numbers the worked solutions are praised for ("✓ crank radius = 57.4 mm: …")."""
+    """The numbers the worked solutions are praised for ("✓ crank radius = 57.4 mm: right to …")."""
     text = "".join(_feedback(graded, "alice", aid) for aid in IDS)
-    return set(re.findall(r"✓ [^=<>\n]* = (-?[0-9.]+(?:e[-+]?\d+)?)", text))
+    return set(re.findall(r"✓ [^=\n]* = (-?[0-9.]+(?:e[-+]?\d+)?)[^:\n]*: right to", text))
 
 
 def test_hidden_tests_and_answers_stay_hidden(graded):
     values = _right_values(graded)
     assert len(values) >= len(IDS), values
-    own = set(re.findall(r"✓ [^=<>\n]* = (-?[0-9.]+)", _feedback(graded, "carol")))  # carol's two right answers
+    own = set(re.findall(r"✓ [^=\n]* = (-?[0-9.]+)[^:\n]*: right to", _feedback(graded, "carol")))  # her own
     for student in ("bob", "carol"):
         page = _feedback(graded, student)
         assert "BEGIN HIDDEN" not in page and "check(crank_radius, ml." not in page
@@ -158,10 +165,13 @@ def test_student_edition_has_no_solution_and_no_answer(graded):
         src = (SOURCE / aid / f"{aid}.ipynb").read_text()
         text = (graded["release"] / aid / f"{aid}.ipynb").read_text()
         nb = nbformat.reads(src, as_version=4)
-        secret = [line.strip() for c in nb.cells
-                  for block in _regions(c.source, "### BEGIN SOLUTION", "### END SOLUTION")
-                  + _regions(c.source, "### BEGIN HIDDEN TESTS", "### END HIDDEN TESTS")
-                  for line in block.splitlines() if len(line.strip()) > 12]
+        hidden = [block for c in nb.cells for block in _regions(c.source, "### BEGIN SOLUTION", "### END SOLUTION")
+                  + _regions(c.source, "### BEGIN HIDDEN TESTS", "### END HIDDEN TESTS")]
+        shown = "\n".join(c.source for c in nb.cells)
+        for block in hidden:
+            shown = shown.replace(block, "")
+        secret = [line.strip() for block in hidden for line in block.splitlines()
+                  if len(line.strip()) > 12 and line.strip() not in shown]      # lines only the lecturer sees
         student = "\n".join(c.source for c in nbformat.reads(text, as_version=4).cells)
         assert secret and not [s for s in secret if s in student], aid
         assert "BEGIN SOLUTION" not in student and "HIDDEN TESTS" not in student

@@ -9,6 +9,7 @@ grader's feedback never shows the test's source (where the expected value is com
 from __future__ import annotations
 
 import math
+import textwrap
 from dataclasses import dataclass
 from numbers import Real
 
@@ -52,7 +53,7 @@ class Verdict:
         """Print the message if the answer is right, else raise :class:`NotYet` with it (for graded cells)."""
         if not self.ok:
             raise NotYet(self.message)
-        print(self.message)
+        print("\n".join(_wrapped(self.message)))
 
 
 class NotYet(AssertionError):
@@ -60,7 +61,13 @@ class NotYet(AssertionError):
     ``_render_traceback_``), so the test's source — the expected value — is not shown."""
 
     def _render_traceback_(self) -> list[str]:
-        return [str(self)]
+        return _wrapped(str(self))
+
+
+def _wrapped(message: str, width: int = 100) -> list[str]:
+    """The message's lines wrapped to ``width`` columns (feedback pages do not wrap code output)."""
+    return [part for line in message.splitlines() for part in textwrap.wrap(line, width, subsequent_indent="    ")
+            or [""]]
 
 
 def tolerance(expected: float, significant: int = SIGNIFICANT) -> float:
