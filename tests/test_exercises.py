@@ -12,9 +12,9 @@ import pytest
 
 import mechlab as ml
 from mechlab.course import exercises as ex
-from mechlab.course.exercises import (NotYet, check, check_choice, check_form, dwell_slot_design, fourbar_design,
-                                      function_check, geneva_design, guide_design, output_design, press_design,
-                                      sixbar_design, tolerance)
+from mechlab.course.exercises import (NotYet, cam_design, check, check_choice, check_form, dwell_slot_design,
+                                      fourbar_design, function_check, geneva_design, guide_design, output_design,
+                                      press_design, sixbar_design, tolerance)
 from mechlab.synthesis.slot_export import write_dxf
 
 SOURCE = Path(__file__).resolve().parents[1] / "assignments" / "source"
@@ -165,6 +165,19 @@ def test_press_design():
     assert press_design(k, motor, stroke=0.25, stroke_tol=0.002, max_pressure=15, catalogue=CAT)
     bad = press_design(ml.forces.press(0.125, 0.4), motor, stroke=0.25, stroke_tol=0.002, max_pressure=15)
     assert not bad and "✗ pressure angle 18.21° ≥ 15° at φ = 90°" in repr(bad)
+
+
+@pytest.mark.skipif(not hasattr(ml, "TranslatingRollerCam"), reason="the cams are not in this mechlab yet")
+def test_cam_design():
+    deg = np.pi / 180
+    pusher = ml.CamProgramme(stroke=20.0, rise=120 * deg, ret=100 * deg, outer_dwell=40 * deg)
+    assert cam_design(ml.TranslatingRollerCam(pusher, 40.0, 10.0, offset=8.0), max_pressure=30, max_base_radius=40)
+    assert "✗ base radius 40 > 35" in repr(cam_design(ml.TranslatingRollerCam(pusher, 40.0, 10.0), max_pressure=30,
+                                                      max_base_radius=35))
+    nose = ml.CamProgramme(stroke=30.0, rise=40 * deg, ret=40 * deg)
+    bad = cam_design(ml.TranslatingRollerCam(nose, base_radius=15.0, roller_radius=11.0), max_pressure=30)
+    assert not bad and "✗ pressure angle 65.76° ≥ 30° at φ = 17°" in repr(bad) and "undercut" in bad.problem
+    assert "expected a mechlab roller cam" in cam_design(ml.FourBar(1, 3, 3, 4), max_pressure=30).problem
 
 
 def test_function_check():

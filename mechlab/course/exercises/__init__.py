@@ -6,10 +6,10 @@ the checkers of :mod:`.design` run a student's design or function through mechla
 specification with its numbers. This package stores no answer.
 """
 
-from .design import (DesignReport, Spec, dwell_slot_design, fourbar_design, function_check, geneva_design,
-                     guide_design, output_design, press_design, sixbar_design)
+from .design import (DesignReport, Spec, cam_design, dwell_slot_design, fourbar_design, function_check,
+                     geneva_design, guide_design, output_design, press_design, sixbar_design)
 from .feedback import NotYet, Verdict, check, check_choice, check_form, tolerance
 
 __all__ = ["check", "check_choice", "check_form", "tolerance", "Verdict", "NotYet", "Spec", "DesignReport",
-           "fourbar_design", "output_design", "guide_design", "dwell_slot_design", "sixbar_design", "geneva_design",
-           "press_design", "function_check"]
+           "fourbar_design", "output_design", "cam_design", "guide_design", "dwell_slot_design", "sixbar_design",
+           "geneva_design", "press_design", "function_check"]

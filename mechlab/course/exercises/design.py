@@ -168,6 +168,25 @@ def guide_design(guide, *, min_dwell: float, max_band: float, min_crank: float) 
                                 Spec("crank r", guide.r, "≥", min_crank, " l")))
 
 
+def cam_design(cam, *, max_pressure: float, max_base_radius: float | None = None) -> DesignReport:
+    """A disc cam with a roller follower (``mechlab.TranslatingRollerCam`` or ``OscillatingRollerCam``): the
+    profile is not undercut, the largest |pressure angle| over the turn is < ``max_pressure`` (degrees), and
+    the base radius ≤ ``max_base_radius`` (the cam's size)."""
+    title = "cam design"
+    if cam is None or cam is Ellipsis:
+        return DesignReport(title, problem="no design yet: build a TranslatingRollerCam or OscillatingRollerCam")
+    if not all(hasattr(cam, name) for name in ("undercut", "pressure_angle")):
+        return DesignReport(title, problem=f"expected a mechlab roller cam, got {type(cam).__name__}")
+    phi = np.linspace(0.0, 2 * np.pi, 2881)
+    alpha = np.abs(cam.pressure_angle(phi))
+    k = int(np.argmax(alpha))
+    specs = [Spec("pressure angle", _deg(alpha[k]), "<", max_pressure, "°", f"φ = {_deg(phi[k]):.0f}°")]
+    if max_base_radius is not None:
+        specs.append(Spec("base radius", float(cam.base_radius), "≤", max_base_radius))
+    cut = cam.undercut()
+    return DesignReport(title, tuple(specs), "" if cut is None else f"the profile is undercut: {cut}")
+
+
 def dwell_slot_design(mech, *, min_dwell: float, max_pressure: float, dxf: str | os.PathLike | None = None,
                       n: int = 721) -> DesignReport:
     """A curved-slot dwell mechanism (Zinchenko et al., 2013, §3): dwell φ2 − φ1 ≥ ``min_dwell`` (degrees),
