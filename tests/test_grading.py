@@ -87,6 +87,7 @@ def graded(tmp_path_factory):
     copied = _answered(CASES, release)
     k = copied.cells.index(_cells(copied, "solution")[0])
     copied.cells.insert(k + 1, copy.deepcopy(copied.cells[k]))
+    copied.cells[k + 1]["id"] = "pasted"                                   # JupyterLab gives a pasted cell a new id
     books["erin"] = {CASES: copied}
     endless = _answered(CASES, release)
     endless.cells.insert(2, nbformat.v4.new_code_cell("import time\nwhile True:\n    time.sleep(0.1)"))
