@@ -6,15 +6,17 @@
 Both work in a fresh temporary nbgrader course (this folder's ``source/`` and ``nbgrader_config.py``), so
 nothing tracked is written. ``student`` writes the student edition (solutions and hidden tests removed).
 ``grade`` takes a folder with one sub-folder per student holding that student's notebooks, named
-``<assignment id>.ipynb`` anywhere below it; it autogrades them (a cell left running is interrupted after
-``--timeout`` seconds, deleted graded cells are restored, an error in any cell does not stop the run) and
-writes ``grades.csv`` (nbgrader's gradebook export) and ``feedback/<student>/<assignment>.html``.
+``<assignment id>.ipynb`` (or a re-download's ``<id> (1).ipynb``: the last saved counts) anywhere below
+it; it autogrades them (a cell left running is interrupted after ``--timeout`` seconds, deleted graded
+cells are restored, an error in any cell does not stop the run) and writes ``grades.csv`` (nbgrader's
+gradebook export) and ``feedback/<student>/<assignment>.html``.
 """
 
 from __future__ import annotations
 
 import argparse
 import csv
+import re
 import shutil
 import sys
 import tempfile
@@ -69,18 +71,30 @@ def student(out: Path) -> None:
     print(f"student edition of {len(IDS)} assignments: {out}")
 
 
+def _assignment_id(nb: Path) -> str:
+    """The assignment a notebook belongs to: its name without a browser's download counter ("geneva (1)")."""
+    return re.sub(r"\s*\(\d+\)$", "", nb.stem)
+
+
 def _collect(submissions: Path, work: Path) -> dict[str, list[str]]:
-    """Copy every student's notebooks into nbgrader's submitted/<student>/<id>/<id>.ipynb."""
-    found: dict[str, list[str]] = {}
+    """Copy every student's notebooks into nbgrader's submitted/<student>/<id>/<id>.ipynb; of two notebooks
+    of one assignment (a re-download), the one saved last is graded."""
+    latest: dict[tuple[str, str], Path] = {}
     for folder in sorted(p for p in submissions.iterdir() if p.is_dir()):
         for nb in sorted(folder.rglob("*.ipynb")):
-            if nb.stem not in IDS or ".ipynb_checkpoints" in nb.parts:
+            aid = _assignment_id(nb)
+            if aid not in IDS or ".ipynb_checkpoints" in nb.parts:
                 print(f"skipped {nb}: not an assignment of this course ({', '.join(IDS)})")
                 continue
-            dest = work / "submitted" / folder.name / nb.stem / nb.name
-            dest.parent.mkdir(parents=True, exist_ok=True)
-            nbformat.write(_without_copies(nbformat.read(nb, as_version=4)), dest)
-            found.setdefault(nb.stem, []).append(folder.name)
+            key = (folder.name, aid)
+            if key not in latest or nb.stat().st_mtime > latest[key].stat().st_mtime:
+                latest[key] = nb
+    found: dict[str, list[str]] = {}
+    for (student, aid), nb in sorted(latest.items()):
+        dest = work / "submitted" / student / aid / f"{aid}.ipynb"
+        dest.parent.mkdir(parents=True, exist_ok=True)
+        nbformat.write(_without_copies(nbformat.read(nb, as_version=4)), dest)
+        found.setdefault(aid, []).append(student)
     return found
 
 

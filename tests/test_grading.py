@@ -2,8 +2,8 @@
 
 One student edition; submissions of every assignment with the worked solutions (full marks); and, for
 the Geneva assignment, the cases instructors report: wrong answers, no answers, a deleted graded cell, a
-duplicated cell, a cell that never finishes and an error in an ungraded cell. nbgrader lives in
-assignments/.nbgrader-deps (`make nbgrader`).
+duplicated cell, a cell that never finishes, an error in an ungraded cell, a notebook downloaded twice.
+nbgrader lives in assignments/.nbgrader-deps (`make nbgrader`).
 """
 
 from __future__ import annotations
@@ -97,6 +97,11 @@ def graded(tmp_path_factory):
         for aid, nb in nbs.items():
             (subs / student).mkdir(parents=True, exist_ok=True)
             nbformat.write(nb, subs / student / f"{aid}.ipynb")
+    # gina downloaded twice: the empty edition first, then her answers as "geneva (1).ipynb"
+    (subs / "gina" / "work").mkdir(parents=True)
+    nbformat.write(books["bob"][CASES], subs / "gina" / f"{CASES}.ipynb")
+    os.utime(subs / "gina" / f"{CASES}.ipynb", (1e9, 1e9))
+    nbformat.write(_answered(CASES, release), subs / "gina" / "work" / f"{CASES} (1).ipynb")
     _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT))
     with open(out / "grades.csv", newline="") as f:
         rows = {(r["student_id"], r["assignment"]): r for r in csv.DictReader(f)}
@@ -140,6 +145,7 @@ def test_what_students_do_does_not_stop_grading(graded):
     assert "was missing from the submission" in _feedback(graded, "dave")
     assert _score(graded, "erin")[0] == sum(pts)
     assert _score(graded, "frank")[0] == sum(pts)                   # a cell left running, an ungraded error
+    assert _score(graded, "gina")[0] == sum(pts)                    # the notebook saved last counts
     assert "ZeroDivisionError" in _feedback(graded, "frank")
     assert "interrupt" in _feedback(graded, "frank").lower() or "KeyboardInterrupt" in _feedback(graded, "frank")
 
