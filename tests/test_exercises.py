@@ -55,8 +55,8 @@ def test_unit_slips_are_named(unit, right, slipped, words):
 def test_flipped_sign_and_other_assembly_are_named_without_the_answer():
     v = check(10.0, -10.0)
     assert v.kind == "sign" and "sign" in v.message and "-10" not in v.message
-    other = ml.FourBar(1, 3, 3, 4, -1).motion(np.pi / 2).dpsi[0]
-    right = ml.FourBar(1, 3, 3, 4, 1).motion(np.pi / 2).dpsi[0]
+    other = ml.FourBar(1, 3, 3, 4, -1).motion(np.pi / 2).dpsi
+    right = ml.FourBar(1, 3, 3, 4, 1).motion(np.pi / 2).dpsi
     v = check(other, right, alternatives={"the other assembly (−1)": other}, hint="use assembly=+1")
     assert v.kind == "alternative" and "the other assembly" in v.message and "use assembly=+1" in v.message
     assert f"{right:.3g}" not in v.message
