@@ -22,6 +22,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .errors import AssemblyError, DimensionError, SingularityError
+from .validate import Spec, check, length, number
 
 # Relative tolerance under which a dyad counts as stretched or folded (a dead point).
 DEAD_POINT_TOL = 1e-12
@@ -98,60 +99,31 @@ def wrap(angle):
     return np.pi - np.mod(np.pi - np.asarray(angle, dtype=float), 2 * np.pi)
 
 
-def as_angles(phi) -> np.ndarray:
-    """Crank angles as a 1-D float array; a scalar becomes an array of one."""
-    try:
-        arr = np.atleast_1d(np.asarray(phi, dtype=float))
-    except (TypeError, ValueError):
-        arr = None
-    if arr is None or phi is None:  # None would pass as a NaN
-        raise DimensionError(f"crank angles must be real numbers (radians), got {phi!r}")
-    if arr.ndim != 1:
-        raise DimensionError(f"crank angles must be a scalar or a 1-D array, got shape {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        raise DimensionError("crank angles must be finite numbers (got NaN or inf)")
-    return arr
+def as_angles(phi, name: str = "phi") -> np.ndarray:
+    """Crank angles (radians) as a 1-D float array; a scalar becomes an array of one.
+
+    Refuses by ``name`` (DimensionError) complex values, strings, None, NaN, ±inf,
+    magnitudes over 1e100 and multi-dimensional arrays (an empty array gives empty results).
+    """
+    return check(name, phi, _ANGLES)
 
 
-# Lengths beyond these would overflow or underflow in the squares and products of the solvers.
-LENGTH_RANGE = (1e-100, 1e100)
+REAL, _LENGTH, _DISTANCE, _SIGN, _ANGLES = number(), length(), length(zero=True), Spec("sign"), Spec("angles", lo=0)
 
 
 def check_number(name: str, value) -> float:
-    """Return ``value`` as a finite float of magnitude ≤ 1e100 (``LENGTH_RANGE``), raising
-    DimensionError naming ``name`` otherwise."""
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise DimensionError(f"{name} must be a number, got {value!r}") from None
-    if not np.isfinite(x):
-        raise DimensionError(f"{name} must be finite, got {x}")
-    if abs(x) > LENGTH_RANGE[1]:
-        _out_of_range(name, x)
-    return x
-
-
-def _out_of_range(name: str, x: float):
-    raise DimensionError(f"{name} = {x:g} lies outside the supported magnitudes "
-                         f"[{LENGTH_RANGE[0]:g}, {LENGTH_RANGE[1]:g}] (use mm or lengths relative to one link)")
+    """``value`` as a finite float of magnitude ≤ 1e100 (:mod:`mechlab.validate`), else DimensionError."""
+    return check(name, value, REAL)
 
 
 def check_length(name: str, value, *, allow_zero: bool = False) -> float:
-    """Return ``value`` as a float, raising DimensionError if it is not a positive finite number."""
-    x = check_number(name, value)
-    if x < 0 or (x == 0 and not allow_zero):
-        bound = "≥ 0" if allow_zero else "> 0"
-        raise DimensionError(f"{name} must be {bound}, got {x:g}")
-    if 0 < x < LENGTH_RANGE[0] and not allow_zero:  # a quantity that may be 0 is never a divisor
-        _out_of_range(name, x)
-    return x
+    """``value`` as a float, raising DimensionError if it is not a positive (or zero) finite number."""
+    return check(name, value, _DISTANCE if allow_zero else _LENGTH)
 
 
 def check_sign(name: str, value) -> int:
     """An assembly sign: +1 or -1."""
-    if value not in (1, -1):
-        raise DimensionError(f"{name} must be +1 or -1, got {value!r}")
-    return int(value)
+    return check(name, value, _SIGN)
 
 
 def as_complex(a):

@@ -19,7 +19,8 @@ from typing import Callable, Mapping
 import numpy as np
 
 from .errors import DimensionError, SingularityError
-from .geometry import PointPath, relative, vector_angle
+from .geometry import PointPath, as_angles, relative, vector_angle
+from .validate import Reals, validated
 
 
 @dataclass(frozen=True, eq=False)
@@ -38,13 +39,21 @@ class Law:
     dd: np.ndarray | float
     kind: str = "angle"
 
-    def velocity(self, omega1: float) -> np.ndarray | float:
-        """ω = value'·ω1 (rad/s or length/s) at crank speed ω1 (rad/s)."""
-        return self.d * omega1
+    @validated
+    def velocity(self, omega1: Reals) -> np.ndarray | float:
+        """ω = value'·ω1 (rad/s or length/s) at crank speed ω1 (rad/s; a number or one per crank angle)."""
+        return self.d * self._per_angle("omega1", omega1)
 
-    def acceleration(self, omega1: float, eps1: float = 0.0) -> np.ndarray | float:
+    @validated
+    def acceleration(self, omega1: Reals, eps1: Reals = 0.0) -> np.ndarray | float:
         """value''·ω1² + value'·ε1 at crank speed ω1 and crank acceleration ε1 (rad/s²)."""
-        return self.dd * omega1**2 + self.d * eps1
+        return self.dd * self._per_angle("omega1", omega1)**2 + self.d * self._per_angle("eps1", eps1)
+
+    def _per_angle(self, name: str, value):
+        if np.ndim(value) and np.shape(value) != np.shape(self.value):
+            raise DimensionError(f"{name} must be a number or one value per crank angle (shape "
+                                 f"{np.shape(self.value)}), got shape {np.shape(value)}")
+        return value
 
     @property
     def degrees(self) -> np.ndarray | float:
@@ -91,11 +100,11 @@ class Motion:
         raise NotImplementedError
 
     def velocity(self, omega1: float) -> np.ndarray:
-        """Output velocity (rad/s or length/s) at crank speed ω1 (rad/s)."""
+        """Output velocity (rad/s or length/s) at crank speed ω1 (rad/s; checked by :class:`Law`)."""
         return self.output.velocity(omega1)
 
     def acceleration(self, omega1: float, eps1: float = 0.0) -> np.ndarray:
-        """Output acceleration at crank speed ω1 and crank acceleration ε1."""
+        """Output acceleration at crank speed ω1 and crank acceleration ε1 (checked by :class:`Law`)."""
         return self.output.acceleration(omega1, eps1)
 
     def link_angle(self, start: str, end: str) -> Law:
@@ -217,7 +226,7 @@ def scalar_in_scalar_out(motion):
     @functools.wraps(motion)
     def wrapped(self, phi, *args, **kwargs):
         if _real_scalar(phi):
-            return motion(self, np.array([phi], dtype=float), *args, **kwargs)._first()
+            return motion(self, as_angles(phi), *args, **kwargs)._first()  # checked: 10**400, NaN named
         return motion(self, phi, *args, **kwargs)
     return wrapped
 
@@ -229,7 +238,7 @@ def scalar_law(law_of):
     def wrapped(x, phi, *args, **kwargs):
         if not _real_scalar(phi):
             return law_of(x, phi, *args, **kwargs)
-        law = law_of(x, np.array([phi], dtype=float), *args, **kwargs)
+        law = law_of(x, as_angles(phi), *args, **kwargs)
         if hasattr(law, "_fields"):   # a named tuple
             return law._make(v[0] for v in law)
         return type(law)(**{f.name: getattr(law, f.name)[0] for f in fields(law)})

@@ -361,7 +361,7 @@ def test_lookup_errors():
     for bad in (lambda: ic("nothing", "frame"), lambda: ic(0, 2), lambda: ic(2, 2),
                 lambda: instant_centres(FourBar(1, 3, 3, 4), [0.3], method="guess"),
                 lambda: instant_centres(object(), [0.3])):
-        with pytest.raises((MechanismError, AttributeError)):
+        with pytest.raises((MechanismError, AttributeError, TypeError)):
             bad()
 
 

@@ -64,7 +64,7 @@ def test_rotation_conditions_and_bad_input():
         LambdaMechanism(0.6, 1.5, np.pi)
     with pytest.raises(DimensionError):
         LambdaMechanism(-0.1, 0.8, np.pi)
-    with pytest.raises(MechanismError, match="δ"):
+    with pytest.raises(MechanismError, match="delta must be < 6.28319 rad"):
         LambdaMechanism(0.3, 0.8, 7.0)
     r, a = rotation_boundary()
     assert np.allclose(np.minimum(a, 2 - a), r)

@@ -174,7 +174,7 @@ def test_slider_six_bar_validates_its_dimensions(guide):
         LambdaSliderSixBar(m.r, m.a, m.delta, guide.R, q[0], q[1], m.axis_angle, 0)
     with pytest.raises(MechanismError, match="theta must be finite"):
         LambdaSliderSixBar(m.r, m.a, m.delta, guide.R, q[0], q[1], np.nan)
-    with pytest.raises(DimensionError, match="rod DE must be > 0"):
+    with pytest.raises(DimensionError, match="rod must be > 0"):
         LambdaSliderSixBar(m.r, m.a, m.delta, -1.0, q[0], q[1], 0.0)
 
 

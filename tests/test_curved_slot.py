@@ -208,7 +208,7 @@ def test_bad_input_messages():
         CurvedSlotLink(0.4, 1.0, ellipse())
     with pytest.raises(AssemblyError, match=r"never lies on the circular slot"):
         CurvedSlotLink(0.4, 1.0, CircleSlot((5.0, 0.0), 1.0))
-    with pytest.raises(DimensionError, match="slot radius must be > 0"):
+    with pytest.raises(DimensionError, match="radius must be > 0"):
         CircleSlot((1.0, 0.0), -1.0)
     with pytest.raises(DimensionError, match=r"must return an array of shape"):
         CurvedSlotLink(0.4, 1.0, ParametricSlot(lambda t: t, lambda t: t, lambda t: t, 0.0, 1.0))

@@ -121,8 +121,8 @@ def test_geneva_turns_accumulate():
 
 
 @pytest.mark.parametrize("bad, err, msg", [
-    (lambda: ExternalGeneva(2, 1.0), SlotCountError, r"whole number ≥ 3, got z = 2"),
-    (lambda: InternalGeneva(3.5, 1.0), SlotCountError, r"got z = 3.5"),
+    (lambda: ExternalGeneva(2, 1.0), SlotCountError, r"whole number ≥ 3, got 2"),
+    (lambda: InternalGeneva(3.5, 1.0), SlotCountError, r"got 3.5"),
     (lambda: ExternalGeneva("four", 1.0), SlotCountError, r"got 'four'"),
     (lambda: ExternalGeneva(4, -1.0), DimensionError, r"centre_distance must be > 0, got -1"),
     (lambda: ExternalGeneva(4, 1.0, roller_radius=-0.1), DimensionError, r"roller_radius must be > 0"),

@@ -51,9 +51,10 @@ import numpy as np
 
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, perp, wrap
-from ..mechanisms.base import FULL_TURN, Mechanism
+from ..mechanisms.base import FULL_TURN, AnyMechanism, Mechanism
 from ..mechanisms.slotted import SineMechanism, SlottedLink
 from ..motion import AngularMotion, LinearMotion, scalar_law
+from ..validate import Angles, validated
 
 
 def _output_pivot(mechanism) -> str:
@@ -79,7 +80,8 @@ def _rot(angle, v):
 # ---------------------------------------------------------------------------------------------
 # relative path
 # ---------------------------------------------------------------------------------------------
-def relative_path(mechanism: Mechanism, phi) -> PointPath:
+@validated
+def relative_path(mechanism: AnyMechanism, phi: Angles) -> PointPath:
     """The crank pin A seen from the output link, with its φ-analogs (seed 000 §1, Fig. 1-4).
 
     Angular output about pivot P: w = Rot(-ψ)(A - P), w' = Rot(-ψ)(v' - ψ'·v⊥),
@@ -161,7 +163,8 @@ class EquivalentSlot(Mechanism):
         return PointPath(_rot(ph, p.p), _rot(ph, p.d), _rot(ph, p.dd))
 
 
-def equivalent_slot(mechanism: Mechanism) -> EquivalentSlot:
+@validated
+def equivalent_slot(mechanism: AnyMechanism) -> EquivalentSlot:
     """The curved-slot mechanism whose slot is the linkage's relative path (seed 000 §1), from the
     family's ``curved_slot_twin()``: FourBar → a circular slot of radius l_AB about B (Fig. 2),
     SliderCrank → a translating circular slot (Fig. 4), SixBarIV → its inner four-bar's coupler curve."""
@@ -185,7 +188,8 @@ def equivalence_error(mechanism: Mechanism, phi=None) -> float:
 # ---------------------------------------------------------------------------------------------
 # base mechanism
 # ---------------------------------------------------------------------------------------------
-def base_mechanism(mechanism: Mechanism):
+@validated
+def base_mechanism(mechanism: AnyMechanism):
     """The base mechanism (seed 000 Fig. 5, 6): same crank, straight slot through the output
     pivot (``SlottedLink(l_OA, l_OE)``), or the sine mechanism for a translating output."""
     if mechanism.output == "position":
@@ -203,7 +207,8 @@ def frame_phase(mechanism: Mechanism) -> float:
 
 
 @scalar_law
-def base_law(mechanism: Mechanism, phi) -> AnglePath:
+@validated
+def base_law(mechanism: AnyMechanism, phi: Angles) -> AnglePath:
     """The base mechanism's law in the mechanism's own frame: ψ_K(φ) = angle of A - pivot
     (formulas (18)-(20) with λ = l_OA/l_OB), or x_K = l_OA cos φ (formulas (2), (5))."""
     phi = as_angles(phi)
@@ -238,7 +243,8 @@ class AssemblySymmetry:
         return max(self.mirror, self.mean_is_base, self.branches) <= tol
 
 
-def assembly_symmetry(mechanism: Mechanism, phi) -> AssemblySymmetry:
+@validated
+def assembly_symmetry(mechanism: AnyMechanism, phi: Angles) -> AssemblySymmetry:
     """Residuals of the assembly relations for a FourBar or SliderCrank at crank angles φ."""
     phi = as_angles(phi)
     plus = mechanism if mechanism.assembly == 1 else other_assembly(mechanism)

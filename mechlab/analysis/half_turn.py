@@ -38,6 +38,7 @@ form in :func:`base_peaks`). The same holds for translating links with x_K = l_O
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 
 
 import numpy as np
@@ -45,18 +46,30 @@ import numpy as np
 from ..errors import DimensionError
 from .equivalence import base_law, base_mechanism
 from ..geometry import AnglePath, as_angles, wrap
-from ..motion import scalar_law
+from ..mechanisms.base import AnyMechanism
 from ..mechanisms.slotted import SineMechanism
+from ..motion import scalar_law
+from ..validate import Angles, count, number, validated
+
+
+# λ = l_OA / l_OB of the base mechanism
+Ratio = Annotated[float, number(1e-6, 1e6, why="λ = l_OA / l_OB, positive")]
+
+
+def _not_one(lam: float) -> None:
+    if lam == 1:
+        raise DimensionError("lam must be ≠ 1 (λ must be positive and ≠ 1), got 1: "
+                             "ψ_K' = λ/|1 - λ| is unbounded at φ = 180°")
 
 
 @scalar_law
-def formula_18(lam: float, phi) -> AnglePath:
+@validated
+def formula_18(lam: Ratio, phi) -> AnglePath:
     """The base mechanism's law from seed 000 (18)-(20) (the printed formulas, verified correct):
     tan ψ_K = λ sin φ/(λ cos φ + 1), ψ_K' = λ(λ + cos φ)/D, ψ_K'' = λ(λ² - 1) sin φ/D², D = λ² + 1 + 2λ cos φ.
     ψ_K is the continuous branch (atan2; lifted by φ when λ > 1)."""
     phi = as_angles(phi)
-    if not (np.isfinite(lam) and lam > 0 and lam != 1):
-        raise DimensionError(f"λ must be positive, finite and ≠ 1, got {lam}")
+    _not_one(lam)
     s, c = np.sin(phi), np.cos(phi)
     D = lam * lam + 1 + 2 * lam * c
     psi = np.arctan2(lam * s, lam * c + 1)
@@ -65,14 +78,14 @@ def formula_18(lam: float, phi) -> AnglePath:
     return AnglePath(psi, lam * (lam + c) / D, lam * (lam * lam - 1) * s / D**2)
 
 
-def base_peaks(lam: float) -> tuple[float, float]:
+@validated
+def base_peaks(lam: Ratio) -> tuple[float, float]:
     """Peaks of |ψ_K'| and |ψ_K''| of the base mechanism over a turn, in closed form.
 
     |ψ_K'| peaks at φ = π: λ/|1 - λ| (seed (25)). ψ_K'' ∝ sin φ/D² peaks where
     2λ cos²φ - (1 + λ²) cos φ - 4λ = 0, i.e. cos φ = [(1 + λ²) - √((1 + λ²)² + 32λ²)]/(4λ).
     """
-    if not (np.isfinite(lam) and lam > 0 and lam != 1):
-        raise DimensionError(f"λ must be positive, finite and ≠ 1, got {lam}")
+    _not_one(lam)
     v = lam / abs(1 - lam)
     c = ((1 + lam * lam) - np.sqrt((1 + lam * lam) ** 2 + 32 * lam * lam)) / (4 * lam)
     s = np.sqrt(1 - c * c)
@@ -113,7 +126,8 @@ def _law(mo) -> AnglePath:
     return AnglePath(out.value, out.d, out.dd)
 
 
-def other_half(mechanism, phi) -> HalfTurn:
+@validated
+def other_half(mechanism: AnyMechanism, phi: Angles) -> HalfTurn:
     """Predict the law at φ* = 2π - φ (or π - φ) from the law at φ and the base mechanism."""
     phi = as_angles(phi)
     star = mirror_angle(mechanism, phi)
@@ -141,7 +155,8 @@ class LimitCheck:
                 and self.pointwise_velocity_gap >= -tol and self.pointwise_acceleration_gap >= -tol)
 
 
-def limit_theorem(mechanism, n: int = 721) -> LimitCheck:
+@validated
+def limit_theorem(mechanism: AnyMechanism, n: Annotated[int, count(3)] = 721) -> LimitCheck:
     """Check seed 000's limit theorem on a grid of n crank angles symmetric under φ ↦ φ*.
 
     The crank must turn fully. The grid is φ_k = 2πk/(n-1) (for a translating link

@@ -4,11 +4,16 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 
 import numpy as np
 
+from ..errors import DimensionError
+from ..mechanisms.base import Mechanism
 from ..mechanisms.geneva import TWO_PI
 from ..motion import Table
+from ..validate import MAX_SAMPLES, Angle, count, number, validated
+from ..validate import mechanism as mechanism_of
 
 
 # ----------------------------------------------------------------------------------
@@ -20,7 +25,9 @@ def _max_jump(mechanism, n: int, phase: float = 0.0):
     return float(np.max(np.abs(np.diff(mo.dpsi)))), float(np.max(np.abs(np.diff(mo.ddpsi))))
 
 
-def detect_impacts(mechanism, n: int = 4096, phase: float = 0.0) -> str:
+@validated
+def detect_impacts(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)],
+                   n: Annotated[int, count(3, MAX_SAMPLES // 2)] = 4096, phase: Angle = 0.0) -> str:
     """'hard', 'soft' or 'none', found numerically for any angular-output mechanism:
     the largest change of ψ' (ψ'') between neighbouring samples halves when the grid is
     refined if ψ' (ψ'') is continuous, and stays put where it jumps. The grid starts at
@@ -48,20 +55,29 @@ class Intermittency:
     impact: str
 
 
-def intermittency(mechanism, *, n: int = 7201, dwell_tol: float = 1e-9, phase: float = 0.0,
+@validated
+def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
+                  n: Annotated[int, count(3, MAX_SAMPLES // 2)] = 7201,
+                  dwell_tol: Annotated[float, number(0.0, 1.0, open=True)] = 1e-9, phase: Angle = 0.0,
                   name: str | None = None) -> Intermittency:
     """Invariants of one crank turn: dwell fraction (share of φ with |ψ'| ≤ dwell_tol·max|ψ'|),
     output turn Δψ per crank turn, max |ψ'| and |ψ''|, and the dimensionless invariants
     C_v = max|ψ'|·Φ/|Δψ| and C_a = max|ψ''|·Φ²/|Δψ| with Φ = (1 - dwell)·2π the crank
     angle of the motion: the cam-law coefficients (cycloidal law: C_v = 2, C_a = 2π).
-    An approximate dwell (a linkage's) needs a larger ``dwell_tol``; the samples start at
-    ``phase``; ``name`` labels the row (by default the mechanism's class)."""
+    An approximate dwell (a linkage's) needs a larger ``dwell_tol`` (in (0, 1)); the samples start at
+    ``phase``; ``name`` labels the row (by default the mechanism's class). The output must turn:
+    DimensionError for a rocker (Δψ = 0 per turn, C_v undefined)."""
+    if mechanism.output != "angle":
+        raise DimensionError(f"mechanism must have an angular output (ψ), got a {type(mechanism).__name__}")
     phi = phase + np.linspace(0.0, TWO_PI, n)
     mo = mechanism.motion(phi)
     vmax = float(np.max(np.abs(mo.dpsi)))
     still = np.abs(mo.dpsi) <= dwell_tol * vmax
     dwell = float(np.mean(still[:-1]))
     dpsi_turn = float(mo.psi[-1] - mo.psi[0])
+    if abs(dpsi_turn) <= 1e-9:
+        raise DimensionError(f"the output does not advance over a crank turn (Δψ = {dpsi_turn:.3g} rad): "
+                             f"C_v and C_a are defined for an indexing output, not a rocker")
     amax = float(np.max(np.abs(mo.ddpsi)))
     Phi = (1.0 - dwell) * TWO_PI
     return Intermittency(type(mechanism).__name__ if name is None else name, dwell,
@@ -71,5 +87,7 @@ def intermittency(mechanism, *, n: int = 7201, dwell_tol: float = 1e-9, phase: f
 
 def compare(mechanisms: dict, **kw) -> Table:
     """:func:`intermittency` of each named mechanism, one row each."""
+    if not isinstance(mechanisms, dict):
+        raise TypeError(f"mechanisms must be a dict of name → mechanism, got {type(mechanisms).__name__}")
     return Table(intermittency(m, name=name, **kw) for name, m in mechanisms.items())
 

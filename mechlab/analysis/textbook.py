@@ -9,12 +9,15 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
+from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from ..errors import DimensionError
 from ..geometry import check_number
+from ..mechanisms.base import AnyMechanism
+from ..validate import count, validated
 
 
 def nearest_assembly(mechanism, phi: float, **joints):
@@ -77,7 +80,8 @@ def _refine(f, phi, i):
     return (float(res.x), float(res.fun)) if res.fun < f(phi[i]) else (float(phi[i]), float(f(phi[i])))
 
 
-def transmission_extremes(mechanism, n: int = 3601) -> TransmissionExtremes:
+@validated
+def transmission_extremes(mechanism: AnyMechanism, n: Annotated[int, count(3)] = 3601) -> TransmissionExtremes:
     """Least and greatest transmission angle over the crank's cycle and the crank angles of both.
 
     Sampled on ``mechanism.cycle(n)`` and refined by a bounded search between the grid's
@@ -95,7 +99,8 @@ def transmission_extremes(mechanism, n: int = 3601) -> TransmissionExtremes:
     return TransmissionExtremes(mu_min, float(np.mod(phi_min, 2 * np.pi)), -neg_max, float(np.mod(phi_max, 2 * np.pi)))
 
 
-def zero_acceleration(mechanism, n: int = 3601) -> np.ndarray:
+@validated
+def zero_acceleration(mechanism: AnyMechanism, n: Annotated[int, count(3)] = 3601) -> np.ndarray:
     """Crank angles (radians, ascending in the cycle) where the output's second analog changes sign.
 
     There the output acceleration at a constant crank speed vanishes and its velocity is
@@ -112,6 +117,7 @@ def zero_acceleration(mechanism, n: int = 3601) -> np.ndarray:
     return np.array([brentq(dd_at, phi[i], phi[i + 1], xtol=1e-14) for i in change])
 
 
-def crank_ranges_degrees(mechanism) -> tuple[tuple[float, float], ...]:
+@validated
+def crank_ranges_degrees(mechanism: AnyMechanism) -> tuple[tuple[float, float], ...]:
     """``mechanism.crank_ranges()`` in degrees: ((0.0, 360.0),) for a crank that turns fully."""
     return tuple((float(np.degrees(s)), float(np.degrees(e))) for s, e in mechanism.crank_ranges())

@@ -4,9 +4,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Annotated, Sequence
+
 import numpy as np
+
 from ..errors import DimensionError, MechanismError
+from ..validate import Spec, number, validated
 
 __all__ = ["Drive", "DriveError", "drive", "motor_torque", "cycle_mean"]
 
@@ -67,7 +70,13 @@ def motor_torque(torque, omega1: float, efficiency: float = 1.0) -> np.ndarray:
     return np.where(driving, M / efficiency, M * efficiency)
 
 
-def drive(torque, phi, omega1: float, *, overload: float = 2.0, efficiency: float = 1.0) -> Drive:
+@validated
+def drive(torque: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)],
+          phi: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)],
+          omega1: Annotated[float, number(error=DriveError)], *,
+          overload: Annotated[float, number(1.0, error=DriveError, why="the overload factor k ≥ 1")] = 2.0,
+          efficiency: Annotated[float, Spec("number", 0.0, 1.0, open_lo=True, error=DriveError,
+                                            why="the efficiency 0 < η ≤ 1")] = 1.0) -> Drive:
     """The one rule of the course for sizing a motor that drives a crank without a flywheel.
 
     ``torque`` is the crank torque M(φ) at the crank angles ``phi`` over one cycle (e.g.
@@ -113,21 +122,13 @@ def drive(torque, phi, omega1: float, *, overload: float = 2.0, efficiency: floa
     accuracy of its sampling, as :func:`mechlab.kinetostatics.geneva.drive` does at the engagement
     ends. The peak is the largest sample.
     """
-    M = np.asarray(torque, dtype=float)
-    phi = np.asarray(phi, dtype=float)
-    if M.shape != phi.shape or M.ndim != 1 or len(M) < 2:
+    M = torque
+    if M.shape != phi.shape:
         raise DriveError(f"torque and phi must be 1-D arrays of the same length ≥ 2, got {M.shape}, {phi.shape}")
-    if not (np.all(np.isfinite(M)) and np.all(np.isfinite(phi))):
-        raise DriveError("torque and phi must be finite (got NaN or inf)")
     if not np.all(np.diff(phi) >= 0) or phi[-1] <= phi[0]:
         raise DriveError(f"phi must increase over the cycle, got φ from {phi[0]:g} to {phi[-1]:g}")
-    omega1 = float(omega1)
-    if not np.isfinite(omega1) or omega1 == 0:
-        raise DriveError(f"crank speed ω1 must be finite and non-zero, got {omega1}")
-    if not (np.isfinite(overload) and overload >= 1):
-        raise DriveError(f"the overload factor must satisfy k ≥ 1, got k = {overload}")
-    if not (np.isfinite(efficiency) and 0 < efficiency <= 1):
-        raise DriveError(f"the efficiency must satisfy 0 < η ≤ 1, got η = {efficiency}")
+    if omega1 == 0:
+        raise DriveError(f"crank speed ω1 must be finite and non-zero: omega1 = {omega1}")
     Mm = motor_torque(M, omega1, efficiency)
     mean = cycle_mean(Mm, phi)
     peak = float(np.max(np.abs(Mm)))

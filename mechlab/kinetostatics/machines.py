@@ -4,14 +4,23 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Annotated, Any, Callable
+
 import numpy as np
+
 from ..motion import Motion
 from ..mechanisms.base import Mechanism
+from ..validate import Distance, Length, OptionalAngles, Point, Real, Spec, number, validated
+from ..validate import mechanism as mechanism_of
 from .model import Force, ForceModel, G, LoadError, Torque, _nonneg, model_for, slender_bar
 from .solve import ForceResult, solve
 
 __all__ = ["Kinetostatics", "rpm_to_rad", "press_load", "press", "rocker_drive"]
+
+# Crank speeds beyond this (rad/s, ≈ 10⁷ rpm) overflow the inertia forces' squares.
+MAX_OMEGA = 1e6
+Rpm = Annotated[float, number(0.0, MAX_OMEGA * 60 / (2 * np.pi), why="rev/min")]
+Size = Annotated[float, number(0.0)]  # a mass, a load, a friction coefficient: ≥ 0
 
 
 @dataclass(frozen=True, eq=False)
@@ -21,17 +30,17 @@ class Kinetostatics(Mechanism):
     Used by :mod:`mechlab.draw.forces` to animate force plans with ``mechlab.draw.animate``.
     """
 
-    mechanism: Any
+    mechanism: Annotated[Any, mechanism_of(Mechanism)]
     model: ForceModel | None = None
-    loads: tuple = ()
-    omega1: float = 1.0
-    eps1: float = 0.0
-    gravity: tuple = (0.0, -G)
+    loads: Annotated[tuple, Spec("items", expected=(Force, Torque))] = ()
+    omega1: Annotated[float, number(-MAX_OMEGA, MAX_OMEGA, why="rad/s")] = 1.0
+    eps1: Annotated[float, number(-MAX_OMEGA**2, MAX_OMEGA**2, why="rad/s²")] = 0.0
+    gravity: Point = (0.0, -G)
 
     def __post_init__(self):
+        super().__post_init__()
         if self.model is None:
             object.__setattr__(self, "model", model_for(self.mechanism))
-        object.__setattr__(self, "loads", tuple(self.loads))
 
     @property
     def links(self):
@@ -60,7 +69,8 @@ class Kinetostatics(Mechanism):
     def motion(self, phi):
         return self.mechanism.motion(phi)
 
-    def forces(self, phi=None, motion: Motion | None = None, **kw) -> ForceResult:
+    @validated
+    def forces(self, phi: OptionalAngles = None, motion: Motion | None = None, **kw) -> ForceResult:
         """Solve at crank angles φ (default: the mechanism's cycle) or on a given motion."""
         if motion is None:
             motion = self.motion(self.cycle() if phi is None else phi)
@@ -105,9 +115,11 @@ def _slider_crank_dimensions(motion) -> tuple[float, float, float, float]:
     return crank, rod, float(B[0, 1]), float(np.sign(B[0, 0] - A[0, 0]) or 1.0)
 
 
-def press(crank: float = 0.10, rod: float = 0.40, *, rpm: float = 120.0, P: float = 2000.0,
-          work_fraction: float = 0.3, m_crank: float = 2.0, m_rod: float = 3.0, m_slider: float = 4.0,
-          f: float = 0.0, radius: float = 0.01, eps1: float = 0.0) -> Kinetostatics:
+@validated
+def press(crank: Length = 0.10, rod: Length = 0.40, *, rpm: Rpm = 120.0, P: Size = 2000.0,
+          work_fraction: Annotated[float, Spec("number", 0.0, 1.0, open_lo=True)] = 0.3, m_crank: Size = 2.0,
+          m_rod: Size = 3.0, m_slider: Size = 4.0, f: Size = 0.0, radius: Distance = 0.01,
+          eps1: Real = 0.0) -> Kinetostatics:
     """The chapter's crank press (metres, kilograms, N): a centred slider-crank whose slider
     meets the resistance of :func:`press_load`; the crank is balanced (centre of mass at O),
     the rod is a uniform bar, friction f in every pair (journal radius ``radius``)."""
@@ -118,9 +130,10 @@ def press(crank: float = 0.10, rod: float = 0.40, *, rpm: float = 120.0, P: floa
     return Kinetostatics(sc, model, (Force("slider", "B", press_load(P, work_fraction)),), rpm_to_rad(rpm), eps1)
 
 
-def rocker_drive(crank: float = 0.10, coupler: float = 0.30, rocker: float = 0.30, ground: float = 0.35, *,
-                 rpm: float = 120.0, T: float = 40.0, m_coupler: float = 2.0, m_rocker: float = 2.0,
-                 f: float = 0.0, radius: float = 0.01) -> Kinetostatics:
+@validated
+def rocker_drive(crank: Length = 0.10, coupler: Length = 0.30, rocker: Length = 0.30, ground: Length = 0.35, *,
+                 rpm: Rpm = 120.0, T: Size = 40.0, m_coupler: Size = 2.0, m_rocker: Size = 2.0,
+                 f: Size = 0.0, radius: Distance = 0.01) -> Kinetostatics:
     """The chapter's four-bar: a crank-rocker whose rocker meets a resisting torque of size T
     against its motion, uniform bars for coupler and rocker, friction f in every pair."""
     fb = _four_bar(crank, coupler, rocker, ground)

@@ -91,10 +91,12 @@ of the instantaneous values over the period in which the output moves
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Any, Sequence
+from typing import Annotated, Any, Sequence
+
 import numpy as np
 from ..errors import DimensionError, MechanismError
 from ..mechanisms.base import FRAME
+from ..validate import (Angle, Checked, Distance, Name, Point, Spec, angle, check, number, or_function)
 
 __all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque", "model_for", "slender_bar", "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"]
 
@@ -125,25 +127,27 @@ class SelfLockingError(MechanismError):
 
 
 def _nonneg(name: str, value, exc) -> float:
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise exc(f"{name} must be a number, got {value!r}") from None
-    if not np.isfinite(x) or x < 0:
-        raise exc(f"{name} must be a finite number ≥ 0, got {x:g}")
-    return x
+    return check(name, value, number(0.0, error=exc))
 
 
-def _friction(name: str, f) -> float:
-    f = _nonneg(f"friction coefficient of {name}", f, FrictionError)
-    if f >= 1.0:
-        raise FrictionError(f"friction coefficient of {name} must satisfy 0 ≤ f < 1, got f = {f:g}")
-    return f
+Mass = Annotated[float, number(0.0, error=MassError)]
+Friction = Annotated[float, Spec("number", 0.0, 1.0, open_hi=True, error=FrictionError, why="0 ≤ f < 1")]
+JournalRadius = Annotated[float, number(0.0, error=FrictionError)]
+
+
+class _Labelled(Checked):
+    """Messages name a parameter with its owner: "mass of coupler", "friction coefficient of O"."""
+
+    _WORDS = {"inertia": "moment of inertia", "com": "centre of mass (com)", "friction": "friction coefficient",
+              "radius": "journal radius", "angle": "guide angle", "normal": "normal angle"}
+
+    def _label(self, field: str) -> str:
+        return field if field == "name" else f"{self._WORDS.get(field, field)} of {self.name}"
 
 
 # --------------------------------------------------------------------------- structure
 @dataclass(frozen=True)
-class Body:
+class Body(_Labelled):
     """A link: a joint fixed on it (``origin``), its axis, and its mass properties.
 
     ``axis`` = (P, Q): the link's x axis points from joint P to joint Q; a float: the
@@ -154,32 +158,21 @@ class Body:
     ``length`` is informational (a bar's length, for the default slender-bar inertia).
     """
 
-    name: str
-    origin: str
+    name: Name
+    origin: Name
     axis: Any = 0.0
-    mass: float = 0.0
-    inertia: float = 0.0
-    com: tuple = (0.0, 0.0)
-    length: float = 0.0
+    mass: Mass = 0.0
+    inertia: Mass = 0.0
+    com: Point = (0.0, 0.0)
+    length: Distance = 0.0
 
     def __post_init__(self):
+        super().__post_init__()
         if self.name == FRAME:
             raise StructureError(f"a body may not be called {FRAME!r} (reserved for the frame)")
-        object.__setattr__(self, "mass", _nonneg(f"mass of {self.name}", self.mass, MassError))
-        object.__setattr__(self, "inertia", _nonneg(f"moment of inertia of {self.name}", self.inertia, MassError))
-        object.__setattr__(self, "length", _nonneg(f"length of {self.name}", self.length, DimensionError))
-        com = tuple(float(c) for c in self.com)
-        if len(com) != 2 or not all(np.isfinite(com)):
-            raise DimensionError(f"centre of mass of {self.name} must be two finite numbers, got {self.com!r}")
-        object.__setattr__(self, "com", com)
-        if callable(self.axis):
-            pass
-        elif not isinstance(self.axis, tuple):
-            a = float(self.axis)
-            if not np.isfinite(a):
-                raise DimensionError(f"axis angle of {self.name} must be finite, got {a}")
-            object.__setattr__(self, "axis", a)
-        elif len(self.axis) != 2:
+        if not isinstance(self.axis, tuple):
+            object.__setattr__(self, "axis", check(f"axis of {self.name}", self.axis, or_function(angle())))
+        elif len(self.axis) != 2 or not all(isinstance(j, str) for j in self.axis):
             raise StructureError(f"axis of {self.name} must be (P, Q) joint names or an angle, got {self.axis!r}")
 
     @property
@@ -188,80 +181,65 @@ class Body:
 
 
 @dataclass(frozen=True)
-class Revolute:
+class Revolute(_Labelled):
     """Turning pair at joint ``point``; reaction R = force of link a on link b."""
 
-    name: str
-    a: str
-    b: str
-    point: str
-    friction: float = 0.0
-    radius: float = 0.0
+    name: Name
+    a: Name
+    b: Name
+    point: Name
+    friction: Friction = 0.0
+    radius: JournalRadius = 0.0
     n_unknowns = 2
-
-    def __post_init__(self):
-        object.__setattr__(self, "friction", _friction(self.name, self.friction))
-        object.__setattr__(self, "radius", _nonneg(f"journal radius of {self.name}", self.radius, FrictionError))
 
 
 @dataclass(frozen=True)
-class Prismatic:
+class Prismatic(_Labelled):
     """Link b slides on link a along a guide at ``angle`` to a's axis, through ``point`` (fixed on b)."""
 
-    name: str
-    a: str
-    b: str
-    point: str
-    angle: float = 0.0
-    friction: float = 0.0
+    name: Name
+    a: Name
+    b: Name
+    point: Name
+    angle: Angle = 0.0
+    friction: Friction = 0.0
     n_unknowns = 2
-
-    def __post_init__(self):
-        object.__setattr__(self, "friction", _friction(self.name, self.friction))
-        object.__setattr__(self, "angle", float(self.angle))
-        if not np.isfinite(self.angle):
-            raise DimensionError(f"guide angle of {self.name} must be finite, got {self.angle}")
 
 
 @dataclass(frozen=True)
-class HigherPair:
+class HigherPair(_Labelled):
     """Contact of links a and b at the moving point ``point``; reaction along the common normal.
 
     ``normal``: angle of the normal to a's axis, or ``normal(motion) → (n, 2)`` unit vectors.
     """
 
-    name: str
-    a: str
-    b: str
-    point: str
-    normal: Any = np.pi / 2
-    friction: float = 0.0
+    name: Name
+    a: Name
+    b: Name
+    point: Name
+    normal: Annotated[Any, or_function(angle())] = np.pi / 2
+    friction: Friction = 0.0
     n_unknowns = 1
-
-    def __post_init__(self):
-        object.__setattr__(self, "friction", _friction(self.name, self.friction))
-        if not callable(self.normal):
-            object.__setattr__(self, "normal", float(self.normal))
-            if not np.isfinite(self.normal):
-                raise DimensionError(f"normal angle of {self.name} must be finite, got {self.normal}")
 
 
 Pair = Revolute | Prismatic | HigherPair
 
 
 @dataclass(frozen=True)
-class ForceModel:
+class ForceModel(Checked):
     """Links, pairs and the structural groups (output first) of a mechanism driven by ``crank``."""
 
-    bodies: tuple
-    pairs: tuple
+    bodies: Annotated[tuple, Spec("items", expected=Body)]
+    pairs: Annotated[tuple, Spec("items", expected=(Revolute, Prismatic, HigherPair))]
     groups: tuple
-    crank: str
-    pivot: str
+    crank: Name
+    pivot: Name
 
     def __post_init__(self):
-        object.__setattr__(self, "bodies", tuple(self.bodies))
-        object.__setattr__(self, "pairs", tuple(self.pairs))
+        super().__post_init__()
+        if isinstance(self.groups, str) or not isinstance(self.groups, tuple | list) or \
+                not all(isinstance(g, tuple | list) and all(isinstance(b, str) for b in g) for g in self.groups):
+            raise TypeError(f"groups must be a tuple of tuples of body names, got {self.groups!r:.60}")
         object.__setattr__(self, "groups", tuple(tuple(g) for g in self.groups))
         names = [b.name for b in self.bodies]
         if len(set(names)) != len(names):
@@ -337,20 +315,30 @@ class ForceModel:
 
 # --------------------------------------------------------------------------- loads
 @dataclass(frozen=True)
-class Force:
-    """External force on ``body`` applied at ``at`` (joint name or link coordinates (ξ, η))."""
+class Force(Checked):
+    """External force on ``body`` applied at ``at`` (joint name or link coordinates (ξ, η)); ``value``
+    a vector (Fx, Fy) or a function of the motion giving (n, 2) vectors."""
 
-    body: str
+    body: Name
     at: Any
     value: Any
 
+    def __post_init__(self):
+        super().__post_init__()
+        if not isinstance(self.at, str):
+            object.__setattr__(self, "at", check("at", self.at, Spec("point")))
+        if not callable(self.value):  # one vector, or one per crank angle
+            one = np.ndim(self.value) <= 1
+            spec = Spec("point" if one else "points", lo=1, error=LoadError)
+            object.__setattr__(self, "value", check("value", self.value, spec))
+
 
 @dataclass(frozen=True)
-class Torque:
-    """External couple on ``body`` (counter-clockwise positive)."""
+class Torque(Checked):
+    """External couple on ``body`` (counter-clockwise positive): a number or a function of the motion."""
 
-    body: str
-    value: Any
+    body: Name
+    value: Annotated[Any, or_function(number(error=LoadError))]
 
 
 # --------------------------------------------------------------------------- models of the core mechanisms
@@ -365,8 +353,8 @@ def model_for(mechanism) -> ForceModel:
     """
     describe = getattr(mechanism, "structure", None)
     if not callable(describe):
-        raise TypeError(f"no force model for {type(mechanism).__name__}: it describes no structure(); "
-                        f"build a ForceModel for it")
+        raise TypeError(f"mechanism must be a mechanism that describes its structure(): no force model for "
+                        f"{type(mechanism).__name__}; build a ForceModel for it")
     st = describe()
     bodies = tuple(Body(k.name, k.origin, k.axis, com=(k.length / 2, 0.0), length=k.length) for k in st.links)
     pairs = tuple(_pair(p) for p in st.pairs)

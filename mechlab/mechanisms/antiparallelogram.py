@@ -6,10 +6,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 import numpy as np
 from ..errors import DimensionError
-from ..geometry import PointPath, as_angles, check_length, dot, fixed_point, unit
+from ..geometry import PointPath, as_angles, dot, fixed_point, unit
 from .base import Mechanism
 from .fourbar import FourBar
 from ..motion import AngularMotion
+from ..validate import Length, Samples, validated
 
 
 @dataclass(frozen=True)
@@ -31,16 +32,15 @@ class Antiparallelogram(Mechanism):
     ground > crank (k < -1): both short links turn fully in opposite senses (long frame).
     """
 
-    crank: float
-    ground: float
+    crank: Length
+    ground: Length
 
     links = (("O", "A"), ("A", "B"), ("B", "E"))
     pivots = ("O", "E")
     output = "angle"
 
     def __post_init__(self):
-        object.__setattr__(self, "crank", check_length("crank", self.crank))
-        object.__setattr__(self, "ground", check_length("ground", self.ground))
+        super().__post_init__()
         if abs(self.crank - self.ground) <= 1e-9 * max(self.crank, self.ground):
             raise DimensionError(
                 f"crank = ground = {self.crank:g}: all four links equal (a rhombus), the crossed branch "
@@ -65,7 +65,8 @@ class Antiparallelogram(Mechanism):
         """Crank angles (rad) where the linkage folds flat: 0 and π."""
         return (0.0, np.pi)
 
-    def cycle(self, n: int = 361) -> np.ndarray:
+    @validated
+    def cycle(self, n: Samples = 361) -> np.ndarray:
         """n crank angles over a full turn, shifted by 0.37 of a step so that no sample falls
         on a change point (0 or π), where Kennedy's construction is indeterminate."""
         phi = self.turn(n)

@@ -5,13 +5,14 @@ and the curved-slot equivalence are derived."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import Annotated, Any, ClassVar
 
 import numpy as np
 
 from ..errors import AssemblyError, DimensionError, MechanismError, RotationError
 from ..geometry import AnglePath, lift, relative, vector_angle
 from ..motion import Motion, scalar_in_scalar_out
+from ..validate import Checked, Samples, mechanism, validated
 
 TWO_PI = 2.0 * np.pi
 FULL_TURN = ((0.0, TWO_PI),)
@@ -146,7 +147,7 @@ def fmt_ranges(ranges) -> str:
     return " or ".join(f"[{np.degrees(s):.2f}°, {np.degrees(e):.2f}°]" for s, e in ranges)
 
 
-class Mechanism:
+class Mechanism(Checked):
     """Base of the single-loop mechanisms: a crank O-A driving one output.
 
     Subclasses are frozen dataclasses of their dimensions and define
@@ -178,13 +179,15 @@ class Mechanism:
         """Why the crank cannot turn fully (subclasses name the inequality)."""
         return f"crank cannot turn fully: it reaches only φ ∈ {fmt_ranges(self.crank_ranges())}"
 
-    def turn(self, n: int = 361) -> np.ndarray:
+    @validated
+    def turn(self, n: Samples = 361) -> np.ndarray:
         """n crank angles over one full turn [0, 2π]; RotationError if the crank cannot turn."""
         if not self.can_turn:
             raise RotationError(self.rotation_failure())
         return np.linspace(0.0, TWO_PI, n)
 
-    def cycle(self, n: int = 361) -> np.ndarray:
+    @validated
+    def cycle(self, n: Samples = 361) -> np.ndarray:
         """n crank angles over a full turn, or strictly inside the first reachable range.
 
         A crank that cannot turn rocks between two dead points, where the analogs are
@@ -259,3 +262,7 @@ def lift_on_ranges(theta: np.ndarray, phi: np.ndarray, refs) -> np.ndarray:
         on = np.mod(phi - start, TWO_PI) <= end - start
         out[on] = lift(theta[on], mid + turns * phi[on])
     return out
+
+
+# a parameter that takes any mechanism (TypeError naming the class otherwise)
+AnyMechanism = Annotated[Mechanism, mechanism(Mechanism)]

@@ -73,14 +73,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Callable
+from typing import Annotated, Callable
 
 import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, SingularityError
-from ..geometry import AnglePath, PointPath, as_angles, check_length, cross, crank_point, dot, fixed_point, lift
+from ..geometry import AnglePath, PointPath, as_angles, cross, crank_point, dot, fixed_point, lift
 from ..motion import AngularMotion, LinearMotion
+from ..validate import Checked, Flag, Function, Length, Point, Real, Spec, mechanism, number
 from .base import FULL_TURN, Mechanism, arc_set, fmt_ranges
 from .slotted import PivotedSlot, SineMechanism, SlottedLink
 
@@ -93,7 +94,7 @@ _TANGENT_TOL = 1e-10
 # ---------------------------------------------------------------------------------------------
 # slot curves
 # ---------------------------------------------------------------------------------------------
-class SlotCurve:
+class SlotCurve(Checked):
     """A smooth curve in the link frame, parameter t in [t0, t1] (periodic if closed)."""
 
     t0: float
@@ -120,18 +121,11 @@ def _xy(value, n, what):
 class CircleSlot(SlotCurve):
     """Circle of ``radius`` about ``center`` (link frame); c(t) = center + radius·(cos t, sin t)."""
 
-    center: tuple
-    radius: float
+    center: Point
+    radius: Length
     t0: float = field(default=-np.pi, init=False)
     t1: float = field(default=np.pi, init=False)
     periodic: bool = field(default=True, init=False)
-
-    def __post_init__(self):
-        c = np.asarray(self.center, dtype=float)
-        if c.shape != (2,) or not np.all(np.isfinite(c)):
-            raise DimensionError(f"circle centre must be two finite numbers, got {self.center!r}")
-        object.__setattr__(self, "center", (float(c[0]), float(c[1])))
-        object.__setattr__(self, "radius", check_length("slot radius", self.radius))
 
     def evaluate(self, t) -> PointPath:
         t = np.atleast_1d(np.asarray(t, dtype=float))
@@ -144,19 +138,17 @@ class CircleSlot(SlotCurve):
 class ParametricSlot(SlotCurve):
     """A curve given by vectorised functions f, f', f'' : t ↦ (n, 2) on [t0, t1]."""
 
-    f: Callable
-    df: Callable
-    ddf: Callable
-    t0: float
-    t1: float
-    periodic: bool = False
+    f: Function
+    df: Function
+    ddf: Function
+    t0: Real
+    t1: Real
+    periodic: Flag = False
 
     def __post_init__(self):
-        t0, t1 = float(self.t0), float(self.t1)
-        if not (np.isfinite(t0) and np.isfinite(t1) and t1 > t0):
-            raise DimensionError(f"the parameter interval must satisfy t0 < t1 (finite), got [{t0}, {t1}]")
-        object.__setattr__(self, "t0", t0)
-        object.__setattr__(self, "t1", t1)
+        super().__post_init__()
+        if not self.t1 > self.t0:
+            raise DimensionError(f"the parameter interval must satisfy t0 < t1, got [{self.t0:g}, {self.t1:g}]")
 
     def evaluate(self, t) -> PointPath:
         t = np.atleast_1d(np.asarray(t, dtype=float))
@@ -171,18 +163,15 @@ class SampledSlot(SlotCurve):
     ``closed=True`` makes a periodic spline (the first point is repeated at the end if needed).
     """
 
-    samples: np.ndarray
-    closed: bool = False
+    samples: Annotated[np.ndarray, Spec("points", lo=4)]
+    closed: Flag = False
     t0: float = field(default=0.0, init=False)
     t1: float = field(default=1.0, init=False)
     periodic: bool = field(default=False, init=False)
 
     def __post_init__(self):
-        pts = np.asarray(self.samples, dtype=float)
-        if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) < 4:
-            raise DimensionError(f"a sampled slot needs at least 4 points as an (m, 2) array, got shape {pts.shape}")
-        if not np.all(np.isfinite(pts)):
-            raise DimensionError("slot samples must be finite")
+        super().__post_init__()
+        pts = self.samples
         if self.closed and np.any(pts[0] != pts[-1]):
             pts = np.vstack([pts, pts[:1]])
         seg = np.hypot(*np.diff(pts, axis=0).T)
@@ -307,6 +296,10 @@ def _fmt_deg(x):
     return f"{np.degrees(x):.2f}°"
 
 
+# a slot given to a mechanism (a DimensionError otherwise, as for any other dimension)
+Slot = Annotated[SlotCurve, mechanism((CircleSlot, ParametricSlot, SampledSlot), error=DimensionError)]
+
+
 # ---------------------------------------------------------------------------------------------
 # the oscillating / rotating curved slotted link
 # ---------------------------------------------------------------------------------------------
@@ -319,18 +312,17 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
     angle (formula (18)) and β the polar angle of the pin in the link frame.
     """
 
-    crank: float
-    pivot_distance: float
-    slot: SlotCurve
-    start: float | None = None
+    crank: Length
+    pivot_distance: Length
+    slot: Slot
+    start: Annotated[float | None, number(optional=True)] = None
 
     links = (("O", "A"),)
     pivots = ("O", "B")
     output = "angle"
 
     def __post_init__(self):
-        if not isinstance(self.slot, SlotCurve):
-            raise DimensionError(f"slot must be a CircleSlot, ParametricSlot or SampledSlot, got {type(self.slot).__name__}")
+        super().__post_init__()
         self._check_crank_and_pivot()
         if isinstance(self.slot, CircleSlot):
             self._circle_setup()
@@ -614,18 +606,16 @@ class TranslatingCurvedSlot(Mechanism):
     mechanism's law (formulas (1), (2)).
     """
 
-    crank: float
-    slot: SlotCurve
-    start: float | None = None
+    crank: Length
+    slot: Slot
+    start: Annotated[float | None, number(optional=True)] = None
 
     links = (("O", "A"),)
     pivots = ("O",)
     output = "position"
 
     def __post_init__(self):
-        object.__setattr__(self, "crank", check_length("crank", self.crank))
-        if not isinstance(self.slot, SlotCurve):
-            raise DimensionError(f"slot must be a CircleSlot, ParametricSlot or SampledSlot, got {type(self.slot).__name__}")
+        super().__post_init__()
         if isinstance(self.slot, CircleSlot):
             x0 = self.slot.center[0]
             side = 1

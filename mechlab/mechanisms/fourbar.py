@@ -19,14 +19,15 @@ in the frame line, so ψ₋(φ) = -ψ₊(-φ), ψ'₋(φ) = ψ'₊(-φ), ψ''₋
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 from functools import cached_property
 
 import numpy as np
 
 from ..errors import AssemblyError, DimensionError, RotationError
-from ..geometry import (_re_conj, as_angles, as_complex, check_length, circle_circle, crank_point, fixed_point,
-                        rocker_dyad)
+from ..geometry import _re_conj, as_angles, as_complex, circle_circle, crank_point, fixed_point, rocker_dyad
 from ..motion import AngularMotion, Extremes, limit_positions
+from ..validate import Length, Spec, check
 from .base import FRAME, Link, Mechanism, Pair, Structure, arc_set, branch_references, fmt_ranges, lift_on_ranges
 from .curved_slot import CircleSlot, CurvedSlotLink
 
@@ -36,13 +37,13 @@ _CHANGE_POINT_TOL = 1e-12
 ASSEMBLY_NAMES = {"open": 1, "crossed": -1}
 
 
+# an assembly: +1, -1 or a name in ASSEMBLY_NAMES
+Assembly = Annotated[int | str, Spec("sign", options=tuple(ASSEMBLY_NAMES.items()))]
+
+
 def assembly_sign(value) -> int:
     """The assembly sign from +1, -1 or a name in ``ASSEMBLY_NAMES`` ("open" = +1, "crossed" = -1)."""
-    if isinstance(value, str) and value in ASSEMBLY_NAMES:
-        return ASSEMBLY_NAMES[value]
-    if not isinstance(value, str) and value in (1, -1):
-        return int(value)
-    raise DimensionError(f"assembly must be +1, -1, 'open' (= +1) or 'crossed' (= -1), got {value!r}")
+    return check("assembly", value, Assembly.__metadata__[0])
 
 
 def circle_pair(r1: float, centre2, r2: float) -> tuple[np.ndarray, np.ndarray]:
@@ -100,20 +101,18 @@ class FourBar(Mechanism):
     linkage closes at no crank angle.
     """
 
-    crank: float
-    coupler: float
-    rocker: float
-    ground: float
-    assembly: int | str = 1
+    crank: Length
+    coupler: Length
+    rocker: Length
+    ground: Length
+    assembly: Assembly = 1
 
     links = (("O", "A"), ("A", "B"), ("B", "E"))
     pivots = ("O", "E")
     output = "angle"
 
     def __post_init__(self):
-        for name in ("crank", "coupler", "rocker", "ground"):
-            object.__setattr__(self, name, check_length(name, getattr(self, name)))
-        object.__setattr__(self, "assembly", assembly_sign(self.assembly))
+        super().__post_init__()
         if not self.crank_ranges():
             a, c, r, g = self.crank, self.coupler, self.rocker, self.ground
             raise AssemblyError(

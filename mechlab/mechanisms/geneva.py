@@ -39,11 +39,14 @@ exactly, for any e. The seed's cos γ = cos α·sin ψ (11) is exact as well: it
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
+
 import numpy as np
 from ..errors import DimensionError
-from ..geometry import AnglePath, PointPath, as_angles, check_length, crank_point, fixed_point, lift, relative, vector_angle
+from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
 from .base import Mechanism
 from ..motion import AngularMotion, Quantity, Table
+from ..validate import MAX_SLOTS, Length, check, count, length
 
 
 TWO_PI = 2.0 * np.pi
@@ -57,17 +60,14 @@ class OffsetError(DimensionError):
     """The spherical Geneva's offset e does not satisfy 0 ≤ e < R."""
 
 
+# z: a whole number of slots
+Slots = Annotated[int, count(3, MAX_SLOTS, error=SlotCountError,
+                             why="a Geneva wheel needs z ≥ 3: with z = 2 the crank radius C·sin(π/z) equals C")]
+
+
 def check_slots(z) -> int:
     """z as an int, raising SlotCountError unless it is a whole number ≥ 3."""
-    try:
-        zf = float(z)
-    except (TypeError, ValueError):
-        raise SlotCountError(f"the number of slots z must be a whole number ≥ 3, got {z!r}") from None
-    if not np.isfinite(zf) or zf != round(zf) or zf < 3:
-        raise SlotCountError(
-            f"the number of slots z must be a whole number ≥ 3, got z = {zf:g} "
-            f"(a Geneva wheel needs z ≥ 3: with z = 2 the crank radius C·sin(π/z) equals C)")
-    return int(round(zf))
+    return check("z", z, Slots.__metadata__[0])
 
 
 def mid_motion_angle(phi) -> np.ndarray:
@@ -115,9 +115,9 @@ class PlanarGeneva(Mechanism):
     :meth:`_check_roller`).
     """
 
-    z: int
-    centre_distance: float
-    roller_radius: float | None = None
+    z: Slots
+    centre_distance: Length
+    roller_radius: Annotated[float | None, length(optional=True)] = None
 
     kappa = 0  # -1 external, +1 internal
     links = (("O", "A"),)
@@ -127,10 +127,9 @@ class PlanarGeneva(Mechanism):
     def __post_init__(self):
         if self.kappa not in (-1, 1):
             raise TypeError("PlanarGeneva is the common base: use ExternalGeneva or InternalGeneva")
-        object.__setattr__(self, "z", check_slots(self.z))
-        object.__setattr__(self, "centre_distance", check_length("centre_distance", self.centre_distance))
-        r = 0.15 * self.crank_radius if self.roller_radius is None else self.roller_radius
-        object.__setattr__(self, "roller_radius", check_length("roller_radius", r))
+        super().__post_init__()
+        if self.roller_radius is None:
+            object.__setattr__(self, "roller_radius", 0.15 * self.crank_radius)
         self._check_roller()
 
     # -- dimensions -----------------------------------------------------------------

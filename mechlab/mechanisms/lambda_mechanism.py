@@ -4,28 +4,26 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 from functools import cached_property
 import numpy as np
-from ..errors import MechanismError, RotationError
-from ..geometry import PointPath, as_angles, check_length, check_sign, dot, perp, unit
+from ..errors import RotationError
+from ..geometry import PointPath, as_angles, dot, perp, unit
 from .fourbar import FourBar
 from .base import Mechanism
 from ..motion import AngularMotion
+from ..validate import Coordinate, Distance, Length, Sign, Spec, angle, check
 
 __all__ = ["LambdaMechanism", "GuidedLambda", "classic_lambda"]
 
+# δ = ∠ABD and a designed dwell 2α, radians
+Delta = Annotated[float, angle(0.0, 2 * np.pi, open=True)]
+Dwell = Annotated[float, angle(0.0, 2 * np.pi)]
+
 
 def _angle(name: str, value, lo: float, hi: float, *, closed_hi: bool = True) -> float:
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise MechanismError(f"{name} must be a number (radians), got {value!r}") from None
-    ok = np.isfinite(x) and lo < x and (x <= hi if closed_hi else x < hi)
-    if not ok:
-        b = "]" if closed_hi else ")"
-        raise MechanismError(f"{name} = {np.degrees(x):.4g}° must lie in ({np.degrees(lo):g}°, "
-                             f"{np.degrees(hi):g}°{b}")
-    return x
+    """An angle (radians) in (lo, hi] (or (lo, hi)), checked by :mod:`mechlab.validate`."""
+    return check(name, value, Spec("angle", lo, hi, open_lo=True, open_hi=not closed_hi))
 
 
 # --------------------------------------------------------------------------------------------
@@ -46,20 +44,17 @@ class LambdaMechanism(Mechanism):
     r > a: see the errata.)
     """
 
-    r: float
-    a: float
-    delta: float
-    assembly: int = 1
+    r: Length
+    a: Length
+    delta: Delta
+    assembly: Sign = 1
 
     links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
     pivots = ("O", "C")
     output = "angle"
 
     def __post_init__(self):
-        object.__setattr__(self, "r", check_length("r", self.r))
-        object.__setattr__(self, "a", check_length("a", self.a))
-        object.__setattr__(self, "delta", _angle("δ", self.delta, 0.0, 2 * np.pi, closed_hi=False))
-        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
+        super().__post_init__()
         r, a = self.r, self.a
         if not r + a < 2.0:
             raise RotationError(
@@ -154,11 +149,11 @@ class GuidedLambda(LambdaMechanism):
     """A lambda mechanism with its guiding band: arc centre Q = (qx, qy), radii R0, R1 and the
     dwell 2α (for drawings and widgets; the kinematics are those of LambdaMechanism)."""
 
-    qx: float = 0.0
-    qy: float = 0.0
-    R0: float = 0.0
-    R1: float = 0.0
-    dwell: float = 0.0
+    qx: Coordinate = 0.0
+    qy: Coordinate = 0.0
+    R0: Distance = 0.0
+    R1: Distance = 0.0
+    dwell: Dwell = 0.0
 
 
 def classic_lambda() -> LambdaMechanism:

@@ -7,10 +7,11 @@ from dataclasses import dataclass
 from functools import cached_property
 import numpy as np
 from ..errors import MechanismError
-from ..geometry import AnglePath, as_angles, check_length, check_number, check_sign, dot, dyad_rpr, dyad_rrr, fixed_point, relative, vector_angle
+from ..geometry import AnglePath, as_angles, dot, dyad_rpr, dyad_rrr, fixed_point, relative, vector_angle
 from .base import TWO_PI, Mechanism
 from ..motion import AngularMotion
-from .lambda_mechanism import LambdaMechanism
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism
+from ..validate import Coordinate, Length, Sign
 from ..errors import InfeasibleDesignError
 
 __all__ = ["LambdaRockerSixBar", "LambdaSlottedSixBar"]
@@ -25,26 +26,22 @@ class LambdaRockerSixBar(Mechanism):
     pivoted at F = (``fx``, ``fy``). ``assembly`` puts E on the left (+1) or right (−1) of
     the directed line D→F. Output ψ: angle of the rocker F→E."""
 
-    r: float
-    a: float
-    delta: float
-    rod: float
-    rocker: float
-    fx: float
-    fy: float
-    assembly: int = 1
-    dwell: float = 0.0  # the designed dwell 2α (informational: drawings, widgets)
+    r: Length
+    a: Length
+    delta: Delta
+    rod: Length
+    rocker: Length
+    fx: Coordinate
+    fy: Coordinate
+    assembly: Sign = 1
+    dwell: Dwell = 0.0  # the designed dwell 2α (informational: drawings, widgets)
 
     links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"), ("D", "E"), ("F", "E"))
     pivots = ("O", "C", "F")
     output = "angle"
 
     def __post_init__(self):
-        object.__setattr__(self, "rod", check_length("rod DE", self.rod))
-        object.__setattr__(self, "rocker", check_length("rocker EF", self.rocker))
-        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
-        for k in ("fx", "fy"):
-            object.__setattr__(self, k, check_number(f"pivot coordinate {k}", getattr(self, k)))
+        super().__post_init__()
         self.base  # validates r, a, δ (full rotation)
         # the dyad D-E-F must close over the whole turn
         D = self.base.coupler_point(np.linspace(0, TWO_PI, 1441))
@@ -104,22 +101,21 @@ class LambdaSlottedSixBar(Mechanism):
     a slot through a pivot on the path, per turn).
     """
 
-    r: float
-    a: float
-    delta: float
-    px: float
-    py: float
-    offset: float = 0.0
-    dwell: float = 0.0  # the straight part's crank angle 2α (informational)
+    r: Length
+    a: Length
+    delta: Delta
+    px: Coordinate
+    py: Coordinate
+    offset: Coordinate = 0.0
+    dwell: Dwell = 0.0  # the straight part's crank angle 2α (informational)
 
     links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
     pivots = ("O", "C", "P")
     output = "angle"
 
     def __post_init__(self):
+        super().__post_init__()
         self.base
-        for k in ("px", "py", "offset"):
-            object.__setattr__(self, k, check_number(k, getattr(self, k)))
         D = self.base.coupler_point(np.linspace(0, TWO_PI, 2881))
         rho = np.hypot(*(D - self.P).T)
         if abs(self.offset) > 0 and rho.min() <= abs(self.offset):

@@ -7,10 +7,11 @@ from dataclasses import dataclass
 from functools import cached_property
 import numpy as np
 from ..errors import MechanismError
-from ..geometry import PointPath, as_angles, check_length, check_number, check_sign, cross, dyad_rrp, unit
+from ..geometry import PointPath, as_angles, cross, dyad_rrp, unit
 from .base import TWO_PI, Mechanism
 from ..motion import LinearMotion
-from .lambda_mechanism import LambdaMechanism
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism
+from ..validate import Angle, Coordinate, Length, Sign
 from ..errors import InfeasibleDesignError
 
 __all__ = ["LambdaSliderSixBar", "LambdaTranslatingSlot"]
@@ -43,25 +44,22 @@ class LambdaSliderSixBar(_OnLambda):
     (the rod would stand across the guide: a dead point, or no assembly at all).
     """
 
-    r: float
-    a: float
-    delta: float
-    rod: float
-    qx: float
-    qy: float
-    theta: float
-    assembly: int = 1
-    dwell: float = 0.0  # the designed dwell 2α (informational: drawings, reports)
+    r: Length
+    a: Length
+    delta: Delta
+    rod: Length
+    qx: Coordinate
+    qy: Coordinate
+    theta: Angle
+    assembly: Sign = 1
+    dwell: Dwell = 0.0  # the designed dwell 2α (informational: drawings, reports)
 
     links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"), ("D", "E"))
     pivots = ("O", "C")
     output = "position"
 
     def __post_init__(self):
-        object.__setattr__(self, "rod", check_length("rod DE", self.rod))
-        object.__setattr__(self, "assembly", check_sign("assembly", self.assembly))
-        for k in ("qx", "qy", "theta"):
-            object.__setattr__(self, k, check_number(k, getattr(self, k)))
+        super().__post_init__()
         self.base  # validates r, a, δ (the crank turns fully)
         off = np.abs(self.offsets(_CHECK))
         i = int(np.argmax(off))
@@ -117,22 +115,21 @@ class LambdaTranslatingSlot(_OnLambda):
     pressure angle is the angle between the slot's normal, along which the block pushes, and w).
     """
 
-    r: float
-    a: float
-    delta: float
-    px: float
-    py: float
-    slot: float
-    guide: float
-    dwell: float = 0.0  # the straight part's crank angle 2α (informational)
+    r: Length
+    a: Length
+    delta: Delta
+    px: Coordinate
+    py: Coordinate
+    slot: Angle
+    guide: Angle
+    dwell: Dwell = 0.0  # the straight part's crank angle 2α (informational)
 
     links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
     pivots = ("O", "C")
     output = "position"
 
     def __post_init__(self):
-        for k in ("px", "py", "slot", "guide"):
-            object.__setattr__(self, k, check_number(k, getattr(self, k)))
+        super().__post_init__()
         self.base
         if abs(self._sin) < 1e-3:
             raise MechanismError(

@@ -44,10 +44,12 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, RotationError, SingularityError
-from ..geometry import AnglePath, PointPath, as_angles, check_length, check_sign, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit, vector_angle
+from ..geometry import (AnglePath, PointPath, as_angles, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit,
+                        vector_angle)
 from .base import Mechanism
 from .curved_slot import CurvedSlotLink, ParametricSlot
 from ..motion import AngularMotion
+from ..validate import Length, OptionalAngle, Point, Sign
 
 _GRID = 720
 
@@ -56,13 +58,6 @@ def _rot(theta, v):
     """Rotate the fixed 2-vector v by angles theta: (n, 2)."""
     c, s = np.cos(theta), np.sin(theta)
     return np.stack([c * v[0] - s * v[1], s * v[0] + c * v[1]], axis=-1)
-
-
-def _point(xy, name):
-    arr = np.asarray(xy, dtype=float)
-    if arr.shape != (2,) or not np.all(np.isfinite(arr)):
-        raise DimensionError(f"{name} must be two finite numbers, got {xy!r}")
-    return (float(arr[0]), float(arr[1]))
 
 
 @dataclass(frozen=True)
@@ -77,27 +72,23 @@ class SixBarIV(Mechanism):
     reaches a dead position), with the numbers.
     """
 
-    crank: float
-    ground: float
-    r_joint: tuple
-    t_joint: tuple
-    link3: float
-    link5: float
-    qp: float
-    coupler_point: tuple
-    inner_assembly: int = 1
-    start: float | None = None
+    crank: Length
+    ground: Length
+    r_joint: Point
+    t_joint: Point
+    link3: Length
+    link5: Length
+    qp: Length
+    coupler_point: Point
+    inner_assembly: Sign = 1
+    start: OptionalAngle = None
 
     links = (("O", "A"), ("A", "Q", "P", "A"), ("Q", "R"), ("P", "T"), ("R", "T", "E", "R"))
     pivots = ("O", "E")
     output = "angle"
 
     def __post_init__(self):
-        for name in ("crank", "ground", "link3", "link5", "qp"):
-            object.__setattr__(self, name, check_length(name, getattr(self, name)))
-        for name in ("r_joint", "t_joint", "coupler_point"):
-            object.__setattr__(self, name, _point(getattr(self, name), name))
-        object.__setattr__(self, "inner_assembly", check_sign("inner_assembly", self.inner_assembly))
+        super().__post_init__()
         if np.hypot(self.t_joint[0] - self.r_joint[0], self.t_joint[1] - self.r_joint[1]) == 0:
             raise DimensionError("r_joint and t_joint coincide: link 4 must carry two distinct joints")
         self._grid  # noqa: B018 - assemble and follow one turn now (raises with the numbers)

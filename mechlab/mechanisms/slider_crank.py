@@ -14,11 +14,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError, RotationError
-from ..geometry import as_angles, check_length, check_number, crank_point, dyad_rrp, fixed_point
+from ..geometry import as_angles, crank_point, dyad_rrp, fixed_point
 from ..motion import Extremes, LinearMotion, limit_positions
+from ..validate import Coordinate, Length
 from .base import FRAME, Link, Mechanism, Pair, Structure, arc_set, fmt_ranges
 from .curved_slot import CircleSlot, TranslatingCurvedSlot
-from .fourbar import assembly_sign
+from .fourbar import Assembly
 
 
 @dataclass(frozen=True)
@@ -29,20 +30,17 @@ class SliderCrank(Mechanism):
     lengths, AssemblyError if it closes at no crank angle.
     """
 
-    crank: float
-    rod: float
-    offset: float = 0.0
-    assembly: int | str = 1
+    crank: Length
+    rod: Length
+    offset: Coordinate = 0.0
+    assembly: Assembly = 1
 
     links = (("O", "A"), ("A", "B"))
     pivots = ("O",)
     output = "position"
 
     def __post_init__(self):
-        object.__setattr__(self, "crank", check_length("crank", self.crank))
-        object.__setattr__(self, "rod", check_length("rod", self.rod))
-        object.__setattr__(self, "offset", check_number("offset", self.offset))
-        object.__setattr__(self, "assembly", assembly_sign(self.assembly))
+        super().__post_init__()
         if not self.crank_ranges():
             raise AssemblyError(
                 f"the slider-crank cannot be assembled at any crank angle: the pin's distance from "

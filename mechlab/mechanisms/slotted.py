@@ -17,21 +17,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import DimensionError
-from ..geometry import AnglePath, PointPath, as_angles, check_length, crank_point, dyad_rpr, fixed_point, lift
+from ..geometry import AnglePath, PointPath, as_angles, crank_point, dyad_rpr, fixed_point, lift
 from ..motion import AngularMotion, LinearMotion
+from ..validate import Length
 from .base import FRAME, Link, Mechanism, Pair, Structure
 
 
 class PivotedSlot:
     """What every slotted link pivoted at B = (-pivot_distance, 0) shares (seed 000 frame):
-    its λ, whether it turns fully, and the check of its crank and pivot distance."""
+    its λ, whether it turns fully, and the check of λ ≠ 1."""
 
-    crank: float
-    pivot_distance: float
+    crank: Length
+    pivot_distance: Length
 
     def _check_crank_and_pivot(self):
-        object.__setattr__(self, "crank", check_length("crank", self.crank))
-        object.__setattr__(self, "pivot_distance", check_length("pivot_distance", self.pivot_distance))
         if abs(self.lam - 1.0) <= 1e-12:
             raise DimensionError(
                 f"λ = crank / pivot_distance = {self.crank:g} / {self.pivot_distance:g} = 1: the pin "
@@ -56,14 +55,15 @@ class SlottedLink(PivotedSlot, Mechanism):
     where the pin passes through the pivot and the slot's direction is undefined.
     """
 
-    crank: float
-    pivot_distance: float
+    crank: Length
+    pivot_distance: Length
 
     links = (("O", "A"),)
     pivots = ("O", "B")
     output = "angle"
 
     def __post_init__(self):
+        super().__post_init__()
         self._check_crank_and_pivot()
 
     def motion(self, phi) -> AngularMotion:
@@ -98,14 +98,11 @@ class SineMechanism(Mechanism):
     the slot's centre line crosses the guide.
     """
 
-    crank: float
+    crank: Length
 
     links = (("O", "A"),)
     pivots = ("O",)
     output = "position"
-
-    def __post_init__(self):
-        object.__setattr__(self, "crank", check_length("crank", self.crank))
 
     def motion(self, phi) -> LinearMotion:
         """Paths of O, A, K and s, s', s'' at crank angles φ (radians)."""

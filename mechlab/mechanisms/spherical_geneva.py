@@ -4,12 +4,15 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
+
 import numpy as np
 from ..errors import DimensionError
-from ..geometry import AnglePath, PointPath, as_angles, check_length, vector_angle
+from ..geometry import AnglePath, PointPath, as_angles, vector_angle
 from .base import Mechanism
 from ..motion import AngularMotion, Quantity, Table
-from .geneva import Impact, OffsetError, TWO_PI, check_slots, mid_motion_angle
+from ..validate import Length, length, number, validated
+from .geneva import Impact, OffsetError, Slots, TWO_PI, mid_motion_angle
 
 
 # ----------------------------------------------------------------------------------
@@ -30,6 +33,10 @@ class SphericalModel:
     r: np.ndarray
 
 
+# the pin's allowance beyond the slot wall, mm (seed formula (9))
+Allowance = Annotated[float, number(5.0, 8.0, why="within [5, 8] mm, seed formula (9)")]
+
+
 @dataclass(frozen=True)
 class SphericalGeneva(Mechanism):
     """Hemispherical Geneva with perpendicular axes and offset e (seed 004).
@@ -42,20 +49,17 @@ class SphericalGeneva(Mechanism):
     while |α| ≤ α0.
     """
 
-    R: float
-    e: float
-    z: int
-    pin_diameter: float = 10.0
+    R: Length
+    e: Annotated[float, length(zero=True, error=OffsetError)]
+    z: Slots
+    pin_diameter: Length = 10.0
 
     links = (("B", "P"),)
     pivots = ("O", "O1")
     output = "angle"
 
     def __post_init__(self):
-        object.__setattr__(self, "z", check_slots(self.z))
-        object.__setattr__(self, "R", check_length("R", self.R))
-        object.__setattr__(self, "e", check_length("e", self.e, allow_zero=True))
-        object.__setattr__(self, "pin_diameter", check_length("pin_diameter", self.pin_diameter))
+        super().__post_init__()
         if self.e >= self.R:
             raise OffsetError(f"the offset must satisfy e < R (the crank axis passes inside the sphere), "
                               f"got e = {self.e:g} ≥ R = {self.R:g}")
@@ -125,12 +129,10 @@ class SphericalGeneva(Mechanism):
         """(ρ_H - ρ0)/sin ψ = |O1A_H| - |O1A0|: how far the contact runs along the pin."""
         return (self.rho_H - self.rho0) / np.sin(self.cone_angle)
 
-    def pin_length(self, wall: float, allowance: float = 6.5) -> float:
+    @validated
+    def pin_length(self, wall: Length, allowance: Allowance = 6.5) -> float:
         """Crank-pin length (9): (ρ_H - ρ0)/sin ψ + δ + (5…8) mm, δ the slot wall
         thickness, ``allowance`` in [5, 8] mm (2…3 mm inside plus 3…5 mm outside)."""
-        wall = check_length("wall", wall)
-        if not 5.0 <= allowance <= 8.0:
-            raise DimensionError(f"the pin-length allowance must be within [5, 8] mm (seed formula (9)), got {allowance:g}")
         return self.pin_travel + wall + allowance
 
     @property

@@ -11,11 +11,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
+
 import numpy as np
-from ..errors import DimensionError
-from ..geometry import PointPath, as_angles, check_length, fixed_point, unit
+from ..geometry import PointPath, as_angles, fixed_point, unit
 from .base import FRAME, Link, Mechanism, Pair, Structure
 from ..motion import LinearMotion
+from ..validate import Length, angle
 
 
 # Guides closer than this to parallel (radians) are rejected: the rod could not move.
@@ -40,21 +42,13 @@ class EllipticTrammel(Mechanism):
     one and turns backwards at the crank's rate). Output: s = x_A = 2r cos φ.
     """
 
-    rod: float
-    beta: float = np.pi / 2
+    rod: Length
+    beta: Annotated[float, angle(_MIN_GUIDE_ANGLE, np.pi - _MIN_GUIDE_ANGLE, open=True,
+                                 why="0 < β < 180°: parallel guides leave no room for the rod to turn")] = np.pi / 2
 
     links = (("O", "C"), ("A", "B"), ("B", "C"), ("C", "A"))
     pivots = ("O",)
     output = "position"
-
-    def __post_init__(self):
-        object.__setattr__(self, "rod", check_length("rod", self.rod))
-        b = float(self.beta)
-        if not (np.isfinite(b) and _MIN_GUIDE_ANGLE < b < np.pi - _MIN_GUIDE_ANGLE):
-            raise DimensionError(
-                f"the angle between the guides must satisfy 0 < β < 180°, got β = {np.degrees(b):.6g}°: "
-                f"parallel guides leave no room for the rod to turn")
-        object.__setattr__(self, "beta", b)
 
     @property
     def crank(self) -> float:

@@ -53,19 +53,26 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import cached_property
 from math import comb
-from typing import Callable
+from typing import Annotated, Callable
+
 import numpy as np
 from numpy.polynomial import Polynomial
 from ..errors import DimensionError, MechanismError
-from ..geometry import as_angles, check_length, wrap
+from ..geometry import as_angles, wrap
 from ..mechanisms.base import Mechanism
 from ..motion import Table, scalar_law
+from ..validate import MAX_GRID, Checked, Distance, Length, angle, check, choice, count, number, validated
 
 
 TRANSITIONS = ("cubic", "quintic", "sextic")
 
 
-LAMBDA_TOL = 1e-9
+# |λ - 1| at least this: closer, ψ_K'(π) = λ/(λ - 1) outgrows what the slot solver can follow.
+LAMBDA_TOL = 1e-4
+# λ within these: outside, the slot's curvature over- or underflows.
+LAMBDA_RANGE = (1e-6, 1e6)
+# The shortest transition (radians) from φ = 0 to φ1 and from φ2 to π (best_placement keeps 1e-3).
+MIN_TRANSITION = 5e-4
 
 
 class DwellError(MechanismError):
@@ -80,18 +87,21 @@ class DwellRatioError(DwellError, DimensionError):
     """λ = l_OA / l_OB is not a positive number different from 1."""
 
 
+# λ = l_OA / l_OB
+Ratio = Annotated[float, number(*LAMBDA_RANGE, error=DwellRatioError, why="λ = l_OA / l_OB, positive")]
+# a crank angle of the dwell's design, radians
+DwellAngle = Annotated[float, angle(0.0, np.pi, error=DwellIntervalError, why="the dwell lies within [0°, 180°]")]
+Transition = Annotated[str, choice(*TRANSITIONS, error=DwellError)]
+
+
 def check_lambda(lam) -> float:
-    """λ as a float; DwellRatioError unless 0 < λ < ∞ and λ ≠ 1."""
-    try:
-        lam = float(lam)
-    except (TypeError, ValueError):
-        raise DwellRatioError(f"λ must be a number, got {lam!r}") from None
-    if not np.isfinite(lam) or lam <= 0:
-        raise DwellRatioError(f"λ = l_OA / l_OB must be a positive finite number, got {lam}")
+    """λ as a float; DwellRatioError unless 1e-6 ≤ λ ≤ 1e6 and |λ - 1| > 1e-4."""
+    lam = check("lam", lam, Ratio.__metadata__[0])
     if abs(lam - 1.0) <= LAMBDA_TOL:
         raise DwellRatioError(
-            f"λ = l_OA / l_OB = {lam:g}, but λ ≠ 1 is needed: the pin passes through the pivot B at φ = 180°, where the "
-            f"slot direction is undefined and ψ_K'(π) = λ/(λ - 1) is infinite")
+            f"λ = l_OA / l_OB = {lam:g}, but λ ≠ 1 is needed (|λ - 1| > {LAMBDA_TOL:g}): the pin passes through "
+            f"the pivot B at φ = 180°, where the slot direction is undefined and ψ_K'(π) = λ/(λ - 1) "
+            + ("is infinite" if lam == 1 else f"= {lam / (lam - 1):.3g}"))
     return lam
 
 
@@ -193,27 +203,24 @@ def _x_over_sin(x: np.ndarray):
 
 
 def check_interval(phi1, phi2) -> tuple[float, float]:
-    """(φ1, φ2) as floats; DwellIntervalError unless 0 < φ1 < φ2 < π."""
-    try:
-        phi1, phi2 = float(phi1), float(phi2)
-    except (TypeError, ValueError):
-        raise DwellIntervalError(f"φ1 and φ2 must be numbers (radians), got {phi1!r}, {phi2!r}") from None
-    if not (np.isfinite(phi1) and np.isfinite(phi2)):
-        raise DwellIntervalError(f"φ1 and φ2 must be finite, got {phi1}, {phi2}")
+    """(φ1, φ2) as floats; DwellIntervalError unless 0 < φ1 < φ2 < π with transitions ≥ MIN_TRANSITION."""
+    phi1, phi2 = (check(k, v, DwellAngle.__metadata__[0]) for k, v in (("phi1", phi1), ("phi2", phi2)))
     deg = f"[φ1, φ2] = [{np.degrees(phi1):.2f}°, {np.degrees(phi2):.2f}°]"
     if phi1 >= phi2:
         raise DwellIntervalError(f"the dwell needs φ1 < φ2, got {deg}")
-    if phi1 < 0.0 or phi2 > np.pi:
-        raise DwellIntervalError(f"the dwell must lie within [0°, 180°] (one half-turn of the crank), got {deg}")
     if phi1 == 0.0 or phi2 == np.pi:
         raise DwellIntervalError(
             f"a dwell starting at φ = 0° or ending at 180° leaves no room for a transition that matches the "
             f"base mechanism's ψ' there, got {deg}: this is the two-branch slot (see two_branch_slot)")
+    if min(phi1, np.pi - phi2) < MIN_TRANSITION:
+        raise DwellIntervalError(
+            f"each transition needs at least {MIN_TRANSITION:g} rad ({np.degrees(MIN_TRANSITION):.3f}°): φ1 = "
+            f"{phi1:.3g} rad, π - φ2 = {np.pi - phi2:.3g} rad (ψ'' grows as 1/width), got {deg}")
     return phi1, phi2
 
 
 @dataclass(frozen=True)
-class DwellLaw:
+class DwellLaw(Checked):
     """The designed law ψ(φ) (seed 000 (21)-(25), corrected) and the slot it fixes.
 
     ``lam`` = λ, ``phi1`` < ``phi2`` the dwell (radians, strictly inside (0, π)),
@@ -223,19 +230,17 @@ class DwellLaw:
     lam: float
     phi1: float
     phi2: float
-    transition: str = "cubic"
-    pivot_distance: float = 1.0
+    transition: Transition = "cubic"
+    pivot_distance: Length = 1.0
     left_coef: np.ndarray = field(init=False, repr=False, compare=False)
     right_coef: np.ndarray = field(init=False, repr=False, compare=False)
     psi_dwell: float = field(init=False, compare=False)
 
     def __post_init__(self):
+        super().__post_init__()
         lam = check_lambda(self.lam)
         phi1, phi2 = check_interval(self.phi1, self.phi2)
-        d = check_length("pivot_distance", self.pivot_distance)
-        if self.transition not in TRANSITIONS:
-            raise DwellError(f"transition must be one of {', '.join(TRANSITIONS)}, got {self.transition!r}")
-        for k, v in (("lam", lam), ("phi1", phi1), ("phi2", phi2), ("pivot_distance", d)):
+        for k, v in (("lam", lam), ("phi1", phi1), ("phi2", phi2)):
             object.__setattr__(self, k, v)
         k0, j0, k1, j1 = _end_values(lam)
         W = np.pi - phi2
@@ -531,22 +536,21 @@ class DwellSlotMechanism(Mechanism):
     phi2: float
     pivot_distance: float = 1.0
     transition: str = "cubic"
-    roller_radius: float = 0.0
+    roller_radius: Distance = 0.0
 
     links = (("O", "A"),)
     pivots = ("O", "B")
     output = "angle"
 
     def __post_init__(self):
+        super().__post_init__()
         law = DwellLaw(self.lam, self.phi1, self.phi2, self.transition, self.pivot_distance)
         for k in ("lam", "phi1", "phi2", "pivot_distance"):
             object.__setattr__(self, k, getattr(law, k))
         object.__setattr__(self, "law", law)
-        rho = check_length("roller_radius", self.roller_radius, allow_zero=True)
-        object.__setattr__(self, "roller_radius", rho)
-        if rho > 0:
+        if self.roller_radius > 0:
             from .slot_export import check_roller
-            check_roller(self, rho)
+            check_roller(self, self.roller_radius)
 
     @property
     def crank(self) -> float:
@@ -570,18 +574,21 @@ class DwellSlotMechanism(Mechanism):
         """ψ, ψ', ψ'' and the pressure angle through the slot (the curved-slot solver)."""
         return self.link.motion(phi)
 
-    def slot_points(self, n: int = 401) -> np.ndarray:
+    @validated
+    def slot_points(self, n: Annotated[int, count(2)] = 401) -> np.ndarray:
         """(n, 2) points of the slot's centre line in the link frame, from the far end E
         (φ = 0) to the near end (φ = π), as the solver's curve gives them."""
         S = np.linspace(self.crank + self.pivot_distance, abs(self.crank - self.pivot_distance), n)
         return self.link.slot.points(S)
 
-    def dwell_points(self, n: int = 101) -> np.ndarray:
+    @validated
+    def dwell_points(self, n: Annotated[int, count(2)] = 101) -> np.ndarray:
         """(n, 2) points of the dwell arc (link frame)."""
         phi = np.linspace(self.phi1, self.phi2, n)
         return self.law._arc_point(self.law.S(phi)[0])
 
-    def max_pressure_angle(self, n: int = 721) -> tuple[float, float]:
+    @validated
+    def max_pressure_angle(self, n: Annotated[int, count(2)] = 721) -> tuple[float, float]:
         """(θ_max, φ at θ_max) over the whole turn from the solver's motion: a grid over [0, π]
         (θ(-φ) = θ(φ): the pin is at the same slot point), the peak refined on the closed form
         :meth:`DwellLaw.pressure_angle`, and θ re-evaluated there through the solver."""
@@ -664,7 +671,8 @@ class TwoBranchSlot:
     link: Callable = field(repr=False)
 
 
-def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: int = 721) -> Table:
+@validated
+def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: Annotated[int, count(2)] = 721) -> Table:
     """One :class:`TransitionRow` per transition law: ψ_B, peak |ψ'|, |ψ''| (through the slot,
     whole turn), peak |ψ'''| and its largest jump at 0, φ1, φ2, π (from the law), the largest
     pressure angle and where it occurs, the largest |κ| of the slot for φ ∈ [1°, 179°] and |κ|
@@ -716,7 +724,9 @@ def where_kind(law: DwellLaw, phi: float, tol: float = np.radians(0.5)) -> str:
     return "transition"
 
 
-def best_placement(lam, length, transition="cubic", pivot_distance=1.0, n_grid: int = 19):
+@validated
+def best_placement(lam: Ratio, length: Annotated[float, angle(0.0, np.pi, open=True)], transition: Transition = "cubic",
+                   pivot_distance: Length = 1.0, n_grid: Annotated[int, count(2, MAX_GRID)] = 19):
     """The dwell [φ1, φ1 + length] that minimises the largest pressure angle (law-based,
     closed form): (θ_max, φ1). Grid over φ1, then a bounded refinement."""
     from scipy.optimize import minimize_scalar
@@ -737,7 +747,9 @@ def best_placement(lam, length, transition="cubic", pivot_distance=1.0, n_grid: 
     return (float(res.fun), float(res.x)) if res.fun < vals[i] else (float(vals[i]), float(grid[i]))
 
 
-def dwell_limit(lam, theta_max, transition="cubic", pivot_distance=1.0) -> DwellLimit:
+@validated
+def dwell_limit(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2)], transition: Transition = "cubic",
+                pivot_distance: Length = 1.0) -> DwellLimit:
     """The longest dwell whose largest pressure angle stays ≤ ``theta_max`` (radians) with the
     best placement, by bisection on the dwell length. Seed 000 §3 says a dwell over 120°
     makes the pressure angle large; this computes the actual limit and where θ is worst."""
@@ -760,7 +772,9 @@ def dwell_limit(lam, theta_max, transition="cubic", pivot_distance=1.0) -> Dwell
                       theta_deg=float(np.degrees(th)), where_deg=float(np.degrees(where)), where=where_kind(law, where))
 
 
-def two_branch_slot(lam, phi2, pivot_distance=1.0) -> TwoBranchSlot:
+@validated
+def two_branch_slot(lam: Ratio, phi2: Annotated[float, angle(0.0, np.pi, open=True, error=DwellIntervalError)],
+                    pivot_distance: Length = 1.0) -> TwoBranchSlot:
     """The two-branch slot of seed 000 Fig. 10: the dwell starts at φ1 = 0, so the dwell arc
     (radius l_OA about O, link at ψ_B = 0) passes through the slot's far point E.
 
@@ -773,10 +787,7 @@ def two_branch_slot(lam, phi2, pivot_distance=1.0) -> TwoBranchSlot:
     from ..mechanisms.curved_slot import CircleSlot, CurvedSlotLink
 
     lam = check_lambda(lam)
-    d = check_length("pivot_distance", pivot_distance)
-    phi2 = float(phi2)
-    if not 0.0 < phi2 < np.pi:
-        raise DwellIntervalError(f"φ2 must lie in (0°, 180°), got {np.degrees(phi2):.2f}°")
+    d = pivot_distance
     r = lam * d
 
     def link():

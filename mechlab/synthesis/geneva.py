@@ -4,11 +4,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 
 import numpy as np
 
 from ..mechanisms.spherical_geneva import SphericalGeneva
 from ..motion import Table
+from ..validate import Spec, validated
 
 
 @dataclass(frozen=True)
@@ -24,7 +26,9 @@ class SphericalRow:
     beta1: float
 
 
-def spherical_table(R: float, e: float, z_values, pin_diameter: float = 10.0) -> Table:
+@validated
+def spherical_table(R: float, e: float, z_values: Annotated[np.ndarray, Spec("samples", lo=1)],
+                    pin_diameter: float = 10.0) -> Table:
     """Table 1 of Vainer & Shatokhina, recomputed: per z, α0 and β0 (deg), ω_max/ω1, the largest
     |ε|/ω1² while the wheel moves (|α| ≤ α0), and α1, β1 (deg) where it is reached."""
     rows = []

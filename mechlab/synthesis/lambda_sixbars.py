@@ -27,16 +27,25 @@ Frames and angles as in :mod:`mechlab.synthesis.lambda_guiding`: the dwell is ce
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq
 from ..errors import MechanismError
-from ..geometry import as_angles, check_length, check_sign, cross
+from ..geometry import cross
 from ..mechanisms.base import TWO_PI
 from .lambda_guiding import CircleGuide, StraightGuide
-from ..mechanisms.lambda_mechanism import _angle
 from ..errors import InfeasibleDesignError
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
+from ..validate import MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check, mechanism, number, validated
+
+# A time ratio K (> 0), the working limit μ_min of a transmission angle (None: no limit), the guides
+MIN_SWING = 1e-6  # radians: a smaller swing β_m overflows the rocker's design
+TimeRatio = Annotated[float, number(0.0, 1e6, open=True, error=InfeasibleDesignError)]
+MuMin = Annotated[float | None, angle(0.0, np.pi / 2, optional=True)]
+Circle = Annotated[CircleGuide, mechanism(CircleGuide)]
+Straight = Annotated[StraightGuide, mechanism(StraightGuide)]
+Grid = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_GRID)]  # one axis of a scan
 
 __all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_turn", "time_ratio_far_angle", "rise_law", "mchv3_full_turn", "dwell_extent", "slot_residual_first_order", "mchv3_full_turn_best"]
 
@@ -63,8 +72,9 @@ class SixBarReport:
     mu2_max: float
 
 
-def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1,
-          mu_min: float | None = np.radians(30)) -> LambdaRockerSixBar:
+@validated
+def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
+          mu_min: MuMin = np.radians(30)) -> LambdaRockerSixBar:
     """МЧВ1 from a circle-guiding design, a time ratio K and a swing β_m (radians) — Fig. 3.
 
     ``side`` picks F on one or the other side of the chord Q-E1. Raises InfeasibleDesignError
@@ -73,16 +83,7 @@ def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1,
     range [μ_min, 180° − μ_min] over the turn (seed 001, §1.8: 30° ≤ μ ≤ 150°, the figure "cnm"
     of Fig. 2a); pass ``mu_min=None`` to get such a design anyway.
     """
-    if not isinstance(guide, CircleGuide):
-        raise TypeError("mchv1 needs a CircleGuide from circle_guiding(...)")
-    try:
-        K = float(K)
-    except (TypeError, ValueError):
-        raise InfeasibleDesignError(f"K must be a number, got {K!r}") from None
-    if not (np.isfinite(K) and K > 0):
-        raise InfeasibleDesignError(f"time ratio K must be > 0, got {K:g}")
-    swing = _angle("swing β_m", swing, 0.0, np.pi, closed_hi=False)
-    side = check_sign("side", side)
+    swing = check("swing", swing, Spec("angle", MIN_SWING, np.pi, open_hi=True))
     m, alpha, R, Q = guide.mechanism, guide.alpha, guide.R, guide.centre
     phi_far = np.pi + alpha + time_ratio_far_angle(K, guide.dwell)
     D1 = m.motion(np.array([phi_far])).points["D"]
@@ -118,7 +119,7 @@ def mchv1(guide: CircleGuide, K: float, swing: float, *, side: int = 1,
             f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the simulated rocker's far extreme is at "
             f"φ = {np.degrees(rep.far):.2f}°, not at the designed {np.degrees(phi_far % TWO_PI):.2f}°")
     if mu_min is not None:
-        lo = _angle("mu_min", mu_min, 0.0, np.pi / 2)
+        lo = mu_min
         if rep.mu2_min < lo or rep.mu2_max > np.pi - lo:
             bad = rep.mu2_min if rep.mu2_min < lo else rep.mu2_max
             raise InfeasibleDesignError(
@@ -166,11 +167,11 @@ def _line_frame(guide: StraightGuide):
     return m, e, foot
 
 
-def mchv3_oscillating(guide: StraightGuide, distance: float) -> LambdaSlottedSixBar:
+@validated
+def mchv3_oscillating(guide: Straight, distance: Length) -> LambdaSlottedSixBar:
     """МЧВ3-1М: pivot on the straight line, ``distance`` (units of l) beyond the end D1 of the
     straight part: the slot stays along the line during the dwell, the link oscillates."""
     m, e, foot = _line_frame(guide)
-    distance = check_length("distance", distance)
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
     along = np.array([-e[1], e[0]])
     P = foot - (half + distance) * along
@@ -197,7 +198,9 @@ def rise_law(mech, dwell: float, n: int = 4001):
     return phi, mo.psi, mo.dpsi, mo.ddpsi
 
 
-def mchv3_full_turn(guide: StraightGuide, beyond: float = 0.06, depth: float = 0.05, side: int = 1) -> LambdaSlottedSixBar:
+@validated
+def mchv3_full_turn(guide: Straight, beyond: Distance = 0.06, depth: Length = 0.05,
+                    side: Sign = 1) -> LambdaSlottedSixBar:
     """МЧВ3-3М (as reconstructed): 360° per crank turn with an approximate dwell.
 
     The pivot P sits inside the coupler curve, ``beyond`` past one end of the dwell part of the
@@ -216,9 +219,6 @@ def mchv3_full_turn(guide: StraightGuide, beyond: float = 0.06, depth: float = 0
     ~2° is inherent there; a guide designed for a shorter dwell does better (160°: 0.94°, 140°: 0.55°).
     """
     m, e, foot = _line_frame(guide)
-    beyond = check_length("beyond", beyond, allow_zero=True)
-    depth = check_length("depth", depth)
-    side = check_sign("side", side)
     along = np.array([-e[1], e[0]])
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
     P = foot + side * (half + beyond) * along + depth * e
@@ -257,7 +257,9 @@ def dwell_extent(mech, tol: float = 0.02, n: int = 2881) -> float:
     return float(phi[hi] - phi[lo])
 
 
-def slot_residual_first_order(mech: LambdaSlottedSixBar, guide: StraightGuide, phi) -> np.ndarray:
+@validated
+def slot_residual_first_order(mech: Annotated[LambdaSlottedSixBar, mechanism(LambdaSlottedSixBar)], guide: Straight,
+                              phi: Angles) -> np.ndarray:
     """First-order turn of the МЧВ3-3М slot away from the guide's line L at crank angles φ (radians).
 
     Derivation: the slot is the tangent from the pin D to the circle of radius |e| about P; P sits
@@ -269,14 +271,17 @@ def slot_residual_first_order(mech: LambdaSlottedSixBar, guide: StraightGuide, p
     distance from the pivot's foot, worst at the dwell end nearest the pivot (E/beyond).
     Returns h/s (compare differences: the simulated ψ − ψ(φ0) ≈ ±(h/s − (h/s)(φ0)))."""
     m = mech.base
-    x, y = m.axis_coordinates(as_angles(phi))
+    x, y = m.axis_coordinates(phi)
     e = m.axis
     yP = (mech.P - m.C) @ np.array([-e[1], e[0]])
     return (x - guide.Y) / (y - yP)
 
 
-def mchv3_full_turn_best(guide: StraightGuide, side: int = 1, max_speed: float | None = 15.0,
-                         beyonds=np.arange(0.0, 0.5001, 0.005), depths=np.arange(0.005, 0.2001, 0.005)):
+@validated
+def mchv3_full_turn_best(guide: Straight, side: Sign = 1,
+                         max_speed: Annotated[float | None, number(0.0, open=True, optional=True)] = 15.0,
+                         beyonds: Grid = np.arange(0.0, 0.5001, 0.005),
+                         depths: Grid = np.arange(0.005, 0.2001, 0.005)):
     """МЧВ3-3М with the pivot placed for the smallest residual over the guide's dwell.
 
     Scans the pivot's position (``beyonds`` past the dwell end × ``depths`` into the curve) with the
@@ -297,7 +302,6 @@ def mchv3_full_turn_best(guide: StraightGuide, side: int = 1, max_speed: float |
     choice of pivot. Shorter dwells leave the pivot room: a guide for 2α = 160° gives 0.94°, 140° 0.55°.
     """
     m, e, foot = _line_frame(guide)
-    side = check_sign("side", side)
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
     xc, yc = m.axis_coordinates(np.linspace(0, TWO_PI, 1441))
     t = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 121) + 1e-6

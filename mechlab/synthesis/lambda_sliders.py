@@ -47,36 +47,31 @@ Frames as in :mod:`mechlab.synthesis.lambda_guiding`: O = (0, 0), C = (a, 0), th
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq
 from ..errors import MechanismError
-from ..geometry import check_length, check_sign
 from ..mechanisms.base import TWO_PI
 from ..motion import AngularMotion
 from ..analysis.motion_laws import Invariants, rise_invariants
 from .lambda_guiding import CircleGuide, StraightGuide
-from ..mechanisms.lambda_mechanism import _angle
 from ..errors import InfeasibleDesignError
-from .lambda_sixbars import report, rise_law, time_ratio_far_angle
+from .lambda_sixbars import Circle, MuMin, Straight, TimeRatio, report, rise_law, time_ratio_far_angle
 from ..mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
+from ..validate import Length, Sign, Spec, angle, mechanism, number, validated
+
+Slider = Annotated[LambdaSliderSixBar, mechanism((LambdaSliderSixBar, LambdaTranslatingSlot))]
+OptionalDwell = Annotated[float | None, angle(0.0, 2 * np.pi, open=True, optional=True)]
 
 __all__ = ["mchv2", "mchv2_stroke", "mchv2_far_position", "mchv5", "SliderReport", "slider_report", "slider_rise", "slider_invariants"]
 
 
-def mchv2_far_position(guide: CircleGuide, K: float, normal: int = 1):
+@validated
+def mchv2_far_position(guide: Circle, K: TimeRatio, normal: Sign = 1):
     """The far crank angle φ_far = π + α + φ_n and the far position E1 = D1 + R·n of the slider
     for a time ratio K (n the unit normal to D's path at D1, on the side of Q for ``normal`` = +1 as
     in МЧВ1's Fig. 3, on the other side for −1). Returns (φ_far, D1, E1)."""
-    normal = check_sign("normal", normal)
-    if not isinstance(guide, CircleGuide):
-        raise TypeError("МЧВ2 needs a CircleGuide from circle_guiding(...)")
-    try:
-        K = float(K)
-    except (TypeError, ValueError):
-        raise InfeasibleDesignError(f"K must be a number, got {K!r}") from None
-    if not (np.isfinite(K) and K > 0):
-        raise InfeasibleDesignError(f"time ratio K must be > 0, got {K:g}")
     m, Q = guide.mechanism, guide.centre
     phi_far = np.pi + guide.alpha + time_ratio_far_angle(K, guide.dwell)
     D1 = m.motion(np.array([phi_far])).points["D"]
@@ -87,8 +82,9 @@ def mchv2_far_position(guide: CircleGuide, K: float, normal: int = 1):
     return phi_far, D1.p[0], D1.p[0] + normal * guide.R * n
 
 
-def mchv2(guide: CircleGuide, K: float = 1.0, *, normal: int | None = None,
-          mu_min: float | None = np.radians(30)) -> LambdaSliderSixBar:
+@validated
+def mchv2(guide: Circle, K: TimeRatio = 1.0, *, normal: Annotated[int | None, Spec("sign", optional=True)] = None,
+          mu_min: MuMin = np.radians(30)) -> LambdaSliderSixBar:
     """МЧВ2 for a circle-guiding design and a time ratio K: rod DE = R, guide through Q and E1.
 
     The slider's stroke is then h = |QE1| (:func:`mchv2_far_position`); K = 1 gives the guide along
@@ -154,8 +150,9 @@ def _mchv2(guide: CircleGuide, K: float, normal: int, mu_min: float | None) -> L
     return six
 
 
-def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float = 20.0, *, normal: int = 1,
-                 mu_min: float | None = np.radians(30)) -> LambdaSliderSixBar:
+@validated
+def mchv2_stroke(guide: Circle, stroke: Length, side: Sign = 1, K_max: Annotated[float, number(1.0, 1e6)] = 20.0, *,
+                 normal: Sign = 1, mu_min: MuMin = np.radians(30)) -> LambdaSliderSixBar:
     """МЧВ2 with a requested stroke h = |QE1| (units of l): the time ratio K is solved for.
 
     h(K) is smallest at K = 1 (guide on the axis) and, with the mirror symmetry, h(K) = h(1/K);
@@ -164,8 +161,7 @@ def mchv2_stroke(guide: CircleGuide, stroke: float, side: int = 1, K_max: float 
     :func:`mchv2`, here fixed: h(K) depends on it; ``mu_min`` as there). Raises
     InfeasibleDesignError naming the achievable range when h cannot be met.
     """
-    h = check_length("stroke h", stroke)
-    side = check_sign("side", side)
+    h = stroke
 
     def gap(k):  # k ≥ 1; K = k or 1/k
         _, _, E1 = mchv2_far_position(guide, k if side > 0 else 1 / k, normal)
@@ -205,8 +201,11 @@ def _axis_stroke(guide: StraightGuide) -> float:
     return ext[1] - ext[0]
 
 
-def mchv5(guide: StraightGuide, stroke: float | None = None, *, guide_angle: float | None = None,
-          side: int = 1, max_pressure: float = np.radians(60)) -> LambdaTranslatingSlot:
+@validated
+def mchv5(guide: Straight, stroke: Annotated[float | None, Spec("length", 0.0, None, True, optional=True)] = None, *,
+          guide_angle: Annotated[float | None, angle(-np.pi / 2, np.pi / 2, open=True, optional=True)] = None,
+          side: Sign = 1, max_pressure: Annotated[float, angle(0.0, np.pi / 2, open=True)] = np.radians(60)
+          ) -> LambdaTranslatingSlot:
     """МЧВ5 on a straight-line design: slot along the straight part of D's path (perpendicular to
     the axis e), through its foot P = C + Y·e, output guide turned by γ from e.
 
@@ -214,22 +213,18 @@ def mchv5(guide: StraightGuide, stroke: float | None = None, *, guide_angle: flo
     ``stroke`` h ≥ h0 (γ = arccos(h0/h), turned by ``side``·γ). Raises InfeasibleDesignError
     when h < h0 or the needed pressure angle γ exceeds ``max_pressure``.
     """
-    if not isinstance(guide, StraightGuide):
-        raise TypeError("МЧВ5 needs a StraightGuide from straight_guiding(...)")
-    side = check_sign("side", side)
     if stroke is not None and guide_angle is not None:
         raise MechanismError("give either the stroke or the guide angle γ, not both")
     h0 = _axis_stroke(guide)
     if stroke is not None:
-        h = check_length("stroke h", stroke)
+        h = stroke
         if h < h0 * (1 - 1e-12):
             raise InfeasibleDesignError(
                 f"stroke h = {h:.6g} is below the stroke h0 = {h0:.6g} of the slot across the axis: a translating "
                 f"slot parallel to the straight part moves at least h0 (h = h0/cos γ)")
         gamma = side * float(np.arccos(min(h0 / h, 1.0)))
     else:
-        gamma = _angle("guide angle γ", 0.0 if guide_angle is None else guide_angle, -np.pi / 2, np.pi / 2,
-                       closed_hi=False)
+        gamma = 0.0 if guide_angle is None else guide_angle
     if abs(gamma) > max_pressure:
         raise InfeasibleDesignError(
             f"the output's guide would be turned by γ = {np.degrees(abs(gamma)):.4g}° from the slot normal "
@@ -273,7 +268,8 @@ class SliderReport:
     mu2_max: float
 
 
-def slider_report(mech, dwell: float | None = None) -> SliderReport:
+@validated
+def slider_report(mech: Slider, dwell: OptionalDwell = None) -> SliderReport:
     """Simulate МЧВ2 or МЧВ5 over a turn (the measures of :func:`.sixbars.report`): residual motion
     in the dwell centred on φ = π, stroke, far extreme, measured K, transmission angles."""
     dwell = mech.dwell if dwell is None else dwell
@@ -281,12 +277,14 @@ def slider_report(mech, dwell: float | None = None) -> SliderReport:
     return SliderReport(r.dwell, r.residual, r.swing, r.far, r.K, r.mu_min, r.mu_max, r.mu2_min, r.mu2_max)
 
 
-def slider_rise(mech, dwell: float | None = None, n: int = 4001):
+@validated
+def slider_rise(mech: Slider, dwell: OptionalDwell = None, n: Annotated[int, Spec("count", 3, 10**6)] = 4001):
     """(φ, s, s′, s″) over the rise, from the end of the dwell to the far extreme (:func:`.sixbars.rise_law`)."""
     return rise_law(_AsAngle(mech), mech.dwell if dwell is None else dwell, n)
 
 
-def slider_invariants(mech, dwell: float | None = None) -> Invariants:
+@validated
+def slider_invariants(mech: Slider, dwell: OptionalDwell = None) -> Invariants:
     """B, C, D of the rise (:func:`mechlab.analysis.motion_laws.rise_invariants`; seed 001, chapter 2)."""
     return rise_invariants(*slider_rise(mech, dwell))
 

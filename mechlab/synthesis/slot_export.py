@@ -26,10 +26,14 @@ import csv
 import io
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Annotated, Any
 
 import numpy as np
 
 from ..errors import MechanismError
+from ..validate import FilePath, Spec, count, length, validated
+from ..validate import mechanism as mechanism_of
+from .dwell_slot import DwellSlotMechanism
 
 
 class SlotUndercutError(MechanismError):
@@ -85,12 +89,17 @@ def check_roller(mechanism, roller_radius: float) -> None:
             f"(at φ = {np.degrees(where):.3g}°): the flank on the concave side would fold over{hint}")
 
 
-def slot_profile(mechanism, roller_radius: float | None = None, n: int = 721) -> SlotProfile:
+# the dwell mechanism, the roller (None: the mechanism's own), the samples over [0, π]
+Designed = Annotated[Any, mechanism_of(DwellSlotMechanism)]
+Roller = Annotated[float | None, length(zero=True, optional=True, error=SlotUndercutError)]
+HalfTurnSamples = Annotated[int, count(2)]
+
+
+@validated
+def slot_profile(mechanism: Designed, roller_radius: Roller = None, n: HalfTurnSamples = 721) -> SlotProfile:
     """The slot of a :class:`~mechlab.synthesis.dwell_slot.DwellSlotMechanism` sampled at n crank angles
     over [0, π], taken from the curve the solver uses, with flanks at ±ρ."""
-    rho = mechanism.roller_radius if roller_radius is None else float(roller_radius)
-    if rho < 0 or not np.isfinite(rho):
-        raise SlotUndercutError(f"roller radius must be a finite number ≥ 0, got {rho}")
+    rho = mechanism.roller_radius if roller_radius is None else roller_radius
     if rho > 0:
         check_roller(mechanism, rho)
     phi = _grid(n)
@@ -101,7 +110,9 @@ def slot_profile(mechanism, roller_radius: float | None = None, n: int = 721) ->
     return SlotProfile(phi, S, c.p, normal, mechanism.law.curvature(phi), rho)
 
 
-def write_csv(mechanism, path=None, roller_radius: float | None = None, n: int = 721) -> str:
+@validated
+def write_csv(mechanism: Designed, path: Annotated[Any, Spec("path", optional=True)] = None,
+              roller_radius: Roller = None, n: HalfTurnSamples = 721) -> str:
     """The slot as CSV (columns phi_deg, S, x, y, x_left, y_left, x_right, y_right, curvature);
     written to ``path`` if given; returns the text."""
     prof = slot_profile(mechanism, roller_radius, n)
@@ -132,7 +143,8 @@ def _angle_deg(v) -> float:
     return float(np.degrees(np.arctan2(v[1], v[0])))
 
 
-def write_dxf(mechanism, path, roller_radius: float | None = None, n: int = 721):
+@validated
+def write_dxf(mechanism: Designed, path: FilePath, roller_radius: Roller = None, n: HalfTurnSamples = 721):
     """Write the slot as DXF (R2010, units mm) with ezdxf; returns the ezdxf document."""
     import ezdxf
 

@@ -24,6 +24,9 @@ import numpy as np
 from ...geometry import AnglePath, PointPath, as_angles, perp, unit
 from .homogeneous import Centre, CentreAtInfinity, in_frame
 from .instant import InstantCentres, instant_centres
+from ...mechanisms.base import AnyMechanism
+from ...errors import MechanismError
+from ...validate import Name, OptionalAngles, validated
 
 
 def point_in_frame(p: PointPath, origin: PointPath, angle: AnglePath) -> PointPath:
@@ -95,10 +98,15 @@ class Centrodes:
         return self._place(self.moving, self.link, i)
 
 
-def centrodes(mechanism, link: str, reference: str = "frame", phi=None, method: str = "kennedy") -> Centrodes:
+@validated
+def centrodes(mechanism: AnyMechanism, link: Name, reference: Name = "frame", phi: OptionalAngles = None,
+              method: str = "kennedy") -> Centrodes:
     """Fixed and moving centrodes of ``link`` relative to ``reference`` (link names of
     :func:`instant_centres`, e.g. "coupler" and "frame" of a four-bar)."""
     ic = instant_centres(mechanism, phi, method)
+    for param, name in (("link", link), ("reference", reference)):
+        if name not in ic.links:
+            raise MechanismError(f"{param} must be one of the links {', '.join(ic.links)}, got {name!r}")
     P = ic(link, reference)
     poses = ic.structure.poses
     o_r, th_r = poses[ic.links[ic.index(reference)]]

@@ -20,7 +20,7 @@ the crank, ω_1·perp(P1k - P1f).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Mapping
+from typing import Annotated, Mapping
 
 import numpy as np
 
@@ -30,6 +30,8 @@ from ...mechanisms.base import FRAME, Structure
 from ...motion import Motion
 from .homogeneous import Centre, at_infinity, finite, line_with_direction
 from .kennedy import Pair, centres_from_twists, kennedy, pair
+from ...mechanisms.base import AnyMechanism
+from ...validate import OptionalAngles, choice, validated
 
 
 @dataclass(frozen=True, eq=False)
@@ -233,7 +235,9 @@ class InstantCentres:
         return worst
 
 
-def instant_centres(mechanism, phi=None, method: str = "kennedy") -> InstantCentres:
+@validated
+def instant_centres(mechanism: AnyMechanism, phi: OptionalAngles = None,
+                    method: Annotated[str, choice("kennedy", "velocity")] = "kennedy") -> InstantCentres:
     """All instantaneous centres of ``mechanism`` at crank angles φ (default: its cycle).
 
     ``method="kennedy"``: from positions only — the pairs' own centres and the higher
@@ -247,10 +251,8 @@ def instant_centres(mechanism, phi=None, method: str = "kennedy") -> InstantCent
     nums = [str(k + 1) for k in range(len(st.links))]
     if method == "kennedy":
         centres, steps = kennedy(len(st.links), st.known, st.normals, scale=st.scale, phi=phi, names=nums)
-    elif method == "velocity":
+    else:
         om, v0 = twists(st)
         centres = centres_from_twists(om, v0, scale=st.scale, phi=phi, names=nums, known=st.known)
         steps = []
-    else:
-        raise MechanismError(f"method must be 'kennedy' or 'velocity', got {method!r}")
     return InstantCentres(mechanism, motion, st, centres, method, steps)

@@ -1,0 +1,303 @@
+"""Every exported callable of mechlab, fed valid and adversarial inputs (hypothesis).
+
+Each case is a valid call; hypothesis replaces one of its parameters by a nearby valid value or
+by an adversarial one (NaN, ±inf, 0, negatives, 1e-300, 1e300, 10**400, bools, strings, None,
+complex, wrong-shaped and empty arrays) and the outcome must be one of:
+
+* a result whose every number is finite (a mechanism is also moved over its cycle);
+* a MechanismError subclass whose message names the replaced parameter; a real finite number of the
+  right type may instead make the design impossible, and the error then names the violated condition;
+* a TypeError naming what was expected, where a mechanism (or another object of a kind) is expected.
+
+The same examples every run (tests/conftest.py); the whole file runs in about 30 s.
+"""
+
+from __future__ import annotations
+
+import atexit
+import contextlib
+import dataclasses
+import functools
+import inspect
+import math
+import numbers
+import shutil
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import mechlab as ml
+from mechlab.kinetostatics import drive as force_drive
+from mechlab.mechanisms.sixbar_iv import example as sixbar_example
+from mechlab.validate import _spec_of
+
+DEG = np.pi / 180
+
+ADVERSARIAL = [math.nan, math.inf, -math.inf, 0, 0.0, -1, -2.5, 1e-300, 1e300, 10**400, True, False, "abc", None,
+               1 + 1j, np.complex128(2 + 0.5j), np.array([1.0, 2.0]), np.array([]), np.array([[1.0]]),
+               np.float32(0.5), np.int64(3), np.nan, [1.0, "x"]]
+
+# a parameter's name as the messages may spell it
+ALIASES = {"delta": ("δ",), "lam": ("λ",), "phi1": ("φ1",), "phi2": ("φ2",), "swing": ("β_m",),
+           "theta_max": ("θ",), "K": ("time ratio",), "stroke": ("stroke h",), "com": ("centre of mass",)}
+
+
+@functools.cache
+def scratch() -> Path:
+    """A temporary folder for the files the export functions write, removed at exit."""
+    folder = Path(tempfile.mkdtemp(prefix="mechlab-fuzz-"))
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    return folder
+
+
+@functools.cache
+def guides():
+    return ml.circle_guiding(150 * DEG, 0.9, 120 * DEG), ml.straight_guiding(np.pi, 0.8, np.pi)
+
+
+@functools.cache
+def designs():
+    circle, straight = guides()
+    return (ml.mchv1(circle, 1.0, 20 * DEG), ml.mchv2(circle, 1.0), ml.mchv3_full_turn(straight),
+            ml.mchv5(straight))
+
+
+def wavy():
+    return ml.ParametricSlot(lambda t: np.stack([1.0 + 0 * t, t], -1), lambda t: np.stack([0 * t, 1 + 0 * t], -1),
+                             lambda t: np.zeros((len(t), 2)), -0.8, 0.8)
+
+
+def fields_of(obj):
+    return [getattr(obj, f.name) for f in dataclasses.fields(obj) if f.init]
+
+
+fb = ml.FourBar(1.0, 3.0, 3.0, 4.0)
+PHI = np.linspace(0.1, 6.0, 7)
+
+# name: (callable, args, kwargs, examples)
+CASES = {
+    "FourBar": lambda: (ml.FourBar, (1.0, 3.0, 3.0, 4.0), {"assembly": 1}),
+    "SliderCrank": lambda: (ml.SliderCrank, (1.0, 3.0), {"offset": 0.2, "assembly": -1}),
+    "SlottedLink": lambda: (ml.SlottedLink, (0.5, 1.0), {}),
+    "SineMechanism": lambda: (ml.SineMechanism, (1.0,), {}),
+    "CircleSlot": lambda: (ml.CircleSlot, ((1.0, 0.0), 3.0), {}),
+    "ParametricSlot": lambda: (ml.ParametricSlot, tuple(fields_of(wavy())[:5]), {"periodic": False}),
+    "SampledSlot": lambda: (ml.SampledSlot, (np.c_[np.ones(9), np.linspace(-0.8, 0.8, 9)],), {"closed": False}),
+    "CurvedSlotLink": lambda: (ml.CurvedSlotLink, (1.0, 4.0, ml.CircleSlot((3.0, 0.0), 3.0)), {"start": 1.0}),
+    "TranslatingCurvedSlot": lambda: (ml.TranslatingCurvedSlot, (1.0, ml.CircleSlot((0.0, 0.2), 3.0)),
+                                      {"start": 0.0}),
+    "SixBarIV": lambda: (ml.SixBarIV, tuple(fields_of(sixbar_example())), {}),
+    "EllipticTrammel": lambda: (ml.EllipticTrammel, (1.0,), {"beta": 1.2}),
+    "Antiparallelogram": lambda: (ml.Antiparallelogram, (1.0, 2.0), {}),
+    "LambdaMechanism": lambda: (ml.LambdaMechanism, (0.4, 0.8, np.pi), {"assembly": 1}),
+    "ExternalGeneva": lambda: (ml.ExternalGeneva, (4, 1.0), {"roller_radius": 0.1}),
+    "InternalGeneva": lambda: (ml.InternalGeneva, (6, 1.0), {}),
+    "SphericalGeneva": lambda: (ml.SphericalGeneva, (40.0, 15.0, 4), {"pin_diameter": 10.0}),
+    "FourBar.motion": lambda: (fb.motion, (PHI,), {}),
+    "FourBar.turn": lambda: (fb.turn, (9,), {}),
+    "FourBar.cycle": lambda: (fb.cycle, (9,), {}),
+    "Motion.velocity": lambda: (fb.motion(PHI).velocity, (2.0,), {}),
+    "Motion.acceleration": lambda: (fb.motion(PHI).acceleration, (2.0,), {"eps1": 0.5}),
+    "relative_path": lambda: (ml.relative_path, (fb, PHI), {}),
+    "equivalent_slot": lambda: (ml.equivalent_slot, (fb,), {}),
+    "base_law": lambda: (ml.base_law, (fb, PHI), {}),
+    "base_mechanism": lambda: (ml.base_mechanism, (fb,), {}),
+    "assembly_symmetry": lambda: (ml.assembly_symmetry, (fb, PHI), {}),
+    "other_half": lambda: (ml.other_half, (fb, PHI), {}),
+    "limit_theorem": lambda: (ml.limit_theorem, (fb,), {"n": 73}),
+    "base_peaks": lambda: (ml.base_peaks, (0.5,), {}),
+    "instant_centres": lambda: (ml.instant_centres, (fb, PHI), {"method": "kennedy"}),
+    "centrodes": lambda: (ml.centrodes, (fb, "coupler"), {"reference": "frame", "phi": PHI, "method": "kennedy"}),
+    "curved_slot_dwell": lambda: (ml.curved_slot_dwell, (0.5, 60 * DEG, 150 * DEG),
+                                  {"pivot_distance": 1.0, "transition": "quintic", "roller_radius": 0.0}),
+    "DwellLaw": lambda: (ml.DwellLaw, (0.5, 60 * DEG, 150 * DEG), {"transition": "cubic", "pivot_distance": 1.0}),
+    "DwellLaw.curvature": lambda: (ml.DwellLaw(0.5, 60 * DEG, 150 * DEG).curvature, (PHI,), {}),
+    "two_branch_slot": lambda: (ml.two_branch_slot, (0.5, 60 * DEG), {"pivot_distance": 1.0}),
+    "dwell_limit": lambda: (ml.dwell_limit, (0.5, 75 * DEG), {"transition": "cubic", "pivot_distance": 1.0}),
+    "compare_transitions": lambda: (ml.compare_transitions, (0.5, 60 * DEG, 150 * DEG), {"n": 73}),
+    "slot_profile": lambda: (ml.slot_profile, (ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"),),
+                             {"roller_radius": 0.01, "n": 41}),
+    "write_csv": lambda: (ml.write_csv, (ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"),),
+                          {"roller_radius": 0.01, "n": 41}),
+    "mchv1": lambda: (ml.mchv1, (guides()[0], 1.0, 20 * DEG), {"side": 1, "mu_min": 30 * DEG}),
+    "mchv2": lambda: (ml.mchv2, (guides()[0], 1.0), {"normal": 1, "mu_min": 30 * DEG}),
+    "mchv2_stroke": lambda: (ml.mchv2_stroke, (guides()[0], 0.35), {"side": 1, "mu_min": None}),
+    "mchv3_full_turn": lambda: (ml.mchv3_full_turn, (guides()[1],), {"beyond": 0.06, "depth": 0.05, "side": 1}),
+    "mchv3_full_turn_best": lambda: (ml.mchv3_full_turn_best, (guides()[1],),
+                                     {"side": 1, "max_speed": 15.0, "beyonds": np.array([0.06]),
+                                      "depths": np.array([0.04, 0.05])}),
+    "mchv5": lambda: (ml.mchv5, (guides()[1],), {"stroke": None, "side": 1, "max_pressure": 60 * DEG}),
+    "slot_residual_first_order": lambda: (ml.slot_residual_first_order, (designs()[2], guides()[1], PHI), {}),
+    "slider_report": lambda: (ml.slider_report, (designs()[1],), {"dwell": 120 * DEG}),
+    "slider_invariants": lambda: (ml.slider_invariants, (designs()[3],), {"dwell": np.pi}),
+    "LambdaRockerSixBar": lambda: (ml.LambdaRockerSixBar, tuple(fields_of(designs()[0])), {}),
+    "LambdaSliderSixBar": lambda: (ml.LambdaSliderSixBar, tuple(fields_of(designs()[1])), {}),
+    "LambdaSlottedSixBar": lambda: (ml.LambdaSlottedSixBar, tuple(fields_of(designs()[2])), {}),
+    "LambdaTranslatingSlot": lambda: (ml.LambdaTranslatingSlot, tuple(fields_of(designs()[3])), {}),
+    "spherical_table": lambda: (ml.spherical_table, (40.0, 15.0, [3, 4]), {"pin_diameter": 10.0}),
+    "intermittency": lambda: (ml.intermittency, (ml.ExternalGeneva(4, 1.0),),
+                              {"n": 721, "dwell_tol": 1e-9, "phase": 0.1}),
+    "compare": lambda: (ml.compare, ({"g": ml.ExternalGeneva(4, 1.0)},), {"n": 361}),
+    "Kinetostatics": lambda: (ml.Kinetostatics, (fb,), {"omega1": 2.0, "eps1": 0.0, "gravity": (0.0, -9.81)}),
+    "Kinetostatics.forces": lambda: (ml.forces.press().forces, (PHI,), {}),
+    "press": lambda: (ml.forces.press, (), {"crank": 0.1, "rod": 0.4, "rpm": 120.0, "P": 2000.0,
+                                             "work_fraction": 0.3, "f": 0.1, "radius": 0.01}),
+    "rocker_drive": lambda: (ml.forces.rocker_drive, (), {"crank": 0.1, "rpm": 120.0, "T": 40.0, "f": 0.05}),
+    "drive": lambda: (force_drive, (np.cos(np.linspace(0, 2 * np.pi, 73)) + 2, np.linspace(0, 2 * np.pi, 73),
+                                    10.0), {"overload": 2.0, "efficiency": 0.9}),
+    "Body": lambda: (ml.Body, ("rod", "A"), {"axis": 0.0, "mass": 1.0, "inertia": 0.1, "com": (0.1, 0.0),
+                                               "length": 0.3}),
+    "Revolute": lambda: (ml.Revolute, ("A", "crank", "rod", "A"), {"friction": 0.1, "radius": 0.01}),
+    "Prismatic": lambda: (ml.Prismatic, ("B", "slider", "frame", "B"), {"angle": 0.0, "friction": 0.1}),
+    "HigherPair": lambda: (ml.HigherPair, ("K", "a", "b", "K"), {"normal": 0.5, "friction": 0.1}),
+    "Force": lambda: (ml.Force, ("slider", "B", (0.0, -100.0)), {}),
+    "Torque": lambda: (ml.Torque, ("rocker", 5.0), {}),
+    "model_for": lambda: (ml.model_for, (fb,), {}),
+    "ForceModel": lambda: (ml.ForceModel, tuple(fields_of(ml.model_for(fb))), {}),
+    "formula_18": lambda: (ml.formula_18, (0.5, PHI), {}),
+    "best_placement": lambda: (ml.best_placement, (0.5, 60 * DEG), {"transition": "cubic", "n_grid": 7}),
+    "mchv2_far_position": lambda: (ml.mchv2_far_position, (guides()[0], 1.0), {"normal": 1}),
+    "mchv3_oscillating": lambda: (ml.mchv3_oscillating, (guides()[1], 0.1), {}),
+    "classic_lambda": lambda: (ml.classic_lambda, (), {}),
+    "detect_impacts": lambda: (ml.detect_impacts, (ml.ExternalGeneva(4, 1.0),), {"n": 512, "phase": 0.1}),
+    "transmission_extremes": lambda: (ml.transmission_extremes, (fb,), {"n": 361}),
+    "zero_acceleration": lambda: (ml.zero_acceleration, (fb,), {"n": 361}),
+    "crank_ranges_degrees": lambda: (ml.crank_ranges_degrees, (fb,), {}),
+    "table1_comparison": lambda: (ml.table1_comparison, (), {"R": 40.0, "e": 15.0}),
+    "DwellSlotMechanism": lambda: (ml.DwellSlotMechanism, (0.5, 60 * DEG, 150 * DEG), {"transition": "sextic"}),
+    "write_dxf": lambda: (ml.write_dxf, (ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"),
+                                         scratch() / "slot.dxf"),
+                          {"roller_radius": 0.01, "n": 41}),
+}
+
+# the slow ones get fewer examples
+BUDGET = {"dwell_limit": 4, "mchv3_full_turn_best": 6, "compare_transitions": 4, "mchv2_stroke": 6, "mchv1": 8,
+          "mchv2": 8,
+          "slider_invariants": 6, "slider_report": 6, "compare": 6, "intermittency": 8, "SixBarIV": 8,
+          "LambdaSlottedSixBar": 8, "mchv3_full_turn": 8, "Kinetostatics.forces": 8}
+
+
+def finite(value, depth=0) -> bool:
+    """Every number reachable in a result is finite (arrays of numbers, containers, dataclasses)."""
+    if depth > 4 or value is None or isinstance(value, str | bytes | type) or callable(value) and not \
+            dataclasses.is_dataclass(value):
+        return True
+    if isinstance(value, numbers.Number):
+        return bool(np.isfinite(value)) if not isinstance(value, complex) else bool(np.isfinite(value.real))
+    if isinstance(value, np.ndarray):
+        return value.dtype.kind not in "fc" or bool(np.all(np.isfinite(value)))
+    if isinstance(value, dict):
+        return all(finite(v, depth + 1) for v in value.values())
+    if isinstance(value, list | tuple):
+        return all(finite(v, depth + 1) for v in value[:50])
+    if dataclasses.is_dataclass(value):
+        return all(finite(getattr(value, f.name, None), depth + 1) for f in dataclasses.fields(value)
+                   if not f.name.startswith("_"))
+    return True
+
+
+def check_result(result):
+    assert finite(result), f"non-finite numbers in {result!r:.300}"
+    if isinstance(result, ml.Mechanism):
+        mo = result.motion(result.cycle(16))
+        law = mo.output
+        assert all(np.all(np.isfinite(x)) for x in (law.value, law.d, law.dd)), f"{result!r:.200} moves with NaN or inf"
+
+
+def parameters(fn, args, kwargs):
+    """(name, index or None) of every parameter of the valid call."""
+    sig = inspect.signature(fn)
+    names = list(sig.parameters)
+    return [(names[i], i) for i in range(len(args))] + [(k, None) for k in kwargs]
+
+
+def expects_object(fn, name) -> bool:
+    """Whether ``name`` expects an object of a kind (a mechanism, a guide, a slot) rather than a number."""
+    target = getattr(fn, "__wrapped__", fn)
+    if inspect.isclass(target):
+        field = {f.name: f for f in dataclasses.fields(target)}.get(name)
+        spec = field and _spec_of(field.type, vars(inspect.getmodule(target)))
+    else:
+        annotation = inspect.signature(target).parameters[name].annotation
+        spec = _spec_of(annotation, getattr(target, "__globals__", {}))
+    return (spec is not None and spec.kind in ("mechanism", "items", "function", "path")) or \
+        name in ("mechanism", "mech", "guide", "slot", "groups", "mechanisms")
+
+
+def well_typed(value) -> bool:
+    """A real finite number: it may be refused by a condition of the design rather than by its name."""
+    if isinstance(value, bool | np.bool_):
+        return True
+    if isinstance(value, numbers.Integral):
+        return abs(int(value)) < 2**63
+    if isinstance(value, np.ndarray):  # a point (x, y) or samples: a value of the right type
+        return value.ndim == 1 and len(value) > 0 and bool(np.all(np.isfinite(value)))
+    return isinstance(value, numbers.Real) and bool(np.isfinite(value))
+
+
+def run_case(name, replace):
+    fn, args, kwargs = CASES[name]()
+    args, kwargs = list(args), dict(kwargs)
+    param, index, bad = replace(parameters(fn, args, kwargs), args, kwargs)
+    if index is None:
+        kwargs[param] = bad
+    else:
+        args[index] = bad
+    try:
+        with contextlib.chdir(scratch()):  # a file name drawn as a value ("abc") is written there
+            result = fn(*args, **kwargs)
+    except ml.MechanismError as err:
+        names = (param,) + ALIASES.get(param, ())
+        assert well_typed(bad) or any(n in str(err) for n in names), \
+            f"{name}({param}={bad!r}): {type(err).__name__}: {err}"
+        return
+    except TypeError as err:
+        assert expects_object(fn, param), f"{name}({param}={bad!r}) raised TypeError: {err}"
+        assert "must be" in str(err) or "needs" in str(err), f"{name}({param}={bad!r}): TypeError {err}"
+        return
+    check_result(result)
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_valid_call(name):
+    fn, args, kwargs = CASES[name]()
+    check_result(fn(*args, **kwargs))
+
+
+@pytest.mark.parametrize("name", sorted(n for n in CASES if CASES[n]()[1] or CASES[n]()[2]))  # with parameters
+def test_every_parameter_replaced(name):
+    @settings(max_examples=BUDGET.get(name, 40), deadline=None, database=None,
+              suppress_health_check=list(HealthCheck))
+    @given(st.data())
+    def replaced(data):
+        def replace(params, args, kwargs):
+            param, index = data.draw(st.sampled_from(params), label="parameter")
+            valid = args[index] if index is not None else kwargs[param]
+            choices = list(ADVERSARIAL)
+            if isinstance(valid, float) and not isinstance(valid, bool):
+                choices.append(valid * data.draw(st.floats(0.5, 2.0), label="scale"))
+            return param, index, data.draw(st.sampled_from(choices), label="value")
+        run_case(name, replace)
+
+    replaced()
+
+
+def test_every_export_is_covered():
+    """A new export needs a case here (or a reason not to: errors, results, modules, constants)."""
+    not_callables = {"forces", "motion_laws", "design", "TRANSITIONS", "TABLE1_PRINTED"}  # modules and constants
+    results = {"Mechanism", "Grashof", "Motion", "AngularMotion", "LinearMotion", "Centre", "CentreAtInfinity",
+               "IndeterminateCentre", "Law", "Extremes", "Table", "Quantity", "TransmissionExtremes"}
+    lambda_guiding = {"circle_guiding", "straight_guiding", "whole_turn_line", "whole_turn_guiding", "existence_map",
+                      "existence_region", "band_touches", "fifth_order_line", "thesis_iteration",
+                      "transmission_lines"}  # being rewritten (the Chebyshev chapter's issue): tested there
+    # exported by main while this file was written: each needs a case
+    pending = {"nearest_assembly", "law_difference", "centre_count", "rolling_speeds", "five_link_higher_pair",
+               "read_csv", "mchv3_half_turn", "dwell_extent", "rise_law", "time_ratio_far_angle",
+               "CamProgramme", "TranslatingRollerCam", "OscillatingRollerCam", "write_cam_csv", "write_cam_dxf"}
+    missing = [n for n in ml.__all__ if not (inspect.isclass(getattr(ml, n)) and issubclass(getattr(ml, n),
+               BaseException)) and n not in CASES and n not in not_callables | results | lambda_guiding | pending]
+    assert not missing, f"exports without a fuzz case: {missing}"

@@ -1,0 +1,228 @@
+"""The validation layer (mechlab.validate) and every case of issue 16 that was seen to fail.
+
+Each test states the input that used to pass silently, raise a raw numpy/Python error, hang or
+return NaN, and asserts the named error (parameter and condition with the numbers) or a finite
+result at the edge of what is accepted.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+import time
+from typing import Annotated
+
+import numpy as np
+import pytest
+
+import mechlab as ml
+from mechlab import DimensionError, MechanismError
+from mechlab.mechanisms.sixbar_iv import example as sixbar_example
+from mechlab.synthesis.dwell_slot import LAMBDA_RANGE, LAMBDA_TOL, MIN_TRANSITION
+from mechlab.validate import MAX_SAMPLES, Checked, Length, Sign, Spec, check, count, validated
+
+DEG = np.pi / 180
+
+
+@functools.cache
+def guides():
+    return ml.circle_guiding(150 * DEG, 0.9, 120 * DEG), ml.straight_guiding(np.pi, 0.8, np.pi)
+
+
+@functools.cache
+def mechanisms():
+    """One of every mechanism class the package exports (18, with the four lambda six-bars)."""
+    circle, straight = guides()
+    return [ml.FourBar(1, 3, 3, 4), ml.SliderCrank(1, 3, 0.2), ml.SlottedLink(0.5, 1), ml.SineMechanism(1),
+            ml.CurvedSlotLink(1, 4, ml.CircleSlot((3, 0), 3), start=1.0),
+            ml.TranslatingCurvedSlot(1, ml.CircleSlot((0, 0.2), 3)), sixbar_example(), ml.EllipticTrammel(1),
+            ml.Antiparallelogram(1, 2), ml.LambdaMechanism(0.4, 0.8, np.pi), ml.ExternalGeneva(4, 1),
+            ml.InternalGeneva(6, 1), ml.SphericalGeneva(40, 15, 4),
+            ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG), ml.mchv1(circle, 1.0, 20 * DEG), ml.mchv2(circle, 1.0),
+            ml.mchv3_full_turn(straight), ml.mchv5(straight)]
+
+
+def init_fields(obj) -> dict:
+    return {f.name: getattr(obj, f.name) for f in dataclasses.fields(obj) if f.init}
+
+
+# -- the layer itself ---------------------------------------------------------------------------------------
+def test_a_declaration_checks_converts_and_names():
+    @validated
+    def f(crank: Length, assembly: Sign = 1):
+        return crank, assembly
+
+    assert f(np.int64(2), np.float64(-1.0)) == (2.0, -1)
+    assert type(f(2)[0]) is float and type(f(2, -1.0)[1]) is int
+    for bad, msg in ((np.complex128(1 + 1j), r"crank must be a real number \(complex values are not accepted\)"),
+                     ("2", "crank must be a number, got '2'"), (None, "crank must be a number, got None"),
+                     (math.nan, "crank must be finite, got nan"), (-1, "crank must be > 0, got -1"),
+                     (10**400, r"crank = an integer of 401 digits lies outside the supported magnitudes"),
+                     (1e-300, r"crank = 1e-300 lies outside the supported magnitudes \[1e-100, 1e\+100\]")):
+        with pytest.raises(DimensionError, match=msg):
+            f(bad)
+    with pytest.raises(DimensionError, match=r"assembly must be \+1 or -1, got True"):
+        f(1.0, True)
+
+
+def test_a_dataclass_declares_its_fields_once():
+    from dataclasses import dataclass
+
+    @dataclass(frozen=True)
+    class Link(Checked):
+        length: Length
+        turns: Annotated[int, count(1, 5)] = 1
+
+    assert Link(np.float32(0.5), 5.0).turns == 5 and type(Link(1).length) is float
+    with pytest.raises(DimensionError, match=r"turns must be ≤ 5 \(mechlab's limit for one call\), got 6"):
+        Link(1.0, 6)
+    with pytest.raises(DimensionError, match=r"turns must be a whole number ≥ 1, got 2.5"):
+        Link(1.0, 2.5)
+
+
+def test_a_count_past_its_limit_is_refused_before_any_work():
+    t0 = time.perf_counter()
+    with pytest.raises(DimensionError, match=rf"n must be ≤ {MAX_SAMPLES:,}"):
+        ml.FourBar(1, 3, 3, 4).turn(10**12)
+    with pytest.raises(DimensionError, match=r"n must be ≤"):
+        ml.FourBar(1, 3, 3, 4).turn(10**400)
+    assert time.perf_counter() - t0 < 1.0
+
+
+def test_one_spec_per_kind_refuses_by_name():
+    assert check("p", (1, np.float32(2)), Spec("point")) == (1.0, 2.0)
+    with pytest.raises(DimensionError, match=r"p\[1\] must be a number, got 'x'"):
+        check("p", (1, "x"), Spec("point"))
+    with pytest.raises(TypeError, match="guide must be a CircleGuide, got str"):
+        ml.mchv1("circle", 1.0, 20 * DEG)
+    with pytest.raises(TypeError, match="mechanism must be a Mechanism, got float"):
+        ml.instant_centres(1.0)
+
+
+# -- issue 16, seen cases -------------------------------------------------------------------------------
+def test_complex_values_are_refused_not_truncated():
+    with pytest.raises(DimensionError, match="crank must be a real number"):
+        ml.FourBar(np.complex128(1 + 1j), 3, 3, 4)
+    with pytest.raises(DimensionError, match="crank must be a real number"):
+        ml.FourBar(1 + 1j, 3, 3, 4)
+    with pytest.raises(DimensionError, match=r"complex values are not accepted"):
+        ml.FourBar(1, 3, 3, 4).motion(np.array([1 + 1j]))
+    with pytest.raises(DimensionError, match=r"complex values are not accepted"):
+        ml.FourBar(1, 3, 3, 4).motion(np.array([1 + 0j]))  # even with a zero imaginary part
+
+
+def test_nan_no_longer_switches_a_check_off():
+    circle, straight = guides()
+    with pytest.raises(MechanismError, match="below the allowed 30°"):
+        ml.mchv2(circle, 1.25)                                     # refused at 30°…
+    with pytest.raises(DimensionError, match="mu_min must be finite, got nan"):
+        ml.mchv2(circle, 1.25, mu_min=math.nan)                    # …and NaN no longer lets it through
+    with pytest.raises(DimensionError, match="max_pressure must be finite"):
+        ml.mchv5(straight, max_pressure=math.nan)
+    with pytest.raises(DimensionError, match="max_speed must be finite"):
+        ml.mchv3_full_turn_best(straight, max_speed=math.nan)
+    with pytest.raises(DimensionError, match="theta_max must be finite"):
+        ml.dwell_limit(0.5, math.nan)
+    for tol in (math.nan, -1):
+        with pytest.raises(DimensionError, match="dwell_tol must be"):
+            ml.intermittency(ml.ExternalGeneva(4, 1.0), dwell_tol=tol)
+    for start in (math.nan, math.inf, -math.inf):
+        with pytest.raises(DimensionError, match="start must be finite"):
+            ml.CurvedSlotLink(1, 4, ml.CircleSlot((3, 0), 3), start=start)
+        with pytest.raises(DimensionError, match="start must be finite"):
+            ml.SixBarIV(**{**init_fields(sixbar_example()), "start": start})
+
+
+def test_none_means_off_only_where_documented():
+    circle, _ = guides()
+    relaxed = ml.mchv2(circle, 1.25, mu_min=None)
+    assert np.all(np.isfinite(relaxed.motion(relaxed.turn(73)).s))
+    with pytest.raises(ml.InfeasibleDesignError, match="K must be a number, got None"):
+        ml.mchv2(circle, None)
+
+
+@pytest.mark.parametrize("dwell", [math.nan, "120", None, np.array([1.0, 2.0]), -3.0])
+def test_the_lambda_six_bars_check_their_dwell(dwell):
+    for mech in mechanisms()[-4:]:
+        with pytest.raises(DimensionError, match="dwell must be"):
+            type(mech)(**{**init_fields(mech), "dwell": dwell})
+
+
+def test_secondary_parameters_raise_named_errors():
+    for call, msg in ((lambda: ml.EllipticTrammel(1, "abc"), "beta must be a number, got 'abc'"),
+                      (lambda: ml.CurvedSlotLink(1, 4, ml.CircleSlot((3, 0), 3), start="abc"), "start must be"),
+                      (lambda: ml.two_branch_slot(0.5, None), "phi2 must be a number, got None"),
+                      (lambda: ml.forces.press(work_fraction=None), "work_fraction must be a number, got None"),
+                      (lambda: ml.Kinetostatics(ml.FourBar(1, 3, 3, 4), omega1="abc"),
+                       "omega1 must be a number, got 'abc'")):
+        with pytest.raises(DimensionError, match=msg):
+            call()
+
+
+@pytest.mark.parametrize("n", [1.5, -1, None, 0, "361", 10**12])
+def test_sample_counts_are_whole_positive_and_bounded(n):
+    with pytest.raises(DimensionError, match="n must be"):
+        ml.FourBar(1, 3, 3, 4).turn(n)
+
+
+def test_huge_integers_are_named_not_overflow():
+    with pytest.raises(DimensionError, match="crank = an integer of 401 digits lies outside"):
+        ml.FourBar(10**400, 3, 3, 4)
+    with pytest.raises(DimensionError, match="phi = an integer of 401 digits lies outside"):
+        ml.FourBar(1, 3, 3, 4).motion(10**400)
+    with pytest.raises(ml.SlotCountError, match=r"z must be ≤ 1,000"):
+        ml.ExternalGeneva(10**400, 1)
+
+
+def test_velocity_and_acceleration_of_nan_are_refused_for_every_mechanism():
+    assert len(mechanisms()) == 18
+    for mech in mechanisms():
+        mo = mech.motion(mech.cycle(9))
+        assert np.all(np.isfinite(mo.velocity(3.0))) and np.all(np.isfinite(mo.acceleration(3.0, 1.0)))
+        with pytest.raises(DimensionError, match="omega1 must be finite, got nan"):
+            mo.velocity(math.nan)
+        with pytest.raises(DimensionError, match="eps1 must be finite, got inf"):
+            mo.acceleration(1.0, math.inf)
+
+
+def test_results_are_finite_up_to_the_limits_and_refused_past_them():
+    lo, hi = LAMBDA_RANGE
+    for lam in (lo, hi):
+        v, a = ml.base_peaks(lam)
+        assert np.isfinite(v) and np.isfinite(a)
+        law = ml.DwellLaw(lam, 60 * DEG, 150 * DEG)
+        assert np.all(np.isfinite(law.curvature(np.linspace(0, 2 * np.pi, 181))))
+    with pytest.raises(DimensionError, match=r"lam = 1e\+160 lies outside the supported magnitudes"):
+        ml.base_peaks(1e160)                                       # was (1.0, nan)
+    with pytest.raises(DimensionError, match=r"lam must be ≤ 1e\+06, got 1e\+07"):
+        ml.base_peaks(1e7)
+    with pytest.raises(ml.DwellRatioError, match=r"lam must be ≥ 1e-06, got 1e-300"):
+        ml.DwellLaw(1e-300, 60 * DEG, 150 * DEG)                  # its curvature was -inf everywhere
+    with pytest.raises(DimensionError, match=r"rpm = 1e\+300 lies outside"):
+        ml.forces.press(rpm=1e300)                                 # was "SVD did not converge"
+    with pytest.raises(DimensionError, match=r"rpm must be ≤"):
+        ml.forces.rocker_drive(rpm=1e10)                           # 1e300 gave a NaN torque
+    with pytest.raises(ml.forces.LoadError, match=r"value\[0\] must be finite, got nan"):
+        ml.Force("slider", "B", (math.nan, 1.0))                   # gave NaN reactions
+    fast = ml.forces.press(rpm=9e6).forces(np.linspace(0, 2 * np.pi, 13))
+    assert np.all(np.isfinite(fast.torque))
+
+
+def test_degenerate_dwell_designs_are_refused_by_name():
+    with pytest.raises(ml.DwellIntervalError, match=r"each transition needs at least 0.0005 rad .* φ1 = 1e-300"):
+        ml.curved_slot_dwell(0.5, 1e-300, 60 * DEG)                # was LinAlgError "Singular matrix"
+    with pytest.raises(ml.DwellRatioError, match=r"λ ≠ 1 is needed \(\|λ - 1\| > 0.0001\)"):
+        ml.curved_slot_dwell(1 + 1e-8, 60 * DEG, 150 * DEG)        # built, then motion() failed without λ
+    with pytest.raises(ml.DwellIntervalError, match=r"π - φ2 = 4.44e-16 rad"):
+        ml.curved_slot_dwell(0.5, 60 * DEG, np.nextafter(np.pi, 0))  # |ψ''| ≈ 4.5e15, θ = 90°
+    # the edges that are accepted move with finite analogs
+    for mech in (ml.curved_slot_dwell(0.5, MIN_TRANSITION, np.pi - MIN_TRANSITION),
+                 ml.curved_slot_dwell(1 + 1.01 * LAMBDA_TOL, 60 * DEG, 150 * DEG)):
+        mo = mech.motion(mech.turn(721))
+        assert np.all(np.isfinite(mo.dpsi)) and np.all(np.isfinite(mo.ddpsi))
+
+
+def test_an_indexing_measure_of_a_rocker_is_refused_not_infinite():
+    with pytest.raises(DimensionError, match=r"does not advance over a crank turn"):
+        ml.intermittency(ml.FourBar(1, 3, 3, 4))                   # C_v = max|ψ'|·Φ/|Δψ| with Δψ = 0
