@@ -226,3 +226,18 @@ def test_degenerate_dwell_designs_are_refused_by_name():
 def test_an_indexing_measure_of_a_rocker_is_refused_not_infinite():
     with pytest.raises(DimensionError, match=r"does not advance over a crank turn"):
         ml.intermittency(ml.FourBar(1, 3, 3, 4))                   # C_v = max|ψ'|·Φ/|Δψ| with Δψ = 0
+
+
+@pytest.mark.parametrize("call, error, match", [
+    (lambda: ml.existence_map(np.radians(150), n=10**6), ml.DimensionError, r"n = 1e\+06 must lie in \[2, 400\]"),
+    (lambda: ml.existence_map(np.radians(150), dwells=[np.nan]), ml.DimensionError, "dwells must be finite"),
+    (lambda: ml.existence_map(np.radians(150), dwells="abc"), ml.DimensionError, "dwells must be a number"),
+    (lambda: ml.whole_turn_line(np.radians(120), ds=0), ml.DimensionError, "ds = 0 must lie in"),
+    (lambda: ml.whole_turn_line(np.radians(120), ds=1e-6), ml.DimensionError, "ds = 1e-06 must lie in"),
+    (lambda: ml.circle_guiding(np.radians(150), 0.9, 1.0, minimax=np.nan), ml.DimensionError, "minimax must be True"),
+    (lambda: ml.whole_turn_guiding(np.radians(150), 0.9, line=3), TypeError, "line must be a WholeTurnLine"),
+    (lambda: ml.existence_region(np.radians(150), line=3), TypeError, "line must be a WholeTurnLine"),
+])
+def test_lambda_guiding_inputs_are_refused_by_name(call, error, match):
+    with pytest.raises(error, match=match):
+        call()

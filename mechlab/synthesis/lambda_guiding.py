@@ -37,6 +37,7 @@ from scipy.optimize import brentq, minimize, minimize_scalar, root
 from ..errors import DimensionError, MechanismError, SynthesisError
 from ..geometry import check_length, check_number
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
+from ..validate import Flag, Spec, check, mechanism
 
 __all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "ThesisIteration",
            "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches",
@@ -331,6 +332,7 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     Raises SynthesisError, with the reason, where no design exists (outside the map of Fig. 2a).
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
+    minimax = check("minimax", minimax, Flag.__metadata__[0])
     alpha = dwell / 2
     span = _frame_span(delta)
     if not span[0] < a < span[1]:
@@ -699,7 +701,7 @@ def whole_turn_guiding(delta: float, a: float, line: WholeTurnLine | None = None
     the whole turn (checked on 4001 points). SynthesisError if the line misses a. ``line``: the
     already traced :func:`whole_turn_line` of this δ (saves tracing it again)."""
     delta, a, _ = _check_inputs(delta, a, 2 * np.pi, "whole-turn circle guiding")
-    line = whole_turn_line(delta) if line is None else line
+    line = whole_turn_line(delta) if line is None else check("line", line, mechanism(WholeTurnLine))
     i = np.nonzero(np.sign(line.a[1:] - a) * np.sign(line.a[:-1] - a) <= 0)[0]
     if len(i) == 0:
         raise SynthesisError(
@@ -728,7 +730,7 @@ def existence_region(delta: float, line: WholeTurnLine | None = None) -> tuple[n
     (0, a_lo); a_lo = 2 sin((δ − π)/2) for δ > π (where the fifth-order line leaves r = 0), else 0.
     Checked by designs of :func:`circle_guiding` inside it and refusals outside (tests, δ = 150°, 240°)."""
     r5, a5 = fifth_order_line(delta, 200)[:2]
-    wt = whole_turn_line(delta) if line is None else line
+    wt = whole_turn_line(delta) if line is None else check("line", line, mechanism(WholeTurnLine))
     a_lo = _frame_span(delta)[0]
     down = np.linspace(wt.a[-1], a_lo, 60)[1:]
     down = np.sort(np.r_[down, [1.0] if a_lo < 1 < wt.a[-1] else []])[::-1]  # keep the corner (1, 1)
@@ -762,6 +764,7 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
     :func:`existence_region`; ``n`` frames a per iso-dwell curve (at most MAX_ISO_POINTS)."""
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     n = int(_bounded("n", n, 2, MAX_ISO_POINTS))
+    dwells = [_angle("dwell 2α", w, 0.0, 2 * np.pi) for w in np.atleast_1d(check("dwells", dwells, Spec("reals")))]
     line = whole_turn_line(delta)
     mu = transmission_lines()
     iso = {int(round(np.degrees(w))): _iso_dwell(delta, w, n) for w in dwells}
