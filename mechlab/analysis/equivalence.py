@@ -1,7 +1,7 @@
 """Kinematic equivalence of linkages with one second-order group and curved-slot
-slotted links; the base mechanism; the symmetry of the two assemblies (seed 000, §1).
+slotted links; the base mechanism; the symmetry of the two assemblies (Zinchenko et al. (2013), §1).
 
-Seed 000 §1 (Fig. 1-4): a linkage made of a crank, the frame and one second-order
+Zinchenko et al. (2013) §1 (Fig. 1-4): a linkage made of a crank, the frame and one second-order
 structural group (a dyad, or the class-IV group of :mod:`mechlab.mechanisms.sixbar_iv`) has one
 degree of freedom relative to its output link, so the crank pin A traces a fixed
 curve in the output link's frame — the **relative path**. A slotted link whose slot
@@ -19,7 +19,7 @@ Public API
   :class:`~mechlab.mechanisms.base.Mechanism` in the linkage's own frame whose
   ``motion(phi)`` reproduces the linkage's law; ``.slot_mechanism`` is the
   :class:`~mechlab.mechanisms.curved_slot.CurvedSlotLink` /
-  :class:`~mechlab.mechanisms.curved_slot.TranslatingCurvedSlot` in seed 000's frame.
+  :class:`~mechlab.mechanisms.curved_slot.TranslatingCurvedSlot` in Zinchenko et al.'s (2013) frame.
 * ``equivalence_error(mechanism, phi) -> float`` — max |law difference| (ψ, ψ', ψ'').
 * ``base_mechanism(mechanism)`` — ``SlottedLink(l_OA, l_OE)`` (straight slot through
   the output pivot, seed Fig. 5) or ``SineMechanism(l_OA)`` (seed Fig. 6).
@@ -28,7 +28,7 @@ Public API
 * ``other_assembly(mechanism)``, ``assembly_symmetry(mechanism, phi) -> AssemblySymmetry``
   — the exact relations between the kc = +1 and kc = -1 assemblies (below).
 
-Symmetry of the assemblies (seed 000 §1, after Fig. 6; derived here, not copied).
+Symmetry of the assemblies (Zinchenko et al. (2013) §1, after Fig. 6; derived here, not copied).
 The relative path of a four-bar is the whole circle about B; the assembly kc = +1
 uses one arc (α1–α1), kc = -1 the other (α2–α2), and the two arcs are mirror images
 in the output link's axis E→B. With ψ measured from the frame line (x axis):
@@ -82,7 +82,7 @@ def _rot(angle, v):
 # ---------------------------------------------------------------------------------------------
 @validated
 def relative_path(mechanism: AnyMechanism, phi: Angles) -> PointPath:
-    """The crank pin A seen from the output link, with its φ-analogs (seed 000 §1, Fig. 1-4).
+    """The crank pin A seen from the output link, with its φ-analogs (Zinchenko et al. (2013) §1, Fig. 1-4).
 
     Angular output about pivot P: w = Rot(-ψ)(A - P), w' = Rot(-ψ)(v' - ψ'·v⊥),
     w'' = Rot(-ψ)(v'' - 2ψ'·v'⊥ - ψ''·v⊥ - ψ'²·v) with v = A - P.
@@ -109,7 +109,7 @@ def relative_path(mechanism: AnyMechanism, phi: Angles) -> PointPath:
 class EquivalentSlot(Mechanism):
     """A linkage's curved-slot twin, expressed in the linkage's own frame.
 
-    ``slot_mechanism`` is the curved-slot link in seed 000's frame; its crank angle is
+    ``slot_mechanism`` is the curved-slot link in Zinchenko et al.'s (2013) frame; its crank angle is
     the linkage's minus ``phase`` (π for four-bars and six-bars, whose output pivot E
     lies on +x, 0 for the slider-crank), and its link angle is the linkage's minus ``phase``.
     Points: O, A and the pivot E (angular) or C = (s, 0) (translating).
@@ -165,7 +165,7 @@ class EquivalentSlot(Mechanism):
 
 @validated
 def equivalent_slot(mechanism: AnyMechanism) -> EquivalentSlot:
-    """The curved-slot mechanism whose slot is the linkage's relative path (seed 000 §1), from the
+    """The curved-slot mechanism whose slot is the linkage's relative path (Zinchenko et al. (2013) §1), from the
     family's ``curved_slot_twin()``: FourBar → a circular slot of radius l_AB about B (Fig. 2),
     SliderCrank → a translating circular slot (Fig. 4), SixBarIV → its inner four-bar's coupler curve."""
     twin, phase = mechanism.curved_slot_twin()
@@ -190,7 +190,7 @@ def equivalence_error(mechanism: Mechanism, phi=None) -> float:
 # ---------------------------------------------------------------------------------------------
 @validated
 def base_mechanism(mechanism: AnyMechanism):
-    """The base mechanism (seed 000 Fig. 5, 6): same crank, straight slot through the output
+    """The base mechanism (Zinchenko et al. (2013) Fig. 5, 6): same crank, straight slot through the output
     pivot (``SlottedLink(l_OA, l_OE)``), or the sine mechanism for a translating output."""
     if mechanism.output == "position":
         return SineMechanism(mechanism.crank)
@@ -198,7 +198,7 @@ def base_mechanism(mechanism: AnyMechanism):
 
 
 def frame_phase(mechanism: Mechanism) -> float:
-    """Crank-angle shift from the mechanism's frame to seed 000's, whose output pivot lies at angle π
+    """Crank-angle shift from the mechanism's frame to Zinchenko et al.'s (2013), whose output pivot lies at angle π
     from O: the pivot's angle − π (π when the output pivot is on +x, as E of a four-bar)."""
     if mechanism.output == "position":
         return 0.0

@@ -1,9 +1,9 @@
-"""Half-turn relations (seed 000, Tables 1-2, formulas (1)-(17)) and the limit theorem.
+"""Half-turn relations (Zinchenko et al. (2013), Tables 1-2, formulas (1)-(17)) and the limit theorem.
 
 Where the relations hold
 ------------------------
 Frame: the crank angle φ and the output angle ψ are measured from the frame line
-through O and the output pivot (seed 000's frame, or the four-bar's, which differs
+through O and the output pivot (Zinchenko et al.'s (2013) frame, or the four-bar's, which differs
 by a half turn and gives the same relations); the slotted link's pin runs back and
 forth along one piece of the slot, so its place on the slot depends only on its
 distance S(φ) from the pivot (oscillating link) or its height l_OA·sin φ (translating
@@ -23,9 +23,9 @@ s = x_K - x_α, x_K = l_OA cos φ:
     s(φ*) = s(φ) - 2x_K(φ),  s'(φ*) = 2x_K'(φ) - s'(φ),  s''(φ*) = s''(φ) - 2x_K''(φ).
 
 So the law on one half of the crank turn fixes it on the other half: it can be
-chosen freely on [0, π] only (seed 000, text after Table 2).
+chosen freely on [0, π] only (Zinchenko et al. (2013), text after Table 2).
 
-Limit theorem (seed 000 §2, conclusions before §3)
+Limit theorem (Zinchenko et al. (2013) §2, conclusions before §3)
 ---------------------------------------------------
 Adding the relations for the first analog: ψ'(φ) + ψ'(φ*) = 2ψ_K'(φ), so
 max(|ψ'(φ)|, |ψ'(φ*)|) ≥ |ψ_K'(φ)| at every φ, whence
@@ -65,7 +65,7 @@ def _not_one(lam: float) -> None:
 @scalar_law
 @validated
 def formula_18(lam: Ratio, phi) -> AnglePath:
-    """The base mechanism's law from seed 000 (18)-(20) (the printed formulas, verified correct):
+    """The base mechanism's law from Zinchenko et al. (2013) (18)-(20) (the printed formulas, verified correct):
     tan ψ_K = λ sin φ/(λ cos φ + 1), ψ_K' = λ(λ + cos φ)/D, ψ_K'' = λ(λ² - 1) sin φ/D², D = λ² + 1 + 2λ cos φ.
     ψ_K is the continuous branch (atan2; lifted by φ when λ > 1)."""
     phi = as_angles(phi)
@@ -157,7 +157,7 @@ class LimitCheck:
 
 @validated
 def limit_theorem(mechanism: AnyMechanism, n: Annotated[int, count(3)] = 721) -> LimitCheck:
-    """Check seed 000's limit theorem on a grid of n crank angles symmetric under φ ↦ φ*.
+    """Check Zinchenko et al.'s (2013) limit theorem on a grid of n crank angles symmetric under φ ↦ φ*.
 
     The crank must turn fully. The grid is φ_k = 2πk/(n-1) (for a translating link
     shifted to -π/2 + …, symmetric under φ ↦ π - φ), so φ* of every sample is a sample.

@@ -28,7 +28,7 @@ class Drive:
     ``motor_torque``: M_m(φ), the motor's torque referred to the crank (M/η where the
     motor drives, M·η where the mechanism drives it back, see :func:`drive`). Every
     statistic below is of M_m: ``mean_torque`` ⟨M_m⟩, ``rms_torque`` √⟨M_m²⟩ (thermal),
-    ``peak_torque`` max|M_m|; ``mean_power`` = ⟨M_m⟩·ω1 (seed 004's N_cp),
+    ``peak_torque`` max|M_m|; ``mean_power`` = ⟨M_m⟩·ω1 (Vainer & Shatokhina's N_cp),
     ``peak_power`` = peak·|ω1|; ``nominal_torque`` = max(rms, peak/overload),
     ``nominal_power`` = nominal_torque·|ω1|; ``governing`` = "rms" or "peak", the
     term that decided.
@@ -91,7 +91,7 @@ def drive(torque: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)]
     same η both ways). So M_m = M/η or M·η, and every figure below is of M_m. At constant
     ω1 time is proportional to φ, so a mean over the cycle is ⟨x⟩ = ∫x dφ / Φ.
 
-    1. *Energy: the mean power* N̄ = ⟨M_m⟩·ω1 — seed 004's N_cp = M_cp·ω_KP with M_cp the
+    1. *Energy: the mean power* N̄ = ⟨M_m⟩·ω1 — Vainer & Shatokhina's N_cp = M_cp·ω_KP with M_cp the
        mean of the torques in n positions (its formula printed with n multiplying instead
        of dividing; see the errata). It is what the motor draws on average, and the size of
        the motor when a flywheel makes its torque nearly constant.
@@ -109,7 +109,7 @@ def drive(torque: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)]
        fluctuates — a Geneva wheel with inertia alone and η = 1 has ⟨M⟩ = 0 and still
        heats the motor. The nominal torque must be ≥ M_eq.
     3. *Overload*: the motor must also deliver the peak |M_m| within its overload factor
-       k = M_max/M_nom (seed 004: "the overload factor must be taken into account"), so
+       k = M_max/M_nom (Vainer & Shatokhina: "the overload factor must be taken into account"), so
        M_nom ≥ M_peak/k.
 
     Hence M_nom = max(M_eq, M_peak/k), N_nom = M_nom·|ω1| (the motor's torque and power

@@ -12,12 +12,12 @@ from ..mechanisms.geneva import TWO_PI
 
 
 # ----------------------------------------------------------------------------------
-# drive: crank torque from the power balance (seed 004, last section)
+# drive: crank torque from the power balance (Vainer & Shatokhina, last section)
 # ----------------------------------------------------------------------------------
 def crank_torque(mechanism, phi, *, inertia: float, omega1: float, resisting_torque: float = 0.0) -> np.ndarray:
     """Crank torque M1(φ) of a Geneva drive at constant crank speed ω1, from the power balance.
 
-    Wheel side (seed 004, last section): the moment of inertia J (``inertia``, reduced to
+    Wheel side (Vainer & Shatokhina, last section): the moment of inertia J (``inertia``, reduced to
     the wheel, the seed's I_П) and a resisting torque M_r against the wheel's motion while
     it moves (the seed's M_П + M_C). With ω2 = ψ'ω1 and ε2 = ψ''ω1² from
     ``mechanism.motion``, M1·ω1 = (J ε2 + M_r sgn ω2)·ω2, so M1 = (J ψ'' ω1² + M_r sgn ψ')·ψ'

@@ -1,4 +1,4 @@
-"""Loads of the МЧВ1 six-bar (seed 001, chapter 3, Figs. 10-11), solved with :mod:`mechlab.kinetostatics`.
+"""Loads of the МЧВ1 six-bar (Kinitsky (1994), chapter 3, Figs. 10-11), solved with :mod:`mechlab.kinetostatics`.
 
 The thesis loads only the output: a resisting moment M_s = M_st + M_d on the rocker E-F (a
 constant static moment opposing its motion plus the inertia moment −J·ε of the driven masses
@@ -6,7 +6,7 @@ reduced to it), links massless, friction in the journals as f·r·|R|. Its formu
 are the statics of this model worked by hand (the rod D-E and the rocker B-C are two-force
 members; the three-force theorem on the coupler A-B-D); here the same model is solved by
 :func:`mechlab.kinetostatics.solve` group by group, so the crank torque is checked against the power
-balance. Invariants (seed 001, ch. 3): forces are divided by J·ω1²/l and torques by J·ω1²
+balance. Invariants (Kinitsky (1994), ch. 3): forces are divided by J·ω1²/l and torques by J·ω1²
 (l = 1 here, the length of the Chebyshev dyad's links); the cycle efficiency is the mean of the
 instantaneous efficiencies over the crank angles where the output moves.
 """

@@ -1,6 +1,6 @@
 """Kinetostatics: loads, reactions group by group, balancing torque, friction, efficiency, drive.
 
-The method is the one seed 003 (SibSIU proceedings, "Kinetostatic analysis of the
+The method is the one the SibSIU proceedings, "Kinetostatic analysis of the
 slider-crank mechanism with an additional link", formulas (1)-(5) and the force plans
 of its Figs. 2-5) applies by hand: split the mechanism into structural groups of zero
 mobility (Assur groups), load every link with its gravity, its d'Alembert inertia
@@ -56,7 +56,7 @@ Analysis:
 * ``drive(torque, phi, omega1, overload=2.0, efficiency=1.0)`` → :class:`Drive` — the
   course's one rule for the motor of a crank without a flywheel (the Geneva's
   :func:`mechlab.kinetostatics.geneva.drive` calls it): motor torque M/η where the motor drives, M·η
-  where it is driven back; mean power ⟨M_m⟩·ω1 (seed 004, last section) for the energy;
+  where it is driven back; mean power ⟨M_m⟩·ω1 (Vainer & Shatokhina, last section) for the energy;
   nominal torque max(M_rms, M_peak/k) — the rms (equivalent) torque for the heating, the
   peak within the overload factor k; ``choose(catalogue)`` picks a motor.
 * ``Kinetostatics(mechanism, model, loads, omega1, eps1, gravity)`` — a mechanism with
@@ -81,9 +81,10 @@ analogs and the sign of ω1 (ω1 = 0 is treated as the start of a motion with ω
 Prismatic friction is f·|N| with N the resultant normal force (edge pressures from
 the reaction couple are not modelled).
 
-Efficiency (seed 001, chapter 3): the instantaneous efficiency from the power balance,
+Efficiency (Kinitsky (1994), chapter 3): the instantaneous efficiency from the power balance,
 η = 1 − P_friction / P_drive = M_ideal / M_b, defined where the drive delivers power
-and the loads absorb it (P_drive > 0 and M_ideal·ω1 > 0; elsewhere masked); the thesis' cycle efficiency is the arithmetic mean
+and the loads absorb it (P_drive > 0 and M_ideal·ω1 > 0; elsewhere masked); the thesis' cycle efficiency
+is the arithmetic mean
 of the instantaneous values over the period in which the output moves
 (``how="mean"``); ``how="work"`` gives the energy ratio 1 − A_friction / A_drive.
 """
@@ -98,7 +99,8 @@ from ..errors import DimensionError, MechanismError
 from ..mechanisms.base import FRAME
 from ..validate import (Angle, Checked, Distance, Name, Point, Spec, angle, check, number, or_function)
 
-__all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque", "model_for", "slender_bar", "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"]
+__all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque", "model_for",
+           "slender_bar", "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"]
 
 
 

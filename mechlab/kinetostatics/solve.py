@@ -9,7 +9,8 @@ import numpy as np
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import PointPath, cross, dot, perp, relative, unit, vector_angle
 from ..motion import Motion
-from .model import FRAME, Force, ForceModel, G, HigherPair, LoadError, Prismatic, Revolute, SelfLockingError, StructureError, Torque
+from .model import (FRAME, Force, ForceModel, G, HigherPair, LoadError, Prismatic, Revolute, SelfLockingError,
+                    StructureError, Torque)
 
 __all__ = ["Reaction", "ForceResult", "solve", "virtual_work_torque", "output_axis"]
 
@@ -215,7 +216,7 @@ class ForceResult:
                 f"to {self.residual:.1e}")
 
     def efficiency(self) -> np.ma.MaskedArray:
-        """Instantaneous efficiency η = 1 − P_friction/P_drive = M_ideal/M_b (seed 001, ch. 3).
+        """Instantaneous efficiency η = 1 − P_friction/P_drive = M_ideal/M_b (Kinitsky (1994), ch. 3).
 
         Defined where the drive delivers power and the loads absorb it (P_drive > 0 and
         M_ideal·ω1 > 0); masked elsewhere — where the links' inertia or gravity drive the crank,
@@ -232,7 +233,7 @@ class ForceResult:
     def cycle_efficiency(self, moving: np.ndarray | None = None, how: str = "mean") -> float:
         """Cycle efficiency over the positions where the output moves.
 
-        ``how="mean"``: the thesis' definition (seed 001, ch. 3), the arithmetic mean of the
+        ``how="mean"``: the thesis' definition (Kinitsky (1994), ch. 3), the arithmetic mean of the
         instantaneous efficiencies (over the positions of ``moving`` where η is defined);
         ``how="work"``: 1 − ∫P_friction dφ / ∫P_drive dφ over those positions.
         """
@@ -286,7 +287,7 @@ def _sliding(p, frames, P, nrm):
 
 def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1: float = 0.0,
           gravity=(0.0, -G), *, maxiter: int = 100, tol: float = 1e-12) -> ForceResult:
-    """Reactions in every pair and the balancing torque, group by group (seed 003's method).
+    """Reactions in every pair and the balancing torque, group by group (the SibSIU proceedings' method).
 
     Groups are solved in ``model.groups`` order (output first), then the crank. Each
     group's 3k equilibrium equations (ΣF = 0, ΣM about each link's origin = 0) form a

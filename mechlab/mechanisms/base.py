@@ -228,7 +228,7 @@ class Mechanism(Checked):
         raise MechanismError(f"{type(self).__name__} describes no structure: define its structure() method")
 
     def curved_slot_twin(self) -> tuple[Mechanism, float]:
-        """The curved-slot mechanism that moves like this one (seed 000 §1), in seed 000's frame, and the
+        """The curved-slot mechanism that moves like this one (Zinchenko et al. (2013) §1), in their frame, and the
         crank-angle shift ``phase`` from this mechanism's frame to it (a family that has one overrides this)."""
         raise DimensionError(f"no curved-slot equivalent known for {type(self).__name__}: it defines no "
                              f"curved_slot_twin()")

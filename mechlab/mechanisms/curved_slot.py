@@ -1,4 +1,4 @@
-"""Slotted links whose slot is a curve: seed 000, §1-2 (Fig. 2, 4, 7, 8).
+"""Slotted links whose slot is a curve: Zinchenko et al. (2013), §1-2 (Fig. 2, 4, 7, 8).
 
 Public API (kept stable; other modules build on it)
 ---------------------------------------------------
@@ -17,7 +17,7 @@ derivatives with respect to the curve parameter t, analytic):
 Mechanisms (frozen dataclasses, subclasses of :class:`~mechlab.mechanisms.base.Mechanism`):
 
 * ``CurvedSlotLink(crank, pivot_distance, slot, start=None)`` — oscillating or
-  fully rotating slotted link. **Frame of seed 000 §2 (Fig. 8)**, as
+  fully rotating slotted link. **Frame of Zinchenko et al. (2013) §2 (Fig. 8)**, as
   :class:`~mechlab.mechanisms.slotted.SlottedLink`: crank pivot O at the origin, link
   pivot B at (-pivot_distance, 0), φ = 0 where the pin A is farthest from B
   (A = (crank, 0)). ψ is the angle of the link's own x axis (the x axis of the frame
@@ -26,7 +26,7 @@ Mechanisms (frozen dataclasses, subclasses of :class:`~mechlab.mechanisms.base.M
   of the pin in the link frame), so that ψ = ψ_K - β with ψ_K the base mechanism's
   angle (formula (12)); ``base()`` → the base mechanism ``SlottedLink(crank, pivot_distance)``.
 * ``TranslatingCurvedSlot(crank, slot, start=None)`` — the slotted link translates
-  along the x axis (seed 000 Fig. 4, 7). Frame: O at the origin, φ from +x; the link
+  along the x axis (Zinchenko et al. (2013) Fig. 4, 7). Frame: O at the origin, φ from +x; the link
   frame's origin C = (s, 0) moves along the x axis, so the pin satisfies
   A = (s + x_α, y_α) with (x_α, y_α) the slot point. ``motion(phi)`` → LinearMotion
   with s, s', s'' and points O, A, C; ``x_alpha(phi)`` → AnglePath (x_α, x_α', x_α'')
@@ -55,7 +55,7 @@ The translating link likewise solves y_α(t) = a·sin φ.
 Scope and its one limitation: the pin runs *back and forth* over one piece of the
 slot (the case of Tables 1-2 and of every equivalent linkage). A slot on which the pin
 would pass through a point where the slot is tangent to the pin's circle about B —
-e.g. the two-branch slot of seed 000 Fig. 10, whose outermost point E the pin reaches
+e.g. the two-branch slot of Zinchenko et al. (2013) Fig. 10, whose outermost point E the pin reaches
 at φ = 0 — is the degenerate case the seed itself calls unworkable (pressure angle
 π/2): it raises SingularityError rather than guessing a branch. A parameter t with
 |c(t)| strictly monotone on the working piece (e.g. the distance from B itself, the
@@ -308,7 +308,7 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
     """Crank O-A (radius ``crank``) driving a link pivoted at B = (-pivot_distance, 0) whose
     slot ``slot`` (a curve in the link frame, origin at B) carries the pin A.
 
-    Seed 000 §2, Fig. 8, formulas (12)-(17): ψ = ψ_K - β with ψ_K the base mechanism's
+    Zinchenko et al. (2013) §2, Fig. 8, formulas (12)-(17): ψ = ψ_K - β with ψ_K the base mechanism's
     angle (formula (18)) and β the polar angle of the pin in the link frame.
     """
 
@@ -331,7 +331,8 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
 
     # -- basic quantities ---------------------------------------------------------------------
     def base(self) -> SlottedLink:
-        """The base mechanism: straight slot through the pivot, same crank and pivot (seed 000 Fig. 5)."""
+        """The base mechanism: straight slot through the pivot, same crank and pivot
+        (Zinchenko et al. (2013) Fig. 5)."""
         return SlottedLink(self.crank, self.pivot_distance)
 
     @property
@@ -467,7 +468,7 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
         return q, dq, ddq
 
     def beta(self, phi) -> AnglePath:
-        """β(φ), β'(φ), β''(φ): the pin's polar angle in the link frame (seed 000, formula (12))."""
+        """β(φ), β'(φ), β''(φ): the pin's polar angle in the link frame (Zinchenko et al. (2013), formula (12))."""
         phi = as_angles(phi)
         self.check_reachable(phi)
         A = crank_point(self.crank, phi)
@@ -532,7 +533,7 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
         return np.interp(u, seg.u_table, ref)
 
     def motion(self, phi) -> AngularMotion:
-        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, seed 000 frame)."""
+        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, Zinchenko et al. (2013) frame)."""
         phi = as_angles(phi)
         b = self.beta(phi)
         base = self.base().motion(phi)
@@ -599,7 +600,7 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
 # ---------------------------------------------------------------------------------------------
 @dataclass(frozen=True, eq=False)
 class TranslatingCurvedSlot(Mechanism):
-    """Crank O-A driving a slotted link that translates along the x axis (seed 000 Fig. 4, 7).
+    """Crank O-A driving a slotted link that translates along the x axis (Zinchenko et al. (2013) Fig. 4, 7).
 
     The slot is a curve in the link frame whose origin C = (s, 0) slides on the x axis;
     the pin satisfies A = (s + x_α, y_α), so s = x_K - x_α with x_K = crank·cos φ the sine
@@ -631,7 +632,7 @@ class TranslatingCurvedSlot(Mechanism):
             self._segments  # noqa: B018
 
     def base(self) -> SineMechanism:
-        """The base mechanism: the sine mechanism with the same crank (seed 000 Fig. 6)."""
+        """The base mechanism: the sine mechanism with the same crank (Zinchenko et al. (2013) Fig. 6)."""
         return SineMechanism(self.crank)
 
     # -- working segment: y decreasing from 0 one way, increasing the other -------------------

@@ -24,7 +24,7 @@ from functools import cached_property
 
 import numpy as np
 
-from ..errors import AssemblyError, DimensionError, RotationError
+from ..errors import AssemblyError, RotationError
 from ..geometry import _re_conj, as_angles, as_complex, circle_circle, crank_point, fixed_point, rocker_dyad
 from ..motion import AngularMotion, Extremes, limit_positions
 from ..validate import Length, Spec, check
@@ -186,8 +186,9 @@ class FourBar(Mechanism):
             (("coupler", "rocker"),), "rocker", scale=max(self.crank, self.coupler, self.rocker, self.ground))
 
     def curved_slot_twin(self):
-        """Seed 000 Fig. 2: a link pivoted at E whose slot is the circle of radius l_AB about B, on the arc
-        chosen by kc; in seed 000's frame (crank angle φ − π)."""
+        """Zinchenko et al. (2013) Fig. 2: a link pivoted at E whose slot is the circle of radius l_AB about B,
+        on the arc
+        chosen by kc; in Zinchenko et al.'s (2013) frame (crank angle φ − π)."""
         slot = CircleSlot((self.rocker, 0.0), self.coupler)
         return CurvedSlotLink(self.crank, self.ground, slot, start=self.assembly * np.pi / 2), np.pi
 

@@ -1,7 +1,7 @@
 """Geneva drives: the planar external and internal Geneva, and the spherical offset
-Geneva with perpendicular axes of seed 004 (Vainer & Shatokhina).
+Geneva with perpendicular axes of Vainer & Shatokhina).
 
-Planar Geneva (what every course teaches and seed 004 assumes, its refs. [2], [3])
+Planar Geneva (what every course teaches and Vainer & Shatokhina assumes, its refs. [2], [3])
 -------------------------------------------------------------------------------------
 Crank pivot O = (0, 0), wheel centre W = (C, 0), crank radius a, z radial slots,
 roller (pin) radius r. *Radial entry*: the pin enters a slot moving along it, so
@@ -19,7 +19,7 @@ the crank angle from the middle of the motion, the wheel's angle from the line W
 while |σ| ≤ σ0 = π/2 + κπ/z (the pin in a slot); the wheel is locked otherwise.
 The crank angle φ of the library is σ + π: φ = 0 is the middle of the dwell.
 
-Spherical offset Geneva (seed 004)
+Spherical offset Geneva (Vainer & Shatokhina)
 ----------------------------------
 Sphere (the hemispherical wheel) of radius R about O, wheel axis z, slots in the
 meridian planes. The crank axis is the line {y = 0, z = -e} (perpendicular to the

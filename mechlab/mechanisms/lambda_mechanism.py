@@ -31,14 +31,14 @@ def _angle(name: str, value, lo: float, hi: float, *, closed_hi: bool = True) ->
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class LambdaMechanism(Mechanism):
-    """Symmetric lambda mechanism O-A-B-C with coupler point D (seed 001, Fig. 1a).
+    """Symmetric lambda mechanism O-A-B-C with coupler point D (Kinitsky (1994), Fig. 1a).
 
     ``r`` = l_OA / l, ``a`` = l_OC / l, ``delta`` = ∠ABD in (0, π] (radians). ``assembly``
     +1 is the thesis' assembly (B on the left of A→C, D turned from A about B by +δ), in
     which the symmetry axis of the coupler curve makes π − δ/2 with the ray C→O; −1 is
     its mirror image in the line OC. The output ψ is the angle of the rocker C→B.
 
-    Crank-rocker condition (boundary lines r = a and r + a = 2 of seed 001, Fig. 2a): r < a
+    Crank-rocker condition (boundary lines r = a and r + a = 2 of Kinitsky (1994), Fig. 2a): r < a
     and r + a < 2; otherwise RotationError names the violated inequality. (The text before
     Fig. 1 prints only l_OA < l and l_OC + l_OA < 2l, which also admits the double crank
     r > a: see the errata.)

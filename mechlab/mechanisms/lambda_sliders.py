@@ -34,7 +34,7 @@ class _OnLambda(Mechanism):
 
 @dataclass(frozen=True)
 class LambdaSliderSixBar(_OnLambda):
-    """МЧВ2 (seed 001, Fig. 1 в): lambda mechanism (r, a, δ) + rod D-E (``rod``) + slider E on the
+    """МЧВ2 (Kinitsky (1994), Fig. 1 в): lambda mechanism (r, a, δ) + rod D-E (``rod``) + slider E on the
     fixed line through Q = (``qx``, ``qy``) at angle ``theta`` (radians, from +x).
 
     Output s: E = Q + s·u, u = (cos θ, sin θ). ``assembly`` = +1 takes the root of the RRP dyad
@@ -105,7 +105,7 @@ class LambdaSliderSixBar(_OnLambda):
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class LambdaTranslatingSlot(_OnLambda):
-    """МЧВ5 (seed 001, Fig. 1 д): lambda mechanism (r, a, δ) + block at D sliding in a straight slot
+    """МЧВ5 (Kinitsky (1994), Fig. 1 д): lambda mechanism (r, a, δ) + block at D sliding in a straight slot
     (direction angle ``slot``) of an output link translating along the fixed direction ``guide``.
 
     Output s: the link's displacement along w = (cos guide, sin guide), zero when the slot line

@@ -1,4 +1,4 @@
-"""A six-bar linkage with a class-IV, second-order Assur group (seed 000 §1).
+"""A six-bar linkage with a class-IV, second-order Assur group (Zinchenko et al. (2013) §1).
 
 Structure (Artobolevsky's classification, the seed's reference [1]): frame 1, crank
 2' = O-A, and one group of four links and six revolute pairs, two of them external
@@ -271,8 +271,9 @@ class SixBarIV(Mechanism):
 
     # -- motion --------------------------------------------------------------------------------------
     def curved_slot_twin(self):
-        """Seed 000 §1: a link pivoted at E whose slot is the coupler curve of the inner four-bar R-Q-P-T
-        (the relative path, parametrised by θ = angle of R→Q); in seed 000's frame (crank angle φ − π)."""
+        """Zinchenko et al. (2013) §1: a link pivoted at E whose slot is the coupler curve of the inner four-bar R-Q-P-T
+        (the relative path, parametrised by θ = angle of R→Q); in Zinchenko et al.'s (2013)
+        frame (crank angle φ − π)."""
         slot = ParametricSlot(lambda t: self.relative_pin(t).p, lambda t: self.relative_pin(t).d,
                               lambda t: self.relative_pin(t).dd, -np.pi, np.pi, periodic=True)
         return CurvedSlotLink(self.crank, self.ground, slot, start=self.start_angle), np.pi

@@ -87,7 +87,7 @@ class SliderCrank(Mechanism):
             (("rod", "slider"),), "slider", scale=self.crank + self.rod + abs(self.offset))
 
     def curved_slot_twin(self):
-        """Seed 000 Fig. 4: a translating link whose slot is the circle of radius l_AB about (0, e)."""
+        """Zinchenko et al. (2013) Fig. 4: a translating link whose slot is the circle of radius l_AB about (0, e)."""
         slot = CircleSlot((0.0, self.offset), self.rod)
         return TranslatingCurvedSlot(self.crank, slot, start=np.pi if self.assembly == 1 else 0.0), 0.0
 

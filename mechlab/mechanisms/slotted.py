@@ -1,13 +1,13 @@
-"""Slotted links with a straight slot: seed 000's base mechanisms.
+"""Slotted links with a straight slot: Zinchenko et al.'s (2013) base mechanisms.
 
 * :class:`SlottedLink` — the link turns about a pivot B, its straight slot passes
-  through B and carries the crank pin A (seed 000, Fig. 5). Frame of seed 000 §2:
+  through B and carries the crank pin A (Zinchenko et al. (2013), Fig. 5). Frame of Zinchenko et al. (2013) §2:
   crank pivot O at the origin, link pivot B at (-pivot_distance, 0), so that φ = 0
   where A is farthest from B; ψ is the link's angle from the ray B→O. With
-  λ = l_OA / l_OB, tan ψ = λ sin φ / (λ cos φ + 1) (seed 000, formula (18)).
+  λ = l_OA / l_OB, tan ψ = λ sin φ / (λ cos φ + 1) (Zinchenko et al. (2013), formula (18)).
   λ < 1: the link oscillates; λ > 1: it turns fully (Whitworth quick return).
 * :class:`SineMechanism` — the translating slotted link (Scotch yoke) whose straight
-  slot is perpendicular to its guide (seed 000, Fig. 6): s = l_OA cos φ (formula (2)).
+  slot is perpendicular to its guide (Zinchenko et al. (2013), Fig. 6): s = l_OA cos φ (formula (2)).
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from .base import FRAME, Link, Mechanism, Pair, Structure
 
 
 class PivotedSlot:
-    """What every slotted link pivoted at B = (-pivot_distance, 0) shares (seed 000 frame):
+    """What every slotted link pivoted at B = (-pivot_distance, 0) shares (Zinchenko et al. (2013) frame):
     its λ, whether it turns fully, and the check of λ ≠ 1."""
 
     crank: Length
@@ -38,7 +38,7 @@ class PivotedSlot:
 
     @property
     def lam(self) -> float:
-        """λ = l_OA / l_OB (seed 000, text before formula (18))."""
+        """λ = l_OA / l_OB (Zinchenko et al. (2013), text before formula (18))."""
         return self.crank / self.pivot_distance
 
     @property
@@ -67,7 +67,7 @@ class SlottedLink(PivotedSlot, Mechanism):
         self._check_crank_and_pivot()
 
     def motion(self, phi) -> AngularMotion:
-        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, seed 000 frame)."""
+        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, Zinchenko et al. (2013) frame)."""
         phi = as_angles(phi)
         n = len(phi)
         A = crank_point(self.crank, phi)

@@ -16,7 +16,7 @@ from .geneva import Impact, OffsetError, Slots, TWO_PI, mid_motion_angle
 
 
 # ----------------------------------------------------------------------------------
-# spherical offset Geneva (seed 004)
+# spherical offset Geneva (Vainer & Shatokhina)
 # ----------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class SphericalModel:
@@ -39,7 +39,7 @@ Allowance = Annotated[float, number(5.0, 8.0, why="within [5, 8] mm, seed formul
 
 @dataclass(frozen=True)
 class SphericalGeneva(Mechanism):
-    """Hemispherical Geneva with perpendicular axes and offset e (seed 004).
+    """Hemispherical Geneva with perpendicular axes and offset e (Vainer & Shatokhina).
 
     ``R`` sphere radius, ``e`` offset of the crank axis from the sphere's centre
     (0 ≤ e < R), ``z`` slots, ``pin_diameter`` d (seed Table 1: R = 40, e = 15, d = 10 mm).
@@ -67,7 +67,7 @@ class SphericalGeneva(Mechanism):
             raise DimensionError(f"pin_diameter = {self.pin_diameter:g} must be smaller than the slot's working "
                                  f"arc R·(π/2 - arcsin(r_H/R)) = {self.min_slot_length - self.pin_diameter / 2:.6g}")
 
-    # -- design (seed 004, formulas (1)-(9)) ------------------------------------------
+    # -- design (Vainer & Shatokhina, formulas (1)-(9)) ------------------------------------------
     @property
     def k(self) -> float:
         """k = e/R (seed, after (5))."""

@@ -1,11 +1,11 @@
-"""The two mechanisms of seed 002 §7.2 that are not in :mod:`mechlab.mechanisms`.
+"""The two mechanisms of Kozhevnikov §7.2 that are not in :mod:`mechlab.mechanisms`.
 
 * :class:`EllipticTrammel` — a rod AB whose ends slide on two straight guides crossing
-  at O at the angle β (seed 002, Fig. 7.5; β = 90° in Fig. 7.6), driven here by Cardan's
+  at O at the angle β (Kozhevnikov, Fig. 7.5; β = 90° in Fig. 7.6), driven here by Cardan's
   crank O-C, C being the centre of the rod's moving centrode (the circumcentre of
   triangle OAB), so that the crank angle φ is a full-turn input.
 * :class:`Antiparallelogram` — the crossed four-bar whose opposite links are equal
-  (seed 002, Fig. 7.7), followed on its crossed branch through both change points.
+  (Kozhevnikov, Fig. 7.7), followed on its crossed branch through both change points.
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ _MIN_GUIDE_ANGLE = 1e-6
 class EllipticTrammel(Mechanism):
     """Rod A-B of length ``rod``; A slides on the x axis, B on the line through O at angle ``beta``.
 
-    Derivation (seed 002, Fig. 7.5, derived anew): the normals to the guides at A and B
+    Derivation (Kozhevnikov, Fig. 7.5, derived anew): the normals to the guides at A and B
     meet at the rod's instantaneous centre P, so O, A, P, B lie on the circle with
     diameter OP = rod / sin β (angle AOB = β subtends the chord AB = rod). That circle's
     centre C = P/2 is fixed to the rod, and |OC| = r = rod / (2 sin β): a crank O-C of
@@ -57,7 +57,7 @@ class EllipticTrammel(Mechanism):
 
     @property
     def fixed_radius(self) -> float:
-        """Radius of the fixed centrode (centre O): rod / sin β (seed 002, formula (7.12))."""
+        """Radius of the fixed centrode (centre O): rod / sin β (Kozhevnikov, formula (7.12))."""
         return self.rod / np.sin(self.beta)
 
     def rod_angle(self, phi) -> np.ndarray:
@@ -66,7 +66,7 @@ class EllipticTrammel(Mechanism):
 
     def structure(self) -> Structure:
         """The rod A→B (the input: Cardan's crank only parametrises it, θ′ = −1) and the sliders A, B on
-        their guides; numbered as in seed 002, Fig. 7.5: 1 = frame, 2 = slider A, 3 = slider B, 4 = rod."""
+        their guides; numbered as in Kozhevnikov, Fig. 7.5: 1 = frame, 2 = slider A, 3 = slider B, 4 = rod."""
         return Structure(
             (Link("rod", "A", ("A", "B"), self.rod), Link("slider A", "A", 0.0), Link("slider B", "B", self.beta)),
             (Pair("prismatic", "guide A", FRAME, "slider A", "A", 0.0),

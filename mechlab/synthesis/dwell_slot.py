@@ -1,6 +1,6 @@
-"""Dwell synthesis with a curved slot (seed 000, §3, Fig. 9-10, formulas (21)-(25)).
+"""Dwell synthesis with a curved slot (Zinchenko et al. (2013), §3, Fig. 9-10, formulas (21)-(25)).
 
-Frame of seed 000 §2 (as :class:`~mechlab.mechanisms.slotted.SlottedLink`): crank pivot
+Frame of Zinchenko et al. (2013) §2 (as :class:`~mechlab.mechanisms.slotted.SlottedLink`): crank pivot
 O at the origin, link pivot B at (-d, 0) with d = ``pivot_distance``, crank radius
 r = λd, φ = 0 where the pin A is farthest from B. The **base mechanism** (straight slot
 through B) has the law ψ_K(φ) = atan2(λ sin φ, 1 + λ cos φ) (formula (18)) with
@@ -20,7 +20,7 @@ A law chosen on [0, π] therefore fixes the slot and the other half of the turn.
 derivatives of ψ must equal the base mechanism's at φ = 0 and π (else they jump:
 ψ'(0±) differ by 2(ψ'(0+) - ψ_K'(0))), even ones are continuous there automatically.
 
-**Design** (seed 000 formulas (21)-(25)): ψ = ψ_B on the dwell [φ1, φ2] (the slot there
+**Design** (Zinchenko et al. (2013) formulas (21)-(25)): ψ = ψ_B on the dwell [φ1, φ2] (the slot there
 is an arc of radius l_OA about the link-frame image of O), and transitions
 ψ = ψ_B + p(φ1 - φ) on [0, φ1], ψ = ψ_B + q(φ - φ2) on [φ2, π] with polynomials p, q
 that start at the join with ψ' = ψ'' = 0 and reach the base mechanism's velocity
@@ -107,7 +107,7 @@ def check_lambda(lam) -> float:
 
 @dataclass(frozen=True)
 class BaseLaw:
-    """ψ_K and its first three analogs (base mechanism, seed 000 (18)-(20))."""
+    """ψ_K and its first three analogs (base mechanism, Zinchenko et al. (2013) (18)-(20))."""
 
     psi: np.ndarray
     d: np.ndarray
@@ -117,7 +117,7 @@ class BaseLaw:
 
 @scalar_law
 def base_law(lam: float, phi) -> BaseLaw:
-    """The base mechanism's law ψ_K(φ) with ψ_K', ψ_K'', ψ_K''' (seed 000, (18)-(20)).
+    """The base mechanism's law ψ_K(φ) with ψ_K', ψ_K'', ψ_K''' (Zinchenko et al. (2013), (18)-(20)).
 
     ψ_K is continuous in φ: principal for λ < 1, ψ_K - φ ∈ (-π/2, π/2) for λ > 1 (the link turns).
     """
@@ -221,7 +221,7 @@ def check_interval(phi1, phi2) -> tuple[float, float]:
 
 @dataclass(frozen=True)
 class DwellLaw(Checked):
-    """The designed law ψ(φ) (seed 000 (21)-(25), corrected) and the slot it fixes.
+    """The designed law ψ(φ) (Zinchenko et al. (2013) (21)-(25), corrected) and the slot it fixes.
 
     ``lam`` = λ, ``phi1`` < ``phi2`` the dwell (radians, strictly inside (0, π)),
     ``transition`` one of :data:`TRANSITIONS`, ``pivot_distance`` d = l_OB.
@@ -338,7 +338,7 @@ class DwellLaw(Checked):
 
     # -- the slot --------------------------------------------------------------------------
     def S(self, phi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """|A - B| and its two analogs (seed 000 §3, S(φ) corrected to the §2 frame)."""
+        """|A - B| and its two analogs (Zinchenko et al. (2013) §3, S(φ) corrected to the §2 frame)."""
         phi = as_angles(phi)
         d, r = self.pivot_distance, self.crank
         S = np.sqrt(d * d + r * r + 2 * r * d * np.cos(phi))
@@ -523,7 +523,7 @@ class DwellLaw(Checked):
 
 @dataclass(frozen=True, eq=False)
 class DwellSlotMechanism(Mechanism):
-    """The curved-slot mechanism designed for a dwell (seed 000 §3, Fig. 9).
+    """The curved-slot mechanism designed for a dwell (Zinchenko et al. (2013) §3, Fig. 9).
 
     ``motion(phi)`` is solved through :class:`~mechlab.mechanisms.curved_slot.CurvedSlotLink`
     with the designed slot (:meth:`DwellLaw.slot_curve`); ``law`` is the design it was
@@ -609,7 +609,7 @@ class DwellSlotMechanism(Mechanism):
 
 def curved_slot_dwell(lam, phi1, phi2, pivot_distance=1.0, transition="cubic", *,
                       roller_radius=0.0) -> DwellSlotMechanism:
-    """Design the curved-slot dwell mechanism of seed 000 §3 (angles in radians, seed-000 frame).
+    """Design the curved-slot dwell mechanism of Zinchenko et al. (2013) §3 (angles in radians, seed-000 frame).
 
     λ = l_OA / l_OB (≠ 1; λ > 1 gives intermittent rotation), dwell [φ1, φ2] strictly inside
     (0, π), ``transition`` one of :data:`TRANSITIONS`. Raises DwellRatioError,
@@ -751,7 +751,7 @@ def best_placement(lam: Ratio, length: Annotated[float, angle(0.0, np.pi, open=T
 def dwell_limit(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2)], transition: Transition = "cubic",
                 pivot_distance: Length = 1.0) -> DwellLimit:
     """The longest dwell whose largest pressure angle stays ≤ ``theta_max`` (radians) with the
-    best placement, by bisection on the dwell length. Seed 000 §3 says a dwell over 120°
+    best placement, by bisection on the dwell length. Zinchenko et al. (2013) §3 says a dwell over 120°
     makes the pressure angle large; this computes the actual limit and where θ is worst."""
     lo, hi = np.radians(1.0), np.pi - np.radians(1.0)
     if best_placement(lam, lo, transition, pivot_distance)[0] > theta_max:
@@ -775,7 +775,7 @@ def dwell_limit(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2)], 
 @validated
 def two_branch_slot(lam: Ratio, phi2: Annotated[float, angle(0.0, np.pi, open=True, error=DwellIntervalError)],
                     pivot_distance: Length = 1.0) -> TwoBranchSlot:
-    """The two-branch slot of seed 000 Fig. 10: the dwell starts at φ1 = 0, so the dwell arc
+    """The two-branch slot of Zinchenko et al. (2013) Fig. 10: the dwell starts at φ1 = 0, so the dwell arc
     (radius l_OA about O, link at ψ_B = 0) passes through the slot's far point E.
 
     Returns a :class:`TwoBranchSlot`: ``pressure_angle_at_E`` (π/2: the arc is tangent to the circle about B there),

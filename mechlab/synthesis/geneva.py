@@ -40,7 +40,7 @@ def spherical_table(R: float, e: float, z_values: Annotated[np.ndarray, Spec("sa
     return Table(rows)
 
 
-# Seed 004, Table 1 as printed (R = 40 mm, e = 15 mm, d = 10 mm).
+# Vainer & Shatokhina, Table 1 as printed (R = 40 mm, e = 15 mm, d = 10 mm).
 TABLE1_PRINTED = {
     3: {"alpha0": 66.60, "beta0": 60.0, "omega_max": 1.89, "eps_max": 2.51, "alpha1": 16.40, "beta1": 27.80},
     4: {"alpha0": 62.06, "beta0": 45.0, "omega_max": 1.13, "eps_max": 1.06, "alpha1": 27.26, "beta1": 27.56},
@@ -71,7 +71,7 @@ class Cell:
 
 
 def table1_comparison(R: float = 40.0, e: float = 15.0) -> Table:
-    """Every cell of seed 004's Table 1 (:data:`TABLE1_PRINTED`, two decimals printed)
+    """Every cell of Vainer & Shatokhina's Table 1 (:data:`TABLE1_PRINTED`, two decimals printed)
     against :func:`spherical_table`."""
     rows = spherical_table(R, e, sorted(TABLE1_PRINTED)).by("z")
     out = []

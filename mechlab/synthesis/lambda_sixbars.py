@@ -1,9 +1,9 @@
-"""Six-bar dwell mechanisms made by attaching a dyad to the coupler point D (seed 001, Figs. 1, 3).
+"""Six-bar dwell mechanisms made by attaching a dyad to the coupler point D (Kinitsky (1994), Figs. 1, 3).
 
 * МЧВ1 (:class:`LambdaRockerSixBar`, synthesis :func:`mchv1`): a circle-guiding lambda
   mechanism, a connecting rod D-E of length R (so E sits near the arc centre Q while D runs
   along the arc) and a rocker E-F. While D is in the band, E stays within about E of Q: the
-  rocker dwells. Synthesis by time ratio K and swing β_m (seed 001, formulas (14), (15) and
+  rocker dwells. Synthesis by time ratio K and swing β_m (Kinitsky (1994), formulas (14), (15) and
   the construction of Fig. 3): the rocker is farthest out when DE lies on the normal to the
   coupler curve at D, i.e. at the crank angle t = α + φ_n with φ_n = 2K(π − α)/(1 + K) after
   the dwell centre; E1 = D1 + R·n there; F lies on the perpendicular bisector of Q-E1 and the
@@ -52,7 +52,7 @@ __all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_t
 
 def time_ratio_far_angle(K: float, dwell: float) -> float:
     """Crank angle φ_n from the end of the dwell to the far extreme: K = φ_n / (2π − 2α − φ_n),
-    so φ_n = 2K(π − α)/(1 + K) (seed 001, (14)-(15))."""
+    so φ_n = 2K(π − α)/(1 + K) (Kinitsky (1994), (14)-(15))."""
     alpha = dwell / 2
     return 2 * K * (np.pi - alpha) / (1 + K)
 
@@ -80,7 +80,7 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
     ``side`` picks F on one or the other side of the chord Q-E1. Raises InfeasibleDesignError
     (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
     ``mu_min`` is None — when the transmission angle D-E-F of the attached dyad leaves the working
-    range [μ_min, 180° − μ_min] over the turn (seed 001, §1.8: 30° ≤ μ ≤ 150°, the figure "cnm"
+    range [μ_min, 180° − μ_min] over the turn (Kinitsky (1994), §1.8: 30° ≤ μ ≤ 150°, the figure "cnm"
     of Fig. 2a); pass ``mu_min=None`` to get such a design anyway.
     """
     swing = check("swing", swing, Spec("angle", MIN_SWING, np.pi, open_hi=True))
@@ -189,7 +189,7 @@ def rise_law(mech, dwell: float, n: int = 4001):
     """Output law over the rise: from the end of the dwell (φ = π + α) to the far extreme.
 
     Returns (φ, ψ, ψ', ψ'') sampled on n points, ready for
-    :func:`mechlab.analysis.motion_laws.rise_invariants` (seed 001, chapter 2)."""
+    :func:`mechlab.analysis.motion_laws.rise_invariants` (Kinitsky (1994), chapter 2)."""
     far = _far_extreme(mech, dwell)
     start = np.pi + dwell / 2
     end = far if far > start else far + TWO_PI

@@ -1,7 +1,7 @@
 """Six-bar dwell mechanisms with a translating output on the lambda mechanism: МЧВ2 and МЧВ5
-(seed 001, chapter 1, the list of kinds before Fig. 1 and the caption of Fig. 1 в, д).
+(Kinitsky (1994), chapter 1, the list of kinds before Fig. 1 and the caption of Fig. 1 в, д).
 
-Seed 001 sorts its dwell six-bars by the class-II group attached to the coupler point D:
+Kinitsky (1994) sorts its dwell six-bars by the class-II group attached to the coupler point D:
 kind 1 (RRR, МЧВ1), kind 2 (RRP, МЧВ2), kind 3 (RPR, МЧВ3) and kind 5 (RPP, МЧВ5). The abstract
 only names МЧВ2 and МЧВ5, says that the program SK5 synthesises МЧВ2 (whose dyad's transmission
 angle it calls μ2′) and that "МЧВ3 and МЧВ5 allow a simple rigid locking of the output during its
@@ -64,7 +64,8 @@ from ..validate import Length, Sign, Spec, angle, mechanism, number, validated
 Slider = Annotated[LambdaSliderSixBar, mechanism((LambdaSliderSixBar, LambdaTranslatingSlot))]
 OptionalDwell = Annotated[float | None, angle(0.0, 2 * np.pi, open=True, optional=True)]
 
-__all__ = ["mchv2", "mchv2_stroke", "mchv2_far_position", "mchv5", "SliderReport", "slider_report", "slider_rise", "slider_invariants"]
+__all__ = ["mchv2", "mchv2_stroke", "mchv2_far_position", "mchv5", "SliderReport",
+           "slider_report", "slider_rise", "slider_invariants"]
 
 
 @validated
@@ -285,6 +286,6 @@ def slider_rise(mech: Slider, dwell: OptionalDwell = None, n: Annotated[int, Spe
 
 @validated
 def slider_invariants(mech: Slider, dwell: OptionalDwell = None) -> Invariants:
-    """B, C, D of the rise (:func:`mechlab.analysis.motion_laws.rise_invariants`; seed 001, chapter 2)."""
+    """B, C, D of the rise (:func:`mechlab.analysis.motion_laws.rise_invariants`; Kinitsky (1994), chapter 2)."""
     return rise_invariants(*slider_rise(mech, dwell))
 

@@ -6,7 +6,7 @@ link's reference line: the frame of :class:`mechlab.synthesis.dwell_slot.DwellSl
 offset is a faithful flank only while ρ stays below the centre line's radius of
 curvature; where 1/|κ| ≤ ρ the flank on the concave side folds over (the cutter
 would undercut it), so :func:`check_roller` refuses such a roller. The cubic transition
-of seed 000 (21), (23) has κ ∝ 1/φ towards the slot's ends, so no roller of positive
+of Zinchenko et al. (2013) (21), (23) has κ ∝ 1/φ towards the slot's ends, so no roller of positive
 radius reproduces its centre line there exactly; the quintic and sextic laws keep κ bounded.
 
 The slot's ends (where the pin turns back, φ = 0 and π) are closed by half circles of

@@ -1,4 +1,4 @@
-"""Instantaneous centres and centrodes (seed 002: Kozhevnikov, §7.1-7.2).
+"""Instantaneous centres and centrodes (Kozhevnikov, §7.1-7.2).
 
 * :func:`instant_centres` — every relative centre of any mechanism that describes its
   ``structure()`` (four-bar, slider-crank, slotted link, sine mechanism, elliptic trammel,

@@ -1,8 +1,8 @@
-"""Fixed and moving centrodes of one link relative to another (seed 002, §7.2).
+"""Fixed and moving centrodes of one link relative to another (Kozhevnikov, §7.2).
 
 The fixed centrode is the path of the relative centre P in the reference link's frame;
 the moving centrode is the same point seen from the moving link. They touch at P at
-every instant and roll on each other without slipping (seed 002, after formula
+every instant and roll on each other without slipping (Kozhevnikov, after formula
 (7.9)). :func:`rolling_speeds` checks this with the seed's complex-number formulas,
 derived anew: for two points A, B of the link (|AB| = l) written as complex numbers
 z_A, z_B in the reference frame and primes for d/dφ,
@@ -45,7 +45,7 @@ def point_in_frame(p: PointPath, origin: PointPath, angle: AnglePath) -> PointPa
 
 
 def pole_from_two_points(zA, zB, dzA, dzB, phi=None):
-    """Seed 002 formulas (7.6) and (7.7): (ξ_P, z_P) as complex arrays from two points of a link.
+    """Kozhevnikov formulas (7.6) and (7.7): (ξ_P, z_P) as complex arrays from two points of a link.
 
     Raises CentreAtInfinity where z_A' = z_B' (the link translates: the pole is at infinity).
     """

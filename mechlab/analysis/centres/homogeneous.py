@@ -1,7 +1,7 @@
 """Points and lines in homogeneous coordinates, so that centres at infinity are explicit.
 
 An instantaneous centre of two links that translate relative to each other lies at
-infinity, in the direction perpendicular to their relative velocity (seed 002, §7.1:
+infinity, in the direction perpendicular to their relative velocity (Kozhevnikov, §7.1:
 the centre of a slider and its guide "lies at infinity on the normal to the guide").
 A :class:`Centre` therefore stores each point as ``(x, y, w)``: a finite point has
 ``w = 1`` and position ``(x, y)``; a point at infinity has ``w = 0`` and the unit

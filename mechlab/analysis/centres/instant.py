@@ -1,12 +1,12 @@
 """Every instantaneous centre of a mechanism over its crank angles, and the velocity
 analogs read back from them.
 
-Links are numbered as in seed 002 (Kozhevnikov §7.1): for the single-loop linkages
+Links are numbered as in Kozhevnikov§7.1): for the single-loop linkages
 1 = crank, 2 = coupler/rod/slider block, 3 = rocker/slider/slotted link, 4 = frame;
 so for a four-bar P14 = O, P12 = A, P23 = B, P34 = E, and Kennedy gives
 P13 = AB ∩ OE (crank relative to rocker) and P24 = OA ∩ BE (the coupler's pole).
 The slotted link and the sine mechanism are read as three links with a higher pair
-(pin A in the slot, seed 002 Fig. 7.3's method): 1 = crank, 2 = slotted link or yoke,
+(pin A in the slot, Kozhevnikov Fig. 7.3's method): 1 = crank, 2 = slotted link or yoke,
 3 = frame; P12 lies on the common normal at A, i.e. on the slot's normal through A.
 All of it is read from the mechanism's ``structure()`` (:func:`centre_model`): a new family
 needs nothing here.
@@ -60,7 +60,7 @@ class CentreModel:
 def centre_model(mechanism, motion: Motion) -> CentreModel:
     """The centres' view of ``mechanism.structure()``: a revolute pair fixes its centre at the joint,
     a prismatic pair at infinity normal to the guide, a higher pair puts the centre on the common
-    normal; a sliding block and its two pairs count as one higher pair (the pin in the slot, seed 002
+    normal; a sliding block and its two pairs count as one higher pair (the pin in the slot, Kozhevnikov
     Fig. 7.3's method), whose normal is the slot's."""
     st: Structure = mechanism.structure()
     label = {link.name: link.label or link.name for link in st.links}
@@ -241,7 +241,7 @@ def instant_centres(mechanism: AnyMechanism, phi: OptionalAngles = None,
     """All instantaneous centres of ``mechanism`` at crank angles φ (default: its cycle).
 
     ``method="kennedy"``: from positions only — the pairs' own centres and the higher
-    pairs' common normals, then Kennedy's theorem (seed 002, §7.1). ``method="velocity"``:
+    pairs' common normals, then Kennedy's theorem (Kozhevnikov, §7.1). ``method="velocity"``:
     from each link's twist (loop-closure analogs), the independent check; it is also
     defined where Kennedy's lines coincide (a change point), where "kennedy" raises.
     """

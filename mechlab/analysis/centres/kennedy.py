@@ -1,10 +1,10 @@
 """Kennedy's theorem, vectorised over crank angles, and centres from velocity twists.
 
-Kennedy (Aronhold-Kennedy) theorem (seed 002, §7.1): the three relative centres
+Kennedy (Aronhold-Kennedy) theorem (Kozhevnikov, §7.1): the three relative centres
 P_ij, P_jk, P_ik of any three links lie on one line. Given the centres that the pairs
 fix directly (a pin: the pin; a prismatic pair: the point at infinity normal to the
 guide) and, for each higher pair, the common normal at the contact (P_ij lies on it,
-seed 002, the text on Fig. 7.3), :func:`kennedy` finds every other centre as the meet
+Kozhevnikov, the text on Fig. 7.3), :func:`kennedy` finds every other centre as the meet
 of two such lines. All n crank angles are handled at once; at each angle the best
 conditioned pair of lines is used, so a construction that degenerates at some angle
 (two lines that coincide there) falls back to another one. If every construction of a
@@ -158,7 +158,7 @@ def centres_from_twists(omega: Sequence[np.ndarray], v0: Sequence[np.ndarray], *
 
 
 def five_link_higher_pair(P15, P12, P23, P34, P45, contact, normal, scale: float = 1.0):
-    """Seed 002, Fig. 7.3: a five-link mechanism (5 = frame) with pins P15, P12, P23, P34, P45
+    """Kozhevnikov, Fig. 7.3: a five-link mechanism (5 = frame) with pins P15, P12, P23, P34, P45
     and a higher pair between links 2 and 4 touching at ``contact`` with common normal
     ``normal``; every argument is (n, 2) for n snapshots.
 
