@@ -1,5 +1,11 @@
-"""Sphinx extension of the course book: cell anchors, local animation controls, offline check.
+"""Sphinx extension of the course book: folded check cells, cell anchors, local animation
+controls, offline check.
 
+* A code cell tagged ``check`` (the chapters' verification: asserts a student may skip)
+  is folded in the book: its source gets myst-nb's ``hide-input`` tag when the notebook
+  is read, so the page shows a "Show code cell source" toggle in its place (and the
+  cell's output, if any). The cell still runs at build time; a failing check fails the
+  build as before.
 * Every code cell of a notebook page gets the HTML id ``cell-<index>`` (its index in
   the notebook's list of cells), so the Errata page can link to the very cell that
   demonstrates a mistake.
@@ -21,6 +27,7 @@
 from __future__ import annotations
 
 import hashlib
+import json
 import re
 import shutil
 from pathlib import Path
@@ -63,6 +70,28 @@ def inputs_hash(root: Path) -> str:
         if path.is_file() and "__pycache__" not in path.parts:
             digest.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
     return digest.hexdigest()
+
+
+CHECK_TAG = "check"
+FOLD_TAG = "hide-input"
+
+
+def fold_check_cells(text: str) -> str:
+    """A notebook's JSON text with ``hide-input`` added to the tags of every cell tagged
+    ``check`` (unchanged text when there is none)."""
+    nb = json.loads(text)
+    changed = False
+    for cell in nb.get("cells", []):
+        tags = cell.get("metadata", {}).get("tags", [])
+        if CHECK_TAG in tags and FOLD_TAG not in tags:
+            cell["metadata"]["tags"] = [*tags, FOLD_TAG]
+            changed = True
+    return json.dumps(nb, ensure_ascii=False) if changed else text
+
+
+def _on_source_read(app, docname, source):
+    if str(app.env.doc2path(docname)).endswith(".ipynb"):
+        source[0] = fold_check_cells(source[0])
 
 
 def _on_config_inited(app, config):
@@ -127,6 +156,7 @@ def _check_offline(app):
 
 def setup(app):
     app.connect("config-inited", _on_config_inited)
+    app.connect("source-read", _on_source_read)
     app.connect("env-get-outdated", _on_env_get_outdated)
     app.connect("doctree-read", _on_doctree_read)
     app.connect("build-finished", _on_build_finished)

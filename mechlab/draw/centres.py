@@ -1,4 +1,4 @@
-"""Drawings for seed 002: the elliptic trammel, the antiparallelogram, instantaneous
+"""Drawings for Kozhevnikov ch. 7: the elliptic trammel, the antiparallelogram, instantaneous
 centres and centrodes that move with the linkage.
 
 Centres at infinity are never drawn as far-away points: curves are masked there
@@ -26,9 +26,14 @@ CENTRE_STYLE = dict(ls="none", marker="x", ms=8, mew=2, color="#d62728", zorder=
 
 @register(EllipticTrammel)
 class EllipticTrammelDrawing(LinkageDrawing):
-    """Adds both guides and the two slider blocks."""
+    """Adds both guides and the two slider blocks. Numbers as Kozhevnikov's Fig. 7.5 (the
+    instantaneous centres use them): 1 the guides (frame), 2 slider A, 3 slider B, 4 the rod;
+    Cardan's crank O-C only parametrises the motion and has no number."""
 
     n_extras = 4
+    numbered_extras = (2, 3)
+    link_numbers = (None, "4", None, None, "2", "3")
+    frame_number = "1"
 
     def extras(self, i):
         m = self.mechanism

@@ -28,6 +28,7 @@ class _SlotDrawing(LinkageDrawing):
     """A slotted link: its slot (thick translucent curve) and the arm holding it."""
 
     n_extras = 2
+    numbered_extras = (0,)   # the slotted link's arm (the yoke's rod when it translates)
     pivot_name = "B"
 
     def set_motion(self, mechanism, motion):
@@ -90,11 +91,14 @@ class EquivalentSlotDrawing(_SlotDrawing):
 
 @register(SixBarIV)
 class SixBarDrawing(LinkageDrawing):
-    """Links 2 and 4 are triangles (ternary links); the rest as in a four-bar."""
+    """Links 2 and 4 are triangles (ternary links); the rest as in a four-bar. Numbers as in
+    the class docstring of :class:`SixBarIV`: the group's links 3 = QR, 5 = PT, output 4 = RTE."""
+
+    link_numbers = ("1", "2", "3", "5", "4")
 
 
 def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9, 3.2), dpi: int = 55) -> Animation:
-    """Three panels moving together: the linkage, its curved-slot twin (seed 000 §1, Fig. 1-4),
+    """Three panels moving together: the linkage, its curved-slot twin (Zinchenko et al., 2013, §1),
     and the pin's relative path in the output link's frame with the pin on it."""
     twin = equivalent_slot(mechanism)
     fig, axes = plt.subplots(1, 3, figsize=figsize, dpi=dpi)
