@@ -110,9 +110,9 @@ class EquivalenceExplorer(Explorer):
                         for ax in (self.ax_d0, self.ax_d1, self.ax_d2)]
         lim = self.limit
         lam = f"λ = l_OA/l_OE = {mech.crank / mech.ground:.3f} · " if angular else ""
-        self.status.value = lam + (f"twin error {self.error:.1e} · "
-                                   f"peak |{sym}′| {lim.peak_velocity:.4f} ≥ base {lim.base_peak_velocity:.4f} · "
-                                   f"peak |{sym}″| {lim.peak_acceleration:.4f} ≥ base {lim.base_peak_acceleration:.4f}")
+        self.status.value = (f"{lam}twin error {self.error:.1e} · "
+                             f"peak |{sym}′| {lim.peak_velocity:.4f} ≥ base {lim.base_peak_velocity:.4f} · "
+                             f"peak |{sym}″| {lim.peak_acceleration:.4f} ≥ base {lim.base_peak_acceleration:.4f}")
         self._set_visible(True)
         self._animate_moving()
         self._select_frame()
