@@ -6,6 +6,9 @@ controls, offline check.
   is read, so the page shows a "Show code cell source" toggle in its place (and the
   cell's output, if any). The cell still runs at build time; a failing check fails the
   build as before.
+* A chapter's errata table (the columns of :func:`mechlab.course.errata.table`) gets the
+  class ``mechbook-errata``: the book's stylesheet shows it as one card per erratum, its
+  cells stacked under their names, so that it fits the column however long its evidence.
 * Every code cell of a notebook page gets the HTML id ``cell-<index>`` (its index in
   the notebook's list of cells), so the Errata page can link to the very cell that
   demonstrates a mistake.
@@ -73,6 +76,7 @@ def inputs_hash(root: Path) -> str:
 
 
 CHECK_TAG = "check"
+ERRATA_COLUMNS = ["source", "where", "printed", "correct", "evidence"]
 FOLD_TAG = "hide-input"
 
 
@@ -119,7 +123,18 @@ def _on_env_get_outdated(app, env, added, changed, removed):
     return sorted(d for d in env.found_docs if d not in added and d not in changed and d not in removed)
 
 
+def table_header(table: nodes.table) -> list[str]:
+    """The texts of a table's first header row ([] without a header)."""
+    for thead in table.findall(nodes.thead):
+        for row in thead.findall(nodes.row):
+            return [entry.astext().strip() for entry in row.findall(nodes.entry)]
+    return []
+
+
 def _on_doctree_read(app, doctree):
+    for table in doctree.findall(nodes.table):
+        if table_header(table) == ERRATA_COLUMNS:
+            table["classes"].append("mechbook-errata")
     for node in doctree.findall(nodes.container):
         if node.get("nb_element") == "cell_code" and node.get("cell_index") is not None:
             anchor = f"cell-{node['cell_index']}"
