@@ -202,6 +202,10 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         widget = page.locator("[data-mechtest='explorer']")
         widget.scroll_into_view_if_needed()
         page.wait_for_timeout(1000)   # the first full drawing of a live canvas arrives
+        clipped = page.evaluate("() => Array.from(document.querySelectorAll(\"[data-mechtest='explorer'] "
+                                ".widget-readout, [data-mechtest='explorer'] .widget-label\"))"
+                                ".filter(e => e.scrollWidth > e.clientWidth + 1).map(e => e.textContent)")
+        assert not clipped, f"{path.name}: slider labels or readouts clipped: {clipped}"
         before = page.evaluate(_PLOT_JS)
         page.evaluate(_INSTRUMENT_JS)
         handle = widget.locator("[data-mechtest-slider='angle'] .noUi-handle").first
@@ -222,6 +226,19 @@ def test_notebook_in_jupyterlab(browser, lab, path):
                               "samples_ms": [round(x, 1) for x in samples]}
         SHOTS.mkdir(parents=True, exist_ok=True)
         (SHOTS / "latency.json").write_text(json.dumps({"chapters": LATENCY}, indent=1, ensure_ascii=False))
+        if "spherical" in path.stem:   # the 3-D wheel turns under the mouse (a live ipympl canvas)
+            assert mode == "canvas", f"{path.name}: the 3-D explorer is not a live canvas"
+            box = widget.locator("canvas").last.bounding_box()
+            x, y = box["x"] + 0.25 * box["width"], box["y"] + 0.5 * box["height"]
+            turned = page.evaluate(_PLOT_JS)
+            page.mouse.move(x, y)
+            page.mouse.down()
+            for k in range(1, 6):
+                page.mouse.move(x + 12 * k, y + 4 * k)
+                page.wait_for_timeout(100)
+            page.mouse.up()
+            page.wait_for_timeout(1500)
+            assert page.evaluate(_PLOT_JS) != turned, f"{path.name}: dragging did not turn the 3-D view"
 
         page.wait_for_timeout(500)
         page.screenshot(path=str(SHOTS / f"lab__{path.stem}.png"))

@@ -209,7 +209,7 @@ class SphericalGenevaDrawing:
         self.ax.set_xlim(-R, R)
         self.ax.set_ylim(-R, R)
         self.ax.set_zlim(-0.8 * R, 1.2 * R)
-        self.ax.set_box_aspect((1, 1, 1))
+        self.ax.set_box_aspect((1, 1, 1), zoom=1.3)   # the sphere fills its axes
         self.ax.view_init(elev=22, azim=-60)
         self.ax.set_axis_off()
 

@@ -35,7 +35,10 @@ from ..errors import MechanismError
 from ..mechanisms.fourbar import FourBar
 
 UNIT_TEXT = {"deg": "°"}   # how a unit reads in a slider's description
-SLIDER_STYLE = dict(style={"description_width": "130px"}, layout=W.Layout(width="400px"))
+SLIDER_STYLE = dict(style={"description_width": "150px"}, layout=W.Layout(width="430px"))
+# the sliders' column keeps its width (a long status line beside it must not clip the readouts)
+SLIDER_COLUMN = dict(layout=W.Layout(flex="0 0 auto", width="440px"))
+SIDE_COLUMN = dict(layout=W.Layout(flex="1 1 auto", min_width="300px"))
 
 
 @dataclass(frozen=True)
@@ -194,8 +197,8 @@ class Explorer:
             w.observe(self._on_dimensions, names="value")
         self.angle.observe(self._on_angle, names="value")
         self.widget = W.VBox([self.question,
-                              W.HBox([W.VBox(list(self.sliders.values())),
-                                      W.VBox([self.angle, *side_widgets, self.status])]),
+                              W.HBox([W.VBox(list(self.sliders.values()), **SLIDER_COLUMN),
+                                      W.VBox([self.angle, *side_widgets, self.status], **SIDE_COLUMN)]),
                               self._canvas_widget])
         self.rebuild()
 
