@@ -27,6 +27,7 @@ from tempfile import TemporaryDirectory
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.animation import FuncAnimation, HTMLWriter
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from PIL import Image
 
 from ..mechanisms.fourbar import FourBar
@@ -44,7 +45,7 @@ LETTER_STYLE = dict(fontsize=12, fontweight="bold", fontstyle="italic", color="#
 NUMBER_STYLE = dict(fontsize=9, color="#1f4e79", ha="center", va="center", zorder=7,
                     bbox=dict(boxstyle="circle,pad=0.2", fc="white", ec="#1f4e79", lw=0.8))
 DIMENSION_STYLE = dict(fontsize=8, color="#555555", ha="center", va="center", zorder=6)
-READOUT_STYLE = dict(fontsize=11, ha="right", va="top", zorder=7,
+READOUT_STYLE = dict(fontsize=11, ha="right", va="bottom", zorder=7,
                      bbox=dict(boxstyle="round,pad=0.25", fc="white", ec="0.7", alpha=0.85))
 LETTER_OFFSET = 11.0   # points from the joint to the centre of its letter
 NUMBER_OFFSET = 10.0   # points from a link's middle to its number
@@ -98,36 +99,69 @@ def frame_dpi(fig) -> float:
     return float(np.clip(width * fig.dpi, MIN_WIDTH_PX, MAX_WIDTH_PX)) / width
 
 
-class PaletteHTMLWriter(HTMLWriter):
-    """matplotlib's HTMLWriter whose embedded frames are PNGs quantised to :data:`PALETTE` colours."""
+def quantised_png(rgba) -> bytes:
+    """An RGBA buffer as a PNG of :data:`PALETTE` colours (line drawings lose nothing visible)."""
+    image = Image.fromarray(np.asarray(rgba)[..., :3])
+    frame = io.BytesIO()
+    image.quantize(PALETTE, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE).save(frame, format="png")
+    return frame.getvalue()
 
-    def grab_frame(self, **savefig_kwargs):
-        if not self.embed_frames:
-            return super().grab_frame(**savefig_kwargs)
-        raw = io.BytesIO()   # raw RGBA: no PNG to encode and decode again before quantising
-        self.fig.savefig(raw, format="rgba", dpi=self.dpi, **savefig_kwargs)
-        width = int(self.fig.get_figwidth() * self.dpi)
-        image = Image.frombuffer("RGBA", (width, len(raw.getbuffer()) // (4 * width)), raw.getbuffer())
-        frame = io.BytesIO()
-        image.convert("RGB").quantize(PALETTE, method=Image.Quantize.FASTOCTREE,
-                                      dither=Image.Dither.NONE).save(frame, format="png")
-        self._saved_frames.append(base64.encodebytes(frame.getvalue()).decode("ascii"))
+
+class PaletteHTMLWriter(HTMLWriter):
+    """matplotlib's HTMLWriter, embedding frames handed to :meth:`add_frame` as quantised PNGs."""
+
+    def add_frame(self, rgba):
+        self._saved_frames.append(base64.encodebytes(quantised_png(rgba)).decode("ascii"))
 
 
 class Animation(FuncAnimation):
     """A FuncAnimation whose ``to_jshtml()`` loads nothing from another host and embeds
-    quantised frames between :data:`MIN_WIDTH_PX` and :data:`MAX_WIDTH_PX` wide."""
+    quantised frames between :data:`MIN_WIDTH_PX` and :data:`MAX_WIDTH_PX` wide.
+
+    The frames are blitted: what does not move (the axes of a law, the guides, the titles)
+    is drawn once, then each frame restores it and draws only the artists its frame
+    function returns, so a larger frame is not a slower one.
+    """
 
     def to_jshtml(self, fps=None, embed_frames=True, default_mode=None) -> str:
         if not hasattr(self, "_html_representation"):
             fps = 1000 / self._interval if fps is None else fps
             default_mode = default_mode or ("loop" if getattr(self, "_repeat", False) else "once")
-            writer = PaletteHTMLWriter(fps=fps, embed_frames=embed_frames, default_mode=default_mode)
+            writer = PaletteHTMLWriter(fps=fps, embed_frames=True, default_mode=default_mode)
             with TemporaryDirectory() as tmp:
                 path = Path(tmp, "animation.html")
-                self.save(str(path), writer=writer, dpi=frame_dpi(self._fig))
+                writer.setup(self._fig, path, dpi=frame_dpi(self._fig))
+                self._blit_frames(writer)
+                writer.finish()
                 self._html_representation = local_animation_controls(path.read_text())
         return self._html_representation
+
+    def _blit_frames(self, writer: PaletteHTMLWriter):
+        fig = self._fig
+        own_canvas, own_dpi = fig.canvas, fig.dpi
+        canvas = FigureCanvasAgg(fig)   # off screen, whatever the backend (an ipympl canvas would send it)
+        fig.set_dpi(writer.dpi)
+        frames = list(self.new_saved_frame_seq())
+        moving = list(dict.fromkeys(self._func(frames[0], *self._args)))
+        animated = [artist.get_animated() for artist in moving]
+        try:
+            for artist in moving:
+                artist.set_animated(True)
+            canvas.draw()   # the background: everything that does not move
+            background = canvas.copy_from_bbox(fig.bbox)
+            for frame in frames:
+                canvas.restore_region(background)
+                for artist in self._func(frame, *self._args):
+                    if artist.get_visible() and artist.axes is not None:
+                        artist.axes.draw_artist(artist)
+                    elif artist.get_visible():
+                        fig.draw_artist(artist)
+                writer.add_frame(canvas.buffer_rgba())
+        finally:
+            for artist, was in zip(moving, animated):
+                artist.set_animated(was)
+            fig.set_dpi(own_dpi)
+            fig.set_canvas(own_canvas)
 
 
 def register(mechanism_type: type):
@@ -188,7 +222,8 @@ class LinkageDrawing:
         self.letters: dict[str, plt.Annotation] = {}
         self.numbers: list[plt.Annotation] = []
         self.lengths: list[plt.Annotation] = []
-        self.readout = ax.text(0.98, 0.98, "", transform=ax.transAxes, **READOUT_STYLE) if readout else None
+        # above the axes, at the right: out of the drawing's way
+        self.readout = ax.text(1.0, 1.01, "", transform=ax.transAxes, **READOUT_STYLE) if readout else None
         self.mechanism = None
         self.motion = None
         self.set_mechanism(mechanism)
@@ -479,7 +514,8 @@ def animate(mechanism, n: int = 48, interval: int = 80, trace: str | None = None
     if law:
         y, label = law_of(drawing.motion)
         deg = np.degrees(drawing.motion.phi)
-        ax_law.plot(deg, y, color="#1f4e79", lw=1.8)
+        dense, _ = law_of(mechanism.motion(mechanism.cycle(361)))   # the curve smooth, the marker on it
+        ax_law.plot(np.degrees(mechanism.cycle(361)), dense + (y[0] - dense[0]), color="#1f4e79", lw=1.8)
         (marker,) = ax_law.plot([], [], "o", ms=8, color="#d62728", zorder=5)
         ax_law.set_xlabel("crank angle φ (degrees)")
         ax_law.set_ylabel(label)

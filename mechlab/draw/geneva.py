@@ -208,8 +208,8 @@ class SphericalGenevaDrawing:
         R = self.mechanism.R
         self.ax.set_xlim(-R, R)
         self.ax.set_ylim(-R, R)
-        self.ax.set_zlim(-0.8 * R, 1.2 * R)
-        self.ax.set_box_aspect((1, 1, 1), zoom=1.3)   # the sphere fills its axes
+        self.ax.set_zlim(-1.0 * R, 1.1 * R)
+        self.ax.set_box_aspect((1, 1, 1), zoom=1.15)   # the sphere and the pin's path fill the axes
         self.ax.view_init(elev=22, azim=-60)
         self.ax.set_axis_off()
 
@@ -229,9 +229,9 @@ def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.
         label = f"{name}: dwell {inv.dwell_fraction:.2f}, impact: {inv.impact}"
         axes[0].plot(np.degrees(phi), sense * mo.dpsi, label=label)
         axes[1].plot(np.degrees(phi), sense * mo.ddpsi, label=name)
-    axes[0].set_ylabel("ψ′")
-    axes[1].set_ylabel("ψ″")
-    axes[1].set_xlabel("φ, degrees")
+    axes[0].set_ylabel("ψ′ = dψ/dφ (–)")
+    axes[1].set_ylabel("ψ″ = d²ψ/dφ² (1/rad)")
+    axes[1].set_xlabel("crank angle φ (degrees)")
     for ax in axes:
         ax.grid(True, alpha=0.3)
     axes[0].legend(fontsize=7, loc="upper left")
