@@ -296,3 +296,26 @@ def test_explorer_mechanism_fills_its_axes():
     # the mechanism spans most of the view in the direction that limits it
     assert max((x1 - x0) / (vx1 - vx0), (y1 - y0) / (vy1 - vy0)) > 0.6
     plt.close("all")
+
+
+@pytest.mark.parametrize("law", [False, True])
+def test_blitted_frames_match_a_full_drawing_of_the_same_frame(law):
+    """The static background is drawn once; each frame must still look as if drawn whole."""
+    import io
+
+    from PIL import Image
+
+    from mechlab.draw import frame_dpi
+    anim = animate(FourBar(1, 3, 3, 4), n=6, trace="B", law=law)
+    frames = _frames(anim.to_jshtml())
+    fig = anim._fig
+    for k in (1, 4):
+        anim._func(k)
+        whole = io.BytesIO()
+        fig.savefig(whole, format="png", dpi=frame_dpi(fig))
+        full = np.asarray(Image.open(whole).convert("L"), dtype=float)
+        blitted = np.asarray(frames[k].convert("L"), dtype=float)
+        assert full.shape == blitted.shape
+        differ = np.abs(full - blitted) > 40   # more than the palette's rounding
+        assert differ.mean() < 0.003, differ.mean()
+    plt.close("all")
