@@ -202,8 +202,9 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         widget = page.locator("[data-mechtest='explorer']")
         widget.scroll_into_view_if_needed()
         page.wait_for_timeout(1000)   # the first full drawing of a live canvas arrives
-        clipped = page.evaluate("() => Array.from(document.querySelectorAll(\"[data-mechtest='explorer'] "
-                                ".widget-readout, [data-mechtest='explorer'] .widget-label\"))"
+        # no slider's label or readout is cut off, in any widget of the notebook
+        clipped = page.evaluate("() => Array.from(window.jupyterapp.shell.currentWidget.node.querySelectorAll("
+                                "'.widget-slider .widget-readout, .widget-slider .widget-label'))"
                                 ".filter(e => e.scrollWidth > e.clientWidth + 1).map(e => e.textContent)")
         assert not clipped, f"{path.name}: slider labels or readouts clipped: {clipped}"
         before = page.evaluate(_PLOT_JS)

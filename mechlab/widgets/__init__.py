@@ -35,9 +35,9 @@ from ..errors import MechanismError
 from ..mechanisms.fourbar import FourBar
 
 UNIT_TEXT = {"deg": "°"}   # how a unit reads in a slider's description
-SLIDER_STYLE = dict(style={"description_width": "150px"}, layout=W.Layout(width="430px"))
+SLIDER_STYLE = dict(style={"description_width": "165px"}, layout=W.Layout(width="445px"))
 # the sliders' column keeps its width (a long status line beside it must not clip the readouts)
-SLIDER_COLUMN = dict(layout=W.Layout(flex="0 0 auto", width="440px"))
+SLIDER_COLUMN = dict(layout=W.Layout(flex="0 0 auto", width="455px"))
 SIDE_COLUMN = dict(layout=W.Layout(flex="1 1 auto", min_width="300px"))
 
 

@@ -42,7 +42,7 @@ def mchv1_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.0, swing=20.0, mu_min=30
         "dwell": Control("dwell 2α", 20.0, 300.0, 2.0, dwell, "deg"),
         "K": Control("time ratio K", 0.5, 2.0, 0.05, K),
         "swing": Control("swing β_m", 5.0, 90.0, 1.0, swing, "deg"),
-        "mu_min": Control("dyad μ ≥ (0: any)", 0.0, 45.0, 1.0, mu_min, "deg"),
+        "mu_min": Control("least μ, 0 = any", 0.0, 45.0, 1.0, mu_min, "deg"),
     }
     return MechanismExplorer(_mchv1, controls, trace="D", n=n, title="МЧВ1: lambda mechanism + rocker", live=live,
                              question=question)

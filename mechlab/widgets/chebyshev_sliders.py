@@ -24,7 +24,7 @@ def mchv2_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.0, mu_min=30.0, n=121, *
         "a": Control("frame a = OC/l", 0.2, 1.6, 0.01, a),
         "dwell": Control("dwell 2α", 20.0, 200.0, 2.0, dwell, "deg"),
         "K": Control("time ratio K", 0.5, 2.0, 0.05, K),
-        "mu_min": Control("dyad μ2′ ≥ (0: any)", 0.0, 45.0, 1.0, mu_min, "deg"),
+        "mu_min": Control("least μ2′, 0 = any", 0.0, 45.0, 1.0, mu_min, "deg"),
     }
     return MechanismExplorer(_mchv2, controls, trace="D", n=n, title="МЧВ2: lambda mechanism + rod + slider",
                              live=live, question=question)

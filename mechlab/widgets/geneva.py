@@ -45,7 +45,7 @@ def planar_geneva_explorer(z: int = 4, centre_distance: float = 100.0, *, live: 
                            question: str | None = None) -> GenevaExplorer:
     """Sliders for z and the centre distance C (mm), a toggle external/internal."""
     controls = {"z": Control("slots z", 3, 12, 1, z),
-                "centre_distance": Control("centre distance C", 20, 200, 1, centre_distance, "mm"),
+                "centre_distance": Control("centre dist. C", 20, 200, 1, centre_distance, "mm"),
                 "kind": Choice("wheel", ("external", "internal"), "external")}
     return GenevaExplorer(_planar, controls, title="Planar Geneva drive", live=live, question=question,
                           length_unit="mm")
