@@ -195,9 +195,9 @@ class LinkageDrawing:
 
     Parameters: ``ax`` the axes; ``mechanism`` a single-loop mechanism; ``trace`` the
     name of a joint whose path over the cycle is drawn; ``labels`` joint letters and
-    link numbers (on by default); ``dimensions`` each link's length beside it;
-    ``readout`` the crank angle φ in degrees in a corner. Every artist is made once and
-    moved by :meth:`set_frame`.
+    link numbers (on by default); ``ground`` the hatched supports of the fixed pivots (on
+    by default); ``dimensions`` each link's length beside it; ``readout`` the crank angle
+    φ in degrees above the axes. Every artist is made once and moved by :meth:`set_frame`.
     """
 
     n_extras = 0
@@ -207,11 +207,11 @@ class LinkageDrawing:
     frame_number: str | None = None  # None: the number after the last moving link
 
     def __init__(self, ax, mechanism: Mechanism, trace: str | None = None, n: int = 361, *, labels: bool = True,
-                 dimensions: bool = False, readout: bool = False):
+                 ground: bool = True, dimensions: bool = False, readout: bool = False):
         self.ax = ax
         self.trace_name = trace
         self.n = n
-        self.show_labels, self.show_dimensions = labels, dimensions
+        self.show_labels, self.show_ground, self.show_dimensions = labels, ground, dimensions
         ax.set_aspect("equal")
         self.link_lines = []
         self.extra_lines = [ax.plot([], [], **self.extra_styles.get(k, EXTRA_STYLE))[0] for k in range(self.n_extras)]
@@ -282,7 +282,8 @@ class LinkageDrawing:
             line.set_data(xy[:, 0], xy[:, 1])
         piv = np.array([pts[k] for k in self.mechanism.pivots if k in pts])
         self.pivot_marks.set_data(piv[:, 0], piv[:, 1])
-        self.ground_line.set_data(*ground_symbols(piv, self._ground_size).T)
+        if self.show_ground:
+            self.ground_line.set_data(*ground_symbols(piv, self._ground_size).T)
         moving = np.array([v for k, v in pts.items() if k not in self.mechanism.pivots] or [[np.nan, np.nan]])
         self.joint_marks.set_data(moving[:, 0], moving[:, 1])
         for line, seg in zip(self.extra_lines, self.extras(i)):
@@ -468,13 +469,15 @@ def _diagram_axes(ax):
 
 
 def draw(mechanism, phi: float = 0.0, ax=None, trace: str | None = None, *, labels: bool = True,
-         dimensions: bool = False):
+         ground: bool = True, dimensions: bool = False):
     """Draw a mechanism at crank angle φ (radians) as a labelled kinematic diagram: joint
-    letters, link numbers, hatched fixed pivots, and with ``dimensions`` the links' lengths;
-    ``trace`` names a joint whose whole path is drawn. Returns the drawing."""
+    letters and link numbers (``labels``), hatched fixed pivots (``ground``), and with
+    ``dimensions`` the links' lengths; ``trace`` names a joint whose whole path is drawn.
+    Returns the drawing."""
     if ax is None:
         _, ax = plt.subplots(figsize=(6.5, 5))
-    drawing = drawing_class(mechanism)(ax, mechanism, trace=trace, labels=labels, dimensions=dimensions)
+    drawing = drawing_class(mechanism)(ax, mechanism, trace=trace, labels=labels, ground=ground,
+                                       dimensions=dimensions)
     drawing.autoscale()
     drawing.set_motion(mechanism, mechanism.motion(np.atleast_1d(phi)))
     if trace:   # the path over the whole cycle, not just the one position drawn

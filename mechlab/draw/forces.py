@@ -26,15 +26,15 @@ class ForcePlanDrawing:
     """
 
     def __init__(self, ax, mechanism: Kinetostatics, trace: str | None = None, n: int = 361,
-                 pairs=None, length: float = 0.45, *, labels: bool = True, dimensions: bool = False,
-                 readout: bool = False):
+                 pairs=None, length: float = 0.45, *, labels: bool = True, ground: bool = True,
+                 dimensions: bool = False, readout: bool = False):
         self.ax = ax
         self.n = n
         self.pair_names = pairs
         self.length = length
         # the crank angle is in this drawing's own text, with the torque: no second readout
         self.base = drawing_class(mechanism.mechanism)(ax, mechanism.mechanism, trace=trace, n=n, labels=labels,
-                                                       dimensions=dimensions)
+                                                       ground=ground, dimensions=dimensions)
         self.quiver = None
         self.text = ax.text(0.02, 0.98, "", transform=ax.transAxes, va="top", fontsize=9, zorder=6)
         self.mechanism = None

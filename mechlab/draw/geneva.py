@@ -111,7 +111,7 @@ class SphericalGenevaDrawing:
     its place."""
 
     def __init__(self, ax, mechanism: SphericalGeneva, trace: str | None = None, n: int = 73, *,
-                 labels: bool = True, dimensions: bool = False, readout: bool = False):
+                 labels: bool = True, ground: bool = True, dimensions: bool = False, readout: bool = False):
         if getattr(ax, "name", "") != "3d":
             fig, pos = ax.figure, ax.get_position()
             ax.remove()
