@@ -120,10 +120,10 @@ def test_page(browser, server, page_path):
         broken = [i["src"] for i in images if not i["ok"]]
         assert not broken, f"{page_path}: images not loaded: {broken}"
 
-        # check cells (tag "check") are folded: their source is behind a closed toggle
+        # check cells (tag "check") are folded: their source is behind a closed toggle, not shown
         folded = page.evaluate("() => Array.from(document.querySelectorAll('.cell.tag_check')).map(c => {"
                                " const src = c.querySelector('.cell_input');"
-                               " return !!src && src.getBoundingClientRect().height === 0; })")
+                               " return !!src && !src.checkVisibility(); })")
         assert all(folded), f"{page_path}: a check cell's source is shown: {folded}"
         column = page.evaluate("() => (document.querySelector('article.bd-article') || document.querySelector('main'))"
                                ".getBoundingClientRect().width")
