@@ -260,7 +260,8 @@ class LinkageDrawing:
                                                       **LETTER_STYLE)
         for name, text in self.letters.items():
             text.set_visible(name in names)
-        count = len(self.numbered_parts(0)) + 1 if self.show_labels else 0
+        parts = len(self.numbered_parts(0))
+        count = parts + 1 if self.show_labels and parts else 0   # no moving link numbered: no frame number
         while len(self.numbers) < count:
             self.numbers.append(self.ax.annotate("", (0, 0), xytext=(0, 0), textcoords="offset points",
                                                  **NUMBER_STYLE))
@@ -312,6 +313,8 @@ class LinkageDrawing:
             text.set_text(str(k + 1) if self.link_numbers is None else (self.link_numbers[k] or ""))
             text.xy = where
             text.set_position(NUMBER_OFFSET * normal)
+        if not parts:
+            return
         frame = self.numbers[len(parts)]
         frame.set_text(self.frame_number or str(len(parts) + 1))
         if len(piv):   # beside the first fixed pivot's hatching
