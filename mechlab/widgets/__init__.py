@@ -305,11 +305,12 @@ class Explorer:
 
 def law_labels(output: str, length_unit: str) -> tuple[str, str, tuple[str, str]]:
     """Axis labels of an output law and its analogs: angles in degrees, ψ′ dimensionless,
-    ψ″ per radian; a translating output s in the mechanism's length unit."""
+    ψ″ per radian; a translating output s in the mechanism's length unit ("mm", or
+    "dimensionless": then its analogs are per radian)."""
     if output == "angle":
         return "output ψ (degrees)", "ψ′ (–), ψ″ (1/rad)", ("ψ′ = dψ/dφ", "ψ″ = d²ψ/dφ²")
-    return (f"output s ({length_unit})", f"s′ ({length_unit}/rad), s″ ({length_unit}/rad²)",
-            ("s′ = ds/dφ", "s″ = d²s/dφ²"))
+    per = "" if length_unit == "dimensionless" else length_unit
+    return (f"output s ({length_unit})", f"s′ ({per or 1}/rad), s″ ({per or 1}/rad²)", ("s′ = ds/dφ", "s″ = d²s/dφ²"))
 
 
 class MechanismExplorer(Explorer):
