@@ -309,8 +309,8 @@ def law_labels(output: str, length_unit: str) -> tuple[str, str, tuple[str, str]
     "dimensionless": then its analogs are per radian)."""
     if output == "angle":
         return "output ψ (degrees)", "ψ′ (–), ψ″ (1/rad)", ("ψ′ = dψ/dφ", "ψ″ = d²ψ/dφ²")
-    per = "" if length_unit == "dimensionless" else length_unit
-    return (f"output s ({length_unit})", f"s′ ({per or 1}/rad), s″ ({per or 1}/rad²)", ("s′ = ds/dφ", "s″ = d²s/dφ²"))
+    per = "1" if length_unit == "dimensionless" else length_unit
+    return f"output s ({length_unit})", f"s′ ({per}/rad), s″ ({per}/rad²)", ("s′ = ds/dφ", "s″ = d²s/dφ²")
 
 
 class MechanismExplorer(Explorer):
