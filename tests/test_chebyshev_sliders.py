@@ -284,7 +284,8 @@ def test_drawings_highlight_the_dwell(guide, line):
             assert np.isnan(hl).all() != (abs(d.motion.phi[i] - np.pi) <= mech.dwell / 2)
         assert len(ax.lines) == before
         plt.close(fig)
-        assert len(d.artists) == len(mech.links) + d.n_extras + 3
+        # links, extras, trace, ground symbol, pivots, joints, and the labels
+        assert len(d.artists) == len(mech.links) + d.n_extras + 4 + len(d.label_artists)
         assert type(d).__module__ == "mechlab.draw.chebyshev_sliders"
 
 

@@ -105,3 +105,217 @@ def test_choice_controls_reach_the_factory():
                                      "assembly_kind": Choice("branch", ("open", "crossed"), "open")}, live=True)
     ex.sliders["assembly_kind"].value = "crossed"
     assert seen[-1] == "crossed" and ex.mechanism.assembly == -1
+
+
+# -- labelled kinematic diagrams -------------------------------------------------------------
+
+def _families():
+    from mechlab import ExternalGeneva, curved_slot_dwell
+    from mechlab.mechanisms.sixbar_iv import example
+    from mechlab.synthesis.lambda_guiding import circle_guiding
+    from mechlab.synthesis.lambda_sixbars import mchv1
+    return [*MECHANISMS, ExternalGeneva(4, 100.0), curved_slot_dwell(0.5, 1.0, 2.6), example(),
+            mchv1(circle_guiding(np.radians(150), 0.9, np.radians(120)), 1.0, np.radians(20))]
+
+
+@pytest.mark.parametrize("mech", _families(), ids=lambda m: type(m).__name__)
+def test_labels_sit_at_their_joints_in_every_frame_and_move_in_place(mech):
+    fig, ax = plt.subplots()
+    drawing = drawing_class(mech)(ax, mech, n=25, readout=True)
+    children = [id(a) for a in ax.get_children()]
+    names = set(drawing.motion.points)
+    assert set(drawing.letters) == names   # one letter per joint, named as the course names it
+    parts = len(drawing.numbered_parts(0))
+    assert [t.get_visible() for t in drawing.numbers] == [True] * (parts + 1)   # the moving links and the frame
+    for i in range(drawing.n):
+        drawing.set_frame(i)
+        for name in names:   # the letter is anchored at its joint, offset a few points away from it
+            assert np.allclose(drawing.letters[name].xy, drawing.motion.points[name].p[i])
+            assert 5 < np.hypot(*drawing.letters[name].get_position()) < 20
+        numbers = [t.get_text() for t in drawing.numbers[:parts + 1]]
+        assert numbers == [str(k) for k in range(1, parts + 2)] or drawing.link_numbers is not None
+        assert drawing.readout.get_text() == f"φ = {np.degrees(drawing.motion.phi[i]):.0f}°"
+        # the hatched support: a triangle with its apex at each fixed pivot
+        xs, ys = drawing.ground_line.get_data()
+        apexes = {(round(x, 9), round(y, 9)) for x, y in zip(xs, ys)}
+        for pivot in mech.pivots:
+            x, y = drawing.motion.points[pivot].p[i]
+            assert (round(x, 9), round(y, 9)) in apexes
+    assert [id(a) for a in ax.get_children()] == children   # set_frame created no artist
+    plt.close(fig)
+
+
+def test_link_numbers_follow_the_mechanism_and_lengths_are_labelled():
+    fb = FourBar(1, 3, 3, 4)
+    d = draw(fb, phi=0.5, dimensions=True)
+    texts = [t.get_text() for t in d.numbers if t.get_visible()]
+    assert texts == ["1", "2", "3", "4"]   # crank, coupler, rocker, and the frame (Kozhevnikov's numbering)
+    assert [t.get_text() for t in d.lengths] == ["OA = 1", "AB = 3", "BE = 3"]
+    mid = (d.motion.points["A"].p[0] + d.motion.points["B"].p[0]) / 2
+    assert np.allclose(d.numbers[1].xy, mid)   # the coupler's number at its middle
+    assert not d.ax.axison   # a diagram: no ticks, the letters say what it shows
+    sc = draw(SliderCrank(1, 3, 0.4))
+    assert [t.get_text() for t in sc.numbers if t.get_visible()] == ["1", "2", "3", "4"]   # the slider is 3
+    block = sc.extras(0)[1]
+    assert np.allclose(sc.numbers[2].xy, block[:-1].mean(axis=0))
+    plt.close("all")
+
+
+def test_labels_can_be_switched_off():
+    d = draw(FourBar(1, 3, 3, 4), labels=False)
+    assert d.letters == {} and not any(t.get_visible() for t in d.numbers)
+    plt.close("all")
+
+
+# -- animations: wide enough, small enough, a marker on the law -------------------------------
+
+def _frames(html):
+    import base64
+    import io
+    import re
+
+    from PIL import Image
+    return [Image.open(io.BytesIO(base64.b64decode(f.replace("\\\n", ""))))
+            for f in re.findall(r'data:image/png;base64,([^"]+)"', html)]
+
+
+@pytest.mark.parametrize("figsize, dpi", [((4.5, 3.4), 55), ((12, 4), 100), ((6.5, 4.5), 100)])
+def test_animation_frames_fit_the_book_column_and_are_quantised(figsize, dpi):
+    from mechlab.draw import MAX_WIDTH_PX, MIN_WIDTH_PX, PALETTE
+    fig, ax = plt.subplots(figsize=figsize, dpi=dpi)
+    anim = animate(FourBar(1, 3, 3, 4), n=4, ax=ax)
+    frames = _frames(anim.to_jshtml())
+    assert len(frames) == 4
+    for frame in frames:
+        assert MIN_WIDTH_PX <= frame.size[0] <= MAX_WIDTH_PX
+        assert frame.mode == "P" and len(frame.getcolors()) <= PALETTE
+    assert frames[0].tobytes() != frames[1].tobytes()   # the frames differ: the crank moved
+
+
+def test_animation_with_the_law_moves_a_marker_along_psi_in_step():
+    fb = FourBar(1, 3, 3, 4)
+    anim = animate(fb, n=12, law=True)
+    for i in (0, 5, 11):
+        anim._func(i)
+        phi = anim.drawing.motion.phi[i]
+        x, y = anim.marker.get_data()
+        assert x[0] == pytest.approx(np.degrees(phi))
+        assert y[0] == pytest.approx(np.degrees(np.unwrap(anim.drawing.motion.psi))[i])
+        assert anim.drawing.readout.get_text() == f"φ = {np.degrees(phi):.0f}°"
+    law_ax = anim.marker.axes
+    assert "degrees" in law_ax.get_xlabel() and "degrees" in law_ax.get_ylabel()
+
+
+def test_plot_law_names_quantity_and_unit():
+    fig, axes = plt.subplots(3, 1)
+    plot_law(SliderCrank(1, 3).motion(np.linspace(0, 6, 20)), axes)
+    assert [a.get_ylabel().split(" ")[0] for a in axes] == ["s", "s′", "s″"]
+    assert all("(" in a.get_ylabel() for a in axes) and "degrees" in axes[-1].get_xlabel()
+    plt.close(fig)
+
+
+# -- explorers ------------------------------------------------------------------------------
+
+def _explorers():
+    from mechlab.widgets.centres import antiparallelogram_explorer, fourbar_centrode_explorer, trammel_explorer
+    from mechlab.widgets.chebyshev import lambda_explorer, mchv1_explorer
+    from mechlab.widgets.chebyshev_sliders import mchv2_explorer, mchv5_explorer
+    from mechlab.widgets.dwell import dwell_explorer
+    from mechlab.widgets.equivalence import fourbar_equivalence, slider_crank_equivalence
+    from mechlab.widgets.forces import press_explorer, rocker_explorer
+    from mechlab.widgets.geneva import planar_geneva_explorer, spherical_geneva_explorer
+    return [fourbar_explorer, fourbar_centrode_explorer, trammel_explorer, antiparallelogram_explorer,
+            lambda_explorer, mchv1_explorer, mchv2_explorer, mchv5_explorer, dwell_explorer, fourbar_equivalence,
+            slider_crank_equivalence, press_explorer, rocker_explorer, planar_geneva_explorer,
+            spherical_geneva_explorer]
+
+
+@pytest.mark.parametrize("make", _explorers(), ids=lambda f: f.__name__)
+def test_every_explorer_asks_its_question_and_every_key_press_moves_the_crank(make):
+    ex = make(question="find the largest dwell <for which> the pressure angle stays under 45°")
+    assert ex.question.value.startswith("<b>Investigate:</b> find the largest dwell &lt;for which&gt;")
+    assert ex.widget.children[0] is ex.question   # above the controls
+    assert make().question.value == ""
+    title = ex.fig._suptitle.get_text() if ex.fig._suptitle else ""
+    assert "seed" not in title.lower()
+    assert ex.message == "", ex.message
+    # the slider steps by the sampling step: each step lands on a new sample
+    assert ex.angle.step == pytest.approx(360.0 / (ex.n - 1))
+    frames = set()
+    for k in range(6):
+        ex.angle.value = 90.0 + k * ex.angle.step
+        frames.add(ex.frame)
+    assert len(frames) == 6
+    w = ex.fig.get_figwidth() * ex.fig.dpi
+    assert w >= 600, w   # at least 600 px wide in the book and in JupyterLab
+    plt.close("all")
+
+
+def test_sliders_show_whole_numbers_as_integers_and_say_no_mm_for_dimensionless_lengths():
+    from mechlab.widgets.equivalence import fourbar_equivalence
+    from mechlab.widgets.geneva import planar_geneva_explorer
+    g = planar_geneva_explorer()
+    z, c = g.sliders["z"], g.sliders["centre_distance"]
+    assert type(z).__name__ == "IntSlider" and z.value == 4 and z.description == "slots z"
+    assert type(c).__name__ == "IntSlider" and c.value == 100 and c.description.endswith("(mm)")
+    assert isinstance(g.mechanism.z, int)
+    for ex in (fourbar_explorer(), fourbar_equivalence()):
+        assert not any("mm" in w.description for w in ex.sliders.values())
+    fb = fourbar_explorer()
+    assert fb.sliders["crank"].readout_format == ".2f"
+    assert fb.ax_law.get_ylabel() == "output ψ (degrees)" and "degrees" in fb.ax_rate.get_xlabel()
+    plt.close("all")
+
+
+def test_equivalence_status_names_both_analogs():
+    from mechlab.widgets.equivalence import fourbar_equivalence, slider_crank_equivalence
+    assert "peak |ψ′|" in fourbar_equivalence().status.value and "peak |ψ″|" in fourbar_equivalence().status.value
+    assert "peak |s″|" in slider_crank_equivalence().status.value
+    plt.close("all")
+
+
+def test_force_explorer_shows_a_zero_speed_in_place_and_recovers():
+    from mechlab.widgets.forces import press_explorer
+    ex = press_explorer()
+    ex.sliders["rpm"].value = 0   # the drive's figures need ω1 ≠ 0: a DriveError, shown, not raised
+    assert "ω1" in ex.message and ex.error_text.get_visible() and not ex.ax_mech.get_visible()
+    assert "ω1" in ex.status.value
+    ex.sliders["rpm"].value = 100
+    assert ex.message == "" and ex.ax_mech.get_visible() and ex.system.omega1 == pytest.approx(100 * np.pi / 30)
+    plt.close("all")
+
+
+def test_explorer_mechanism_fills_its_axes():
+    ex = fourbar_explorer()
+    ex.fig.canvas.draw()
+    box = ex.ax_mech.get_position()
+    grid = ex.ax_mech.get_subplotspec().get_position(ex.fig)
+    assert box.width == pytest.approx(grid.width, rel=0.02) and box.height == pytest.approx(grid.height, rel=0.02)
+    x0, x1, y0, y1 = ex.drawing.bounds(margin=0.0)
+    (vx0, vx1), (vy0, vy1) = ex.ax_mech.get_xlim(), ex.ax_mech.get_ylim()
+    # the mechanism spans most of the view in the direction that limits it
+    assert max((x1 - x0) / (vx1 - vx0), (y1 - y0) / (vy1 - vy0)) > 0.6
+    plt.close("all")
+
+
+@pytest.mark.parametrize("law", [False, True])
+def test_blitted_frames_match_a_full_drawing_of_the_same_frame(law):
+    """The static background is drawn once; each frame must still look as if drawn whole."""
+    import io
+
+    from PIL import Image
+
+    from mechlab.draw import frame_dpi
+    anim = animate(FourBar(1, 3, 3, 4), n=6, trace="B", law=law)
+    frames = _frames(anim.to_jshtml())
+    fig = anim._fig
+    for k in (1, 4):
+        anim._func(k)
+        whole = io.BytesIO()
+        fig.savefig(whole, format="png", dpi=frame_dpi(fig))
+        full = np.asarray(Image.open(whole).convert("L"), dtype=float)
+        blitted = np.asarray(frames[k].convert("L"), dtype=float)
+        assert full.shape == blitted.shape
+        differ = np.abs(full - blitted) > 40   # more than the palette's rounding
+        assert differ.mean() < 0.003, differ.mean()
+    plt.close("all")

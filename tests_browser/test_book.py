@@ -2,13 +2,17 @@
 
 Serves book/_build/html (built by `make book`) on 127.0.0.1 and visits every page with
 Chromium. A request to any other host is aborted and reported. A screenshot of each
-page is saved under book/_build/screenshots/.
+page is saved under book/_build/screenshots/, and what is measured on the way (every
+animation's width on screen, every page's size, the widest table against the column)
+goes to book/_build/screenshots/book.json.
 """
 
 from __future__ import annotations
 
 import functools
 import http.server
+import json
+import re
 import threading
 from urllib.parse import urlparse
 
@@ -20,6 +24,17 @@ HTML = ROOT / "book" / "_build" / "html"
 SHOTS = ROOT / "book" / "_build" / "screenshots"
 PAGES = sorted(p.relative_to(HTML).as_posix() for p in HTML.rglob("*.html")
                if not {"_sources", "_static", "_images"} & set(p.relative_to(HTML).parts))
+MIN_ANIMATION_PX = 600            # an animation frame on screen, in the 784 px column
+MAX_PAGE_BYTES = 5 * 1024 * 1024  # a page: its HTML (frames embedded) and the images it loads from the book
+MEASURED: dict[str, dict] = {}
+
+
+def page_bytes(page_path: str) -> int:
+    """The page's HTML and the book's own images it shows (not the theme's shared scripts and styles)."""
+    html = (HTML / page_path).read_text(encoding="utf-8")
+    images = {(HTML / page_path).parent.joinpath(src).resolve()
+              for src in re.findall(r'<img[^>]+src="(?!data:)([^"#?]+)"', html)}
+    return len(html.encode()) + sum(p.stat().st_size for p in images if p.is_file())
 
 
 class _Quiet(http.server.SimpleHTTPRequestHandler):
@@ -105,11 +120,25 @@ def test_page(browser, server, page_path):
         broken = [i["src"] for i in images if not i["ok"]]
         assert not broken, f"{page_path}: images not loaded: {broken}"
 
+        # check cells (tag "check") are folded: their source is behind a closed toggle, not shown
+        folded = page.evaluate("() => Array.from(document.querySelectorAll('.cell.tag_check')).map(c => {"
+                               " const src = c.querySelector('.cell_input');"
+                               " return !!src && !src.checkVisibility(); })")
+        assert all(folded), f"{page_path}: a check cell's source is shown: {folded}"
+        column = page.evaluate("() => (document.querySelector('article.bd-article') || document.querySelector('main'))"
+                               ".getBoundingClientRect().width")
+        tables = page.evaluate("() => Array.from(document.querySelectorAll('article table, main table'))"
+                               ".map(t => t.getBoundingClientRect().width)")
+        assert all(w <= column + 1 for w in tables), f"{page_path}: a table is wider than the column {column}: {tables}"
+
         animations = page.locator("div.animation")
+        widths = []
         for k in range(animations.count()):
             anim = animations.nth(k)
             anim.scroll_into_view_if_needed()
             img = anim.locator("img").first
+            page.wait_for_function("e => e.complete && e.naturalWidth > 0", arg=img.element_handle())
+            widths.append(img.evaluate("e => e.getBoundingClientRect().width"))
             slider = anim.locator("input.anim-slider")
             frames = int(slider.get_attribute("max") or page.evaluate("e => e.max", slider.element_handle()))
             assert frames >= 1, f"{page_path}: animation {k} has one frame"
@@ -126,7 +155,14 @@ def test_page(browser, server, page_path):
             glyph = page.evaluate("e => getComputedStyle(e, '::before').content", icon.element_handle())
             assert glyph not in ("none", "normal", ""), f"{page_path}: Play button has no icon"
 
+        size = page_bytes(page_path)
+        MEASURED[page_path] = {"bytes": size, "animation_widths_px": widths, "column_px": column,
+                               "widest_table_px": max(tables, default=0)}
         SHOTS.mkdir(parents=True, exist_ok=True)
+        (SHOTS / "book.json").write_text(json.dumps(MEASURED, indent=1))
+        assert all(w >= MIN_ANIMATION_PX for w in widths), f"{page_path}: animations narrower than " \
+            f"{MIN_ANIMATION_PX} px: {widths}"
+        assert size < MAX_PAGE_BYTES, f"{page_path}: {size / 2**20:.2f} MB"
         page.evaluate("() => { if (document.activeElement) document.activeElement.blur(); window.scrollTo(0, 0); }")
         page.screenshot(path=str(SHOTS / (page_path.replace("/", "__").removesuffix(".html") + ".png")),
                         full_page=True)

@@ -157,7 +157,9 @@ def test_kernel_startup_shows_widgets_statically(tmp_path, monkeypatch):
         "    ax.plot([0, 1], [1, 0]); plt.show()\n"
         "W.VBox([W.FloatSlider(value=2.5, description='length'), out])"),
         nbformat.v4.new_code_cell("W.IntSlider(description='alone')"),
-        nbformat.v4.new_code_cell("print(backend)")]
+        nbformat.v4.new_code_cell("print(backend)"),
+        nbformat.v4.new_code_cell("from mechlab.widgets import fourbar_explorer\n"
+                                  "fourbar_explorer(question='when does the crank stop turning?')")]
     NotebookClient(nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}).execute()
     box = [o for o in nb.cells[0].outputs if o.get("output_type") == "execute_result"][0]["data"]
     assert "application/vnd.jupyter.widget-view+json" in box  # the live view is still there for JupyterLab
@@ -167,6 +169,27 @@ def test_kernel_startup_shows_widgets_statically(tmp_path, monkeypatch):
     alone = [o for o in nb.cells[1].outputs if o.get("output_type") == "execute_result"][0]["data"]["text/html"]
     assert "<img" not in alone and "make lab" in alone
     assert "inline" in nb.cells[2].outputs[0]["text"]  # %matplotlib widget fell back to inline
+    # a mechlab explorer: drawn statically, its question and status line kept, no "play = 0"
+    explorer = [o for o in nb.cells[3].outputs if o.get("output_type") == "display_data"][0]["data"]["text/html"]
+    assert explorer.count('<img src="data:image/png;base64,') == 1
+    assert "<b>Investigate:</b> when does the crank stop turning?" in explorer
+    assert "transmission angle μ: 60.0° … 112.9°" in explorer
+    assert "crank OA = 1.00" in explorer and "slots" not in explorer and "play" not in explorer
+
+
+def test_check_cells_are_folded_in_the_book():
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_markdown_cell("# 1 · Chapter"), nbformat.v4.new_code_cell("x = 1"),
+                nbformat.v4.new_code_cell("assert x == 1", metadata={"tags": ["check"],
+                                                                     "jupyter": {"source_hidden": True}}),
+                nbformat.v4.new_code_cell("y = 2", metadata={"tags": ["hide-output"]})]
+    text = nbformat.writes(nb)
+    folded = nbformat.reads(mechbook.fold_check_cells(text), as_version=4)
+    assert [c.metadata.get("tags", []) for c in folded.cells] == [[], [], ["check", "hide-input"], ["hide-output"]]
+    assert [c.source for c in folded.cells] == [c.source for c in nb.cells]   # nothing else changes
+    assert mechbook.fold_check_cells(mechbook.fold_check_cells(text)) == mechbook.fold_check_cells(text)
+    plain = nbformat.writes(nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("z = 3")]))
+    assert mechbook.fold_check_cells(plain) == plain
 
 
 def test_inputs_hash_follows_the_library(tmp_path):

@@ -4,8 +4,11 @@ JupyterLab is started the way `make lab` does (127.0.0.1, token authentication o
 free port, no news or update checks), but on a COPY of notebooks/ in a temporary folder
 with its own settings, workspaces and runtime folders: JupyterLab autosaves the outputs
 into the notebook it opened, and the tracked notebooks must stay clean. For each
-notebook the test runs all cells, asserts there is no error output, moves one slider
-with the keyboard and asserts that the plot image changed. The server is stopped by its
+notebook the test runs all cells, asserts there is no error output, presses the arrow key
+on the first explorer's crank-angle slider a dozen times, timing each press to the redrawn
+plot (an image re-shown by the inline backend, or an ipympl canvas receiving a blitted
+frame), and asserts that the plot changed; the medians go to
+book/_build/screenshots/latency.json and their goal is asserted at the end. The server is stopped by its
 PID. A screenshot of each notebook is saved under book/_build/screenshots/.
 """
 
@@ -15,6 +18,7 @@ import json
 import os
 import secrets
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -23,7 +27,6 @@ import urllib.request
 from pathlib import Path
 
 import pytest
-from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 from conftest import ROOT, block_remote, free_port
 
@@ -117,19 +120,62 @@ _STATE_JS = """() => {
   return (idle && pending === 0) ? {errors, pending} : null;
 }"""
 
-# the first widget output that has a slider handle and a plot image; marked for the test
+# the first widget output that has a slider handle and a plot (an image re-shown in an Output
+# widget, or an ipympl canvas); marked for the test, with its crank-angle slider ("φ"; else its
+# first slider). Returns "angle" or "other" (a widget without a crank angle, e.g. chapter 10's).
 _MARK_WIDGET_JS = """() => {
   document.querySelectorAll('[data-mechtest]').forEach(e => e.removeAttribute('data-mechtest'));
   const root = window.jupyterapp.shell.currentWidget.node;  // this notebook's panel only
-  const outs = Array.from(root.querySelectorAll('.jp-OutputArea-output'));
-  for (const o of outs) {
-    if (o.querySelector('.noUi-handle') && o.querySelector('img')) {
+  for (const o of Array.from(root.querySelectorAll('.jp-OutputArea-output'))) {
+    if (o.querySelector('.noUi-handle') && (o.querySelector('img') || o.querySelector('canvas'))) {
       o.setAttribute('data-mechtest', 'explorer');
-      return true;
+      const angle = Array.from(o.querySelectorAll('.widget-slider'))
+        .find(s => (s.querySelector('.widget-label') || {}).textContent.includes('φ'));
+      (angle || o.querySelector('.widget-slider')).setAttribute('data-mechtest-slider', 'angle');
+      return angle ? 'angle' : 'other';
     }
   }
   return false;
 }"""
+
+# Every redraw of the marked widget's plot, timed with performance.now(): an <img> added or
+# changed (a figure re-shown in an Output widget, the inline backend) or an image drawn onto a
+# <canvas> of it (an ipympl canvas receiving a blitted frame); and every key press.
+_INSTRUMENT_JS = """() => {
+  window.__mechDraws = [];
+  window.__mechKeys = [];
+  const widget = document.querySelector("[data-mechtest='explorer']");
+  const proto = CanvasRenderingContext2D.prototype;
+  if (!proto.__mechDrawImage) {
+    proto.__mechDrawImage = proto.drawImage;
+    proto.drawImage = function (...args) {
+      const w = document.querySelector("[data-mechtest='explorer']");
+      if (window.__mechDraws && this.canvas.isConnected && w && w.contains(this.canvas))
+        window.__mechDraws.push(performance.now());
+      return this.__mechDrawImage(...args);
+    };
+  }
+  new MutationObserver(records => {
+    const t = performance.now();
+    const isImg = n => n.nodeType === 1 && (n.tagName === 'IMG' || n.querySelector('img'));
+    if (records.some(r => (r.type === 'attributes' && r.target.tagName === 'IMG')
+                          || Array.from(r.addedNodes).some(isImg)))
+      window.__mechDraws.push(t);
+  }).observe(widget, {subtree: true, childList: true, attributes: true, attributeFilter: ['src']});
+  document.addEventListener('keydown', () => window.__mechKeys.push(performance.now()), true);
+}"""
+
+# the plot's pixels: the image's source, or the canvas's content as a data URL
+_PLOT_JS = """() => {
+  const w = document.querySelector("[data-mechtest='explorer']");
+  const img = w.querySelector('img');
+  if (img) return img.src;
+  return Array.from(w.querySelectorAll('canvas')).map(c => c.toDataURL()).join('|');
+}"""
+
+PRESSES = 12
+LATENCY_GOAL_MS = float(os.environ.get("MECHLAB_LATENCY_GOAL_MS", "100"))
+LATENCY: dict[str, dict] = {}
 
 
 def test_notebooks_found():
@@ -153,28 +199,50 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         assert not state["errors"], f"{path.name}: error output: {state['errors']}"
         assert state["pending"] == 0
 
-        page.wait_for_function(_MARK_WIDGET_JS, timeout=30_000)
+        kind = page.wait_for_function(_MARK_WIDGET_JS, timeout=30_000).json_value()
         widget = page.locator("[data-mechtest='explorer']")
-        image = widget.locator("img").first
-        handle = widget.locator(".noUi-handle").first
-        handle.scroll_into_view_if_needed()
-        before = image.get_attribute("src")
-        changed = "([w, src]) => { const i = w.querySelector('img'); return i && i.src !== src; }"
+        widget.scroll_into_view_if_needed()
+        page.wait_for_timeout(1000)   # the first full drawing of a live canvas arrives
+        # no slider's label or readout is cut off, in any widget of the notebook
+        clipped = page.evaluate("() => Array.from(window.jupyterapp.shell.currentWidget.node.querySelectorAll("
+                                "'.widget-slider .widget-readout, .widget-slider .widget-label'))"
+                                ".filter(e => e.scrollWidth > e.clientWidth + 1).map(e => e.textContent)")
+        assert not clipped, f"{path.name}: slider labels or readouts clipped: {clipped}"
+        before = page.evaluate(_PLOT_JS)
+        page.evaluate(_INSTRUMENT_JS)
+        handle = widget.locator("[data-mechtest-slider='angle'] .noUi-handle").first
         handle.focus()
-        for key in ("ArrowRight", "ArrowLeft"):  # left if the slider starts at its maximum
-            for _ in range(6 if key == "ArrowRight" else 12):
-                page.keyboard.press(key)
-            try:
-                page.wait_for_function(changed, arg=[widget.element_handle(), before], timeout=20_000)
-                break
-            except PlaywrightTimeout:
-                continue
-        after = widget.locator("img").first.get_attribute("src")
+        samples = []
+        for _ in range(PRESSES if kind == "angle" else 2):  # key press → the first redraw after it
+            drawn = page.evaluate("() => window.__mechDraws.length")
+            page.keyboard.press("ArrowRight")
+            page.wait_for_function("n => window.__mechDraws.length > n", arg=drawn, timeout=20_000)
+            samples.append(page.evaluate("() => { const k = window.__mechKeys[window.__mechKeys.length - 1];"
+                                         " return window.__mechDraws.find(d => d >= k) - k; }"))
+            page.wait_for_timeout(200)   # this press's drawing ends before the next press
+        page.wait_for_function(_READY_JS, timeout=60_000)
+        after = page.evaluate(_PLOT_JS)
         assert after and after != before, f"{path.name}: the plot did not change when the slider moved"
-
-        page.wait_for_function(_READY_JS, timeout=60_000)  # the last key press is drawn too
-        page.wait_for_timeout(500)
+        mode = "canvas" if widget.locator("canvas").count() and not widget.locator("img").count() else "image"
+        LATENCY[path.stem] = {"median_ms": round(statistics.median(samples), 1), "mode": mode,
+                              "samples_ms": [round(x, 1) for x in samples]} if kind == "angle" else None
         SHOTS.mkdir(parents=True, exist_ok=True)
+        (SHOTS / "latency.json").write_text(json.dumps({"chapters": LATENCY}, indent=1, ensure_ascii=False))
+        if "spherical" in path.stem:   # the 3-D wheel turns under the mouse (a live ipympl canvas)
+            assert mode == "canvas", f"{path.name}: the 3-D explorer is not a live canvas"
+            box = widget.locator("canvas").last.bounding_box()
+            x, y = box["x"] + 0.25 * box["width"], box["y"] + 0.5 * box["height"]
+            turned = page.evaluate(_PLOT_JS)
+            page.mouse.move(x, y)
+            page.mouse.down()
+            for k in range(1, 6):
+                page.mouse.move(x + 12 * k, y + 4 * k)
+                page.wait_for_timeout(100)
+            page.mouse.up()
+            page.wait_for_timeout(1500)
+            assert page.evaluate(_PLOT_JS) != turned, f"{path.name}: dragging did not turn the 3-D view"
+
+        page.wait_for_timeout(500)
         page.screenshot(path=str(SHOTS / f"lab__{path.stem}.png"))
         assert not page_errors, f"{path.name}: page errors: {page_errors}"
         assert not remote, f"{path.name}: requests to another host: {remote}"
@@ -186,3 +254,16 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         page.close()
     # the copy was used, never the tracked notebook
     assert json.loads(path.read_text())["cells"][0].get("outputs", []) == []
+
+
+def test_slider_latency():
+    """Key press on the crank-angle slider → the redrawn plot, per chapter (the first explorer
+    of each notebook; a chapter whose first widget has no crank angle is left out): the
+    medians are written to book/_build/screenshots/latency.json, and the median over every
+    press of every chapter meets the goal (MECHLAB_LATENCY_GOAL_MS, 100 ms by default)."""
+    assert len(LATENCY) == len(NOTEBOOKS), "run with the notebooks' tests"
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    every = [x for r in LATENCY.values() if r for x in r["samples_ms"]]
+    summary = {"median_ms": round(statistics.median(every), 1), "presses": len(every), "chapters": LATENCY}
+    (SHOTS / "latency.json").write_text(json.dumps(summary, indent=1, ensure_ascii=False))
+    assert summary["median_ms"] <= LATENCY_GOAL_MS, summary

@@ -4,10 +4,14 @@ book/conf.py copies it into a profile in the git-ignored build folder and points
 IPYTHONDIR there. A static page has no kernel behind it, so a widget is shown as what
 it displays for its default values plus a one-line note on running it live:
 
+* mechlab's explorers are told to draw statically (``MECHLAB_WIDGETS=static``: an image in
+  an Output widget, not a live ipympl canvas);
 * every image (a figure with the inline backend) displayed into an ``ipywidgets.Output``
   is remembered, and a widget's HTML representation shows the last image of each
   Output widget it contains — so a mechlab explorer, an ``interact`` or any box of
-  controls with a plot appears as its plot, with its controls' values as a caption;
+  controls with a plot appears as its plot, with the text of the HTML widgets it holds
+  (an explorer's question and status line) above it and its controls' values as a
+  caption (a play button is no value: it is left out);
 * ``%matplotlib widget`` / ``ipympl`` falls back to the inline backend (ipympl figures
   do not render in static HTML).
 
@@ -17,6 +21,7 @@ conf.py removes the widget view from myst-nb's MIME priority, so this HTML is ch
 
 def _mechbook_setup():
     import html
+    import os
 
     import ipywidgets
     from IPython import get_ipython
@@ -24,6 +29,7 @@ def _mechbook_setup():
     ip = get_ipython()
     if ip is None:
         return
+    os.environ["MECHLAB_WIDGETS"] = "static"
 
     note = ('<p class="mechbook-live-note">Live widget: the book shows it for the default values; '
             'run this notebook with <code>make lab</code> to move the sliders.</p>')
@@ -62,16 +68,30 @@ def _mechbook_setup():
                 yield from walk(child, seen)
 
     def static_html(widget) -> str:
-        parts, values = [], []
+        parts, values, texts = [], [], []
         for w in walk(widget, set()):
             if isinstance(w, ipywidgets.Output) and w.model_id in last_image:
                 parts.append(f'<img src="data:image/png;base64,{last_image[w.model_id]}" '
                              f'alt="figure for the default values"/>')
+            elif isinstance(w, ipywidgets.HTML) and w.value.strip():
+                texts.append(f'<div class="mechbook-widget-text">{w.value}</div>')  # the widget's own HTML
+            elif isinstance(w, ipywidgets.Play):
+                continue
             elif isinstance(w, ipywidgets.ValueWidget) and getattr(w, "description", ""):
-                values.append(f"{w.description} = {w.value}")
+                values.append(f"{w.description} = {_shown(w)}")
         caption = (f'<p class="mechbook-widget-values">{html.escape(", ".join(values))}</p>'
                    if values and parts else "")
-        return f'<div class="mechbook-widget">{"".join(parts)}{caption}{note}</div>'
+        return f'<div class="mechbook-widget">{"".join(texts + parts)}{caption}{note}</div>'
+
+    def _shown(w) -> str:
+        """A slider's value as its readout shows it ("4", "0.30", not "4.0" or "0.30000000000000004")."""
+        fmt = getattr(w, "readout_format", None)
+        if isinstance(w.value, float) and fmt:
+            try:
+                return format(w.value, fmt)
+            except ValueError:
+                pass
+        return str(w.value)
 
     original = ipywidgets.Widget._repr_mimebundle_
 

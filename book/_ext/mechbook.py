@@ -1,5 +1,14 @@
-"""Sphinx extension of the course book: cell anchors, local animation controls, offline check.
+"""Sphinx extension of the course book: folded check cells, cell anchors, local animation
+controls, offline check.
 
+* A code cell tagged ``check`` (the chapters' verification: asserts a student may skip)
+  is folded in the book: its source gets myst-nb's ``hide-input`` tag when the notebook
+  is read, so the page shows a "Show code cell source" toggle in its place (and the
+  cell's output, if any). The cell still runs at build time; a failing check fails the
+  build as before.
+* A chapter's errata table (the columns of :func:`mechlab.course.errata.table`) gets the
+  class ``mechbook-errata``: the book's stylesheet shows it as one card per erratum, its
+  cells stacked under their names, so that it fits the column however long its evidence.
 * Every code cell of a notebook page gets the HTML id ``cell-<index>`` (its index in
   the notebook's list of cells), so the Errata page can link to the very cell that
   demonstrates a mistake.
@@ -21,6 +30,7 @@
 from __future__ import annotations
 
 import hashlib
+import json
 import re
 import shutil
 from pathlib import Path
@@ -65,6 +75,29 @@ def inputs_hash(root: Path) -> str:
     return digest.hexdigest()
 
 
+CHECK_TAG = "check"
+ERRATA_COLUMNS = ["source", "where", "printed", "correct", "evidence"]
+FOLD_TAG = "hide-input"
+
+
+def fold_check_cells(text: str) -> str:
+    """A notebook's JSON text with ``hide-input`` added to the tags of every cell tagged
+    ``check`` (unchanged text when there is none)."""
+    nb = json.loads(text)
+    changed = False
+    for cell in nb.get("cells", []):
+        tags = cell.get("metadata", {}).get("tags", [])
+        if CHECK_TAG in tags and FOLD_TAG not in tags:
+            cell["metadata"]["tags"] = [*tags, FOLD_TAG]
+            changed = True
+    return json.dumps(nb, ensure_ascii=False) if changed else text
+
+
+def _on_source_read(app, docname, source):
+    if str(app.env.doc2path(docname)).endswith(".ipynb"):
+        source[0] = fold_check_cells(source[0])
+
+
 def _on_config_inited(app, config):
     cache = Path(config.nb_execution_cache_path)
     stamp = cache.parent / (cache.name + ".inputs")
@@ -90,7 +123,18 @@ def _on_env_get_outdated(app, env, added, changed, removed):
     return sorted(d for d in env.found_docs if d not in added and d not in changed and d not in removed)
 
 
+def table_header(table: nodes.table) -> list[str]:
+    """The texts of a table's first header row ([] without a header)."""
+    for thead in table.findall(nodes.thead):
+        for row in thead.findall(nodes.row):
+            return [entry.astext().strip() for entry in row.findall(nodes.entry)]
+    return []
+
+
 def _on_doctree_read(app, doctree):
+    for table in doctree.findall(nodes.table):
+        if table_header(table) == ERRATA_COLUMNS:
+            table["classes"].append("mechbook-errata")
     for node in doctree.findall(nodes.container):
         if node.get("nb_element") == "cell_code" and node.get("cell_index") is not None:
             anchor = f"cell-{node['cell_index']}"
@@ -127,6 +171,7 @@ def _check_offline(app):
 
 def setup(app):
     app.connect("config-inited", _on_config_inited)
+    app.connect("source-read", _on_source_read)
     app.connect("env-get-outdated", _on_env_get_outdated)
     app.connect("doctree-read", _on_doctree_read)
     app.connect("build-finished", _on_build_finished)

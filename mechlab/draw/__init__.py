@@ -3,20 +3,32 @@
 A drawing is bound to an axes and a mechanism; :meth:`LinkageDrawing.set_motion`
 hands it the arrays of a whole cycle (computed once by ``mechanism.motion``), and
 :meth:`LinkageDrawing.set_frame` moves every artist to frame i without creating
-any new artist. :func:`animate` turns a drawing into a ``FuncAnimation`` whose
-``to_jshtml()`` plays in a static page. Other mechanism families register their
-own drawing classes in modules of this package with :func:`register`.
+any new artist. A drawing is a labelled kinematic diagram: joint letters (the names
+of the mechanism's points: O, A, B, …), link numbers (1, 2, … for the moving links,
+the next number for the frame, as Kozhevnikov numbers them for the instantaneous
+centres), fixed pivots on hatched supports, and, on request, link lengths; all of
+them move in place with the frame. :func:`animate` turns a drawing into a
+``FuncAnimation`` whose ``to_jshtml()`` plays in a static page: at least
+:data:`MIN_WIDTH_PX` wide, with palette-quantised PNG frames so that a page stays
+small. Other mechanism families register their own drawing classes in modules of
+this package with :func:`register`.
 """
 
 from __future__ import annotations
 
+import base64
 import importlib
+import io
 import pkgutil
 import re
+from pathlib import Path
+from tempfile import TemporaryDirectory
 
 import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.animation import FuncAnimation
+from matplotlib.animation import FuncAnimation, HTMLWriter
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from PIL import Image
 
 from ..mechanisms.fourbar import FourBar
 from ..mechanisms.base import Mechanism
@@ -26,7 +38,17 @@ from ..motion import Motion
 
 LINK_STYLE = dict(color="#1f4e79", lw=3, solid_capstyle="round", zorder=3)
 JOINT_STYLE = dict(ls="none", marker="o", ms=6, mfc="white", mec="#1f4e79", mew=1.5, zorder=4)
-PIVOT_STYLE = dict(ls="none", marker="^", ms=11, color="#555555", zorder=2)
+PIVOT_STYLE = dict(ls="none", marker="o", ms=7, mfc="white", mec="#333333", mew=1.5, zorder=4)
+GROUND_STYLE = dict(color="#333333", lw=1.2, solid_capstyle="butt", zorder=1.5)
+LETTER_STYLE = dict(fontsize=12, fontweight="bold", fontstyle="italic", color="#111111", ha="center",
+                    va="center", zorder=7)
+NUMBER_STYLE = dict(fontsize=9, color="#1f4e79", ha="center", va="center", zorder=7,
+                    bbox=dict(boxstyle="circle,pad=0.2", fc="white", ec="#1f4e79", lw=0.8))
+DIMENSION_STYLE = dict(fontsize=8, color="#555555", ha="center", va="center", zorder=6)
+READOUT_STYLE = dict(fontsize=11, ha="right", va="bottom", zorder=7,
+                     bbox=dict(boxstyle="round,pad=0.25", fc="white", ec="0.7", alpha=0.85))
+LETTER_OFFSET = 11.0   # points from the joint to the centre of its letter
+NUMBER_OFFSET = 10.0   # points from a link's middle to its number
 TRACE_STYLE = dict(color="#d62728", lw=1, alpha=0.8, zorder=1)
 EXTRA_STYLE = dict(color="#2a7f62", lw=2.5, zorder=2)
 # a moving output drawn as an extra (a slotted bar, a block), a fixed guide, and the output
@@ -63,11 +85,83 @@ def local_animation_controls(html: str) -> str:
     return _ICON_STYLE + _FA_CLASS.sub(rename, _REMOTE_FONT_AWESOME.sub("", html))
 
 
-class Animation(FuncAnimation):
-    """A FuncAnimation whose ``to_jshtml()`` (and HTML display) loads nothing from another host."""
+MIN_WIDTH_PX = 640   # an animation's frames are at least this wide (pixels) …
+MAX_WIDTH_PX = 784   # … and at most the book's column, whatever the figure's size and dpi
+PALETTE = 64         # colours of a frame: line drawings lose nothing visible, a frame shrinks 3-5×
 
-    def to_jshtml(self, *args, **kwargs) -> str:
-        return local_animation_controls(super().to_jshtml(*args, **kwargs))
+
+def frame_dpi(fig) -> float:
+    """The dpi at which ``fig`` is MIN_WIDTH_PX to MAX_WIDTH_PX wide (its own dpi if it already is);
+    a figure of several panels takes the whole column."""
+    width = fig.get_figwidth()
+    if len(fig.axes) > 1:
+        return MAX_WIDTH_PX / width
+    return float(np.clip(width * fig.dpi, MIN_WIDTH_PX, MAX_WIDTH_PX)) / width
+
+
+def quantised_png(rgba) -> bytes:
+    """An RGBA buffer as a PNG of :data:`PALETTE` colours (line drawings lose nothing visible)."""
+    image = Image.fromarray(np.asarray(rgba)[..., :3])
+    frame = io.BytesIO()
+    image.quantize(PALETTE, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE).save(frame, format="png")
+    return frame.getvalue()
+
+
+class PaletteHTMLWriter(HTMLWriter):
+    """matplotlib's HTMLWriter, embedding frames handed to :meth:`add_frame` as quantised PNGs."""
+
+    def add_frame(self, rgba):
+        self._saved_frames.append(base64.encodebytes(quantised_png(rgba)).decode("ascii"))
+
+
+class Animation(FuncAnimation):
+    """A FuncAnimation whose ``to_jshtml()`` loads nothing from another host and embeds
+    quantised frames between :data:`MIN_WIDTH_PX` and :data:`MAX_WIDTH_PX` wide.
+
+    The frames are blitted: what does not move (the axes of a law, the guides, the titles)
+    is drawn once, then each frame restores it and draws only the artists its frame
+    function returns, so a larger frame is not a slower one.
+    """
+
+    def to_jshtml(self, fps=None, embed_frames=True, default_mode=None) -> str:
+        if not hasattr(self, "_html_representation"):
+            fps = 1000 / self._interval if fps is None else fps
+            default_mode = default_mode or ("loop" if getattr(self, "_repeat", False) else "once")
+            writer = PaletteHTMLWriter(fps=fps, embed_frames=True, default_mode=default_mode)
+            with TemporaryDirectory() as tmp:
+                path = Path(tmp, "animation.html")
+                writer.setup(self._fig, path, dpi=frame_dpi(self._fig))
+                self._blit_frames(writer)
+                writer.finish()
+                self._html_representation = local_animation_controls(path.read_text())
+        return self._html_representation
+
+    def _blit_frames(self, writer: PaletteHTMLWriter):
+        fig = self._fig
+        own_canvas, own_dpi = fig.canvas, fig.dpi
+        canvas = FigureCanvasAgg(fig)   # off screen, whatever the backend (an ipympl canvas would send it)
+        fig.set_dpi(writer.dpi)
+        frames = list(self.new_saved_frame_seq())
+        moving = list(dict.fromkeys(self._func(frames[0], *self._args)))
+        animated = [artist.get_animated() for artist in moving]
+        try:
+            for artist in moving:
+                artist.set_animated(True)
+            canvas.draw()   # the background: everything that does not move
+            background = canvas.copy_from_bbox(fig.bbox)
+            for frame in frames:
+                canvas.restore_region(background)
+                for artist in self._func(frame, *self._args):
+                    if artist.get_visible() and artist.axes is not None:
+                        artist.axes.draw_artist(artist)
+                    elif artist.get_visible():
+                        fig.draw_artist(artist)
+                writer.add_frame(canvas.buffer_rgba())
+        finally:
+            for artist, was in zip(moving, animated):
+                artist.set_animated(was)
+            fig.set_dpi(own_dpi)
+            fig.set_canvas(own_canvas)
 
 
 def register(mechanism_type: type):
@@ -96,26 +190,40 @@ def drawing_class(mechanism) -> type:
 
 
 class LinkageDrawing:
-    """Links, joints, pivots, an optional traced point and per-family extras.
+    """A labelled kinematic diagram: links, joints, hatched fixed pivots, joint letters,
+    link numbers, an optional traced point, per-family extras and optional link lengths.
 
-    Parameters: ``ax`` the axes; ``mechanism`` a single-loop mechanism;
-    ``trace`` the name of a joint whose path over the cycle is drawn.
+    Parameters: ``ax`` the axes; ``mechanism`` a single-loop mechanism; ``trace`` the
+    name of a joint whose path over the cycle is drawn; ``labels`` joint letters and
+    link numbers (on by default); ``ground`` the hatched supports of the fixed pivots (on
+    by default); ``dimensions`` each link's length beside it; ``readout`` the crank angle
+    φ in degrees above the axes. Every artist is made once and moved by :meth:`set_frame`.
     """
 
     n_extras = 0
     extra_styles: dict[int, dict] = {}  # the style of extra k when it is not EXTRA_STYLE
+    numbered_extras: tuple[int, ...] = ()  # extras that are moving links, numbered after the links
+    link_numbers: tuple[str | None, ...] | None = None  # per link of ``mechanism.links``; None: 1, 2, …
+    frame_number: str | None = None  # None: the number after the last moving link
 
-    def __init__(self, ax, mechanism: Mechanism, trace: str | None = None, n: int = 361):
+    def __init__(self, ax, mechanism: Mechanism, trace: str | None = None, n: int = 361, *, labels: bool = True,
+                 ground: bool = True, dimensions: bool = False, readout: bool = False):
         self.ax = ax
         self.trace_name = trace
         self.n = n
+        self.show_labels, self.show_ground, self.show_dimensions = labels, ground, dimensions
         ax.set_aspect("equal")
         self.link_lines = []
         self.extra_lines = [ax.plot([], [], **self.extra_styles.get(k, EXTRA_STYLE))[0] for k in range(self.n_extras)]
         (self.trace_line,) = ax.plot([], [], **TRACE_STYLE)
+        (self.ground_line,) = ax.plot([], [], **GROUND_STYLE)
         (self.pivot_marks,) = ax.plot([], [], **PIVOT_STYLE)
         (self.joint_marks,) = ax.plot([], [], **JOINT_STYLE)
-        self.labels = {}
+        self.letters: dict[str, plt.Annotation] = {}
+        self.numbers: list[plt.Annotation] = []
+        self.lengths: list[plt.Annotation] = []
+        # above the axes, at the right: out of the drawing's way
+        self.readout = ax.text(1.0, 1.01, "", transform=ax.transAxes, **READOUT_STYLE) if readout else None
         self.mechanism = None
         self.motion = None
         self.set_mechanism(mechanism)
@@ -136,8 +244,35 @@ class LinkageDrawing:
         if self.trace_name:
             p = motion.points[self.trace_name].p
             self.trace_line.set_data(p[:, 0], p[:, 1])
+        self._ground_size = 0.045 * float(np.nanmax(np.ptp(np.concatenate([v.p for v in motion.points.values()]),
+                                                           axis=0)) or 1.0)
+        self._make_labels()
         self.set_frame(0)
         return motion
+
+    def _make_labels(self):
+        """Letters for every point, numbers for every moving link and the frame: made when a
+        mechanism brings more of them than the last one, hidden when it brings fewer."""
+        names = list(self.motion.points) if self.show_labels else []
+        for name in names:
+            if name not in self.letters:
+                self.letters[name] = self.ax.annotate(name, (0, 0), xytext=(0, 0), textcoords="offset points",
+                                                      **LETTER_STYLE)
+        for name, text in self.letters.items():
+            text.set_visible(name in names)
+        parts = len(self.numbered_parts(0))
+        count = parts + 1 if self.show_labels and parts else 0   # no moving link numbered: no frame number
+        while len(self.numbers) < count:
+            self.numbers.append(self.ax.annotate("", (0, 0), xytext=(0, 0), textcoords="offset points",
+                                                 **NUMBER_STYLE))
+        for k, text in enumerate(self.numbers):
+            text.set_visible(k < count)
+        count = len(self.mechanism.links) if self.show_dimensions else 0
+        while len(self.lengths) < count:
+            self.lengths.append(self.ax.annotate("", (0, 0), xytext=(0, 0), textcoords="offset points",
+                                                 **DIMENSION_STYLE))
+        for k, text in enumerate(self.lengths):
+            text.set_visible(k < count)
 
     # -- frames --------------------------------------------------------------------
     def set_frame(self, i: int):
@@ -148,19 +283,73 @@ class LinkageDrawing:
             line.set_data(xy[:, 0], xy[:, 1])
         piv = np.array([pts[k] for k in self.mechanism.pivots if k in pts])
         self.pivot_marks.set_data(piv[:, 0], piv[:, 1])
+        if self.show_ground:
+            self.ground_line.set_data(*ground_symbols(piv, self._ground_size).T)
         moving = np.array([v for k, v in pts.items() if k not in self.mechanism.pivots] or [[np.nan, np.nan]])
         self.joint_marks.set_data(moving[:, 0], moving[:, 1])
         for line, seg in zip(self.extra_lines, self.extras(i)):
             line.set_data(seg[:, 0], seg[:, 1])
+        if self.show_labels:
+            self._place_labels(i, pts, piv)
+        if self.show_dimensions:
+            self._place_lengths(pts)
+        if self.readout is not None:
+            self.readout.set_text(f"φ = {np.degrees(self.motion.phi[i]):.0f}°")
         return self.artists
+
+    def _place_labels(self, i, pts, piv):
+        finite = np.array([p for p in pts.values() if np.all(np.isfinite(p))] or [[0.0, 0.0]])
+        centre = finite.mean(axis=0)
+        for name, p in pts.items():
+            away = _unit(p - centre, fallback=(-0.7, 0.7))
+            if name in self.mechanism.pivots:   # the support is below a pivot: its letter above it
+                away = _unit(np.array([away[0], max(away[1], 0.6)]))
+            text = self.letters[name]
+            text.xy = p
+            text.set_position(LETTER_OFFSET * away)
+        parts = self.numbered_parts(i)
+        for k, (text, part) in enumerate(zip(self.numbers, parts)):
+            where, normal = _label_anchor(part, centre)
+            text.set_text(str(k + 1) if self.link_numbers is None else (self.link_numbers[k] or ""))
+            text.xy = where
+            text.set_position(NUMBER_OFFSET * normal)
+        if not parts:
+            return
+        frame = self.numbers[len(parts)]
+        frame.set_text(self.frame_number or str(len(parts) + 1))
+        if len(piv):   # beside the first fixed pivot's hatching
+            frame.xy = piv[0] + np.array([-1.9, -1.7]) * self._ground_size
+            frame.set_position((0.0, 0.0))
+        frame.set_visible(bool(len(piv)))
+
+    def _place_lengths(self, pts):
+        for text, names in zip(self.lengths, self.mechanism.links):
+            a, b = pts[names[0]], pts[names[1]]
+            where, normal = _label_anchor(np.array([a, b]), None)
+            text.set_text(f"{names[0]}{names[1]} = {np.hypot(*(b - a)):.3g}")
+            text.xy = where
+            text.set_position(-NUMBER_OFFSET * normal)
+
+    def numbered_parts(self, i: int) -> list[np.ndarray]:
+        """The moving links in the order of their numbers, each as a polyline at frame i:
+        the links (those ``link_numbers`` names), then the extras of ``numbered_extras``."""
+        pts = {k: v.p[i] for k, v in self.motion.points.items()}
+        parts = [np.array([pts[k] for k in names]) for names in self.mechanism.links]
+        extras = self.extras(i) if self.numbered_extras else []
+        return parts + [extras[k] for k in self.numbered_extras]
 
     def extras(self, i: int) -> list[np.ndarray]:
         """Polylines beyond the links (guides, slots, sliders) at frame i."""
         return []
 
     @property
+    def label_artists(self):
+        return [*self.letters.values(), *self.numbers, *self.lengths]
+
+    @property
     def artists(self):
-        return [*self.link_lines, *self.extra_lines, self.trace_line, self.pivot_marks, self.joint_marks]
+        return [*self.link_lines, *self.extra_lines, self.trace_line, self.ground_line, self.pivot_marks,
+                self.joint_marks, *self.label_artists, *([self.readout] if self.readout is not None else [])]
 
     def bounds(self, margin: float = 0.15):
         """(xmin, xmax, ymin, ymax) enclosing every joint over the cycle, with a margin."""
@@ -171,9 +360,58 @@ class LinkageDrawing:
         return lo[0] - pad, hi[0] + pad, lo[1] - pad, hi[1] + pad
 
     def autoscale(self):
-        x0, x1, y0, y1 = self.bounds()
-        self.ax.set_xlim(x0, x1)
-        self.ax.set_ylim(y0, y1)
+        fill_axes(self.ax, self.bounds())
+
+
+def fill_axes(ax, bounds):
+    """Set equal-aspect limits that hold ``bounds`` (x0, x1, y0, y1) and fill the axes' box: the
+    shorter side of the bounds is widened to the box's proportions, so that the drawing is as
+    large as the axes allow instead of the box shrinking to a band."""
+    x0, x1, y0, y1 = bounds
+    box = ax.get_position(original=True)   # the box before an equal aspect shrank it
+    fig_w, fig_h = ax.figure.get_size_inches()
+    ratio = (box.height * fig_h) / (box.width * fig_w)   # height / width of the box
+    w, h = x1 - x0, y1 - y0
+    if h < ratio * w:
+        y0, y1 = (y0 + y1) / 2 - ratio * w / 2, (y0 + y1) / 2 + ratio * w / 2
+    else:
+        x0, x1 = (x0 + x1) / 2 - h / ratio / 2, (x0 + x1) / 2 + h / ratio / 2
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+
+
+def _unit(v, fallback=(0.0, 1.0)) -> np.ndarray:
+    norm = float(np.hypot(*v))
+    return np.asarray(fallback, dtype=float) / np.hypot(*fallback) if not norm > 1e-12 else np.asarray(v) / norm
+
+
+def _label_anchor(part: np.ndarray, centre) -> tuple[np.ndarray, np.ndarray]:
+    """Where a link's number goes: the middle of a bar (then the unit normal pointing away from
+    ``centre``) or the centroid of a closed polyline (a block, a triangle: no offset)."""
+    part = part[np.all(np.isfinite(part), axis=1)]
+    if len(part) == 0:
+        return np.array([np.nan, np.nan]), np.zeros(2)
+    if len(part) > 2 and np.allclose(part[0], part[-1]):
+        return part[:-1].mean(axis=0), np.zeros(2)
+    a, b = part[0], part[1] if len(part) > 1 else part[0]
+    mid = (a + b) / 2
+    normal = _unit(np.array([a[1] - b[1], b[0] - a[0]]))
+    if centre is not None and np.dot(mid - centre, normal) < 0:
+        normal = -normal
+    return mid, normal
+
+
+def ground_symbols(pivots: np.ndarray, size: float) -> np.ndarray:
+    """Polylines (NaN-separated) of the frame's symbol under each fixed pivot: a support
+    triangle with its apex at the pivot, a base line and five hatch strokes below it."""
+    pieces = []
+    for x, y in np.asarray(pivots, dtype=float).reshape(-1, 2):
+        base = y - 1.4 * size
+        pieces += [[x, y], [x - 0.8 * size, base], [x + 0.8 * size, base], [x, y], [np.nan, np.nan],
+                   [x - 1.3 * size, base], [x + 1.3 * size, base], [np.nan, np.nan]]
+        for t in np.linspace(-1.1, 1.3, 5) * size:
+            pieces += [[x + t, base], [x + t - 0.5 * size, base - 0.5 * size], [np.nan, np.nan]]
+    return np.array(pieces or [[np.nan, np.nan]])
 
 
 @register(FourBar)
@@ -186,6 +424,7 @@ class SliderCrankDrawing(LinkageDrawing):
     """Adds the guide line and the slider block."""
 
     n_extras = 2
+    numbered_extras = (1,)
 
     def extras(self, i):
         m, mo = self.mechanism, self.motion
@@ -203,6 +442,7 @@ class SlottedLinkDrawing(LinkageDrawing):
     """Adds the slotted link: a bar from the pivot B through the pin A."""
 
     n_extras = 1
+    numbered_extras = (0,)
 
     def extras(self, i):
         m = self.mechanism
@@ -217,6 +457,7 @@ class SineMechanismDrawing(LinkageDrawing):
     """Adds the yoke: the slot (perpendicular to the guide) and its rod along the guide."""
 
     n_extras = 1
+    numbered_extras = (0,)
 
     def extras(self, i):
         r = self.mechanism.crank
@@ -224,46 +465,95 @@ class SineMechanismDrawing(LinkageDrawing):
         return [np.array([[x, 1.3 * r], [x, -1.3 * r], [x, 0.0], [x + 1.6 * r, 0.0]])]
 
 
-def draw(mechanism, phi: float = 0.0, ax=None, trace: str | None = None):
-    """Draw a mechanism at crank angle φ (radians); returns the drawing."""
+def _diagram_axes(ax):
+    """A kinematic diagram has no axes frame or ticks (the letters, numbers and lengths say
+    what it shows), and tick labels cost most of an animation frame's rendering."""
+    ax.set_axis_off()
+
+
+def draw(mechanism, phi: float = 0.0, ax=None, trace: str | None = None, *, labels: bool = True,
+         ground: bool = True, dimensions: bool = False):
+    """Draw a mechanism at crank angle φ (radians) as a labelled kinematic diagram: joint
+    letters and link numbers (``labels``), hatched fixed pivots (``ground``), and with
+    ``dimensions`` the links' lengths; ``trace`` names a joint whose whole path is drawn.
+    Returns the drawing."""
     if ax is None:
-        _, ax = plt.subplots(figsize=(5, 4))
-    drawing = drawing_class(mechanism)(ax, mechanism, trace=trace)
+        _, ax = plt.subplots(figsize=(6.5, 5))
+    drawing = drawing_class(mechanism)(ax, mechanism, trace=trace, labels=labels, ground=ground,
+                                       dimensions=dimensions)
     drawing.autoscale()
     drawing.set_motion(mechanism, mechanism.motion(np.atleast_1d(phi)))
+    if trace:   # the path over the whole cycle, not just the one position drawn
+        drawing.trace_line.set_data(*mechanism.motion(mechanism.cycle(361)).points[trace].p.T)
+    _diagram_axes(ax)
     return drawing
 
 
-def animate(mechanism, n: int = 72, interval: int = 50, trace: str | None = None, ax=None,
-            figsize=(5, 4)) -> Animation:
-    """A FuncAnimation of one cycle in n frames (its figure is closed, so only the
-    animation is shown); play it in a page with ``HTML(anim.to_jshtml())``."""
+def law_of(motion: Motion) -> tuple[np.ndarray, str]:
+    """The output law for a plot: ψ in degrees (continuous) or s, with its axis label."""
+    out = motion.output
+    if out.kind == "angle":
+        return np.degrees(np.unwrap(out.value)), f"output {out.name} (degrees)"
+    return out.value, f"output {out.name} (length units of the mechanism)"
+
+
+def animate(mechanism, n: int = 48, interval: int = 80, trace: str | None = None, ax=None,
+            figsize=(6.5, 4.5), *, law: bool = False, labels: bool = True, dimensions: bool = False) -> Animation:
+    """A FuncAnimation of one cycle in n frames, a labelled diagram with the crank angle φ in
+    a corner; with ``law`` the output law ψ(φ) (or s(φ)) beside it, a marker running along
+    it in step. The figure is closed, so only the animation is shown: play it in a page with
+    ``HTML(anim.to_jshtml())`` (frames 640-784 px wide whatever ``figsize``)."""
     if ax is None:
-        fig, ax = plt.subplots(figsize=figsize)
+        if law:
+            fig, (ax, ax_law) = plt.subplots(1, 2, figsize=(max(figsize[0], 9.0), figsize[1]),
+                                             gridspec_kw={"width_ratios": [1.2, 1]})
+        else:
+            fig, ax = plt.subplots(figsize=figsize)
     else:
         fig = ax.figure
-    drawing = drawing_class(mechanism)(ax, mechanism, trace=trace, n=n)
+        ax_law = ax.inset_axes([1.08, 0.1, 0.8, 0.8]) if law else None
+    drawing = drawing_class(mechanism)(ax, mechanism, trace=trace, n=n, labels=labels, dimensions=dimensions,
+                                       readout=True)
     drawing.autoscale()
-    anim = Animation(fig, drawing.set_frame, frames=n, interval=interval, blit=False)
+    _diagram_axes(ax)
+    step, marker = drawing.set_frame, None
+    if law:
+        y, label = law_of(drawing.motion)
+        deg = np.degrees(drawing.motion.phi)
+        dense, _ = law_of(mechanism.motion(mechanism.cycle(361)))   # the curve smooth, the marker on it
+        ax_law.plot(np.degrees(mechanism.cycle(361)), dense + (y[0] - dense[0]), color="#1f4e79", lw=1.8)
+        (marker,) = ax_law.plot([], [], "o", ms=8, color="#d62728", zorder=5)
+        ax_law.set_xlabel("crank angle φ (degrees)")
+        ax_law.set_ylabel(label)
+        ax_law.grid(True, alpha=0.3)
+        fig.tight_layout()
+
+        def step(i):
+            marker.set_data([deg[i]], [y[i]])
+            return [*drawing.set_frame(i), marker]
+    anim = Animation(fig, step, frames=n, interval=interval, blit=False)
     anim.drawing = drawing
+    anim.marker = marker
     plt.close(fig)
     return anim
 
 
 def animate_together(mechanisms, titles=(), n: int = 24, interval: int = 150, trace: str | None = None,
-                     figsize=None, dpi: int = 50) -> Animation:
+                     figsize=None, dpi: int = 80, *, labels: bool = True) -> Animation:
     """One animation of several mechanisms side by side, frame i of each at the same fraction
     of its cycle (the same crank angle for mechanisms whose crank turns fully), so that their
-    motions can be compared; one panel per mechanism, ``titles`` above them."""
+    motions can be compared; one panel per mechanism, ``titles`` above them, each with its
+    crank angle."""
     mechanisms = list(mechanisms)
-    fig, axes = plt.subplots(1, len(mechanisms), figsize=figsize or (3.2 * len(mechanisms), 3.0), dpi=dpi,
+    fig, axes = plt.subplots(1, len(mechanisms), figsize=figsize or (3.2 * len(mechanisms), 3.2), dpi=dpi,
                              squeeze=False)
     drawings = []
     for ax, mech, title in zip(axes[0], mechanisms, list(titles) + [None] * len(mechanisms)):
-        drawing = drawing_class(mech)(ax, mech, trace=trace, n=n)
+        drawing = drawing_class(mech)(ax, mech, trace=trace, n=n, labels=labels, readout=True)
         drawing.autoscale()
+        _diagram_axes(ax)
         if title:
-            ax.set_title(title, fontsize=9)
+            ax.set_title(title, fontsize=11)
         drawings.append(drawing)
 
     def frame(i):
@@ -276,17 +566,24 @@ def animate_together(mechanisms, titles=(), n: int = 24, interval: int = 150, tr
 
 
 def plot_law(motion: Motion, axes=None, label: str | None = None, **style):
-    """Plot the output law and its two analogs against φ in degrees on three axes."""
+    """Plot the output law and its two analogs against φ in degrees on three axes: ψ in
+    degrees, ψ′ = dψ/dφ (dimensionless) and ψ″ = d²ψ/dφ² (per radian); for a translating
+    output s, s′ and s″ in the mechanism's length unit (per radian, per radian²)."""
     if axes is None:
-        _, axes = plt.subplots(3, 1, sharex=True, figsize=(6, 6))
+        _, axes = plt.subplots(3, 1, sharex=True, figsize=(7, 6))
     out = motion.output
-    law = (out.value, out.d, out.dd)
-    names = (out.name, out.name + "′", out.name + "″")
+    sym = out.name
+    if out.kind == "angle":
+        law = (np.degrees(np.unwrap(out.value)), out.d, out.dd)
+        names = (f"{sym} (degrees)", f"{sym}′ = d{sym}/dφ (–)", f"{sym}″ = d²{sym}/dφ² (1/rad)")
+    else:
+        law = (out.value, out.d, out.dd)
+        names = (f"{sym} (length)", f"{sym}′ = d{sym}/dφ (length/rad)", f"{sym}″ (length/rad²)")
     deg = np.degrees(motion.phi)
     lines = []
     for ax, y, name in zip(axes, law, names):
         lines.append(ax.plot(deg, y, label=label, **style)[0])
         ax.set_ylabel(name)
         ax.grid(True, alpha=0.3)
-    axes[-1].set_xlabel("φ, degrees")
+    axes[-1].set_xlabel("crank angle φ (degrees)")
     return lines

@@ -1,4 +1,4 @@
-"""Drawings for seed 002: the elliptic trammel, the antiparallelogram, instantaneous
+"""Drawings for Kozhevnikov ch. 7: the elliptic trammel, the antiparallelogram, instantaneous
 centres and centrodes that move with the linkage.
 
 Centres at infinity are never drawn as far-away points: curves are masked there
@@ -16,7 +16,7 @@ from ..analysis.centres.centrodes import Centrodes
 from ..mechanisms.trammel import EllipticTrammel
 from ..analysis.centres.instant import InstantCentres
 from ..analysis.centres import centrodes
-from . import Animation, LinkageDrawing, drawing_class, register
+from . import Animation, LinkageDrawing, drawing_class, fill_axes, register
 
 FIXED_STYLE = dict(color="#8c564b", lw=1.6, zorder=1)
 MOVING_STYLE = dict(color="#9467bd", lw=1.6, ls="--", zorder=2)
@@ -26,9 +26,14 @@ CENTRE_STYLE = dict(ls="none", marker="x", ms=8, mew=2, color="#d62728", zorder=
 
 @register(EllipticTrammel)
 class EllipticTrammelDrawing(LinkageDrawing):
-    """Adds both guides and the two slider blocks."""
+    """Adds both guides and the two slider blocks. Numbers as Kozhevnikov's Fig. 7.5 (the
+    instantaneous centres use them): 1 the guides (frame), 2 slider A, 3 slider B, 4 the rod;
+    Cardan's crank O-C only parametrises the motion and has no number."""
 
     n_extras = 4
+    numbered_extras = (2, 3)
+    link_numbers = (None, "4", None, None, "2", "3")
+    frame_number = "1"
 
     def extras(self, i):
         m = self.mechanism
@@ -142,6 +147,7 @@ def draw_centres(ic: InstantCentres, i: int = 0, ax=None, lines: bool = True):
     if at_inf:
         ax.text(0.02, 0.02, "\n".join(at_inf), transform=ax.transAxes, fontsize=8, color="#d62728")
     ax.set_title(f"instantaneous centres at φ = {np.degrees(ic.phi[i]):.1f}°", fontsize=10)
+    ax.set_axis_off()   # a diagram: the links carry Kozhevnikov's numbers, the centres P_ij use them
     return ax
 
 
@@ -154,7 +160,7 @@ def animate_centrodes(mechanism, link: str, reference: str = "frame", n: int = 3
     k = max(1, 360 // n)                        # the curves are sampled k times finer than the frames
     phi = mechanism.cycle(n * k + 1)[:-1] if mechanism.can_turn else mechanism.cycle(n * k)
     cd = centrodes(mechanism, link, reference, phi)
-    drawing = drawing_class(mechanism)(ax, mechanism, n=len(phi))
+    drawing = drawing_class(mechanism)(ax, mechanism, n=len(phi), readout=True)
     drawing.set_motion(mechanism, cd.centres.motion)
     overlay = CentrodeOverlay(ax, cd, clip)
     drawing.autoscale()
@@ -164,9 +170,9 @@ def animate_centrodes(mechanism, link: str, reference: str = "frame", n: int = 3
         if len(near):
             x0, x1 = min(x0, near[:, 0].min()), max(x1, near[:, 0].max())
             y0, y1 = min(y0, near[:, 1].min()), max(y1, near[:, 1].max())
-    ax.set_xlim(x0, x1)
-    ax.set_ylim(y0, y1)
-    ax.legend(loc="upper right", fontsize=7)
+    fill_axes(ax, (x0, x1, y0, y1))
+    ax.set_axis_off()
+    ax.legend(loc="lower right", fontsize=8)
 
     def frame(i):
         return drawing.set_frame(i * k) + overlay.set_frame(i * k)

@@ -1,4 +1,4 @@
-"""Drawings of the lambda mechanism (with its band) and of the six-bars built on it (seed 001).
+"""Drawings of the lambda mechanism (with its band) and of the six-bars built on it (Kinitsky, 1994).
 
 Every drawing follows :class:`mechlab.draw.LinkageDrawing`: artists created once, moved by
 ``set_frame``. Extras: the symmetry axis; for a guided lambda the two circles R0, R1 of the
@@ -79,6 +79,7 @@ class SlottedSixBarDrawing(LinkageDrawing):
 
     n_extras = 3
     extra_styles = {0: OUTPUT_STYLE, 2: HIGHLIGHT_STYLE}
+    numbered_extras = (0,)
 
     def extras(self, i):
         m, mo = self.mechanism, self.motion

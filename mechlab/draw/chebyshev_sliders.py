@@ -1,4 +1,4 @@
-"""Drawings of the translating-output lambda six-bars МЧВ2 and МЧВ5 (seed 001, Fig. 1 в, д).
+"""Drawings of the translating-output lambda six-bars МЧВ2 and МЧВ5 (Kinitsky, 1994, Fig. 1 в, д).
 
 Protocol of :class:`mechlab.draw.LinkageDrawing` (artists made once, moved by ``set_frame``).
 Extras: the fixed guide line (and, for МЧВ2, the slider block on it; for МЧВ5 the output link:
@@ -30,6 +30,7 @@ class SliderSixBarDrawing(LinkageDrawing):
 
     n_extras = 4
     extra_styles = {0: GUIDE_STYLE, 1: OUTPUT_STYLE, 3: HIGHLIGHT_STYLE}
+    numbered_extras = (1,)
 
     def extras(self, i):
         m, mo = self.mechanism, self.motion
@@ -49,6 +50,7 @@ class TranslatingSlotDrawing(LinkageDrawing):
 
     n_extras = 5
     extra_styles = {0: GUIDE_STYLE, 1: OUTPUT_STYLE, 2: OUTPUT_STYLE, 4: HIGHLIGHT_STYLE}
+    numbered_extras = (1,)
 
     def extras(self, i):
         m, mo = self.mechanism, self.motion

@@ -28,6 +28,7 @@ class _SlotDrawing(LinkageDrawing):
     """A slotted link: its slot (thick translucent curve) and the arm holding it."""
 
     n_extras = 2
+    numbered_extras = (0,)   # the slotted link's arm (the yoke's rod when it translates)
     pivot_name = "B"
 
     def set_motion(self, mechanism, motion):
@@ -90,15 +91,18 @@ class EquivalentSlotDrawing(_SlotDrawing):
 
 @register(SixBarIV)
 class SixBarDrawing(LinkageDrawing):
-    """Links 2 and 4 are triangles (ternary links); the rest as in a four-bar."""
+    """Links 2 and 4 are triangles (ternary links); the rest as in a four-bar. Numbers as in
+    the class docstring of :class:`SixBarIV`: the group's links 3 = QR, 5 = PT, output 4 = RTE."""
+
+    link_numbers = ("1", "2", "3", "5", "4")
 
 
 def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9, 3.2), dpi: int = 55) -> Animation:
-    """Three panels moving together: the linkage, its curved-slot twin (seed 000 §1, Fig. 1-4),
+    """Three panels moving together: the linkage, its curved-slot twin (Zinchenko et al., 2013, §1),
     and the pin's relative path in the output link's frame with the pin on it."""
     twin = equivalent_slot(mechanism)
     fig, axes = plt.subplots(1, 3, figsize=figsize, dpi=dpi)
-    left = drawing_class(mechanism)(axes[0], mechanism, trace="A", n=n)
+    left = drawing_class(mechanism)(axes[0], mechanism, trace="A", n=n, readout=True)
     right = drawing_class(twin)(axes[1], twin, trace="A", n=n)
     for d, title in ((left, type(mechanism).__name__), (right, "curved-slot twin")):
         d.autoscale()
@@ -118,12 +122,11 @@ def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9,
         ax.plot(*slot.points(np.linspace(slot.t0, slot.t1, 300)).T, color="0.6", lw=0.8, ls="--")
     ax.plot(*twin.slot_samples(200).T, **SLOT_STYLE)
     ax.plot(*dense.T, color="#d62728", lw=1)
-    ax.plot([0], [0], marker="^", ms=10, color="#555555", ls="none")
+    ax.plot([0], [0], marker="o", ms=7, mfc="white", mec="#333333", ls="none")
     (pin,) = ax.plot([], [], "o", mfc="white", mec="#1f4e79", ms=7)
     ax.set_title("pin A in the output link's frame", fontsize=10)
-    for a in axes:   # tick labels cost most of each frame's rendering
-        a.set_xticks([])
-        a.set_yticks([])
+    for a in axes:   # diagrams: no ticks (they cost most of each frame's rendering)
+        a.set_axis_off()
 
     def frame(i):
         pin.set_data([rel[i, 0]], [rel[i, 1]])
@@ -136,25 +139,27 @@ def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9,
 
 
 def plot_against_base(mechanism, phi=None, axes=None):
-    """ψ, ψ′, ψ″ (or s, s′, s″) of a mechanism with its base mechanism's law dashed."""
+    """ψ (degrees), ψ′, ψ″ (or s, s′, s″) of a mechanism with its base mechanism's law dashed,
+    each axis naming its quantity and unit."""
     phi = mechanism.cycle(361) if phi is None else phi
     mo = mechanism.motion(phi)
     k = base_law(mechanism, phi)
     out = mo.output
     angular = out.kind == "angle"
     law = (out.value, out.d, out.dd)
-    names = (out.name, out.name + "′", out.name + "″")
+    names = ("ψ (degrees)", "ψ′ (–)", "ψ″ (1/rad)") if angular else \
+        ("s (length)", "s′ (length/rad)", "s″ (length/rad²)")
     if axes is None:
         _, axes = plt.subplots(1, 3, figsize=(10, 2.8))
     deg = np.degrees(phi)
     for ax, y, yk, name in zip(axes, law, (k.theta, k.d, k.dd), names):
-        if angular and name == "ψ":
+        if angular and name.startswith("ψ "):   # continuous, in degrees, the base law on the same branch
             y, yk = np.unwrap(y), np.unwrap(yk)
-            yk = yk + 2 * np.pi * np.round((y[0] - yk[0]) / (2 * np.pi))
+            y, yk = np.degrees(y), np.degrees(yk + 2 * np.pi * np.round((y[0] - yk[0]) / (2 * np.pi)))
         ax.plot(deg, y, label=type(mechanism).__name__)
         ax.plot(deg, yk, "--", label="base mechanism")
-        ax.set_title(name, fontsize=10)
-        ax.set_xlabel("φ, degrees")
+        ax.set_ylabel(name)
+        ax.set_xlabel("crank angle φ (degrees)")
         ax.grid(True, alpha=0.3)
     axes[0].legend(fontsize=8)
     return axes

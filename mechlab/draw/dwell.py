@@ -1,4 +1,4 @@
-"""Drawing of the curved-slot dwell mechanism (seed 000 §3, Fig. 9): the crank, the link with
+"""Drawing of the curved-slot dwell mechanism (Zinchenko et al., 2013, §3): the crank, the link with
 its slot drawn in the moving link (dwell arc highlighted, flanks for the roller), and a
 "dwell" label while the link stands still."""
 
@@ -48,6 +48,11 @@ class DwellDrawing(LinkageDrawing):
             self._label = ax.text(0.02, 0.95, "", transform=ax.transAxes, va="top", color="#e08214",
                                   fontweight="bold")
         return super().set_motion(mechanism, motion)
+
+    def numbered_parts(self, i):
+        """The crank, then the slotted link (its arm from the slot's end through B)."""
+        centre = self._world(self._centre[[0, -1]], i)
+        return [*super().numbered_parts(i), np.array([centre[0], self.motion.points["B"].p[i]])]
 
     def _world(self, xy, i):
         B = self.motion.points["B"].p[i]

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..kinetostatics.machines import Kinetostatics
-from . import drawing_class, register
+from . import drawing_class, fill_axes, register
 
 ARROW_COLOURS = ("#d62728", "#9467bd", "#ff7f0e", "#2ca02c", "#8c564b", "#e377c2", "#17becf", "#bcbd22")
 
@@ -26,12 +26,15 @@ class ForcePlanDrawing:
     """
 
     def __init__(self, ax, mechanism: Kinetostatics, trace: str | None = None, n: int = 361,
-                 pairs=None, length: float = 0.45):
+                 pairs=None, length: float = 0.45, *, labels: bool = True, ground: bool = True,
+                 dimensions: bool = False, readout: bool = False):
         self.ax = ax
         self.n = n
         self.pair_names = pairs
         self.length = length
-        self.base = drawing_class(mechanism.mechanism)(ax, mechanism.mechanism, trace=trace, n=n)
+        # the crank angle is in this drawing's own text, with the torque: no second readout
+        self.base = drawing_class(mechanism.mechanism)(ax, mechanism.mechanism, trace=trace, n=n, labels=labels,
+                                                       ground=ground, dimensions=dimensions)
         self.quiver = None
         self.text = ax.text(0.02, 0.98, "", transform=ax.transAxes, va="top", fontsize=9, zorder=6)
         self.mechanism = None
@@ -90,6 +93,4 @@ class ForcePlanDrawing:
         return min(x0, lo[0]), max(x1, hi[0]), min(y0, lo[1]), max(y1, hi[1])
 
     def autoscale(self):
-        x0, x1, y0, y1 = self.bounds()
-        self.ax.set_xlim(x0, x1)
-        self.ax.set_ylim(y0, y1)
+        fill_axes(self.ax, self.bounds())

@@ -1,5 +1,5 @@
 """Drawings of the Geneva drives: the planar wheel with its slots and locking arcs
-(animated like any linkage), and the spherical Geneva of seed 004 in 3-D.
+(animated like any linkage), and the spherical Geneva of Vainer & Shatokhina in 3-D.
 
 Both follow the protocol of :class:`mechlab.draw.LinkageDrawing`
 (``__init__(ax, mechanism, trace=None, n=...)``, ``set_motion``, ``set_frame(i)`` →
@@ -14,7 +14,7 @@ import numpy as np
 from ..mechanisms.geneva import ExternalGeneva, PlanarGeneva
 from ..mechanisms.spherical_geneva import SphericalGeneva
 from ..analysis.intermittency import intermittency
-from . import JOINT_STYLE, LINK_STYLE, TRACE_STYLE, LinkageDrawing, register
+from . import JOINT_STYLE, LETTER_STYLE, LINK_STYLE, READOUT_STYLE, TRACE_STYLE, LinkageDrawing, register
 
 WHEEL_STYLE = dict(color="#2a7f62", lw=1.6, zorder=2)
 LOCK_STYLE = dict(color="#b8860b", lw=2.2, zorder=2)
@@ -78,6 +78,12 @@ class PlanarGenevaDrawing(LinkageDrawing):
             line.set(**style)
         return super().set_motion(mechanism, motion)
 
+    def numbered_parts(self, i):
+        """The crank, then the wheel (a radius of it, turning with it, carries its number)."""
+        W, psi = self.motion.points["W"].p[i], self.motion.psi[i]
+        rim = W + 0.7 * self.mechanism.outer_radius * np.array([np.cos(psi), np.sin(psi)])
+        return [*super().numbered_parts(i), np.array([W, rim])]
+
     def extras(self, i):
         g, mo = self.mechanism, self.motion
         W = mo.points["W"].p[i]
@@ -100,9 +106,12 @@ class PlanarGenevaDrawing(LinkageDrawing):
 class SphericalGenevaDrawing:
     """The hemisphere (equator and two parallels), its z meridian slots turning with the
     wheel, the crank axis, the crank arm and the pin on its cone, and the contact point
-    A while the pin is in a slot. A 2-D ``ax`` is replaced by a 3-D one in its place."""
+    A while the pin is in a slot, with the letters of the points (O, O1, P, B, and A while
+    engaged) and, with ``readout``, the crank angle. A 2-D ``ax`` is replaced by a 3-D one in
+    its place."""
 
-    def __init__(self, ax, mechanism: SphericalGeneva, trace: str | None = None, n: int = 73):
+    def __init__(self, ax, mechanism: SphericalGeneva, trace: str | None = None, n: int = 73, *,
+                 labels: bool = True, ground: bool = True, dimensions: bool = False, readout: bool = False):
         if getattr(ax, "name", "") != "3d":
             fig, pos = ax.figure, ax.get_position()
             ax.remove()
@@ -118,6 +127,13 @@ class SphericalGenevaDrawing:
         (self.contact,) = ax.plot([], [], [], ls="none", marker="o", ms=7, mfc="#d62728", mec="k")
         (self.trace_line,) = ax.plot([], [], [], **TRACE_STYLE)
         (self.joints,) = ax.plot([], [], [], **JOINT_STYLE)
+        self.letters = {}
+        if labels:
+            self.letters = {name: ax.text(0.0, 0.0, 0.0, f" {name}", **LETTER_STYLE)
+                            for name in ("O", "O1", "P", "B", "A")}
+            for text in self.letters.values():
+                text.set_ha("left")
+        self.readout = ax.text2D(0.98, 0.98, "", transform=ax.transAxes, **READOUT_STYLE) if readout else None
         self.set_mechanism(mechanism)
 
     def set_mechanism(self, mechanism, phi=None):
@@ -171,6 +187,11 @@ class SphericalGenevaDrawing:
         else:
             self.contact.set_data_3d([], [], [])
         self.joints.set_data_3d([foot[0], 0.0], [foot[1], 0.0], [foot[2], 0.0])
+        for name, text in self.letters.items():
+            text.set_position_3d(mo.points[name].p[i])
+            text.set_visible(name != "A" or bool(self._engaged[i]))
+        if self.readout is not None:
+            self.readout.set_text(f"φ = {np.degrees(mo.phi[i]):.0f}°")
         return self.artists
 
     def bounds(self, margin: float = 0.0):
@@ -180,14 +201,15 @@ class SphericalGenevaDrawing:
 
     @property
     def artists(self):
-        return [*self.slot_lines, self.pin_line, self.arm_line, self.contact, self.trace_line, self.joints]
+        return [*self.slot_lines, self.pin_line, self.arm_line, self.contact, self.trace_line, self.joints,
+                *self.letters.values(), *([self.readout] if self.readout is not None else [])]
 
     def autoscale(self):
         R = self.mechanism.R
         self.ax.set_xlim(-R, R)
         self.ax.set_ylim(-R, R)
-        self.ax.set_zlim(-0.8 * R, 1.2 * R)
-        self.ax.set_box_aspect((1, 1, 1))
+        self.ax.set_zlim(-1.0 * R, 1.1 * R)
+        self.ax.set_box_aspect((1, 1, 1), zoom=1.15)   # the sphere and the pin's path fill the axes
         self.ax.view_init(elev=22, azim=-60)
         self.ax.set_axis_off()
 
@@ -207,9 +229,9 @@ def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.
         label = f"{name}: dwell {inv.dwell_fraction:.2f}, impact: {inv.impact}"
         axes[0].plot(np.degrees(phi), sense * mo.dpsi, label=label)
         axes[1].plot(np.degrees(phi), sense * mo.ddpsi, label=name)
-    axes[0].set_ylabel("ψ′")
-    axes[1].set_ylabel("ψ″")
-    axes[1].set_xlabel("φ, degrees")
+    axes[0].set_ylabel("ψ′ = dψ/dφ (–)")
+    axes[1].set_ylabel("ψ″ = d²ψ/dφ² (1/rad)")
+    axes[1].set_xlabel("crank angle φ (degrees)")
     for ax in axes:
         ax.grid(True, alpha=0.3)
     axes[0].legend(fontsize=7, loc="upper left")

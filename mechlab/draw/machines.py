@@ -70,6 +70,8 @@ def _letters(ax, points: dict, names: str, offset=(0.0, 0.0)):
 def label_joints(drawing, i: int = 0):
     """Write each joint's letter next to it in a mechlab drawing, at frame i (the letters the
     chapters use: O, A, B, E, ...)."""
+    if getattr(drawing, "letters", None):   # mechlab.draw already lettered its joints
+        return
     points = {k: v.p[i] for k, v in drawing.motion.points.items()}
     x0, x1 = drawing.ax.get_xlim()
     _letters(drawing.ax, points, list(points), (0.015 * (x1 - x0), 0.015 * (x1 - x0)))
@@ -93,7 +95,7 @@ def _geneva(ax, z: int, phi: float, disc_distance: float, disc_radius: float):
     disc its wheel's shaft carries (a sprocket, a table) drawn beside it, joined by the shaft's
     centre line. Returns the joints, the motion and the disc's centre."""
     g = ExternalGeneva(z, 1.0)
-    draw(g, phi, ax=ax)
+    draw(g, phi, ax=ax, labels=False, ground=False)
     pts, mo = _frame_points(g, phi)
     _letters(ax, pts, "OWA", (0.04, 0.05))
     for p in "OW":
@@ -171,7 +173,7 @@ def screen_printing(ax=None):
     guide = circle_guiding(150 * DEG, 0.9, 120 * DEG)
     six = mchv1(guide, 1.0, 20 * DEG)
     phi = np.pi
-    draw(six, phi, ax=ax, trace="D")
+    draw(six, phi, ax=ax, trace="D", labels=False, ground=False)
     pts, _ = _frame_points(six, phi)
     _letters(ax, pts, "OABCDEF", (0.04, 0.03))
     for p in ("O", "C", "F"):
@@ -246,7 +248,7 @@ def packaging_line(ax=None):
     ax = _axes(ax, (10, 6))
     link = curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic")
     phi = 100 * DEG                                        # inside the dwell
-    draw(link, phi, ax=ax)
+    draw(link, phi, ax=ax, labels=False, ground=False)
     pts, mo = _frame_points(link, phi)
     _letters(ax, pts, "OAB", (0.03, 0.03))
     _ground(ax, pts["O"] + (0, -0.05), 0.08)
@@ -285,7 +287,7 @@ def loom(ax=None):
     ax = _axes(ax, (9, 6.5))
     fb = FourBar(crank=1.0, coupler=3.5, rocker=3.0, ground=3.8)
     phi = 0.6
-    draw(fb, phi, ax=ax)
+    draw(fb, phi, ax=ax, labels=False, ground=False)
     pts, _ = _frame_points(fb, phi)
     _letters(ax, pts, "OABE", (0.08, 0.05))
     for p in ("O", "E"):

@@ -1,37 +1,53 @@
 """ipywidgets controls bound to :mod:`mechlab.draw`.
 
-Sliders are in degrees and mm (or the mechanism's length unit); the explorer builds
-the mechanism from the slider values, computes its whole cycle once, and moves the
-existing artists (no new figure per slider move). A geometry that cannot be built
-shows its :class:`~mechlab.errors.MechanismError` message in place of the drawing,
-and the widget stays usable. Works with the inline backend (the figure is
-re-shown in an Output widget) and with ipympl (``%matplotlib widget``: the canvas
-itself is the widget and redraws in place).
+Sliders are in degrees and in the mechanism's length unit (mm, or dimensionless); the
+explorer builds the mechanism from the slider values, computes its whole cycle once, and
+moves the existing artists (no new figure per slider move). A geometry that cannot be
+built shows its :class:`~mechlab.errors.MechanismError` message in place of the drawing,
+and the widget stays usable. Every explorer may carry a ``question`` to investigate,
+shown above its controls.
+
+Where it is drawn: in JupyterLab (an IPython kernel with ipympl installed) the figure's
+canvas is an ipympl widget and a crank-angle move redraws only the moving artists over a
+saved background (blitting), whatever ``%matplotlib`` backend the notebook uses; in the
+book (``MECHLAB_WIDGETS=static``, set by the book's kernels) and outside a kernel the
+figure is re-shown as an image in an Output widget.
 """
 
 from __future__ import annotations
 
+import html
+import os
 from dataclasses import dataclass
 from typing import Callable
 
 import ipywidgets as W
 import matplotlib
 import matplotlib.pyplot as plt
+import numpy as np
+from IPython import get_ipython
+from IPython.display import display
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
-import numpy as np
-from IPython.display import display
 
-from ..draw import drawing_class
+from ..draw import drawing_class, fill_axes
 from ..errors import MechanismError
 from ..mechanisms.fourbar import FourBar
+
+UNIT_TEXT = {"deg": "°"}   # how a unit reads in a slider's description
+SLIDER_STYLE = dict(style={"description_width": "165px"}, layout=W.Layout(width="445px"))
+# the sliders' column keeps its width (a long status line beside it must not clip the readouts)
+SLIDER_COLUMN = dict(layout=W.Layout(flex="0 0 auto", width="455px"))
+SIDE_COLUMN = dict(layout=W.Layout(flex="1 1 auto", min_width="300px"))
 
 
 @dataclass(frozen=True)
 class Control:
     """A slider: label, range, step, initial value and unit ("mm", "deg", "" …).
 
-    Values of a "deg" control reach the factory in radians.
+    Values of a "deg" control reach the factory in radians. A control whose range, step
+    and value are whole numbers is an integer slider (z = 4, not 4.00); a float slider
+    shows as many decimals as its step has.
     """
 
     label: str
@@ -40,6 +56,21 @@ class Control:
     step: float
     value: float
     unit: str = ""
+
+    @property
+    def integer(self) -> bool:
+        return all(float(v).is_integer() for v in (self.min, self.max, self.step, self.value))
+
+    def widget(self):
+        unit = UNIT_TEXT.get(self.unit, self.unit)
+        common = dict(description=f"{self.label} ({unit})" if unit else self.label, continuous_update=True,
+                      **SLIDER_STYLE)
+        if self.integer:
+            return W.IntSlider(value=int(self.value), min=int(self.min), max=int(self.max), step=int(self.step),
+                               **common)
+        decimals = max(0, int(np.ceil(-np.log10(self.step) - 1e-9)))
+        return W.FloatSlider(value=self.value, min=self.min, max=self.max, step=self.step,
+                             readout_format=f".{decimals}f", **common)
 
 
 @dataclass(frozen=True)
@@ -58,28 +89,25 @@ class Choice:
         return kind(options=list(self.options), value=self.value, description=self.label)
 
 
-def _control_widget(c):
-    if isinstance(c, Choice):
-        return c.widget()
-    return W.FloatSlider(value=c.value, min=c.min, max=c.max, step=c.step,
-                         description=f"{c.label} ({c.unit})" if c.unit else c.label,
-                         continuous_update=True, style={"description_width": "110px"},
-                         layout=W.Layout(width="380px"))
-
-
-def _fit(ax, bounds) -> bool:
+def _fit(ax, bounds, fill: bool = False) -> bool:
     """Set the axes limits to ``bounds`` (x0, x1, y0, y1), with 10 % to spare so that small
-    changes fit without a full redraw, unless the current limits already hold them without
-    wasting more than half the view; True if the limits changed."""
+    changes fit without a full redraw (5 % with ``fill``), unless the current limits already hold them without
+    wasting more than half the view; True if the limits changed. ``fill``: equal-aspect
+    limits that fill the axes' box (:func:`mechlab.draw.fill_axes`)."""
     x0, x1, y0, y1 = bounds
     (cx0, cx1), (cy0, cy1) = ax.get_xlim(), ax.get_ylim()
     inside = cx0 <= x0 and x1 <= cx1 and cy0 <= y0 and y1 <= cy1
-    snug = (x1 - x0) > 0.5 * (cx1 - cx0) and (y1 - y0) > 0.5 * (cy1 - cy0)
+    snug = (x1 - x0) > 0.5 * (cx1 - cx0) or (y1 - y0) > 0.5 * (cy1 - cy0) if fill else \
+        (x1 - x0) > 0.5 * (cx1 - cx0) and (y1 - y0) > 0.5 * (cy1 - cy0)
     if inside and snug:
         return False
-    mx, my = 0.1 * (x1 - x0), 0.1 * (y1 - y0)
-    ax.set_xlim(x0 - mx, x1 + mx)
-    ax.set_ylim(y0 - my, y1 + my)
+    spare = 0.05 if fill else 0.1
+    mx, my = spare * (x1 - x0), spare * (y1 - y0)
+    if fill:
+        fill_axes(ax, (x0 - mx, x1 + mx, y0 - my, y1 + my))
+    else:
+        ax.set_xlim(x0 - mx, x1 + mx)
+        ax.set_ylim(y0 - my, y1 + my)
     return True
 
 
@@ -87,52 +115,79 @@ def _uses_ipympl() -> bool:
     return "ipympl" in matplotlib.get_backend() or "widget" in matplotlib.get_backend().lower()
 
 
+def _ipympl_canvas(fig):
+    """An ipympl canvas for ``fig`` (a widget JupyterLab draws), or None without ipympl."""
+    try:
+        from ipympl.backend_nbagg import Canvas, FigureManager
+    except ImportError:
+        return None
+    canvas = Canvas(fig)
+    FigureManager(canvas, 0)
+    canvas.header_visible = canvas.footer_visible = canvas.resizable = False
+    canvas.toolbar_visible = False
+    return canvas
+
+
+def live_by_default() -> bool:
+    """Live (ipympl canvas, blitting) in a Jupyter kernel, static in the book and outside a kernel."""
+    if os.environ.get("MECHLAB_WIDGETS") == "static":
+        return False
+    shell = get_ipython()
+    return _uses_ipympl() or (shell is not None and hasattr(shell, "kernel"))
+
+
 class Explorer:
     """What every explorer shares: controls → ``factory(**values)``, a crank-angle slider,
-    one figure shown on the right canvas, a MechanismError shown in place of the plots.
+    one figure shown on the right canvas, a MechanismError shown in place of the plots, and
+    an optional ``question`` (shown as "Investigate: …" above the controls).
 
     ``controls`` maps the factory's keyword names to :class:`Control` (a slider) or
-    :class:`Choice` (buttons or a drop-down). ``live`` (default: whether the ipympl
-    backend is active) draws on the figure's own canvas and blits the moving artists
-    (:meth:`_moving_artists`) over a saved background; otherwise the figure is re-shown in
-    an Output widget (inline backend, static pages). A subclass makes its axes and
-    artists after ``super().__init__``, then calls :meth:`_finish` with the widgets to show
-    beside the angle slider; it defines :meth:`rebuild`, :meth:`_select_frame`,
-    :meth:`_axes` and :meth:`_forget`; ``blit = False`` redraws the whole figure on a live canvas.
+    :class:`Choice` (buttons or a drop-down). ``live`` (default: :func:`live_by_default`)
+    draws on the figure's own canvas and blits the moving artists (:meth:`_moving_artists`)
+    over a saved background; otherwise the figure is re-shown in an Output widget. The
+    crank-angle slider steps by the sampling step of the cycle (n samples over 360°), so
+    every key press shows a new position. A subclass makes its axes and artists after
+    ``super().__init__``, then calls :meth:`_finish` with the widgets to show beside the
+    angle slider; it defines :meth:`rebuild`, :meth:`_select_frame`, :meth:`_axes` and
+    :meth:`_forget`; ``blit = False`` redraws the whole figure on a live canvas.
     """
 
     blit = True
 
     def __init__(self, factory: Callable, controls: dict, *, n: int, title: str = "", live: bool | None = None,
-                 figsize=(9, 4), dpi: int = 80, angle: float = 0.0):
+                 figsize=(9.5, 4.4), dpi: int = 80, angle: float = 0.0, question: str | None = None):
         self.factory = factory
         self.controls = controls
         self.n = n
         self.message = ""
         self.frame = 0
-        self.sliders = {name: _control_widget(c) for name, c in controls.items()}
-        self.angle = W.FloatSlider(value=angle, min=0.0, max=360.0, step=1.0, description="crank φ (deg)",
-                                   continuous_update=True, style={"description_width": "110px"},
-                                   layout=W.Layout(width="380px"))
+        self.sliders = {name: c.widget() for name, c in controls.items()}
+        self.angle_step = 360.0 / (n - 1)
+        self.angle = W.FloatSlider(value=self.angle_step * round(angle / self.angle_step), min=0.0, max=360.0,
+                                   step=self.angle_step, description="crank angle φ (°)", continuous_update=True,
+                                   readout_format=".0f", **SLIDER_STYLE)
         self.status = W.HTML()
-        ipympl = _uses_ipympl()
-        self.live = ipympl if live is None else live
+        self.question = W.HTML(f"<b>Investigate:</b> {html.escape(question)}" if question else "")
+        self.live = live_by_default() if live is None else live
         self._background = None
-        if ipympl:
+        canvas = None
+        if _uses_ipympl():
             with plt.ioff():
-                self.fig = plt.figure(figsize=figsize)
+                self.fig = plt.figure(figsize=figsize, dpi=dpi)
+            canvas = self.fig.canvas
         else:
-            # not managed by pyplot (so the inline backend shows it only through the Output
-            # widget), with an Agg canvas so that it renders
+            # not managed by pyplot (so the inline backend shows it only through the Output widget)
             self.fig = Figure(figsize=figsize, dpi=dpi)
-            FigureCanvasAgg(self.fig)
+            canvas = _ipympl_canvas(self.fig) if self.live else None
+            if canvas is None:
+                FigureCanvasAgg(self.fig)
         if title:
             self.fig.suptitle(title)
         self.error_text = self.fig.text(0.5, 0.5, "", ha="center", va="center", wrap=True, color="#b00020",
                                         fontsize=12, bbox=dict(fc="#fff0f0", ec="#b00020"))
         self.output = None if self.live else W.Output()
         # live without ipympl (benchmarks, tests) renders off screen: nothing to place in the layout
-        self._canvas_widget = self.fig.canvas if ipympl else (self.output or W.HTML())
+        self._canvas_widget = canvas if isinstance(canvas, W.Widget) else (self.output or W.HTML())
         if self.live and self.blit:
             self.fig.canvas.mpl_connect("draw_event", self._capture_background)
 
@@ -141,8 +196,10 @@ class Explorer:
         for w in self.sliders.values():
             w.observe(self._on_dimensions, names="value")
         self.angle.observe(self._on_angle, names="value")
-        self.widget = W.VBox([W.HBox([W.VBox(list(self.sliders.values())),
-                                      W.VBox([self.angle, *side_widgets, self.status])]), self._canvas_widget])
+        self.widget = W.VBox([self.question,
+                              W.HBox([W.VBox(list(self.sliders.values()), **SLIDER_COLUMN),
+                                      W.VBox([self.angle, *side_widgets, self.status], **SIDE_COLUMN)]),
+                              self._canvas_widget])
         self.rebuild()
 
     def values(self) -> dict:
@@ -157,6 +214,13 @@ class Explorer:
         """Index of the sample of ``phi`` (radians, a full turn) nearest the angle slider."""
         deg = np.degrees(phi)
         return int(np.argmin(np.abs((deg - self.angle.value + 180.0) % 360.0 - 180.0)))
+
+    def _play(self, interval: int = 60) -> W.Play:
+        """A play button moving the crank slider by one sample per tick (linked in the browser)."""
+        step = max(1, round(self.angle_step))
+        play = W.Play(value=0, min=0, max=int(360 - step), step=step, interval=interval, description="play")
+        W.jslink((play, "value"), (self.angle, "value"))
+        return play
 
     # -- to define in a subclass --------------------------------------------------------
     def rebuild(self):  # pragma: no cover - abstract
@@ -183,7 +247,7 @@ class Explorer:
         self._forget()
         self._set_visible(False)
         self.error_text.set_text(text)
-        self.status.value = f"<span style='color:#b00020'>{text}</span>"
+        self.status.value = f"<span style='color:#b00020'>{html.escape(text)}</span>"
         self._redraw()
 
     def _set_visible(self, ok: bool):
@@ -192,6 +256,11 @@ class Explorer:
         self.error_text.set_visible(not ok)
         if ok:
             self.error_text.set_text("")
+
+    def _animate_moving(self):
+        """Mark the moving artists animated when live (a full draw skips them; blitting draws them)."""
+        for artist in self._moving_artists():
+            artist.set_animated(self.live and self.blit)
 
     def _on_dimensions(self, change):
         self.rebuild()
@@ -204,7 +273,7 @@ class Explorer:
 
     def _blit_or_redraw(self):
         """Redraw only the moving artists over the saved background when live, else everything."""
-        if self.live and self._background is not None:
+        if self.live and self.blit and self._background is not None:
             self.fig.canvas.restore_region(self._background)
             self._draw_moving()
             self.fig.canvas.blit(self.fig.bbox)
@@ -219,7 +288,8 @@ class Explorer:
 
     def _draw_moving(self):
         for artist in self._moving_artists():
-            artist.axes.draw_artist(artist)
+            if artist.axes is not None and artist.get_visible():
+                artist.axes.draw_artist(artist)
 
     def _redraw(self):
         if self.output is None:
@@ -233,32 +303,57 @@ class Explorer:
         display(self.widget)
 
 
+def law_labels(output: str, length_unit: str) -> tuple[str, str, tuple[str, str]]:
+    """Axis labels of an output law and its analogs: angles in degrees, ψ′ dimensionless,
+    ψ″ per radian; a translating output s in the mechanism's length unit ("mm", or
+    "dimensionless": then its analogs are per radian)."""
+    if output == "angle":
+        return "output ψ (degrees)", "ψ′ (–), ψ″ (1/rad)", ("ψ′ = dψ/dφ", "ψ″ = d²ψ/dφ²")
+    per = "1" if length_unit == "dimensionless" else length_unit
+    return f"output s ({length_unit})", f"s′ ({per}/rad), s″ ({per}/rad²)", ("s′ = ds/dφ", "s″ = d²s/dφ²")
+
+
 class MechanismExplorer(Explorer):
-    """Sliders → ``factory(**values)`` → drawing, output law and transmission angle.
+    """Sliders → ``factory(**values)`` → the labelled drawing (filling its axes), the output
+    law ψ(φ) in degrees (or s(φ)) with a marker at the crank angle, its analogs ψ′, ψ″ below
+    it, and the transmission angle in the status line.
 
     ``controls`` maps the factory's keyword names to :class:`Control` (a slider) or
     :class:`Choice` (buttons or a drop-down); ``assembly=True`` adds a ±1 toggle; the
     crank angle slider (degrees) and a play button are added by the explorer. ``trace``
-    names a joint whose path is drawn. ``live``: see :class:`Explorer`.
+    names a joint whose path is drawn; ``length_unit`` names the lengths' unit on the axes
+    ("dimensionless" or "mm"). ``live``, ``question``: see :class:`Explorer`.
     """
 
     def __init__(self, factory: Callable, controls: dict, *, assembly: bool = False,
-                 trace: str | None = None, n: int = 181, title: str = "", live: bool | None = None):
-        super().__init__(factory, controls, n=n, title=title, live=live)
+                 trace: str | None = None, n: int = 181, title: str = "", live: bool | None = None,
+                 question: str | None = None, length_unit: str = "dimensionless"):
+        super().__init__(factory, controls, n=n, title=title, live=live, question=question)
         self.mechanism = None
         self.motion = None
+        self.length_unit = length_unit
         if assembly:
             self.sliders["assembly"] = W.ToggleButtons(options=[("kc = +1", 1), ("kc = -1", -1)], value=1,
                                                        description="assembly")
-        self.play = W.Play(value=0, min=0, max=359, step=4, interval=40, description="play")
-        W.jslink((self.play, "value"), (self.angle, "value"))
-        self.ax_mech, self.ax_law = self.fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.1, 1]})
-        self.law_lines = {k: self.ax_law.plot([], [], label=k)[0] for k in ("law", "first", "second")}
-        (self.law_marker,) = self.ax_law.plot([], [], "ko", ms=5)
-        self.ax_law.axhline(0.0, color="0.6", lw=0.8)
-        self.ax_law.set_xlabel("φ, degrees")
+        self.play = self._play()
+        grid = self.fig.add_gridspec(2, 2, width_ratios=[1.25, 1], left=0.01, right=0.98, bottom=0.12,
+                                     top=0.9 if title else 0.97, wspace=0.28, hspace=0.12)
+        self.ax_mech = self.fig.add_subplot(grid[:, 0])
+        self.ax_law = self.fig.add_subplot(grid[0, 1])
+        self.ax_rate = self.fig.add_subplot(grid[1, 1], sharex=self.ax_law)
+        (law_line,) = self.ax_law.plot([], [], color="#1f4e79", lw=1.8)
+        self.law_lines = {"law": law_line, "first": self.ax_rate.plot([], [], color="#2a7f62", label="′")[0],
+                          "second": self.ax_rate.plot([], [], color="#e08214", label="″")[0]}
+        self.law_markers = [ax.plot([], [], "o", color="#d62728", ms=6, zorder=5)[0]
+                            for ax in (self.ax_law, self.ax_rate, self.ax_rate)]
+        self.law_marker = self.law_markers[0]
+        self.ax_rate.axhline(0.0, color="0.6", lw=0.8)
+        self.ax_rate.set_xlabel("crank angle φ (degrees)")
         self.ax_law.set_xlim(0, 360)
-        self.ax_law.grid(True, alpha=0.3)
+        self.ax_law.tick_params(labelbottom=False)
+        for ax in (self.ax_law, self.ax_rate):
+            ax.grid(True, alpha=0.3)
+            ax.set_xticks(np.arange(0, 361, 90))
         self.drawing = None
         self.trace = trace
         self._finish([self.play])
@@ -277,34 +372,50 @@ class MechanismExplorer(Explorer):
         if self.drawing is None or type(self.drawing) is not drawing_class(mechanism):
             self.ax_mech.clear()
             self.drawing = drawing_class(mechanism)(self.ax_mech, mechanism, trace=self.trace, n=self.n)
-            for artist in self._moving_artists():
-                artist.set_animated(self.live)
+            self.ax_mech.set_axis_off()
         was_hidden = not self.ax_mech.get_visible()
         self.drawing.set_motion(mechanism, motion)
+        self._animate_moving()
         deg = np.degrees(phi)
-        law = (motion.output.value, motion.output.d, motion.output.dd)
-        names = ("ψ (rad)", "ψ′", "ψ″") if mechanism.output == "angle" else ("s", "s′", "s″")
-        relabel = False
-        for line, y, name in zip(self.law_lines.values(), law, names):
+        out = motion.output
+        law = (out.value, out.d, out.dd)
+        angular = out.kind == "angle"
+        y0 = np.degrees(np.unwrap(law[0])) if angular else law[0]
+        self._law = (y0, law[1], law[2])
+        for line, y in zip(self.law_lines.values(), self._law):
             line.set_data(deg, y)
-            relabel |= line.get_label() != name
-            line.set_label(name)
-        lo = min(float(np.min(y)) for y in law)
-        hi = max(float(np.max(y)) for y in law)
-        pad = 0.05 * (hi - lo) + 1e-9
-        rescaled = _fit(self.ax_mech, self.drawing.bounds())
-        rescaled |= _fit(self.ax_law, (deg[0], deg[-1], lo - pad, hi + pad))
+        law_label, rate_label, names = law_labels(out.kind, self.length_unit)
+        relabel = self.ax_law.get_ylabel() != law_label
         if relabel:
-            self.ax_law.legend(loc="upper right", fontsize=8)
-        mu = np.degrees(motion.transmission)
-        self.status.value = (f"transmission angle μ: {mu.min():.1f}° … {mu.max():.1f}°"
-                             + ("" if mechanism.can_turn else " · crank rocks: range limited"))
+            self.ax_law.set_ylabel(law_label)
+            self.ax_rate.set_ylabel(rate_label)
+            for line, name in zip((self.law_lines["first"], self.law_lines["second"]), names):
+                line.set_label(name)
+            self.ax_rate.legend(loc="upper right", fontsize=8)
+        pad = 0.05 * float(np.ptp(y0)) + 1e-9
+        lo = min(float(np.min(law[1])), float(np.min(law[2])))
+        hi = max(float(np.max(law[1])), float(np.max(law[2])))
+        rpad = 0.05 * (hi - lo) + 1e-9
+        rescaled = self._fit_mechanism()
+        rescaled |= _fit(self.ax_law, (deg[0], deg[-1], float(np.min(y0)) - pad, float(np.max(y0)) + pad))
+        rescaled |= _fit(self.ax_rate, (deg[0], deg[-1], lo - rpad, hi + rpad))
+        self.status.value = self._status()
         self._set_visible(True)
         self._select_frame()
         if rescaled or relabel or was_hidden:
             self._redraw()
         else:
             self._blit_or_redraw()
+
+    def _fit_mechanism(self) -> bool:
+        if getattr(self.drawing.ax, "name", "") == "3d":
+            return False
+        return _fit(self.ax_mech, self.drawing.bounds(), fill=True)
+
+    def _status(self) -> str:
+        mu = np.degrees(self.motion.transmission)
+        return (f"transmission angle μ: {mu.min():.1f}° … {mu.max():.1f}°"
+                + ("" if self.mechanism.can_turn else " · crank rocks: range limited"))
 
     def _select_frame(self):
         phi = np.degrees(self.motion.phi)
@@ -314,15 +425,15 @@ class MechanismExplorer(Explorer):
         else:
             self.frame = int(np.clip(np.searchsorted(phi, target), 0, len(phi) - 1))
         self.drawing.set_frame(self.frame)
-        law = self.motion.output.value
-        self.law_marker.set_data([phi[self.frame]], [law[self.frame]])
+        for marker, y in zip(self.law_markers, self._law):
+            marker.set_data([phi[self.frame]], [y[self.frame]])
 
     def _moving_artists(self):
         """Everything that changes with the crank angle or the dimensions (axes limits aside)."""
-        return [*self.drawing.artists, *self.law_lines.values(), self.law_marker]
+        return [*self.drawing.artists, *self.law_lines.values(), *self.law_markers]
 
     def _axes(self):
-        return (self.ax_mech, self.ax_law)
+        return (self.ax_mech, self.ax_law, self.ax_rate)
 
     def _forget(self):
         self.mechanism = self.motion = None
@@ -332,10 +443,11 @@ class MechanismExplorer(Explorer):
 
 
 def fourbar_explorer(crank=1.0, coupler=3.0, rocker=3.0, ground=4.0, *, max_length=10.0, trace="B",
-                     live: bool | None = None):
-    """Sliders for a four-bar's four lengths (mm) and its assembly, with its animation."""
+                     live: bool | None = None, question: str | None = None):
+    """Sliders for a four-bar's four lengths (dimensionless) and its assembly, with its animation."""
     def ctl(label, v):
-        return Control(label, 0.1, max_length, 0.05, v, "mm")
+        return Control(label, 0.1, max_length, 0.05, v)
     controls = {"crank": ctl("crank OA", crank), "coupler": ctl("coupler AB", coupler),
                 "rocker": ctl("rocker BE", rocker), "ground": ctl("ground OE", ground)}
-    return MechanismExplorer(FourBar, controls, assembly=True, trace=trace, title="Four-bar O-A-B-E", live=live)
+    return MechanismExplorer(FourBar, controls, assembly=True, trace=trace, title="Four-bar O-A-B-E", live=live,
+                             question=question)

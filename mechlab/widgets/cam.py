@@ -33,7 +33,8 @@ class CamExplorer(MechanismExplorer):
             "ret": Control("return", 20.0, 240.0, 5.0, return_deg, "deg"),
             "law": Choice("law", tuple(LAWS), law),
         }
-        super().__init__(self._build, controls, n=n, title="Disc cam with a translating roller follower (mm)")
+        super().__init__(self._build, controls, n=n, title="Disc cam with a translating roller follower (mm)",
+                         length_unit="mm")
         if question:
             self.widget.children = (W.HTML(f"<b>Investigate:</b> {html.escape(question)}"), *self.widget.children)
 

@@ -1,5 +1,5 @@
 """Sliders for chapter 04: a linkage with the fixed and moving centrodes of one of its
-links, the pole moving along them as the crank turns (seed 002, §7.2)."""
+links, the pole moving along them as the crank turns (Kozhevnikov, §7.2)."""
 
 from __future__ import annotations
 
@@ -39,9 +39,8 @@ class CentrodeExplorer(MechanismExplorer):
         self.centrodes = cd
         if self.overlay is None or self.overlay.fixed_line.axes is not self.ax_mech:
             self.overlay = CentrodeOverlay(self.ax_mech, cd)
-            for artist in self.overlay.artists:
-                artist.set_animated(self.live)
-            self.ax_mech.legend(loc="upper right", fontsize=7)
+            self._animate_moving()
+            self.ax_mech.legend(loc="lower right", fontsize=8)
         else:
             self.overlay.cd = cd
         self._select_frame()
@@ -63,32 +62,34 @@ class CentrodeExplorer(MechanismExplorer):
 
 
 def fourbar_centrode_explorer(crank=1.0, coupler=3.0, rocker=3.0, ground=4.0, *, link="coupler",
-                              reference="frame", max_length=10.0, live=None) -> CentrodeExplorer:
-    """A four-bar with the centrodes of its ``link`` (default: the coupler's about the frame)."""
+                              reference="frame", max_length=10.0, live=None, question=None) -> CentrodeExplorer:
+    """A four-bar with the centrodes of its ``link`` (default: the coupler's about the frame);
+    lengths dimensionless."""
     def ctl(label, v):
-        return Control(label, 0.1, max_length, 0.05, v, "mm")
+        return Control(label, 0.1, max_length, 0.05, v)
     controls = {"crank": ctl("crank OA", crank), "coupler": ctl("coupler AB", coupler),
                 "rocker": ctl("rocker BE", rocker), "ground": ctl("ground OE", ground)}
     return CentrodeExplorer(FourBar, controls, link=link, reference=reference, assembly=True,
-                            title=f"Four-bar: centrodes of the {link}", live=live)
+                            title=f"Four-bar: centrodes of the {link}", live=live, question=question)
 
 
-def trammel_explorer(rod=1.0, beta_deg=90.0, *, live=None) -> CentrodeExplorer:
-    """The elliptic trammel with its Cardan circles; sliders: rod length and guide angle β."""
-    controls = {"rod": Control("rod AB", 0.2, 5.0, 0.05, rod, "mm"),
+def trammel_explorer(rod=1.0, beta_deg=90.0, *, live=None, question=None) -> CentrodeExplorer:
+    """The elliptic trammel with its Cardan circles; sliders: rod length (dimensionless) and guide angle β."""
+    controls = {"rod": Control("rod AB", 0.2, 5.0, 0.05, rod),
                 "beta": Control("guide angle β", 10.0, 170.0, 1.0, beta_deg, "deg")}
     return CentrodeExplorer(EllipticTrammel, controls, link="rod", title="Elliptic trammel: Cardan circles",
-                            live=live)
+                            live=live, question=question)
 
 
 def antiparallelogram_explorer(crank=1.0, ground=2.0, *, link="rocker", reference="crank",
-                               live=None) -> CentrodeExplorer:
+                               live=None, question=None) -> CentrodeExplorer:
     """The crossed antiparallelogram; default centrodes: rocker relative to crank (elliptic gears
     when the frame is the long link)."""
-    controls = {"crank": Control("crank = rocker", 0.2, 5.0, 0.05, crank, "mm"),
-                "ground": Control("frame = coupler", 0.2, 5.0, 0.05, ground, "mm")}
+    controls = {"crank": Control("crank = rocker", 0.2, 5.0, 0.05, crank),
+                "ground": Control("frame = coupler", 0.2, 5.0, 0.05, ground)}
     return CentrodeExplorer(Antiparallelogram, controls, link=link, reference=reference,
-                            title=f"Antiparallelogram: centrodes of the {link} about the {reference}", live=live)
+                            title=f"Antiparallelogram: centrodes of the {link} about the {reference}", live=live,
+                            question=question)
 
 
 __all__ = ["CentrodeExplorer", "fourbar_centrode_explorer", "trammel_explorer", "antiparallelogram_explorer"]

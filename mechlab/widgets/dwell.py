@@ -1,4 +1,4 @@
-"""Controls for the curved-slot dwell mechanism (seed 000 §3): λ, the pivot distance, the dwell
+"""Controls for the curved-slot dwell mechanism (Zinchenko et al., 2013, §3): λ, the pivot distance, the dwell
 [φ1, φ2] (degrees), the transition law and the roller radius, driving the drawing (slot in the
 moving link, dwell arc highlighted) and the law ψ, ψ′, ψ″; the status line gives the dwell
 angle and the largest pressure angle."""
@@ -16,16 +16,17 @@ class DwellExplorer(MechanismExplorer):
     (φ1 ≥ φ2, λ = 1, a roller too large for the slot's curvature) shows its message instead."""
 
     def __init__(self, lam=0.5, phi1_deg=60.0, phi2_deg=150.0, pivot_distance=1.0, transition="quintic",
-                 roller_radius=0.0, n: int = 121):
+                 roller_radius=0.0, n: int = 121, *, live: bool | None = None, question: str | None = None):
         controls = {
             "lam": Control("λ = l_OA/l_OB", 0.1, 3.0, 0.05, lam),
-            "pivot_distance": Control("l_OB", 0.5, 3.0, 0.1, pivot_distance, "mm"),
-            "phi1": Control("φ1", 1.0, 179.0, 1.0, phi1_deg, "deg"),
-            "phi2": Control("φ2", 1.0, 179.0, 1.0, phi2_deg, "deg"),
-            "roller_radius": Control("roller ρ", 0.0, 0.5, 0.01, roller_radius, "mm"),
+            "pivot_distance": Control("pivot distance OB", 0.5, 3.0, 0.1, pivot_distance),
+            "phi1": Control("dwell from φ1", 1.0, 179.0, 1.0, phi1_deg, "deg"),
+            "phi2": Control("dwell to φ2", 1.0, 179.0, 1.0, phi2_deg, "deg"),
+            "roller_radius": Control("roller radius ρ", 0.0, 0.5, 0.01, roller_radius),
             "transition": Choice("transition", TRANSITIONS, transition),
         }
-        super().__init__(self._build, controls, n=n, title="Curved-slot dwell mechanism (Zinchenko et al., 2013, §3)")
+        super().__init__(self._build, controls, n=n, live=live, question=question,
+                         title="Curved-slot dwell mechanism (Zinchenko et al., 2013, §3), lengths dimensionless")
 
     @staticmethod
     def _build(lam, pivot_distance, phi1, phi2, roller_radius, transition):
@@ -37,7 +38,8 @@ class DwellExplorer(MechanismExplorer):
             th = np.degrees(self.motion.pressure_angle)
             i = int(np.argmax(th))
             self.status.value += (f"<br>dwell ψ_B = {np.degrees(self.mechanism.law.psi_dwell):.2f}°, "
-                                  f"largest pressure angle {th[i]:.1f}° at φ = {np.degrees(self.motion.phi[i]):.0f}°")
+                                  f"largest pressure angle {th[i]:.1f}° "
+                                  f"at φ = {np.degrees(self.motion.phi[i]):.0f}°")
 
 
 def dwell_explorer(**kwargs) -> DwellExplorer:

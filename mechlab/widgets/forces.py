@@ -30,11 +30,10 @@ class ForceExplorer(Explorer):
     ("deg" controls reach the factory in radians). ``pairs`` restricts the arrows.
     """
 
-    blit = False  # the arrows are many small artists: redraw the figure
-
     def __init__(self, factory: Callable, controls: dict[str, Control], *, n: int = 121, title: str = "",
-                 pairs=None):
-        super().__init__(factory, controls, n=n, title=title, figsize=(10, 4.2), dpi=72, angle=30.0)
+                 pairs=None, live: bool | None = None, question: str | None = None):
+        super().__init__(factory, controls, n=n, title=title, figsize=(10, 4.4), dpi=76, angle=30.0, live=live,
+                         question=question)
         self.pairs = pairs
         self.system = None
         self.result = None
@@ -49,17 +48,19 @@ class ForceExplorer(Explorer):
         (self.m_marker,) = self.ax_torque.plot([], [], "ko", ms=5)
         (self.e_marker,) = self.ax_eta.plot([], [], "ko", ms=5)
         self.ax_torque.axhline(0.0, color="0.6", lw=0.8)
-        self.ax_torque.set_ylabel("M_b")
+        self.ax_torque.set_ylabel("balancing torque M_b (N·m)")
         self.ax_torque.legend(loc="upper right", fontsize=7)
-        self.ax_eta.set_ylabel("η")
-        self.ax_eta.set_xlabel("φ, degrees")
+        self.ax_eta.set_ylabel("efficiency η (–)")
+        self.ax_eta.set_xlabel("crank angle φ (degrees)")
+        self.ax_eta.set_xticks(np.arange(0, 361, 90))
         for ax in (self.ax_torque, self.ax_eta):
             ax.grid(True, alpha=0.3)
         self.drawing = None
         self._finish()
 
     def rebuild(self):
-        """Build and solve from the sliders; show a MechanismError's message instead of plots."""
+        """Build and solve from the sliders; show a MechanismError's message instead of plots
+        (a bad dimension, self-locking, a crank speed of zero for the drive's figures …)."""
         try:
             system = self.factory(**self.values())
             phi = system.cycle(self.n)
@@ -67,9 +68,11 @@ class ForceExplorer(Explorer):
             if self.drawing is None:
                 self.ax_mech.clear()
                 self.drawing = drawing_class(system)(self.ax_mech, system, n=self.n, pairs=self.pairs)
+                self.ax_mech.set_axis_off()
             else:
                 self.drawing.set_motion(system, motion)
             result = self.drawing.result
+            d = drive(result.torque, result.phi, system.omega1)
         except MechanismError as err:
             self._show_error(str(err))
             return
@@ -78,14 +81,13 @@ class ForceExplorer(Explorer):
         deg = np.degrees(result.phi)
         for key, y in (("groups", result.torque), ("power", result.torque_power), ("ideal", result.ideal_torque)):
             self.lines[key].set_data(deg, y)
-        eta = result.efficiency()
-        self.lines["eta"].set_data(deg, eta.filled(np.nan))
+        self._eta = result.efficiency().filled(np.nan)
+        self.lines["eta"].set_data(deg, self._eta)
         lo, hi = float(np.min(result.torque)), float(np.max(result.torque))
         pad = 0.08 * (hi - lo) + 1e-9
         self.ax_torque.set_xlim(deg[0], deg[-1])
         self.ax_torque.set_ylim(min(lo, 0) - pad, hi + pad)
         self.ax_eta.set_ylim(0.0, 1.05)
-        d = drive(result.torque, result.phi, system.omega1)
         try:
             cyc = f"{result.cycle_efficiency():.3f} (mean), {result.cycle_efficiency(how='work'):.3f} (work)"
         except MechanismError:
@@ -95,15 +97,19 @@ class ForceExplorer(Explorer):
                              f"mean power {d.mean_power:.4g}<br>cycle efficiency {cyc}<br>"
                              f"groups vs power balance: {gap:.1e}; equilibrium residual {result.residual:.1e}")
         self._set_visible(True)
-        self._on_angle()
+        self._animate_moving()   # the arrows are new artists after each rebuild
+        self._select_frame()
+        self._redraw()
 
     def _select_frame(self):
         phi = np.degrees(self.result.phi)
         self.frame = self.nearest_frame(self.result.phi)
         self.drawing.set_frame(self.frame)
-        eta = self.result.efficiency().filled(np.nan)
         self.m_marker.set_data([phi[self.frame]], [self.result.torque[self.frame]])
-        self.e_marker.set_data([phi[self.frame]], [eta[self.frame]])
+        self.e_marker.set_data([phi[self.frame]], [self._eta[self.frame]])
+
+    def _moving_artists(self):
+        return [*self.drawing.artists, self.m_marker, self.e_marker] if self.drawing is not None else []
 
     def _axes(self):
         return (self.ax_mech, self.ax_torque, self.ax_eta)
@@ -115,7 +121,7 @@ class ForceExplorer(Explorer):
         return self.result is not None
 
 
-def press_explorer(**initial) -> ForceExplorer:
+def press_explorer(*, live: bool | None = None, question: str | None = None, **initial) -> ForceExplorer:
     """Sliders for the chapter's press (:func:`mechlab.kinetostatics.press`): speed, masses, load, friction."""
     v = dict(rpm=120.0, P=2000.0, m_rod=3.0, m_slider=4.0, f=0.0, rod=0.40)
     v.update(initial)
@@ -125,10 +131,11 @@ def press_explorer(**initial) -> ForceExplorer:
                 "m_slider": Control("slider mass", 0.0, 40.0, 0.5, v["m_slider"], "kg"),
                 "f": Control("friction f", 0.0, 0.5, 0.01, v["f"]),
                 "rod": Control("rod AB", 0.05, 0.8, 0.01, v["rod"], "m")}
-    return ForceExplorer(press, controls, title="Crank press: reactions and balancing torque")
+    return ForceExplorer(press, controls, title="Crank press: reactions and balancing torque", live=live,
+                         question=question)
 
 
-def rocker_explorer(**initial) -> ForceExplorer:
+def rocker_explorer(*, live: bool | None = None, question: str | None = None, **initial) -> ForceExplorer:
     """Sliders for the chapter's four-bar (:func:`mechlab.kinetostatics.rocker_drive`)."""
     v = dict(rpm=120.0, T=40.0, m_coupler=2.0, m_rocker=2.0, f=0.0, ground=0.35)
     v.update(initial)
@@ -138,4 +145,5 @@ def rocker_explorer(**initial) -> ForceExplorer:
                 "m_rocker": Control("rocker mass", 0.0, 20.0, 0.5, v["m_rocker"], "kg"),
                 "f": Control("friction f", 0.0, 0.5, 0.01, v["f"]),
                 "ground": Control("ground OE", 0.2, 0.55, 0.005, v["ground"], "m")}
-    return ForceExplorer(rocker_drive, controls, title="Four-bar: reactions and balancing torque")
+    return ForceExplorer(rocker_drive, controls, title="Four-bar: reactions and balancing torque", live=live,
+                         question=question)
