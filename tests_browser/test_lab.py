@@ -1,9 +1,9 @@
 """Every chapter notebook in JupyterLab, as a student uses it, in a real browser.
 
-JupyterLab is started the way `make lab` does (127.0.0.1, token authentication on, a
-free port, no news or update checks), but on a COPY of notebooks/ in a temporary folder
-with its own settings, workspaces and runtime folders: JupyterLab autosaves the outputs
-into the notebook it opened, and the tracked notebooks must stay clean. For each
+JupyterLab is started with `make lab`'s arguments (course.lab_argv: 127.0.0.1, token
+authentication on, no news or update checks) on a free port, serving a working copy made
+by course.sync as `make lab` makes my-notebooks/, but in a temporary folder with its own
+settings, workspaces and runtime folders, so that the tracked notebooks stay clean. For each
 notebook the test runs all cells, asserts there is no error output, moves one slider
 with the keyboard and asserts that the plot image changed. The server is stopped by its
 PID. A screenshot of each notebook is saved under book/_build/screenshots/.
@@ -27,9 +27,11 @@ from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 from conftest import ROOT, block_remote, free_port
 
+sys.path.insert(0, str(ROOT))
+import course  # noqa: E402  (the script at the repository's root, which `make lab` runs)
+
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 SHOTS = ROOT / "book" / "_build" / "screenshots"
-JUPYTER = Path(sys.executable).with_name("jupyter")
 
 # settings a student would otherwise be asked about (the news prompt wants the internet);
 # windowing off so every cell is in the DOM
@@ -43,8 +45,8 @@ SETTINGS = {
 @pytest.fixture(scope="module")
 def lab():
     tmp = Path(tempfile.mkdtemp(prefix="mechlab-lab-"))
-    root = tmp / "notebooks"
-    shutil.copytree(ROOT / "notebooks", root, ignore=shutil.ignore_patterns(".ipynb_checkpoints"))
+    root = tmp / "my-notebooks"
+    course.sync(ROOT / "notebooks", root)
     for rel, values in SETTINGS.items():
         path = tmp / "settings" / rel
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -55,12 +57,9 @@ def lab():
                IPYTHONDIR=str(tmp / "ipython"), MPLBACKEND="module://matplotlib_inline.backend_inline")
     log = open(tmp / "lab.log", "w")
     proc = subprocess.Popen(
-        [str(JUPYTER), "lab", "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={port}", "--ServerApp.port_retries=0",
-         "--no-browser", f"--ServerApp.root_dir={root}", f"--IdentityProvider.token={token}",
-         "--LabApp.news_url=None", "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
-         "--LabApp.expose_app_in_browser=True", f"--LabApp.user_settings_dir={tmp / 'settings'}",
-         f"--LabApp.workspaces_dir={tmp / 'workspaces'}", "--LabApp.extension_manager=readonly"]
-        + (["--allow-root"] if hasattr(os, "geteuid") and os.geteuid() == 0 else []),
+        course.lab_argv(Path(sys.executable), root, port)
+        + ["--ServerApp.port_retries=0", f"--IdentityProvider.token={token}", "--LabApp.expose_app_in_browser=True",
+           f"--LabApp.user_settings_dir={tmp / 'settings'}", f"--LabApp.workspaces_dir={tmp / 'workspaces'}"],
         stdout=log, stderr=subprocess.STDOUT, env=env, cwd=tmp)
     base = f"http://127.0.0.1:{port}"
     try:
