@@ -39,7 +39,15 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 chromium:
 	@test -x $(CHROMIUM) || { $(SUDO) apt-get update && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y chromium; }
 
-test-browser: book chromium venv-browser
+# `make pdf`: the whole book as one PDF, book/_build/pdf/mechlab.pdf, printed by the same Chromium;
+# poppler-utils (pdffonts, pdftotext) for its test
+.PHONY: pdf poppler
+poppler:
+	@command -v pdffonts >/dev/null || { $(SUDO) apt-get update && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y poppler-utils; }
+pdf: chromium poppler
+	SPHINXOPTS="$(SPHINXOPTS)" $(COURSE) pdf
+
+test-browser: book pdf chromium venv-browser
 	CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -q -p no:cacheprovider tests_browser
 
 # pylinkage and numba are only for the comparison: they go to a folder of their own, not into the course's venv

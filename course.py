@@ -4,6 +4,7 @@
     python course.py sync                refresh my-notebooks/ from notebooks/ (after a `git pull`)
     python course.py test                the library's tests, then every notebook (nbval)
     python course.py book                the static HTML book in book/_build/html
+    python course.py pdf                 the whole book as one PDF (printed by Chromium)
     python course.py venv PART           only install: lab, test, book, browser, or all (environment.txt whole)
 
 Each part installs the extra of the same name from pyproject.toml with environment.txt as
@@ -34,6 +35,7 @@ PARTS = {"lab": {"lab"}, "test": {"lab", "test"}, "book": {"lab", "book"},
 UNPINNED_OK = {"pip", "setuptools", "wheel", "mechlab"}
 WORKDIR = "my-notebooks"
 MANIFEST = ".course-manifest.json"
+PDF = "book/_build/pdf/mechlab.pdf"
 
 
 def say(message: str) -> None:
@@ -244,8 +246,8 @@ def run_sync(args) -> None:
 
 # ---------------------------------------------------------------- commands
 
-def run(python: Path, *args: str) -> None:
-    code = subprocess.run([str(python), *args], cwd=ROOT).returncode
+def run(python: Path, *args: str, env: dict | None = None) -> None:
+    code = subprocess.run([str(python), *args], cwd=ROOT, env=env).returncode
     if code:
         sys.exit(code)
 
@@ -286,6 +288,16 @@ def cmd_book(args) -> None:
     say("the book: book/_build/html/index.html")
 
 
+def cmd_pdf(args) -> None:
+    python = ensure_venv(Path(args.venv), "browser")
+    opts = os.environ.get("SPHINXOPTS", "-W --keep-going").split()
+    # the notebooks' outputs come from the HTML build's execution cache when it is current
+    run(python, "-m", "sphinx", *opts, "-b", "singlehtml", "-d", "book/_build/doctrees-single", "book",
+        "book/_build/singlehtml")
+    run(python, "tools/print_pdf.py", "book/_build/singlehtml/intro.html", PDF,
+        env={**os.environ, "PYTHONPATH": str(ROOT / "tools")})
+
+
 def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--venv", default=str(ROOT / ".venv"), help="the venv to use (default: .venv)")
@@ -300,6 +312,7 @@ def main(argv: list[str] | None = None) -> None:
     sub.choices["lab"].add_argument("--port", type=int, default=8888)
     sub.add_parser("test", help="library tests, then every notebook").set_defaults(func=cmd_test)
     sub.add_parser("book", help="the HTML book").set_defaults(func=cmd_book)
+    sub.add_parser("pdf", help=f"the whole book as one PDF, {PDF} (needs Chromium)").set_defaults(func=cmd_pdf)
     args = parser.parse_args(argv)
     args.func(args)
 
