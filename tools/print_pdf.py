@@ -33,6 +33,7 @@ body { font-size: 10pt; }
 pre, .highlight pre, .output pre { white-space: pre-wrap !important; overflow-wrap: anywhere;
   overflow: visible !important; max-height: none !important; font-size: 8pt; }
 /* a long cell may break across pages rather than leave its frame empty at the foot of one */
+.cell, .cell_input, .cell_output, div.highlight { display: block !important; }
 .cell, .cell_input, .highlight, pre { break-inside: auto !important; }
 /* tables fit the page: fixed layout over the full width, small type, long words broken */
 table { width: 100% !important; table-layout: fixed; font-size: 7.5pt; }
