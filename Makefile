@@ -58,5 +58,19 @@ bench: venv-lab
 	PYTHONPATH=$(BENCH_DEPS) $(BIN)/python benchmarks/bench_fourbar.py
 	$(BIN)/python benchmarks/bench_design.py
 
+# `make test-hub`: five students at once on a JupyterHub on 127.0.0.1 (tests_hub/); the proxy comes from npm
+# into .hub-deps/. `make bench-hub STUDENTS=20`: the same with more students, figures as JSON.
+HUB_DEPS := .hub-deps
+STUDENTS ?= 20
+.PHONY: hub-deps test-hub bench-hub
+hub-deps:
+	$(COURSE) venv hubtest
+	test -x $(HUB_DEPS)/node_modules/.bin/configurable-http-proxy || npm install --no-save --no-package-lock \
+	    --no-audit --no-fund --prefix $(HUB_DEPS) configurable-http-proxy@5.3.0
+test-hub: hub-deps
+	$(BIN)/python -m pytest -q -p no:cacheprovider tests_hub
+bench-hub: hub-deps
+	$(BIN)/python tests_hub/hub_load.py --students $(STUDENTS)
+
 clean:
 	rm -rf $(VENV) book/_build

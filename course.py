@@ -5,7 +5,7 @@
     python course.py test                the library's tests, then every notebook (nbval)
     python course.py book                the static HTML book in book/_build/html
     python course.py pdf                 the whole book as one PDF (printed by Chromium)
-    python course.py venv PART           only install: lab, test, book, browser, hub, or all (environment.txt whole)
+    python course.py venv PART           only install: lab, test, book, browser, hub, hubtest, or all (environment.txt whole)
 
 Each part installs the extra of the same name from pyproject.toml with environment.txt as
 constraints, so the one pinned set decides every version and a student gets only what
@@ -31,7 +31,7 @@ MIN_PYTHON = (3, 11)
 # a part also counts as installed when a larger part that contains it is
 PARTS = {"lab": {"lab"}, "test": {"lab", "test"}, "book": {"lab", "book"},
          "browser": {"lab", "test", "book", "browser"}, "hub": {"lab", "hub"},
-         "all": {"lab", "test", "book", "browser", "hub", "all"}}
+         "hubtest": {"lab", "hub", "hubtest"}, "all": {"lab", "test", "book", "browser", "hub", "hubtest", "all"}}
 # what pip and venv bring along: not pinned by environment.txt and not the course's
 UNPINNED_OK = {"pip", "setuptools", "wheel", "mechlab"}
 WORKDIR = "my-notebooks"
