@@ -31,7 +31,7 @@ MIN_PYTHON = (3, 11)
 # a part also counts as installed when a larger part that contains it is
 PARTS = {"lab": {"lab"}, "test": {"lab", "test"}, "book": {"lab", "book"},
          "browser": {"lab", "test", "book", "browser"}, "hub": {"lab", "hub"},
-         "hubtest": {"lab", "hub", "hubtest"}, "all": {"lab", "test", "book", "browser", "hub", "hubtest", "all"}}
+         "hubtest": {"lab", "test", "hub", "hubtest"}, "all": {"lab", "test", "book", "browser", "hub", "hubtest", "all"}}
 # what pip and venv bring along: not pinned by environment.txt and not the course's
 UNPINNED_OK = {"pip", "setuptools", "wheel", "mechlab"}
 WORKDIR = "my-notebooks"
