@@ -64,6 +64,7 @@ HUB_DEPS := .hub-deps
 STUDENTS ?= 20
 .PHONY: hub-deps test-hub bench-hub
 hub-deps:
+	@command -v npm >/dev/null || { $(SUDO) apt-get update && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y npm; }
 	$(COURSE) venv hubtest
 	test -x $(HUB_DEPS)/node_modules/.bin/configurable-http-proxy || npm install --no-save --no-package-lock \
 	    --no-audit --no-fund --prefix $(HUB_DEPS) configurable-http-proxy@5.3.0
