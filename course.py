@@ -5,7 +5,7 @@
     python course.py test                the library's tests, then every notebook (nbval)
     python course.py book                the static HTML book in book/_build/html
     python course.py pdf                 the whole book as one PDF (printed by Chromium)
-    python course.py venv PART           only install: lab, test, book, browser, hub, hubtest, or all (environment.txt whole)
+    python course.py venv PART           only install a part: lab, test, book, browser, hub, hubtest, all
 
 Each part installs the extra of the same name from pyproject.toml with environment.txt as
 constraints, so the one pinned set decides every version and a student gets only what

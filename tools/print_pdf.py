@@ -78,7 +78,8 @@ STRIPS_JS = """(count) => {
 FIT_MATH_JS = """() => {
   let scaled = 0;
   for (const m of document.querySelectorAll("mjx-container[display='true']")) {
-    const room = m.parentElement.getBoundingClientRect().width, need = m.firstElementChild.getBoundingClientRect().width;
+    const room = m.parentElement.getBoundingClientRect().width;
+    const need = m.firstElementChild.getBoundingClientRect().width;
     if (need > room) { m.style.fontSize = `${Math.floor(98 * room / need)}%`; scaled++; }
   }
   return scaled;
