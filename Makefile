@@ -4,41 +4,33 @@
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
-# The venv is rebuilt only when the pinned set or the project's metadata changes.
-HASH   := $(shell cat environment.txt pyproject.toml | $(PYTHON) -c "import hashlib,sys; print(hashlib.sha256(sys.stdin.buffer.read()).hexdigest()[:16])")
-STAMP  := $(VENV)/.installed-$(HASH)
 PORT   ?= 8888
-# JupyterLab refuses to run as root unless told; a container's root user is the usual case
-ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
+# course.py does the work, so that `python course.py lab` (no make, e.g. on Windows) is the same route.
+# Each target installs only its part of environment.txt; `make venv` installs the whole pinned set.
+COURSE := $(PYTHON) course.py --venv $(VENV)
 
-.PHONY: venv lab test test-lib test-notebooks book bench clean
+.PHONY: venv venv-lab venv-test venv-book venv-browser lab sync test test-lib test-notebooks book bench clean
 
-venv: $(STAMP)
+venv:
+	$(COURSE) venv all
+venv-lab venv-test venv-book venv-browser:
+	$(COURSE) venv $(@:venv-%=%)
 
-$(STAMP):
-	@$(PYTHON) -c "import sys; sys.exit(sys.version_info < (3, 11))" || { echo "mechlab needs Python 3.11 or newer (found $$($(PYTHON) --version))"; exit 1; }
-	rm -f $(VENV)/.installed-*
-	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -r environment.txt
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps -e .
-	touch $@
+# JupyterLab on 127.0.0.1 (token on) serving my-notebooks/, the student's git-ignored working copy
+lab:
+	$(COURSE) lab --port $(PORT)
+sync:
+	$(COURSE) sync
 
-lab: venv
-	$(BIN)/jupyter lab --ServerApp.ip=127.0.0.1 --ServerApp.port=$(PORT) --no-browser $(ROOT_FLAG) \
-	    --ServerApp.root_dir=notebooks --LabApp.news_url=None \
-	    --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate --LabApp.extension_manager=readonly
-
-test: venv nbgrader
-	$(BIN)/python -m pytest tests -q
-	$(BIN)/python -m pytest --nbval-lax --nbval-current-env -q -p no:cacheprovider notebooks assignments/source
+# the library's tests, then every notebook and every assignment's source (nbval); nbgrader for the grading tests
+test: nbgrader
+	$(COURSE) test
 
 # `make book`: the course as static HTML in book/_build/html, every notebook executed at build
 # time (the execution cache is book/_build/.jupyter_cache); warnings fail the build.
-BOOK_OUT   := book/_build/html
 SPHINXOPTS ?= -W --keep-going
-book: venv
-	$(BIN)/sphinx-build $(SPHINXOPTS) -b html -d book/_build/doctrees book $(BOOK_OUT)
-	@echo "the book: $(BOOK_OUT)/index.html"
+book:
+	SPHINXOPTS="$(SPHINXOPTS)" $(COURSE) book
 
 # `make test-browser`: the built book and every chapter in JupyterLab, in Debian's Chromium
 # driven by Playwright (the browser comes from apt, never from `playwright install`).
@@ -48,16 +40,39 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 chromium:
 	@test -x $(CHROMIUM) || { $(SUDO) apt-get update && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y chromium; }
 
-test-browser: book chromium
+# `make pdf`: the whole book as one PDF, book/_build/pdf/mechlab.pdf, printed by the same Chromium;
+# poppler-utils (pdffonts, pdftotext) for its test
+.PHONY: pdf poppler
+poppler:
+	@command -v pdffonts >/dev/null || { $(SUDO) apt-get update && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y poppler-utils; }
+pdf: chromium poppler
+	SPHINXOPTS="$(SPHINXOPTS)" $(COURSE) pdf
+
+test-browser: book pdf chromium venv-browser
 	CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -q -p no:cacheprovider tests_browser
 
 # pylinkage and numba are only for the comparison: they go to a folder of their own, not into the course's venv
 BENCH_DEPS := .bench-deps
-bench: venv
+bench: venv-lab
 	test -d $(BENCH_DEPS) || $(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps \
 	    --target $(BENCH_DEPS) pylinkage==1.3.0 numba==0.68.1 llvmlite==0.50.0 tqdm==4.70.1
 	PYTHONPATH=$(BENCH_DEPS) $(BIN)/python benchmarks/bench_fourbar.py
 	$(BIN)/python benchmarks/bench_design.py
+
+# `make test-hub`: five students at once on a JupyterHub on 127.0.0.1 (tests_hub/); the proxy comes from npm
+# into .hub-deps/. `make bench-hub STUDENTS=20`: the same with more students, figures as JSON.
+HUB_DEPS := .hub-deps
+STUDENTS ?= 20
+.PHONY: hub-deps test-hub bench-hub
+hub-deps:
+	@command -v npm >/dev/null || { $(SUDO) apt-get update && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y npm; }
+	$(COURSE) venv hubtest
+	test -x $(HUB_DEPS)/node_modules/.bin/configurable-http-proxy || npm install --no-save --no-package-lock \
+	    --no-audit --no-fund --prefix $(HUB_DEPS) configurable-http-proxy@5.3.0
+test-hub: hub-deps
+	$(BIN)/python -m pytest -q -p no:cacheprovider tests_hub
+bench-hub: hub-deps
+	$(BIN)/python tests_hub/hub_load.py --students $(STUDENTS)
 
 clean:
 	rm -rf $(VENV) book/_build

@@ -47,7 +47,14 @@ extensions = [
     "sphinx.ext.autosummary",
     "sphinx.ext.napoleon",  # numpydoc sections in docstrings
     "apiref",  # _ext/apiref.py: docstrings read as reStructuredText
+    "hublink",  # _ext/hublink.py: an "open on the hub" link per chapter, only when hub_url is set
 ]
+
+# Teaching on a JupyterHub (book/teaching.md): the hub's address gives every chapter page a link
+# that opens it there through nbgitpuller. Empty: no link, the book stays fully offline.
+hub_url = ""
+hub_repo = ""  # the course's git URL as students clone it
+hub_branch = "main"
 
 external_toc_path = "_toc.yml"
 external_toc_exclude_missing = False

@@ -7,39 +7,15 @@ collects it. CHROMIUM overrides the browser binary (default: chromium on PATH).
 
 from __future__ import annotations
 
-import os
-import shutil
 import socket
+import sys
 from pathlib import Path
-from urllib.parse import urlparse
 
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-CHROMIUM = os.environ.get("CHROMIUM") or shutil.which("chromium") or "/usr/bin/chromium"
-# headless on a machine without internet: nothing in the background may phone home
-CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync", "--no-first-run",
-                 "--disable-dev-shm-usage", "--disable-default-apps", "--disable-extensions",
-                 "--no-default-browser-check", "--metrics-recording-only", "--mute-audio"]
-LOCAL_HOSTS = {"127.0.0.1", "localhost", "[::1]", "::1"}
-
-
-def block_remote(page) -> list[str]:
-    """Abort every request of ``page`` to a host other than this machine; returns the list
-    the aborted URLs are collected in (the course loads nothing from the internet)."""
-    remote: list[str] = []
-
-    def route(r):
-        url = urlparse(r.request.url)
-        if url.scheme in ("http", "https", "ws", "wss") and url.hostname not in LOCAL_HOSTS:
-            remote.append(r.request.url)
-            r.abort()
-        else:
-            r.continue_()
-
-    page.route("**/*", route)
-    return remote
+sys.path.insert(0, str(ROOT / "tools"))
+from chromium import CHROMIUM, CHROMIUM_ARGS, LOCAL_HOSTS, block_remote  # noqa: E402,F401  (shared with tools/print_pdf.py)
 
 
 def free_port() -> int:

@@ -1,0 +1,324 @@
+"""The course's one command, needing only Python 3.11+ (the Makefile calls it too).
+
+    python course.py lab [--port 8888]   venv with the lab's part, sync my-notebooks/, JupyterLab on 127.0.0.1
+    python course.py sync                refresh my-notebooks/ from notebooks/ (after a `git pull`)
+    python course.py test                the library's tests, then every notebook and assignment (nbval)
+    python course.py book                the static HTML book in book/_build/html
+    python course.py pdf                 the whole book as one PDF (printed by Chromium)
+    python course.py venv PART           only install a part: lab, test, book, browser, hub, hubtest, all
+
+Each part installs the extra of the same name from pyproject.toml with environment.txt as
+constraints, so the one pinned set decides every version and a student gets only what
+the lab needs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent
+# the oldest Python the pins install on (soupsieve stays at 2.10: its 3.x needs Python 3.11.5)
+MIN_PYTHON = (3, 11)
+# a part also counts as installed when a larger part that contains it is
+PARTS = {"lab": {"lab"}, "test": {"lab", "test"}, "book": {"lab", "book"},
+         "browser": {"lab", "test", "book", "browser"}, "hub": {"lab", "hub"},
+         "hubtest": {"lab", "test", "hub", "hubtest"},
+         "all": {"lab", "test", "book", "browser", "hub", "hubtest", "all"}}
+# what pip and venv bring along: not pinned by environment.txt and not the course's
+UNPINNED_OK = {"pip", "setuptools", "wheel", "mechlab"}
+WORKDIR = "my-notebooks"
+MANIFEST = ".course-manifest.json"
+PDF = "book/_build/pdf/mechlab.pdf"
+
+
+def say(message: str) -> None:
+    print(f"course: {message}", flush=True)
+
+
+# ---------------------------------------------------------------- venv and pinned installs
+
+def venv_python(venv: Path) -> Path:
+    return venv / ("Scripts/python.exe" if os.name == "nt" else "bin/python")
+
+
+def install_hash() -> str:
+    """Changes when the pinned set, the project's metadata or the interpreter's version changes."""
+    h = hashlib.sha256()
+    for name in ("environment.txt", "pyproject.toml"):
+        h.update((ROOT / name).read_bytes())
+    h.update(sys.version.encode())
+    return h.hexdigest()[:16]
+
+
+def pins() -> dict[str, str]:
+    result = {}
+    for line in (ROOT / "environment.txt").read_text().splitlines():
+        line = line.split("#")[0].strip()
+        if "==" in line:
+            name, version = line.split("==")
+            result[canonical(name)] = version.strip()
+    return result
+
+
+def canonical(name: str) -> str:
+    return name.lower().replace("_", "-").replace(".", "-")
+
+
+def venv_version(venv: Path) -> str | None:
+    """The Python version `venv` was made with (pyvenv.cfg says `version` or `version_info`)."""
+    cfg = venv / "pyvenv.cfg"
+    if not cfg.exists():
+        return None
+    for line in cfg.read_text().splitlines():
+        key, _, value = line.partition("=")
+        if key.strip() in ("version", "version_info"):
+            return value.strip()
+    return None
+
+
+def check_python() -> None:
+    if sys.version_info < MIN_PYTHON:
+        sys.exit(f"mechlab needs Python {'.'.join(map(str, MIN_PYTHON))} or newer (this is {sys.version.split()[0]})")
+
+
+def ensure_venv(venv: Path, part: str) -> Path:
+    """Create `venv` and install `part` into it unless its stamp says it is there already."""
+    check_python()
+    python = venv_python(venv)
+    stamp = venv / f".installed-{part}-{install_hash()}"
+    if stamp.exists() or any((venv / f".installed-{p}-{install_hash()}").exists()
+                             for p, has in PARTS.items() if part in has):
+        return python
+    if venv_version(venv) not in (None, sys.version.split()[0]):
+        say(f"{venv} was made with another Python; making it again with {sys.version.split()[0]}")
+        shutil.rmtree(venv)
+    if not python.exists():
+        say(f"creating {venv} with Python {sys.version.split()[0]}")
+        subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    for old in venv.glob(".installed-*"):
+        if not old.name.endswith(install_hash()):
+            old.unlink()
+    say(f"installing the {part!r} part of environment.txt")
+    pip = [str(python), "-m", "pip", "install", "--quiet", "--disable-pip-version-check"]
+    if part == "all":
+        subprocess.run(pip + ["-r", "environment.txt"], cwd=ROOT, check=True)
+        subprocess.run(pip + ["--no-deps", "-e", "."], cwd=ROOT, check=True)
+    else:
+        # --no-compile: bytecode is written on first import instead, only for the modules used
+        subprocess.run(pip + ["--no-compile", "-c", "environment.txt", f"-e.[{part}]"], cwd=ROOT, check=True)
+    check_pinned(python)
+    stamp.touch()
+    return python
+
+
+def check_pinned(python: Path) -> None:
+    """Fail when the venv holds a distribution that environment.txt does not pin at that version."""
+    listing = subprocess.run(
+        [str(python), "-c", "import importlib.metadata as m, json; "
+         "print(json.dumps({d.metadata['Name']: d.version for d in m.distributions()}))"],
+        check=True, capture_output=True, text=True).stdout
+    pinned = pins()
+    wrong = [f"{name}=={version} (environment.txt: {pinned.get(canonical(name), 'not pinned')})"
+             for name, version in json.loads(listing).items()
+             if canonical(name) not in UNPINNED_OK and pinned.get(canonical(name)) != version]
+    if wrong:
+        sys.exit("course: installed outside the pinned set: " + ", ".join(sorted(wrong)))
+
+
+# ---------------------------------------------------------------- the student's working copy
+
+def digest(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def course_files(source: Path) -> list[Path]:
+    return sorted(p.relative_to(source) for p in source.rglob("*")
+                  if p.is_file() and ".ipynb_checkpoints" not in p.parts and "__pycache__" not in p.parts)
+
+
+def beside_name(rel: Path, today: str, taken) -> Path:
+    """`05_x (course update 2026-12-01).ipynb`, then `(course update 2026-12-01, 2)` if taken by other content."""
+    n = 1
+    while True:
+        candidate = rel.with_name(f"{rel.stem} (course update {today}{'' if n == 1 else f', {n}'}){rel.suffix}")
+        if not taken(candidate):
+            return candidate
+        n += 1
+
+
+def copy_file(src: Path, dst: Path) -> None:
+    """Copy through a temporary file so an interrupted sync never leaves half a notebook."""
+    dst.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=dst.parent, prefix=".sync-")
+    os.close(fd)
+    try:
+        shutil.copyfile(src, tmp)
+        os.replace(tmp, dst)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+def sync(source: Path, work: Path, today: str | None = None) -> list[str]:
+    """Bring the working copy `work` up to date with the course's `source`; return what happened.
+
+    The rules are nbgitpuller's, with one change: where nbgitpuller merges a chapter both
+    sides changed (keeping the student's side of conflicting lines), the student's file is
+    left exactly as it is and the course's new version is placed beside it, because a
+    line merge of notebook JSON can yield a notebook that does not open.
+    - new in the course: added;
+    - unchanged by the student since it was copied: refreshed to the course's version;
+    - deleted by the student: restored;
+    - changed by the student and by the course: kept, the update beside it;
+    - a student's own file with a new chapter's name: kept, the chapter beside it;
+    - removed from the course: deleted if unchanged, kept otherwise.
+    "Changed" means its bytes differ from those copied, whose hashes `MANIFEST` records.
+    """
+    today = today or datetime.date.today().isoformat()
+    manifest_path = work / MANIFEST
+    manifest = json.loads(manifest_path.read_text()) if manifest_path.exists() else {}
+    copied: dict[str, str] = manifest.get("copied", {})
+    offered: dict[str, str] = manifest.get("offered", {})  # updates placed beside a changed file
+    report = []
+    first = not work.exists()
+    work.mkdir(parents=True, exist_ok=True)
+    for rel in course_files(source):
+        key, src, dst = rel.as_posix(), source / rel, work / rel
+        new = digest(src)
+        if not dst.exists():
+            if key in copied and not first:
+                report.append(f"restored {key} (it had been deleted)")
+            elif not first:
+                report.append(f"added {key} (new in the course)")
+            copy_file(src, dst)
+            copied[key] = new
+            continue
+        mine = digest(dst)
+        if mine == new:
+            copied[key] = new
+        elif key in copied and mine == copied[key]:
+            copy_file(src, dst)
+            copied[key] = new
+            report.append(f"refreshed {key} (you had not changed it)")
+        elif key in copied and new == copied[key]:
+            pass  # only the student changed it
+        elif offered.get(key) == new:
+            pass  # this update was placed beside it by an earlier sync
+        else:
+            side = beside_name(rel, today, lambda p: (work / p).exists() and digest(work / p) != new)
+            if not (work / side).exists():
+                copy_file(src, work / side)
+            offered[key] = new
+            why = "has your changes" if key in copied else "is a file of yours"
+            report.append(f"kept {key}: it {why}; the course's new version is beside it: {side.as_posix()}")
+    for key in sorted(set(copied) - {rel.as_posix() for rel in course_files(source)}):
+        dst = work / key
+        if dst.exists() and digest(dst) == copied[key]:
+            dst.unlink()
+            report.append(f"removed {key} (no longer in the course, you had not changed it)")
+        elif dst.exists():
+            report.append(f"kept {key}: no longer in the course, but it has your changes")
+        del copied[key]
+        offered.pop(key, None)
+    fd, tmp = tempfile.mkstemp(dir=work, prefix=".sync-")
+    with os.fdopen(fd, "w") as f:
+        json.dump({"copied": copied, "offered": offered}, f, indent=1, sort_keys=True)
+    os.replace(tmp, manifest_path)
+    if first:
+        report.append(f"created your working copy {work} with {len(copied)} files from the course")
+    return report
+
+
+def run_sync(args) -> None:
+    work = Path(args.workdir)
+    report = sync(ROOT / "notebooks", work)
+    for line in report or [f"{work} is up to date with the course"]:
+        say(line)
+    say(f"you work in {work}/; the course's own notebooks/ stay untouched")
+
+
+# ---------------------------------------------------------------- commands
+
+def run(python: Path, *args: str, env: dict | None = None) -> None:
+    code = subprocess.run([str(python), *args], cwd=ROOT, env=env).returncode
+    if code:
+        sys.exit(code)
+
+
+def cmd_venv(args) -> None:
+    ensure_venv(Path(args.venv), args.part)
+
+
+def lab_argv(python: Path, workdir: Path, port: int) -> list[str]:
+    """JupyterLab on 127.0.0.1 with Jupyter's token, serving the working copy, never notebooks/."""
+    flags = ["--allow-root"] if hasattr(os, "geteuid") and os.geteuid() == 0 else []  # a container's usual user
+    return [str(python), "-m", "jupyter", "lab", "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={port}",
+            "--no-browser", *flags, f"--ServerApp.root_dir={workdir.resolve()}", "--LabApp.news_url=None",
+            "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate", "--LabApp.extension_manager=readonly"]
+
+
+def cmd_lab(args) -> None:
+    python = ensure_venv(Path(args.venv), "lab")
+    run_sync(args)
+    server = subprocess.Popen(lab_argv(python, Path(args.workdir), args.port))
+    while True:
+        try:
+            sys.exit(server.wait())
+        except KeyboardInterrupt:
+            pass  # Ctrl-C reaches JupyterLab too, which asks whether to stop
+
+
+def cmd_test(args) -> None:
+    python = ensure_venv(Path(args.venv), "test")
+    run(python, "-m", "pytest", "tests", "-q")
+    run(python, "-m", "pytest", "--nbval-lax", "--nbval-current-env", "-q", "-p", "no:cacheprovider", "notebooks",
+        "assignments/source")
+
+
+def cmd_book(args) -> None:
+    python = ensure_venv(Path(args.venv), "book")
+    opts = os.environ.get("SPHINXOPTS", "-W --keep-going").split()
+    run(python, "-m", "sphinx", *opts, "-b", "html", "-d", "book/_build/doctrees", "book", "book/_build/html")
+    say("the book: book/_build/html/index.html")
+
+
+def cmd_pdf(args) -> None:
+    python = ensure_venv(Path(args.venv), "browser")
+    opts = os.environ.get("SPHINXOPTS", "-W --keep-going").split()
+    # the notebooks' outputs come from the HTML build's execution cache when it is current
+    run(python, "-m", "sphinx", *opts, "-b", "singlehtml", "-d", "book/_build/doctrees-single", "book",
+        "book/_build/singlehtml")
+    run(python, "tools/print_pdf.py", "book/_build/singlehtml/intro.html", PDF,
+        env={**os.environ, "PYTHONPATH": str(ROOT / "tools")})
+
+
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--venv", default=str(ROOT / ".venv"), help="the venv to use (default: .venv)")
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("venv", help="create the venv and install a part of environment.txt")
+    p.add_argument("part", choices=list(PARTS))
+    p.set_defaults(func=cmd_venv)
+    for name, func in (("lab", cmd_lab), ("sync", None)):
+        p = sub.add_parser(name, help="JupyterLab on your working copy" if func else "update your working copy")
+        p.add_argument("--workdir", default=str(ROOT / WORKDIR), help=f"the working copy (default: {WORKDIR}/)")
+        p.set_defaults(func=func or run_sync)
+    sub.choices["lab"].add_argument("--port", type=int, default=8888)
+    sub.add_parser("test", help="library tests, then every notebook").set_defaults(func=cmd_test)
+    sub.add_parser("book", help="the HTML book").set_defaults(func=cmd_book)
+    sub.add_parser("pdf", help=f"the whole book as one PDF, {PDF} (needs Chromium)").set_defaults(func=cmd_pdf)
+    args = parser.parse_args(argv)
+    args.func(args)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,240 @@
+"""A class on one JupyterHub, simulated on this machine.
+
+JupyterHub listens on 127.0.0.1 with configurable-http-proxy (npm), a dummy authenticator
+and SimpleLocalProcessSpawner (every student's server a process of this user, its home in a
+temporary folder). N students at once: each logs in through the hub's login form, starts
+a server, opens a chapter (put into their home as nbgitpuller would), runs all its cells
+through the kernel's websocket, and moves a slider (the comm message JupyterLab would send).
+
+    python tests_hub/hub_load.py --students 5 --chapter notebooks/00_getting_started.ipynb
+
+Prints one JSON object: success count, p50/p95 of the times, memory per student (PSS of
+the server and its kernel), the CPU the hub and the proxy used. Every request goes to
+127.0.0.1 with a timeout; the hub and the proxy are stopped by their PIDs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import secrets
+import socket
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+import uuid
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import psutil
+import requests
+import websocket
+
+ROOT = Path(__file__).resolve().parent.parent
+TIMEOUT = 120  # seconds for any one step of a student
+PASSWORD = "class-of-2026"
+
+CONFIG = """
+c.JupyterHub.ip = "127.0.0.1"
+c.JupyterHub.port = {port}
+c.JupyterHub.hub_ip = "127.0.0.1"
+c.JupyterHub.hub_port = {hub_port}
+c.ConfigurableHTTPProxy.api_url = "http://127.0.0.1:{api_port}"
+c.ConfigurableHTTPProxy.command = [{chp!r}]
+c.JupyterHub.db_url = "sqlite:///{tmp}/hub.sqlite"
+c.JupyterHub.cookie_secret_file = "{tmp}/cookie_secret"
+c.JupyterHub.authenticator_class = "dummy"
+c.DummyAuthenticator.password = {password!r}
+c.Authenticator.allow_all = True
+c.JupyterHub.spawner_class = "simple"
+c.SimpleLocalProcessSpawner.home_dir_template = "{tmp}/home/{{username}}"
+c.Spawner.cmd = [{singleuser!r}]
+c.Spawner.args = {args!r}
+c.Spawner.environment = {{"MECHLAB_THREADS": "1", "MPLBACKEND": "module://matplotlib_inline.backend_inline"}}
+c.Spawner.start_timeout = {timeout}
+c.Spawner.http_timeout = {timeout}
+c.JupyterHub.services = [{{"name": "load-test", "api_token": {token!r}}}]
+c.JupyterHub.load_roles = [{{"name": "load-test", "services": ["load-test"],
+                            "scopes": ["admin:users", "admin:servers", "tokens", "access:servers"]}}]
+"""
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Kernel:
+    """A kernel's websocket, as JupyterLab talks to it (the default JSON protocol)."""
+
+    def __init__(self, url: str, token: str):
+        self.ws = websocket.create_connection(url, header=[f"Authorization: token {token}"], timeout=TIMEOUT)
+        self.session = uuid.uuid4().hex
+        self.sliders: list[tuple[str, dict]] = []  # (comm id, state) of every slider the kernel opened
+
+    def send(self, msg_type: str, content: dict) -> str:
+        msg_id = uuid.uuid4().hex
+        self.ws.send(json.dumps({"header": {"msg_id": msg_id, "username": "student", "session": self.session,
+                                            "msg_type": msg_type, "version": "5.3"},
+                                 "parent_header": {}, "metadata": {}, "content": content, "channel": "shell",
+                                 "buffers": []}))
+        return msg_id
+
+    def until_idle(self, msg_id: str) -> list[dict]:
+        """The iopub messages caused by `msg_id`, up to the kernel's idle status; fails on an error."""
+        seen, deadline = [], time.monotonic() + TIMEOUT
+        while time.monotonic() < deadline:
+            raw = self.ws.recv()
+            if not isinstance(raw, str):
+                continue  # a binary frame (widget buffers): not needed here
+            msg = json.loads(raw)
+            if msg["parent_header"].get("msg_id") != msg_id:
+                continue
+            kind = msg["header"]["msg_type"]
+            if kind == "error":
+                raise RuntimeError(f"{msg['content']['ename']}: {msg['content']['evalue']}")
+            if kind == "comm_open" and msg["content"]["data"].get("state", {}).get("_model_name", "").endswith(
+                    "SliderModel"):
+                self.sliders.append((msg["content"]["comm_id"], msg["content"]["data"]["state"]))
+            if kind == "status" and msg["content"]["execution_state"] == "idle":
+                return seen
+            seen.append(msg)
+        raise TimeoutError(f"no idle status for {msg_id} within {TIMEOUT} s")
+
+    def run(self, code: str) -> list[dict]:
+        return self.until_idle(self.send("execute_request", {"code": code, "silent": False, "store_history": True,
+                                                             "user_expressions": {}, "allow_stdin": False,
+                                                             "stop_on_error": True}))
+
+
+def student(base: str, api: requests.Session, name: str, chapter: Path) -> dict:
+    t0 = time.monotonic()
+    web = requests.Session()
+    web.get(f"{base}/hub/login", timeout=TIMEOUT).raise_for_status()
+    login = web.post(f"{base}/hub/login", data={"username": name, "password": PASSWORD,
+                                                "_xsrf": web.cookies.get("_xsrf", "")},
+                     allow_redirects=False, timeout=TIMEOUT)
+    if login.status_code != 302 or "jupyterhub-hub-login" not in web.cookies:
+        raise RuntimeError(f"login of {name} failed: {login.status_code}")
+    api.post(f"{base}/hub/api/users/{name}/server", timeout=TIMEOUT).raise_for_status()
+    while not api.get(f"{base}/hub/api/users/{name}", timeout=TIMEOUT).json()["servers"].get("", {}).get("ready"):
+        if time.monotonic() - t0 > TIMEOUT:
+            raise TimeoutError(f"{name}'s server did not start")
+        time.sleep(0.25)
+    t_server = time.monotonic() - t0
+    token = api.post(f"{base}/hub/api/users/{name}/tokens", json={"expires_in": 3600},
+                     timeout=TIMEOUT).json()["token"]
+    user = requests.Session()
+    user.headers["Authorization"] = f"token {token}"
+    prefix = f"{base}/user/{name}"
+    nb = json.loads(chapter.read_text())
+    user.put(f"{prefix}/api/contents/{chapter.name}", json={"type": "notebook", "format": "json", "content": nb},
+             timeout=TIMEOUT).raise_for_status()
+    user.get(f"{prefix}/api/contents/{chapter.name}", timeout=TIMEOUT).raise_for_status()  # opens it
+    t1 = time.monotonic()
+    session = user.post(f"{prefix}/api/sessions", json={"path": chapter.name, "type": "notebook",
+                                                        "kernel": {"name": "python3"}}, timeout=TIMEOUT).json()
+    kernel = Kernel(f"{prefix.replace('http', 'ws', 1)}/api/kernels/{session['kernel']['id']}/channels", token)
+    try:
+        kernel.until_idle(kernel.send("kernel_info_request", {}))
+        t_kernel = time.monotonic() - t1
+        t2 = time.monotonic()
+        for cell in nb["cells"]:
+            if cell["cell_type"] == "code":
+                kernel.run("".join(cell["source"]))
+        t_cells = time.monotonic() - t2
+        if not kernel.sliders:
+            raise RuntimeError(f"{chapter.name} opened no slider")
+        comm_id, state = kernel.sliders[0]
+        value = state["max"] if state["value"] != state["max"] else state["min"]
+        t3 = time.monotonic()
+        effects = kernel.until_idle(kernel.send("comm_msg", {"comm_id": comm_id, "data": {
+            "method": "update", "state": {"value": value}, "buffer_paths": []}}))
+        t_slider = time.monotonic() - t3
+        if not effects:
+            raise RuntimeError("moving the slider changed nothing")
+        pid = api.get(f"{base}/hub/api/users/{name}", params={"include_stopped_servers": 0},
+                      timeout=TIMEOUT).json()["servers"][""]["state"]["pid"]
+        server = psutil.Process(pid)
+        memory = sum(p.memory_full_info().pss for p in [server, *server.children(recursive=True)])
+    finally:
+        kernel.ws.close()
+    return {"server": t_server, "kernel": t_kernel, "cells": t_cells, "slider": t_slider, "pss_mb": memory / 2**20}
+
+
+def percentile(values: list[float], q: float) -> float:
+    return statistics.quantiles(values, n=100, method="inclusive")[q - 1] if len(values) > 1 else values[0]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--students", type=int, default=5)
+    parser.add_argument("--chapter", type=Path, default=ROOT / "notebooks" / "00_getting_started.ipynb")
+    parser.add_argument("--chp", default=str(ROOT / ".hub-deps" / "node_modules" / ".bin" / "configurable-http-proxy"))
+    args = parser.parse_args()
+    bin_dir = Path(sys.executable).parent
+    port, token = free_port(), secrets.token_hex(32)
+    with tempfile.TemporaryDirectory(prefix="mechlab-hub-") as tmp:
+        config = Path(tmp) / "jupyterhub_config.py"
+        root_flag = ["--allow-root"] if os.geteuid() == 0 else []  # the single-user servers run as this user
+        config.write_text(CONFIG.format(port=port, hub_port=free_port(), api_port=free_port(), chp=args.chp, tmp=tmp,
+                                        password=PASSWORD, singleuser=str(bin_dir / "jupyterhub-singleuser"),
+                                        args=root_flag, timeout=TIMEOUT, token=token))
+        log = open(Path(tmp) / "hub.log", "w")
+        hub = subprocess.Popen([str(bin_dir / "jupyterhub"), "-f", str(config)], cwd=tmp, stdout=log,
+                               stderr=subprocess.STDOUT, env={**os.environ, "PATH": f"{bin_dir}:{os.environ['PATH']}"})
+        base, proxy = f"http://127.0.0.1:{port}", None
+        api = requests.Session()
+        api.headers["Authorization"] = f"token {token}"
+        try:
+            deadline = time.monotonic() + TIMEOUT
+            while True:
+                try:
+                    if api.get(f"{base}/hub/api/", timeout=5).ok:
+                        break
+                except requests.ConnectionError:
+                    pass
+                if hub.poll() is not None or time.monotonic() > deadline:
+                    raise RuntimeError(f"the hub did not start:\n{(Path(tmp) / 'hub.log').read_text()[-3000:]}")
+                time.sleep(0.5)
+            hub_ps = psutil.Process(hub.pid)
+            proxy = next(p for p in hub_ps.children() if "configurable-http-proxy" in " ".join(p.cmdline()))
+            cpu0 = sum(hub_ps.cpu_times()[:2]) + sum(proxy.cpu_times()[:2])
+            start = time.monotonic()
+            names = [f"student{i:03d}" for i in range(args.students)]
+            with ThreadPoolExecutor(args.students) as pool:
+                futures = [pool.submit(student, base, api, n, args.chapter) for n in names]
+            results, errors = [], []
+            for f in futures:
+                try:
+                    results.append(f.result())
+                except Exception as e:  # a student's failure is a figure of the run, not its end
+                    errors.append(f"{type(e).__name__}: {e}")
+            wall = time.monotonic() - start
+            hub_cpu = sum(hub_ps.cpu_times()[:2]) + sum(proxy.cpu_times()[:2]) - cpu0
+            for n in names:
+                api.delete(f"{base}/hub/api/users/{n}/server", timeout=TIMEOUT)
+        finally:
+            hub.terminate()
+            try:
+                hub.wait(timeout=60)
+            except subprocess.TimeoutExpired:
+                hub.kill()
+            if proxy is not None and proxy.is_running():
+                proxy.terminate()
+                proxy.wait(timeout=30)
+    report = {"students": args.students, "succeeded": len(results), "errors": errors, "wall_s": round(wall, 1),
+              "hub_and_proxy_cpu_s": round(hub_cpu, 2), "cores": os.cpu_count()}
+    for key in ("server", "kernel", "cells", "slider", "pss_mb"):
+        values = [r[key] for r in results]
+        if values:
+            report[key] = {"p50": round(percentile(values, 50), 2), "p95": round(percentile(values, 95), 2)}
+    print(json.dumps(report))
+
+
+if __name__ == "__main__":
+    main()
