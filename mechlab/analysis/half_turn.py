@@ -26,7 +26,7 @@ So the law on one half of the crank turn fixes it on the other half: it can be
 chosen freely on [0, π] only (Zinchenko et al. (2013), text after Table 2).
 
 Limit theorem (Zinchenko et al. (2013) §2, conclusions before §3)
----------------------------------------------------
+-----------------------------------------------------------------
 Adding the relations for the first analog: ψ'(φ) + ψ'(φ*) = 2ψ_K'(φ), so
 max(|ψ'(φ)|, |ψ'(φ*)|) ≥ |ψ_K'(φ)| at every φ, whence
 max_φ |ψ'| ≥ max_φ |ψ_K'| = λ/|1 - λ| (at φ = π, from (19)). Likewise

@@ -2,7 +2,7 @@
 Geneva with perpendicular axes of Vainer & Shatokhina).
 
 Planar Geneva (what every course teaches and Vainer & Shatokhina assumes, its refs. [2], [3])
--------------------------------------------------------------------------------------
+---------------------------------------------------------------------------------------------
 Crank pivot O = (0, 0), wheel centre W = (C, 0), crank radius a, z radial slots,
 roller (pin) radius r. *Radial entry*: the pin enters a slot moving along it, so
 OA ⟂ WA at entry; the right triangle O-A-W with the angle π/z at W gives
@@ -20,7 +20,7 @@ while |σ| ≤ σ0 = π/2 + κπ/z (the pin in a slot); the wheel is locked othe
 The crank angle φ of the library is σ + π: φ = 0 is the middle of the dwell.
 
 Spherical offset Geneva (Vainer & Shatokhina)
-----------------------------------
+---------------------------------------------
 Sphere (the hemispherical wheel) of radius R about O, wheel axis z, slots in the
 meridian planes. The crank axis is the line {y = 0, z = -e} (perpendicular to the
 wheel axis, offset e); its point O1 = (0, 0, -e) nearest O lies on the wheel axis.
