@@ -36,7 +36,8 @@ pre, .highlight pre, .output pre { white-space: pre-wrap !important; overflow-wr
 .cell, .cell_input, .cell_output, div.highlight { display: block !important; }
 .cell, .cell_input, .highlight, pre { break-inside: auto !important; }
 /* tables fit the page: fixed layout over the full width, small type, long words broken */
-table { width: 100% !important; table-layout: fixed; font-size: 7.5pt; }
+/* 2 mm short of the margin: cell padding and borders must not carry a full line past it */
+table { width: calc(100% - 2mm) !important; table-layout: fixed; font-size: 7.5pt; }
 th, td { overflow-wrap: anywhere; word-break: break-word; padding: 2px 3px !important; }
 .table-wrapper, .pst-scrollable-table-container, .cell_output, .output { overflow: visible !important; }
 img { max-width: 100% !important; height: auto !important; break-inside: avoid; }
