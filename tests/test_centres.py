@@ -421,7 +421,7 @@ def test_errata():
     from mechlab.course.errata import seed002_centres
 
     for e in seed002_centres.ERRATA:
-        assert e.source == "002" and e.notebook == "04_instant_centres.ipynb"
+        assert e.source == "002" and e.notebook == "01_instant_centres.ipynb"
         text = e.evidence()
         assert any(ch.isdigit() for ch in text)
 

@@ -114,7 +114,7 @@ def test_unsupported_mechanisms_raise_clear_errors():
         other_assembly(SlottedLink(1.0, 2.0))
 
 
-# -- drawings, animation, explorer, exercises and errata of chapters 01-03 -------------------------
+# -- drawings, animation, explorer, exercises and errata of chapters 02-04 -------------------------
 import matplotlib.pyplot as plt  # noqa: E402
 
 from mechlab.draw import drawing_class
@@ -182,7 +182,7 @@ def test_seed000_errata_recompute_their_evidence():
     assert len(seed000_equivalence.ERRATA) == 3
     for e in seed000_equivalence.ERRATA:
         text = e.evidence()
-        assert e.source == "000" and e.notebook == "02_base_mechanism.ipynb"
+        assert e.source == "000" and e.notebook == "03_base_mechanism.ipynb"
         assert ("φ = 60°" in text or "λ = 0.3" in text) and len(text.splitlines()) == 1
 
 

@@ -426,7 +426,7 @@ def test_errata_checks_hold():
     assert len(ERRATA) == 3
     for e in ERRATA:
         text = e.evidence()
-        assert e.notebook == "09_forces.ipynb" and any(ch.isdigit() for ch in text)
+        assert e.notebook == "11_forces.ipynb" and any(ch.isdigit() for ch in text)
 
 
 def test_class_iv_group_solved_as_one():

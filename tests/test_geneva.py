@@ -270,7 +270,7 @@ def test_table1_reproduces_and_documents_differences():
         assert cells[z, "beta0"].agrees and cells[z, "omega_max"].agrees
     assert all(cells[z, "eps_max"].agrees for z in (4, 6))
     assert cells[4, "alpha0"].agrees and cells[5, "alpha0"].agrees and cells[8, "alpha0"].agrees
-    # the documented differences (see notebook 08 and mechlab.course.errata.seed004_geneva)
+    # the documented differences (see notebook 10 and mechlab.course.errata.seed004_geneva)
     differs = {k for k, c in cells.items() if c.status == "differs"}
     assert differs == {(3, "eps_max"), (3, "alpha1"), (3, "beta1"), (4, "alpha1"), (4, "beta1"),
                        (5, "alpha1"), (5, "beta1"), (6, "alpha0"), (6, "beta1"), (8, "alpha1"), (8, "beta1")}
@@ -447,9 +447,9 @@ def test_errata_seed004_geneva():
     from mechlab.course.errata import seed004_geneva
     assert len(seed004_geneva.ERRATA) == 8
     for e in seed004_geneva.ERRATA:
-        assert e.source == "004" and e.notebook == "08_geneva_spherical.ipynb"
+        assert e.source == "004" and e.notebook == "10_geneva_spherical.ipynb"
         assert e.evidence()
-    md = table(notebook="08_geneva_spherical.ipynb")
+    md = table(notebook="10_geneva_spherical.ipynb")
     assert md.count("\n| 004 |") == 8
 
 

@@ -122,7 +122,7 @@ _STATE_JS = """() => {
 
 # the first widget output that has a slider handle and a plot (an image re-shown in an Output
 # widget, or an ipympl canvas); marked for the test, with its crank-angle slider ("φ"; else its
-# first slider). Returns "angle" or "other" (a widget without a crank angle, e.g. chapter 10's).
+# first slider). Returns "angle" or "other" (a widget without a crank angle, e.g. chapter 12's).
 _MARK_WIDGET_JS = """() => {
   document.querySelectorAll('[data-mechtest]').forEach(e => e.removeAttribute('data-mechtest'));
   const root = window.jupyterapp.shell.currentWidget.node;  // this notebook's panel only

@@ -234,7 +234,7 @@ def forging_press(ax=None):
     _label(ax, "connecting rod A-B", (A + B) / 2, (A + B) / 2 + (2.3, 0.3))
     _label(ax, "ram (slider B) in its guides", B + (ram_w / 2, -ram_h / 2), B + (2.6, -0.5))
     _label(ax, "die and workpiece", (0.0, bottom - 0.3), (-2.6, bottom - 1.2))
-    _label(ax, "wire feed: a Chebyshev dwell\nsix-bar (chapter 7)", feed + (0, 0.3), feed + (0.3, 1.5))
+    _label(ax, "wire feed: a Chebyshev dwell\nsix-bar (chapter 8)", feed + (0, 0.3), feed + (0.3, 1.5))
     _fit(ax)
     ax.set_title("Crank press (nail-making automaton): the slider-crank drives the ram")
     return ax.figure

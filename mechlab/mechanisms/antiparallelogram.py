@@ -23,7 +23,7 @@ class Antiparallelogram(Mechanism):
     sign cannot follow the crossed branch: it is ``assembly = -1`` on 0 < φ < π and
     ``+1`` on π < φ < 2π (tests), and FourBar refuses φ = 0, π. This class follows the
     crossed branch analytically through both change points. Derivation (sympy in the
-    tests and notebook 04): with k = (crank + ground)/(crank - ground),
+    tests and notebook 01): with k = (crank + ground)/(crank - ground),
 
         tan(ψ/2) = k·tan(φ/2),   ψ' = 2k / ((1 + k²) + (1 - k²) cos φ),
         ψ'' = 2k(1 - k²) sin φ / ((1 + k²) + (1 - k²) cos φ)².

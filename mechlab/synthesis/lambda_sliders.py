@@ -37,7 +37,7 @@ by the curve's symmetry), so K cannot be chosen.
 
 The circle-guide counterpart of МЧВ5 is **not** a straight slot: a translating link whose slot is an
 arc of radius R about a point E of the link holds the block D at distance R from E, which is the rod
-D-E of МЧВ2 (a curved slot replaces a binary link, chapter 1 of this course), so on a circle guide the
+D-E of МЧВ2 (a curved slot replaces a binary link, chapter 2 of this course), so on a circle guide the
 translating slotted link is МЧВ2 again, with the same s(φ).
 
 Frames as in :mod:`mechlab.synthesis.lambda_guiding`: O = (0, 0), C = (a, 0), the dwell centred on

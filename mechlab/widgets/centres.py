@@ -1,4 +1,4 @@
-"""Sliders for chapter 04: a linkage with the fixed and moving centrodes of one of its
+"""Sliders for chapter 01: a linkage with the fixed and moving centrodes of one of its
 links, the pole moving along them as the crank turns (Kozhevnikov, §7.2)."""
 
 from __future__ import annotations

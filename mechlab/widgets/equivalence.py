@@ -1,4 +1,4 @@
-"""An explorer for chapters 01-03: a linkage and its curved-slot twin side by side, the
+"""An explorer for chapters 02-04: a linkage and its curved-slot twin side by side, the
 pin's relative path in the output link's frame, and ψ′, ψ″ against the base mechanism.
 
 Sliders (dimensionless lengths, degrees) build the linkage; the twin, the relative path and the

@@ -1,5 +1,5 @@
 """Printed mistakes in Zinchenko et al. (2013) §2 (half-turn relations, base mechanism), found while
-deriving Tables 1-2 and formulas (12)-(20) anew (notebook 02_base_mechanism).
+deriving Tables 1-2 and formulas (12)-(20) anew (notebook 03_base_mechanism).
 
 Evidence on the seed's own example [4]: l_OA = 0.3, l_AB = 0.8, l_BE = 1, l_OE = 1,
 kc = +1, as its curved-slot twin in the seed's frame (ψ = ψ_K - β, formula (12)),
@@ -16,7 +16,7 @@ from ...analysis.half_turn import base_peaks, formula_18
 from ...mechanisms.fourbar import FourBar
 from . import Claim, Erratum
 
-NOTEBOOK = "02_base_mechanism.ipynb"
+NOTEBOOK = "03_base_mechanism.ipynb"
 
 
 def _twin_at(phi_deg: float):

@@ -11,7 +11,7 @@ from ...synthesis.dwell_slot import base_law, curved_slot_dwell, two_branch_slot
 from . import Claim, Erratum
 
 NB05 = "05_dwell_curved_slot.ipynb"
-NB01 = "01_equivalence.ipynb"
+NB01 = "02_equivalence.ipynb"
 
 
 def _arctangent_rotating():

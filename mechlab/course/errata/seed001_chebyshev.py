@@ -10,7 +10,7 @@ from . import Claim, Erratum
 
 DEG = np.pi / 180
 NB06 = "06_chebyshev_dwell_synthesis.ipynb"
-NB07 = "07_chebyshev_dwell_sixbars.ipynb"
+NB07 = "08_chebyshev_dwell_sixbars.ipynb"
 
 
 def _rotation():

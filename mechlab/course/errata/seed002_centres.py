@@ -8,7 +8,7 @@ from ...analysis.centres.instant import instant_centres
 from ...analysis.centres import centrodes
 from . import Claim, Erratum
 
-NOTEBOOK = "04_instant_centres.ipynb"
+NOTEBOOK = "01_instant_centres.ipynb"
 
 
 def _trammel_y_coordinate() -> str:

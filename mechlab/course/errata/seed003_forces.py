@@ -16,9 +16,9 @@ from ...geometry import cross
 from ...mechanisms.slider_crank import SliderCrank
 from . import Claim, Erratum
 
-NOTEBOOK = "09_forces.ipynb"
+NOTEBOOK = "11_forces.ipynb"
 
-# A press-sized slider-crank in metres and kilograms (notebook 09 uses the same numbers).
+# A press-sized slider-crank in metres and kilograms (notebook 11 uses the same numbers).
 _SC = SliderCrank(0.10, 0.40, 0.0)
 _PHI = np.radians(60.0)
 

@@ -12,7 +12,7 @@ from ...mechanisms.spherical_geneva import SphericalGeneva
 from ...synthesis.geneva import table1_comparison
 from . import Claim, Erratum
 
-NOTEBOOK = "08_geneva_spherical.ipynb"
+NOTEBOOK = "10_geneva_spherical.ipynb"
 _G = SphericalGeneva(40.0, 15.0, 4)  # Table 1's R, e with z = 4
 
 
