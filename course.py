@@ -168,6 +168,40 @@ def copy_file(src: Path, dst: Path) -> None:
             os.unlink(tmp)
 
 
+def topic(key: str) -> str:
+    """A chapter's name without its number: `02_equivalence.ipynb` -> `equivalence.ipynb`."""
+    parent, slash, name = key.rpartition("/")
+    number, _, rest = name.partition("_")
+    return f"{parent}{slash}{rest}" if number.isdigit() and rest else key
+
+
+def renames(gone: set[str], arrived: set[str]) -> dict[str, str]:
+    """{new key: old key} for files that left the course and came back under another number.
+
+    Only a one-to-one match of topic words counts: a topic that two files share is no rename.
+    """
+    def by_topic(keys):
+        found: dict[str, list[str]] = {}
+        for key in keys:
+            if topic(key) != key:
+                found.setdefault(topic(key), []).append(key)
+        return {t: k[0] for t, k in found.items() if len(k) == 1}
+    old, new = by_topic(gone), by_topic(arrived)
+    return {new[t]: old[t] for t in old.keys() & new.keys()}
+
+
+def rename(work: Path, old: str, new: str, copied_hash: str) -> str:
+    """Retire the working copy's `old` now that the course calls the chapter `new`; say what was done."""
+    path = work / old
+    if not path.exists():
+        return f"added {new} (the chapter {old} under its new number)"
+    if digest(path) == copied_hash:
+        path.unlink()
+        return f"renamed {old} to {new} (the chapter's new number; you had not changed it)"
+    return (f"kept {old}: it has your changes; the course now calls this chapter {new}, "
+            f"which holds the course's version (copy your work over, or keep working in {old})")
+
+
 def sync(source: Path, work: Path, today: str | None = None) -> list[str]:
     """Bring the working copy `work` up to date with the course's `source`; return what happened.
 
@@ -180,7 +214,10 @@ def sync(source: Path, work: Path, today: str | None = None) -> list[str]:
     - deleted by the student: restored;
     - changed by the student and by the course: kept, the update beside it;
     - a student's own file with a new chapter's name: kept, the chapter beside it;
-    - removed from the course: deleted if unchanged, kept otherwise.
+    - removed from the course: deleted if unchanged, kept otherwise;
+    - renamed (a chapter's number changes, its topic words stay: `01_equivalence` becomes
+      `02_equivalence`): the new name is added; the old copy is deleted if unchanged, and kept
+      otherwise, with a word on which chapter it now is.
     "Changed" means its bytes differ from those copied, whose hashes `MANIFEST` records.
     """
     today = today or datetime.date.today().isoformat()
@@ -191,15 +228,20 @@ def sync(source: Path, work: Path, today: str | None = None) -> list[str]:
     report = []
     first = not work.exists()
     work.mkdir(parents=True, exist_ok=True)
+    keys = {rel.as_posix() for rel in course_files(source)}
+    renamed = renames(set(copied) - keys, keys - set(copied))
     for rel in course_files(source):
         key, src, dst = rel.as_posix(), source / rel, work / rel
         new = digest(src)
         if not dst.exists():
-            if key in copied and not first:
+            copy_file(src, dst)  # first, so that a failure below leaves both names
+            if key in renamed:
+                report.append(rename(work, renamed[key], key, copied.pop(renamed[key])))
+                offered.pop(renamed[key], None)
+            elif key in copied and not first:
                 report.append(f"restored {key} (it had been deleted)")
             elif not first:
                 report.append(f"added {key} (new in the course)")
-            copy_file(src, dst)
             copied[key] = new
             continue
         mine = digest(dst)

@@ -125,6 +125,46 @@ def test_a_students_own_file_with_a_new_chapters_name_is_kept(repo):
     assert len(list(work.glob("04_d (course update *).ipynb"))) == 1
 
 
+def test_renumbered_chapters_leave_one_copy_each_and_lose_no_edit(repo):
+    """A course update that renumbers the chapters (their topic words stay): an untouched copy moves to
+    the new name, an edited one stays under the old name and the student is told the new one."""
+    work = repo / "my-notebooks"
+    sync(repo)
+    mine = notebook("print('my answer')")
+    (work / "02_b.ipynb").write_text(mine)
+    (work / "03_c.ipynb").unlink()
+    for old, new in (("01_a", "02_a"), ("02_b", "03_b"), ("03_c", "01_c")):
+        git(repo, "mv", f"notebooks/{old}.ipynb", f"notebooks/{new}.ipynb")
+        (repo / "notebooks" / f"{new}.ipynb").write_text(notebook(f"print('{new} v2')"))
+    commit(repo, "chapters renumbered")
+
+    out = sync(repo)
+    assert sorted(p.name for p in work.iterdir()) == [course.MANIFEST, "01_c.ipynb", "02_a.ipynb", "02_b.ipynb",
+                                                      "03_b.ipynb"]
+    assert "renamed 01_a.ipynb to 02_a.ipynb (the chapter's new number; you had not changed it)" in out
+    assert (work / "02_a.ipynb").read_text() == notebook("print('02_a v2')")
+    assert (work / "02_b.ipynb").read_text() == mine
+    assert "kept 02_b.ipynb: it has your changes; the course now calls this chapter 03_b.ipynb" in out
+    assert (work / "03_b.ipynb").read_text() == notebook("print('03_b v2')")
+    assert "added 01_c.ipynb (the chapter 03_c.ipynb under its new number)" in out
+    assert "removed" not in out and git(repo, "status", "--porcelain") == ""
+
+    # the kept copy is the student's own file from now on: later syncs leave it alone and say nothing
+    before = {p.name: p.read_bytes() for p in work.iterdir()}
+    assert "is up to date with the course" in sync(repo)
+    assert {p.name: p.read_bytes() for p in work.iterdir()} == before
+
+
+def test_only_a_one_to_one_match_of_topic_words_is_a_rename():
+    assert course.topic("02_equivalence.ipynb") == "equivalence.ipynb"
+    assert course.topic("data/03_table.csv") == "data/table.csv" and course.topic("README.md") == "README.md"
+    assert course.renames({"01_x.ipynb", "02_y.ipynb"}, {"03_x.ipynb", "04_z.ipynb"}) == {"03_x.ipynb": "01_x.ipynb"}
+    # another folder and a name without a number are other files
+    assert course.renames({"01_x.ipynb"}, {"02_x.ipynb", "sub/03_x.ipynb", "x.ipynb"}) == {"02_x.ipynb": "01_x.ipynb"}
+    # two new chapters with the same topic words: which one the old copy is cannot be told
+    assert course.renames({"01_x.ipynb"}, {"02_x.ipynb", "03_x.ipynb"}) == {}
+
+
 def test_an_interrupted_sync_loses_nothing(repo, monkeypatch):
     """If the copy dies half-way, the file keeps its old content and the next sync completes."""
     work = repo / "my-notebooks"
