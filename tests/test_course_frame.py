@@ -6,6 +6,7 @@ student-facing text names a source by its seed key or points to a figure the pag
 import ast
 import json
 import re
+import sys
 from pathlib import Path
 
 import matplotlib
@@ -19,6 +20,9 @@ from mechlab.draw.machines import MACHINES, schematic  # noqa: E402
 from mechlab.errors import MechanismError  # noqa: E402
 
 ROOT = Path(__file__).parent.parent
+sys.path.insert(0, str(ROOT / "tools"))
+import learning_path  # noqa: E402  (tools/learning_path.py draws the path's picture)
+
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 ASSIGNMENTS = ("getting_started", "equivalence", "base_mechanism", "symmetry", "instant_centres", "dwell_curved_slot",
                "chebyshev_synthesis", "chebyshev_sixbars", "geneva", "geneva_spherical", "forces", "cams",
@@ -100,6 +104,46 @@ def test_the_intro_gives_the_path_with_each_chapters_time():
     assert {k: int(v) for k, v in rows.items()} == {k: v for k, v in times.items() if k in rows}
     assert set(times) == set(rows), "a chapter is missing from the learning path"
     assert f"In all {sum(int(v) for v in rows.values())} minutes" in intro
+
+
+def chapter_numbers(listed: str) -> set[int]:
+    """The intro's "needs" column: "—", "0, 2" or "5, 6, 8–11"."""
+    numbers = set()
+    for part in re.findall(r"\d+(?:–\d+)?", listed):
+        first, _, last = part.partition("–")
+        numbers |= set(range(int(first), int(last or first) + 1))
+    return numbers
+
+
+def test_every_prerequisite_comes_earlier_in_the_path():
+    path = learning_path.chapters(ROOT)
+    assert [c.stem for c in path] == [p.stem for p in CHAPTERS], "the path's order is not the files' order"
+    assert [c.number for c in path] == list(range(len(path))), "one number per chapter, from 0"
+    listed = {stem: chapter_numbers(needs) for *_, stem, _, needs in learning_path.ROW.findall(
+        (ROOT / "book" / "intro.md").read_text())}
+    for c in path:
+        assert c.stem.startswith(f"{c.number:02d}_"), f"{c.stem}: its heading and file name differ"
+        assert all(n < c.number for n in c.needs), f"{c.stem} needs chapters {sorted(c.needs)}: not all earlier"
+        assert listed[c.stem] == c.needs, f"{c.stem}: the intro lists {listed[c.stem]}, the chapter {set(c.needs)}"
+    for path_file in CHAPTERS:  # the heading's number is the file's
+        assert source(cells(path_file)[0]).startswith(f"# {int(path_file.stem[:2])} · "), path_file.name
+
+
+def test_prerequisites_are_read_from_links_before_looking_ahead(tmp_path):
+    frame = ("# 3 · X\n\n## Learning objectives\n\n- a\n\n## Prerequisites\n\n[0 · A](00_a.ipynb) and "
+             "[2 · B](02_b.ipynb#a-section). Looking ahead: [5 · C](05_c.ipynb).\n\n## Time\n\n[1 · D](01_d.ipynb)")
+    (tmp_path / "03_x.ipynb").write_text(json.dumps({"cells": [{"cell_type": "markdown", "source": [frame]}]}))
+    assert learning_path.prerequisites(tmp_path / "03_x.ipynb") == {0, 2}
+    assert chapter_numbers("5, 6, 8–11") == {5, 6, 8, 9, 10, 11} and chapter_numbers("—") == set()
+
+
+def test_the_intro_shows_the_path_drawn_from_the_chapters():
+    """book/figures/learning_path.svg is what `python tools/learning_path.py` draws from the chapters now."""
+    assert "figures/learning_path.svg" in (ROOT / "book" / "intro.md").read_text()
+    path = learning_path.chapters(ROOT)
+    assert learning_path.svg(path) == learning_path.FIGURE.read_bytes(), "run python tools/learning_path.py"
+    where = learning_path.layout(path, learning_path.arrows(path))
+    assert learning_path.through_boxes(where, learning_path.arrows(path)) == 0, "an arrow runs through a box"
 
 
 def figure_problems(text: str, shown: str) -> list[str]:
