@@ -6,7 +6,8 @@ screen-printing machine, ...); the machine around it is sketched with plain line
 machines are those the sources name where they name one: multi-station machines for the
 offset Geneva (Vainer & Shatokhina), screen-printing machines and the nail-making
 automata of forging-press works for the Chebyshev six-bars (Kinitsky, 1994); otherwise
-well-known ones (a film projector's Geneva, a loom's sley, a cartoning line's pusher).
+well-known ones (a film projector's Geneva, a loom's sley, a cartoning line's pusher on a
+curved-slot link or on a disc cam).
 
 ``schematic(name)`` returns the Figure; :data:`MACHINES` lists the names. ``label_joints``
 writes the joint letters into any mechlab drawing.
@@ -19,9 +20,11 @@ import numpy as np
 from matplotlib.patches import Circle, FancyBboxPatch, Polygon, Rectangle
 
 from ..errors import MechanismError
+from ..mechanisms.cam import TranslatingRollerCam
 from ..mechanisms.fourbar import FourBar
 from ..mechanisms.geneva import ExternalGeneva
 from ..mechanisms.slider_crank import SliderCrank
+from ..synthesis.cam_design import CamProgramme
 from . import LINK_STYLE, draw
 
 MACHINE_STYLE = dict(color="#555555", lw=1.5, zorder=1)
@@ -281,6 +284,47 @@ def packaging_line(ax=None):
     return ax.figure
 
 
+def cartoning_cam(ax=None):
+    """The cartoning line's pusher on a disc cam: the cam of chapter 7's pusher (3-4-5 polynomial
+    rise of 20 mm over 120°, outer dwell 40°, return 100°; base radius 40 mm, roller 10 mm, offset
+    8 mm) lifts a carton from the incoming belt to the take-over level and holds it there."""
+
+    ax = _axes(ax, (9, 7))
+    programme = CamProgramme(stroke=20.0, rise=120 * DEG, ret=100 * DEG, outer_dwell=40 * DEG,
+                             law="3-4-5 polynomial")
+    cam = TranslatingRollerCam(programme, base_radius=40.0, roller_radius=10.0, offset=8.0)
+    phi = 140 * DEG                                        # in the outer dwell: the carton is held up
+    draw(cam, phi, ax=ax, labels=False, ground=False)
+    pts, _ = _frame_points(cam, phi)
+    _letters(ax, pts, "OC", (4.0, 3.0))
+    _ground(ax, pts["O"] + (0, -6.0), 9.0)
+    O, C = pts["O"], pts["C"]
+    reach = 55.0                                           # from the roller's centre to the pusher's plate
+    plate = C + (0.0, reach)
+    ax.plot(*np.array([C, plate]).T, **LINK_STYLE)
+    ax.plot([plate[0] - 20, plate[0] + 20], [plate[1], plate[1]], color="#1f4e79", lw=6, solid_capstyle="butt",
+            zorder=3)
+    low, high = cam.s0 + reach, cam.s0 + programme.stroke + reach      # the plate down and up
+    ax.add_patch(Rectangle((plate[0] - 15, plate[1]), 30, 30, **WORK_FILL))
+    ax.add_patch(FancyBboxPatch((plate[0] - 150, low - 8), 125, 6, boxstyle="round,pad=1", **PART_FILL))
+    for x in (plate[0] - 135, plate[0] - 95, plate[0] - 55):
+        ax.add_patch(Rectangle((x, low - 2), 30, 30, **WORK_FILL))
+    ax.add_patch(FancyBboxPatch((plate[0] + 25, high - 8), 125, 6, boxstyle="round,pad=1", **PART_FILL))
+    head = np.array([plate[0] + 75, high + 62])
+    ax.add_patch(Polygon([head + (-14, 14), head + (14, 14), head + (4, -14), head + (-4, -14)], **PART_FILL))
+    ax.add_patch(Rectangle((plate[0] + 60, high - 2), 30, 30, **WORK_FILL))
+    _label(ax, "disc cam on the line's shaft O:\none turn per carton", O + (-30.0, -30.0), O + (-95.0, -45.0))
+    _label(ax, "roller, centre C", C + (10.0, 0.0), C + (75.0, -30.0))
+    _label(ax, "pusher stem in its guide", (C + plate) / 2 + (-3.0, -5.0), (C + plate) / 2 + (-110.0, -5.0))
+    _label(ax, f"pusher: lifts the carton {programme.stroke:g} mm,\nholds it while it is taken over",
+           plate + (20.0, 0.0), plate + (95.0, -45.0))
+    _label(ax, "cartons arrive", (plate[0] - 110, low + 28), (plate[0] - 110, low + 55))
+    _label(ax, "filling head", head + (14, 0), head + (70, 10))
+    _fit(ax)
+    ax.set_title("Cartoning line: a disc cam lifts the pusher, holds it, and brings it back")
+    return ax.figure
+
+
 def loom(ax=None):
     """A loom's sley drive: a crank-rocker four-bar swings the sley, whose reed beats each
     weft thread into the cloth."""
@@ -312,7 +356,8 @@ def loom(ax=None):
 
 
 MACHINES = {"film_projector": film_projector, "indexing_table": indexing_table, "screen_printing": screen_printing,
-            "forging_press": forging_press, "packaging_line": packaging_line, "loom": loom}
+            "forging_press": forging_press, "packaging_line": packaging_line, "cartoning_cam": cartoning_cam,
+            "loom": loom}
 
 
 def schematic(name: str, ax=None):
@@ -322,7 +367,7 @@ def schematic(name: str, ax=None):
     ----------
     name : one of :data:`MACHINES`: ``"indexing_table"``, ``"film_projector"`` (Geneva drives),
         ``"screen_printing"`` (Chebyshev six-bar), ``"forging_press"`` (slider-crank),
-        ``"packaging_line"`` (curved-slot dwell), ``"loom"`` (four-bar).
+        ``"packaging_line"`` (curved-slot dwell), ``"cartoning_cam"`` (disc cam), ``"loom"`` (four-bar).
     ax : matplotlib axes to draw on; a new figure when None.
     """
     if name not in MACHINES:

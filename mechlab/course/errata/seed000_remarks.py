@@ -72,7 +72,7 @@ ERRATA = [
             correct=r"$\theta \to \pi/2$ as $\varphi_1 \to 0$ or $\varphi_2 \to \pi$ "
                     r"(with $\psi_1 = \psi_K(\varphi_1)$)",
             check=_pressure_limits, notebook=NB05, kind="remark"),
-    Erratum(source="000", where="§3, two-branch slot (Fig. 10): velocity jump",
+    Erratum(source="000", where="§3, the drawing of the two-branch slot: velocity jump",
             printed=r"the jump of $\psi'$ at φ = 0 is $2\lambda\omega_1/(\lambda+1)$",
             correct=r"$2(\psi_K'(0) - \psi'(0^+))\,\omega_1$; it is $2\lambda\omega_1/(\lambda+1)$ only when the "
                     r"link rests as the pin passes E (a dwell arc through E, φ1 = 0)",

@@ -171,9 +171,9 @@ def _whole_turn():
 
 
 ERRATA = [
-    Erratum("001", "text before Fig. 1 (full rotation)", "$l_{OA} < l$ and $l_{OC} + l_{OA} < 2l$",
-            "also $r < a$ (line PX of Fig. 2a): otherwise the frame is the shortest link and the base "
-            "four-bar is a double crank", _rotation, NB06, kind="remark"),
+    Erratum("001", "the opening, condition for the crank's full rotation", "$l_{OA} < l$ and $l_{OC} + l_{OA} < 2l$",
+            "also $r < a$ (line PX of the existence map in the (r, a) plane): otherwise the frame is the "
+            "shortest link and the base four-bar is a double crank", _rotation, NB06, kind="remark"),
     Erratum("001", "formulas (2)-(11)", "illegible in the OCR (only (1), (5), (11), (13)-(15) readable)",
             "re-derived: B is the circumcentre of A, C, D, so $|CA| = 2\\sin(\\mu/2)$, "
             "$|CD| = 2\\sin((\\delta-\\mu)/2)$, $\\angle ACD = \\pi - \\delta/2$; synthesis by equal ripple",
@@ -204,7 +204,7 @@ ERRATA = [
             "180°: nearly, with a ≈ 1.12 (2.7 %, B 3 % high); 240°: undecodable — no a within ±0.2 comes closer "
             "than 7.6 % (a wider search over K 0.9–1.1, β_m 15–25° and both sides of F: 6.1 % at best)",
             _rows_125, NB07, kind="unreadable"),
-    Erratum("001", "text before (12), boundary 2 (lines KU and AP of Fig. 2a)",
+    Erratum("001", "text before (12), boundary 2 of the existence map (its lines KU and AP)",
             "two lines where the whole coupler curve is near a circle, α = π",
             "computed: one line per δ, from A = (0, 2 sin(δ/4)) on the fifth-order line to the rotation limit; "
             "for a < 1 the 360° limit is r = a itself (which letters are which is not decodable)",

@@ -74,13 +74,13 @@ def _meet(P, Q, R, S):
 
 ERRATA = [
     Erratum(
-        source="002", where="§7.2, formula (7.11) (elliptic trammel, Fig. 7.5)",
+        source="002", where="§7.2, formula (7.11) (the elliptic trammel's drawing)",
         printed=r"$y = \frac{BC}{\sin\beta} = \frac{l_{AB}\cos(\beta-\alpha)}{\sin\beta}$",
         correct=r"$y = \frac{l_{AB}\cos\alpha}{\sin\beta}$ (the α of (7.10), (7.13), (7.14)); only then "
                 r"(7.10)² + (7.11)² gives (7.12)",
         check=_trammel_y_coordinate, notebook=NOTEBOOK),
     Erratum(
-        source="002", where="§7.2, text on Fig. 7.7 (antiparallelogram)",
+        source="002", where="§7.2, text on the antiparallelogram's drawing",
         printed="the centre of links 2 and 4 lies at the intersection of lines AB and BC",
         correct="… of the lines of links 1 and 3 (AB and CD for the loop A-B-C-D): lines AB and BC only "
                 "meet at the joint B",

@@ -111,7 +111,7 @@ ERRATA = [
             printed=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}4} \mu_l - M_{\text{И}2})/l_2$",
             correct=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}2} \mu_l - M_{\text{И}2})/l_2$ (the arm of the rod's own inertia force, as in the moment equation above it)",
             check=_check_rod_tangential, notebook=NOTEBOOK),
-    Erratum(source="003", where="slider-crank with an additional link, leading link (Fig. 5), moment equation about B",
+    Erratum(source="003", where="slider-crank with an additional link, the drawing of the leading link, moment equation about B",
             printed=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l$",
             correct=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l \pm F_{\text{И}1} h_{\text{И}1} \mu_l \pm M_{\text{И}1}$: the inertia force that the force equation includes also has a moment about B (zero only if ε1 = 0 and the centre of mass is on OB)",
             check=_check_crank_moment, notebook=NOTEBOOK),
