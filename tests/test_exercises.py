@@ -199,7 +199,7 @@ def _notebooks():
 def test_every_chapter_has_an_assignment_of_four_exercises_of_three_kinds():
     ids = {p.stem for p in _notebooks()}
     pointed = {m for nb in (SOURCE.parents[1] / "notebooks").glob("*.ipynb")
-               for m in re.findall(r"assignments/source/(\w+)/", nb.read_text())}
+               for m in re.findall(r"assignments/release/(\w+)/", nb.read_text())}
     assert pointed <= ids and len(ids) >= 11, pointed - ids      # every chapter's pointer has its assignment
     for path in _notebooks():
         nb = json.loads(path.read_text())
