@@ -285,3 +285,39 @@ def test_errata_name_their_places_in_words():
     assert not SEED.search(page), SEED.search(page)
     assert figure_problems(page, "") == [], "the errata page names a source's figure it does not show"
     assert figure_problems(visible_html('<a href="x.html#fig-2">§3, Fig. 2a</a>'), "") == ["Fig. 2"]
+
+
+# -- widgets that ask -------------------------------------------------------------------------------------------
+def explorer_names() -> set[str]:
+    """The widget functions a notebook calls to show an explorer: every public one taking ``question``."""
+    names = set()
+    for path in sorted((ROOT / "mechlab" / "widgets").glob("*.py")):
+        for node in ast.parse(path.read_text()).body:
+            if (isinstance(node, ast.FunctionDef) and not node.name.startswith("_")
+                    and any(a.arg in ("question", "kwargs") for a in node.args.kwonlyargs + [node.args.kwarg]
+                            if a is not None)):
+                names.add(node.name)
+    return names
+
+
+def unasked_explorers(code: str, names: set[str]) -> list[str]:
+    """Calls of an explorer in ``code`` that pass no ``question=``."""
+    calls = [n for n in ast.walk(ast.parse(code)) if isinstance(n, ast.Call)]
+    called = [(getattr(n.func, "id", None) or getattr(n.func, "attr", None), n) for n in calls]
+    return [name for name, n in called if name in names and not any(k.arg == "question" for k in n.keywords)]
+
+
+def test_every_explorer_is_known():
+    names = explorer_names()
+    assert {"fourbar_explorer", "cam_explorer", "dwell_explorer", "press_explorer", "choosing_explorer",
+            "fourbar_equivalence", "spherical_geneva_explorer"} <= names, names
+    assert unasked_explorers("w = fourbar_explorer(crank=1)\nml.widgets.cam_explorer(question='q?')", names) == [
+        "fourbar_explorer"]
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_every_explorer_asks_a_question(path):
+    names = explorer_names()
+    shown = [source(c) for c in cells(path) if c["cell_type"] == "code" and not source(c).startswith("%")]
+    unasked = [name for code in shown for name in unasked_explorers(code, names)]
+    assert not unasked, f"{path.name}: explorers without question=: {unasked}"
