@@ -287,6 +287,63 @@ def test_errata_name_their_places_in_words():
     assert figure_problems(visible_html('<a href="x.html#fig-2">§3, Fig. 2a</a>'), "") == ["Fig. 2"]
 
 
+# -- numbers in the prose come from the computation -----------------------------------------------------------
+PROSE_NUMBER = re.compile(r"(?<![\w.§^_{\-–])(\d+\.\d+|\d+(?=\s*°))(?![\d–])")
+DEFINITIONS = {0.0, 90.0, 180.0, 360.0}     # a right angle, half and whole turns: definitions, not results
+QUOTED = re.compile(r"\bprinted\b(?:[^.]|\.\d){0,45}$")     # a source's printed value, in the same sentence
+# inputs that the prose states and no code literal sets, per chapter (the file name after its number)
+STATED = {
+    "getting_started": {"50": "the limit 40° stated as a pressure angle, 90° − 40°",
+                        "30": "Kinitsky's (1994) limit, quoted"},
+    "dwell_curved_slot": {"45": "the pressure-angle limit the explorer's question sets"},
+    "chebyshev_dwell_synthesis": {"2.5": "Chebyshev's proportions 1 : 2 : 2.5 : 5, quoted",
+                                  "40": "the course's transmission-angle limit"},
+    "chebyshev_dwell_sixbars": {"0.4": "the crank of Chebyshev's lambda, a given design",
+                                "250": "the dwell of two rows of Kinitsky's (1994) table, quoted"},
+}
+
+
+def code_literals(code: str) -> set[float]:
+    """The numbers the code sets: the inputs a sentence may repeat."""
+    values = set()
+    for node in ast.walk(ast.parse(code)):
+        if isinstance(node, ast.Constant) and type(node.value) in (int, float):
+            values.add(float(node.value))
+    return values
+
+
+def typed_results(prose: str, code: str) -> list[str]:
+    """Decimals and angles in ``prose`` that the code does not set: results typed into the text.
+
+    Inline code, link addresses, formula and section numbers ((7.8), §7.1) and values quoted from a
+    source ("the printed 53.15°") are not results; a right angle, a half and a whole turn are definitions.
+    """
+    inputs = code_literals(code) | DEFINITIONS
+    prose = re.sub(r"`[^`]*`", "", visible_markdown(prose))
+    prose = re.sub(r"\((?:\d+(?:\.\d+)?[a-z]?(?:,\s*|\s*[–-]\s*)?)+\)", "", prose)   # formulas (7.8, 7.9)
+    prose = re.sub(r"\(\d+\.\d+(?=,)", "(", prose)                                  # (7.6, the pole ...)
+    return [m.group(0) for m in PROSE_NUMBER.finditer(prose)
+            if float(m.group(1)) not in inputs and not QUOTED.search(prose[:m.start()])]
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_numbers_in_the_prose_come_from_the_computation(path):
+    cs = cells(path)
+    code = "\n".join(source(c) for c in cs if c["cell_type"] == "code" and not source(c).startswith("%"))
+    stated = STATED.get(path.stem.split("_", 1)[1], {})
+    typed = {c["id"]: [v for v in typed_results(source(c), code) if v not in stated]
+             for c in cs if c["cell_type"] == "markdown"}
+    assert not {k: v for k, v in typed.items() if v}, f"{path.name}: results typed into the text"
+
+
+def test_the_scan_would_see_a_typed_result():
+    code = "lam = 0.5\nphi = np.radians(60)\n"
+    assert typed_results("the reactions peak near φ = 270°, with C = 5.77.", code) == ["270", "5.77"]
+    assert typed_results("λ = 0.5 and φ1 = 60°; a half turn is 180° (7.8, 7.9), §7.1", code) == []
+    assert typed_results("the printed 53.15°, $\\beta = 24.85°$ and\n 41.60 are off; `127.0.0.1`", code) == []
+    assert typed_results("(7.6, the pole) rounds to 0.45. The printed 0.46 is off. It misses by 0.01.", code) == ["0.45", "0.01"]
+
+
 # -- widgets that ask -------------------------------------------------------------------------------------------
 def explorer_names() -> set[str]:
     """The widget functions a notebook calls to show an explorer: every public one taking ``question``."""
