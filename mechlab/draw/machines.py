@@ -296,7 +296,7 @@ def cartoning_cam(ax=None):
     phi = 140 * DEG                                        # in the outer dwell: the carton is held up
     draw(cam, phi, ax=ax, labels=False, ground=False)
     pts, _ = _frame_points(cam, phi)
-    _letters(ax, pts, "OC", (4.0, 3.0))
+    _letters(ax, pts, "OC", (12.0, -3.0))          # right of the stem and the pivot
     _ground(ax, pts["O"] + (0, -6.0), 9.0)
     O, C = pts["O"], pts["C"]
     reach = 55.0                                           # from the roller's centre to the pusher's plate
