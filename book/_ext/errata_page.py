@@ -102,7 +102,7 @@ def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = 
             continue
         out += [f"## {title[0].upper()}{title[1:]} ({len(mine)})", ""]
         for key in sorted({e.source for e in mine}):
-            out += [f'**Source <a href="references.html#seed-{key}">{key}</a>: {SOURCES[key]}**', ""]
+            out += [f'**<a href="references.html#seed-{key}">{SOURCES[key]}</a>**', ""]
             for e in (e for e in mine if e.source == key):
                 evidence = e.evidence()
                 out += [f"- **{_inline(e.where)}** — shown in {chapter_link(e.notebook, notebooks_dir, prefix)}",
