@@ -237,8 +237,9 @@ def test_drawing_moves_artists_in_place(make):
         anim._func(i)
         # the roller is drawn about C, touching the profile at K; the profile turns with the cam
         C, K = d.motion.points["C"].p[i], d.motion.points["K"].p[i]
-        assert np.allclose(np.hypot(*(np.column_stack(d._roller.get_data()) - C).T), cam.roller_radius)
-        assert np.min(np.hypot(*(np.column_stack(d._cam_line.get_data()) - K).T)) < 0.02 * cam.base_radius
+        roller, profile = d.lines_of("roller")[0], d.lines_of("profile")[0]
+        assert np.allclose(np.hypot(*(np.column_stack(roller.get_data()) - C).T), cam.roller_radius)
+        assert np.min(np.hypot(*(np.column_stack(profile.get_data()) - K).T)) < 0.02 * cam.base_radius
     assert len(d.ax.get_children()) == children
     assert "mechlab-play" in anim.to_jshtml()
     x0, x1, y0, y1 = draw(cam, 0.3).bounds()

@@ -141,7 +141,7 @@ def test_drawings_move_in_place(guide):
     ax.clear()
     d = drawing_class(six)(ax, six, n=12)
     plt.close(fig)
-    inside = [np.isfinite(d.extras(i)[1]).all() for i in range(12)]
+    inside = [np.isfinite(d.extras(i)[-1]).all() for i in range(12)]   # the highlight, drawn last
     phi = d.motion.phi
     assert inside == [abs((p - np.pi + np.pi) % (2 * np.pi) - np.pi) <= guide.alpha for p in phi]
 

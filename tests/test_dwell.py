@@ -267,25 +267,23 @@ def test_drawing_moves_slot_with_link():
     import matplotlib.pyplot as plt
 
     from mechlab.draw import animate, drawing_class
-    from mechlab.draw.dwell import DwellDrawing
 
     m = curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic", roller_radius=0.05)
     fig, ax = plt.subplots()
     d = drawing_class(m)(ax, m, n=24)
-    assert isinstance(d, DwellDrawing)
     n_artists = len(ax.get_children())
     for i in range(24):
         d.set_frame(i)
         # the pin lies on the drawn slot centre line (to the drawing's sampling)
         A = d.motion.points["A"].p[i]
-        line = np.array(d._slot_line.get_data()).T
+        line = np.array(d.lines_of("slot centre")[0].get_data()).T
         assert np.hypot(*(line - A).T).min() < 0.02
-        assert (d._label.get_text() == "dwell") == bool(m.law.in_dwell(d.motion.phi[i:i + 1])[0])
+        assert (d.note.get_text() == "dwell") == bool(m.law.in_dwell(d.motion.phi[i:i + 1])[0])
     assert len(ax.get_children()) == n_artists
     plt.close(fig)
     fig, ax = plt.subplots(figsize=(2, 2), dpi=40)
     anim = animate(m, n=4, ax=ax)
-    assert isinstance(anim.drawing, DwellDrawing) and "<script" in anim.to_jshtml()
+    assert anim.drawing.lines_of("dwell") and "<script" in anim.to_jshtml()
 
 
 def test_widget_shows_errors_and_recovers():

@@ -124,7 +124,7 @@ from mechlab.mechanisms.sixbar_iv import example
 
 
 def _slot_distance_to_pin(drawing, i):
-    slot = np.stack(drawing._slot_line.get_data(), -1)
+    slot = np.stack(drawing.lines_of("slot")[0].get_data(), -1)
     pin = drawing.motion.points["A"].p[i]
     return np.min(np.hypot(*(slot - pin).T))
 
@@ -141,7 +141,7 @@ def test_drawings_move_the_slot_with_the_link(mech):
     ids = [id(a) for a in d.artists]
     for i in range(0, 61, 10):
         d.set_frame(i)
-        if hasattr(d, "_slot_line"):
+        if d.lines_of("slot"):
             # the slot drawn at frame i passes through the pin (to the polyline's resolution)
             assert _slot_distance_to_pin(d, i) < 0.02
     assert [id(a) for a in d.artists] == ids

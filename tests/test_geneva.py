@@ -458,8 +458,8 @@ def test_planar_drawing_matches_the_motion():
     import matplotlib.pyplot as plt
 
     from mechlab.draw import drawing_class
-    from mechlab.draw.geneva import PlanarGenevaDrawing, wheel_outline
     from mechlab.geometry import wrap
+    from mechlab.mechanisms.geneva import wheel_outline
 
     for g in (ExternalGeneva(5, 100.0), InternalGeneva(6, 100.0)):
         inner, outer = wheel_outline(g)
@@ -475,7 +475,7 @@ def test_planar_drawing_matches_the_motion():
         fig, ax = plt.subplots()
         d = drawing_class(g)(ax, g, n=24)
         d.autoscale()
-        assert isinstance(d, PlanarGenevaDrawing)
+        assert len(d.lines_of("wheel")) == 2
         n_art = len(d.artists)
         for i in range(24):
             assert len(d.set_frame(i)) == n_art
@@ -490,9 +490,11 @@ def test_planar_drawing_matches_the_motion():
     # the locking disc faces the wheel during the dwell, its relief during the motion
     g = ExternalGeneva(4, 100.0)
     fig, ax = plt.subplots()
-    d = PlanarGenevaDrawing(ax, g, n=37)
+    d = drawing_class(g)(ax, g, n=37)
+    lock_line = d.lines_of("lock")[0]
     for i, phi in enumerate(d.motion.phi):
-        lock = d.extras(i)[2]
+        d.set_frame(i)
+        lock = np.column_stack(lock_line.get_data())
         toward_w = np.any(np.abs(np.arctan2(lock[:, 1], lock[:, 0])) < np.radians(6))
         assert toward_w == (not g.engaged(phi)[0]) or abs(abs(phi - np.pi) - g.engagement_half_angle) < 0.2
     plt.close(fig)

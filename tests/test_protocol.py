@@ -1,14 +1,16 @@
 """One extension protocol: a mechanism describes its links, pairs and groups once (``structure()``);
-the instantaneous centres and the kinetostatics derive from that description, so a new family needs no
-registration. Checked on the cams and on a family written here, in the test."""
+the instantaneous centres, the kinetostatics and the drawing derive from that description, so a new
+family needs no registration. Checked on the cams and on a family written here, in the test."""
 
 from dataclasses import dataclass
 
+import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
 import mechlab as ml
 from mechlab.analysis.centres import instant_centres
+from mechlab.draw import LinkageDrawing, animate, draw, drawing_class
 from mechlab.geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point
 from mechlab.kinetostatics.model import Force, Torque, model_for
 from mechlab.kinetostatics.solve import solve
@@ -133,3 +135,41 @@ def test_a_block_needs_a_pin_and_a_slide():
     with pytest.raises(ml.MechanismError, match="block block must carry one revolute and one prismatic pair, "
                                                 "not revolute, revolute"):
         instant_centres(BadYoke(0.3), [0.1, 0.2])
+
+
+@pytest.mark.parametrize("gamma", [45 * DEG, 120 * DEG])
+def test_a_new_family_draws_and_animates_from_its_structure(gamma):
+    # the yoke is drawn from the structure's pairs: its slot through the pin at γ to the guide, its rod
+    # along the guide from K; numbered after the crank, the frame last
+    mech = SkewYoke(0.3, gamma)
+    anim = animate(mech, n=8)
+    d = anim.drawing
+    assert drawing_class(mech) is LinkageDrawing and isinstance(d, LinkageDrawing)
+    slot_dir = np.array([np.cos(gamma), np.sin(gamma)])
+    for i in range(8):
+        anim._func(i)
+        yoke = np.column_stack(d.extra_lines[0].get_data())
+        A, K = d.motion.points["A"].p[i], d.motion.points["K"].p[i]
+        along = yoke[1] - yoke[0]
+        assert abs(along[0] * slot_dir[1] - along[1] * slot_dir[0]) < 1e-12   # the slot at γ
+        w = A - yoke[0]
+        assert abs(along[0] * w[1] - along[1] * w[0]) < 1e-12 * np.hypot(*along)   # through the pin
+        assert np.allclose(yoke[2], K) and abs(yoke[3, 1] - K[1]) < 1e-15   # the rod along the guide
+        assert np.allclose(d.letters["K"].xy, K)
+    assert [t.get_text() for t in d.numbers if t.get_visible()] == ["1", "2", "3"]
+    assert "mechlab-play" in anim.to_jshtml()
+    plt.close("all")
+
+
+def test_a_family_without_structure_draws_its_bars():
+    class Bars(Mechanism):
+        links = (("O", "A"), ("A", "B"), ("B", "E"))
+        pivots = ("O", "E")
+
+        def motion(self, phi):
+            return ml.FourBar(1, 3, 3, 4).motion(phi)
+
+    d = draw(Bars(), 0.5)
+    assert len(d.link_lines) == 3 and d.extra_lines == []
+    assert np.allclose(np.column_stack(d.link_lines[1].get_data()), [d.motion.points[k].p[0] for k in "AB"])
+    plt.close("all")

@@ -52,6 +52,7 @@ import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, perp, wrap
 from ..mechanisms.base import FULL_TURN, AnyMechanism, Mechanism
+from ..mechanisms.curved_slot import slot_sketch
 from ..mechanisms.slotted import SineMechanism, SlottedLink
 from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import Angles, validated
@@ -145,6 +146,10 @@ class EquivalentSlot(Mechanism):
     def slot_samples(self, n: int = 200) -> np.ndarray:
         """Points of the slot's working part in the output link's frame (the linkage's convention)."""
         return self.slot_mechanism.slot_samples(n)
+
+    def sketch(self, motion):
+        """The crank, the slot turning with the output link about E (or moving with it), and its arm."""
+        return slot_sketch(self, motion, "E")
 
     def motion(self, phi):
         """The twin's motion at the linkage's crank angles φ, in the linkage's frame."""

@@ -10,16 +10,14 @@ centres), fixed pivots on hatched supports, and, on request, link lengths; all o
 them move in place with the frame. :func:`animate` turns a drawing into a
 ``FuncAnimation`` whose ``to_jshtml()`` plays in a static page: at least
 :data:`MIN_WIDTH_PX` wide, with palette-quantised PNG frames so that a page stays
-small. Other mechanism families register their own drawing classes in modules of
-this package with :func:`register`.
+small. What is drawn comes from the mechanism's ``sketch()`` (its links, pairs and the parts a
+family adds); no family registers a drawing.
 """
 
 from __future__ import annotations
 
 import base64
-import importlib
 import io
-import pkgutil
 import re
 from pathlib import Path
 from tempfile import TemporaryDirectory
@@ -30,10 +28,7 @@ from matplotlib.animation import FuncAnimation, HTMLWriter
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from PIL import Image
 
-from ..mechanisms.fourbar import FourBar
 from ..mechanisms.base import Mechanism
-from ..mechanisms.slotted import SineMechanism, SlottedLink
-from ..mechanisms.slider_crank import SliderCrank
 from ..motion import Motion
 
 LINK_STYLE = dict(color="#1f4e79", lw=3, solid_capstyle="round", zorder=3)
@@ -56,8 +51,6 @@ EXTRA_STYLE = dict(color="#2a7f62", lw=2.5, zorder=2)
 OUTPUT_STYLE = dict(color="#1f4e79", lw=2, solid_capstyle="round", zorder=3)
 GUIDE_STYLE = dict(color="#555555", lw=1.5, zorder=2)
 HIGHLIGHT_STYLE = dict(color="#2a7f62", lw=4.5, alpha=0.9, solid_capstyle="round", zorder=5)
-
-_REGISTRY: dict[type, type] = {}
 
 # matplotlib's to_jshtml() links Font Awesome from a CDN for its buttons; the course loads
 # nothing from another host, so the link goes and the icons become Unicode glyphs.
@@ -164,47 +157,47 @@ class Animation(FuncAnimation):
             fig.set_canvas(own_canvas)
 
 
-def register(mechanism_type: type):
-    """Class decorator: use this drawing class for ``mechanism_type``."""
-    def deco(cls):
-        _REGISTRY[mechanism_type] = cls
-        return cls
-    return deco
-
-
 def drawing_class(mechanism) -> type:
-    """The drawing class registered for a mechanism (searching this package's modules)."""
-    def registered():
-        return next((_REGISTRY[k] for k in type(mechanism).__mro__ if k in _REGISTRY), None)
+    """The drawing of an object: a force plan for a :class:`mechlab.kinetostatics.Kinetostatics`, a 3-D
+    view for a ``spatial`` mechanism, else the one :class:`LinkageDrawing`, which draws what the
+    mechanism's ``sketch()`` describes (no family is registered anywhere)."""
+    from ..kinetostatics.machines import Kinetostatics
 
-    found = registered()
-    # the family modules register on import: load them one by one until one serves
-    for info in pkgutil.iter_modules(__path__):
-        if found is not None:
-            return found
-        importlib.import_module(f"{__name__}.{info.name}")
-        found = registered()
-    if found is None:
-        raise TypeError(f"no drawing registered for {type(mechanism).__name__}")
-    return found
+    if isinstance(mechanism, Kinetostatics):
+        from .forces import ForcePlanDrawing
+        return ForcePlanDrawing
+    if getattr(mechanism, "spatial", False):   # the one spatial family, the spherical Geneva
+        from .geneva import SphericalGenevaDrawing
+        return SphericalGenevaDrawing
+    return LinkageDrawing
+
+
+# the style of each role a mechanism's sketch names (mechlab.mechanisms.base.Part)
+ROLE_STYLES = {
+    "link": LINK_STYLE, "extra": EXTRA_STYLE, "output": OUTPUT_STYLE, "guide": GUIDE_STYLE,
+    "highlight": HIGHLIGHT_STYLE, "anchor": dict(visible=False),
+    "slot": dict(color="#2a7f62", lw=5, alpha=0.45, solid_capstyle="round", zorder=2),
+    "slot centre": dict(color="#2a7f62", lw=2, zorder=2), "dwell": dict(color="#e08214", lw=3.5, zorder=2.5),
+    "flank": dict(color="#777777", lw=0.8, zorder=1.5), "arm": dict(EXTRA_STYLE, lw=4, alpha=0.5),
+    "wheel": dict(color="#2a7f62", lw=1.6, zorder=2), "lock": dict(color="#b8860b", lw=2.2, zorder=2),
+    "profile": dict(color="#2a7f62", lw=2, zorder=2), "fill": dict(color="#2a7f62", alpha=0.15, lw=0, zorder=1),
+    "base circle": dict(color="#2a7f62", lw=0.8, ls="--", zorder=1.5),
+    "roller": dict(color="#1f4e79", lw=1.5, zorder=4), "normal": dict(color="#d62728", lw=1, ls=":", zorder=3.5),
+}
+NOTE_STYLE = dict(va="top", color="#e08214", fontweight="bold")
 
 
 class LinkageDrawing:
-    """A labelled kinematic diagram: links, joints, hatched fixed pivots, joint letters,
-    link numbers, an optional traced point, per-family extras and optional link lengths.
+    """A labelled kinematic diagram of what ``mechanism.sketch(motion)`` describes: bars, the parts a
+    family adds (guides, blocks, slots, wheels, cam profiles, each styled by its role), joints, hatched
+    fixed pivots, joint letters, link numbers, an optional traced point and optional link lengths.
 
-    Parameters: ``ax`` the axes; ``mechanism`` a single-loop mechanism; ``trace`` the
-    name of a joint whose path over the cycle is drawn; ``labels`` joint letters and
-    link numbers (on by default); ``ground`` the hatched supports of the fixed pivots (on
-    by default); ``dimensions`` each link's length beside it; ``readout`` the crank angle
-    φ in degrees above the axes. Every artist is made once and moved by :meth:`set_frame`.
+    Parameters: ``ax`` the axes; ``mechanism`` a mechanism; ``trace`` the name of a joint whose path
+    over the cycle is drawn; ``labels`` joint letters and link numbers (on by default); ``ground`` the
+    hatched supports of the fixed pivots (on by default); ``dimensions`` each bar's length beside it;
+    ``readout`` the crank angle φ in degrees above the axes. Every artist is made once and moved by
+    :meth:`set_frame`; a mechanism of another family re-uses and re-styles them.
     """
-
-    n_extras = 0
-    extra_styles: dict[int, dict] = {}  # the style of extra k when it is not EXTRA_STYLE
-    numbered_extras: tuple[int, ...] = ()  # extras that are moving links, numbered after the links
-    link_numbers: tuple[str | None, ...] | None = None  # per link of ``mechanism.links``; None: 1, 2, …
-    frame_number: str | None = None  # None: the number after the last moving link
 
     def __init__(self, ax, mechanism: Mechanism, trace: str | None = None, n: int = 361, *, labels: bool = True,
                  ground: bool = True, dimensions: bool = False, readout: bool = False):
@@ -213,8 +206,10 @@ class LinkageDrawing:
         self.n = n
         self.show_labels, self.show_ground, self.show_dimensions = labels, ground, dimensions
         ax.set_aspect("equal")
-        self.link_lines = []
-        self.extra_lines = [ax.plot([], [], **self.extra_styles.get(k, EXTRA_STYLE))[0] for k in range(self.n_extras)]
+        self.link_lines = []     # one per bar of the sketch
+        self.extra_lines = []    # one per other polyline part, styled by its role
+        self.fills = []          # filled outlines (a cam's body)
+        self.note = None         # a text in the corner ("dwell")
         (self.trace_line,) = ax.plot([], [], **TRACE_STYLE)
         (self.ground_line,) = ax.plot([], [], **GROUND_STYLE)
         (self.pivot_marks,) = ax.plot([], [], **PIVOT_STYLE)
@@ -226,6 +221,7 @@ class LinkageDrawing:
         self.readout = ax.text(1.0, 1.01, "", transform=ax.transAxes, **READOUT_STYLE) if readout else None
         self.mechanism = None
         self.motion = None
+        self.sketch = None
         self.set_mechanism(mechanism)
 
     # -- binding -------------------------------------------------------------------
@@ -236,11 +232,13 @@ class LinkageDrawing:
 
     def set_motion(self, mechanism: Mechanism, motion: Motion) -> Motion:
         self.mechanism, self.motion = mechanism, motion
-        links = mechanism.links
-        while len(self.link_lines) < len(links):
-            self.link_lines.append(self.ax.plot([], [], **LINK_STYLE)[0])
-        for extra in self.link_lines[len(links):]:
-            extra.set_data([], [])
+        self.sketch = mechanism.sketch(motion)
+        parts = self.sketch.parts
+        self.bars = [p for p in parts if isinstance(p.at, tuple)]
+        self.drawn = [p for p in parts if not isinstance(p.at, tuple) and p.role not in ("fill", "note")]
+        self.filled = [p for p in parts if p.role == "fill"]
+        self.noted = [p for p in parts if p.role == "note"]
+        self._make_artists()
         if self.trace_name:
             p = motion.points[self.trace_name].p
             self.trace_line.set_data(p[:, 0], p[:, 1])
@@ -249,6 +247,30 @@ class LinkageDrawing:
         self._make_labels()
         self.set_frame(0)
         return motion
+
+    def _make_artists(self):
+        """Lines for the bars and parts (made when a sketch brings more than the last one, hidden when
+        it brings fewer), each styled by its part's role."""
+        ax = self.ax
+        while len(self.link_lines) < len(self.bars):
+            self.link_lines.append(ax.plot([], [], **LINK_STYLE)[0])
+        while len(self.extra_lines) < len(self.drawn):
+            self.extra_lines.append(ax.plot([], [])[0])
+        while len(self.fills) < len(self.filled):
+            self.fills.append(ax.fill([], [])[0])
+        if self.noted and self.note is None:
+            self.note = ax.text(0.02, 0.95, "", transform=ax.transAxes, **NOTE_STYLE)
+        for line, part in zip(self.link_lines, self.bars):
+            line.set(visible=True, **ROLE_STYLES.get(part.role, LINK_STYLE))
+        for line, part in zip(self.extra_lines, self.drawn):
+            line.set(**{"visible": True, **ROLE_STYLES.get(part.role, EXTRA_STYLE)})
+        for patch, part in zip(self.fills, self.filled):
+            patch.set(visible=True, **ROLE_STYLES["fill"])
+        for spare in (*self.link_lines[len(self.bars):], *self.extra_lines[len(self.drawn):],
+                      *self.fills[len(self.filled):]):
+            spare.set_visible(False)
+        if self.note is not None:
+            self.note.set_visible(bool(self.noted))
 
     def _make_labels(self):
         """Letters for every point, numbers for every moving link and the frame: made when a
@@ -260,14 +282,15 @@ class LinkageDrawing:
                                                       **LETTER_STYLE)
         for name, text in self.letters.items():
             text.set_visible(name in names)
-        parts = len(self.numbered_parts(0))
+        self.numbered = [p for p in self.sketch.parts if p.number is not None]
+        parts = len(self.numbered)
         count = parts + 1 if self.show_labels and parts else 0   # no moving link numbered: no frame number
         while len(self.numbers) < count:
             self.numbers.append(self.ax.annotate("", (0, 0), xytext=(0, 0), textcoords="offset points",
                                                  **NUMBER_STYLE))
         for k, text in enumerate(self.numbers):
             text.set_visible(k < count)
-        count = len(self.mechanism.links) if self.show_dimensions else 0
+        count = len(self.bars) if self.show_dimensions else 0
         while len(self.lengths) < count:
             self.lengths.append(self.ax.annotate("", (0, 0), xytext=(0, 0), textcoords="offset points",
                                                  **DIMENSION_STYLE))
@@ -277,18 +300,24 @@ class LinkageDrawing:
     # -- frames --------------------------------------------------------------------
     def set_frame(self, i: int):
         """Move every artist to frame i of the bound motion; returns the artists."""
-        pts = {k: v.p[i] for k, v in self.motion.points.items()}
-        for line, names in zip(self.link_lines, self.mechanism.links):
-            xy = np.array([pts[k] for k in names])
+        points = self.motion.points
+        pts = {k: v.p[i] for k, v in points.items()}
+        for line, part in zip(self.link_lines, self.bars):
+            xy = part.points(points, i)
             line.set_data(xy[:, 0], xy[:, 1])
-        piv = np.array([pts[k] for k in self.mechanism.pivots if k in pts])
+        pivots = self.sketch.pivots
+        piv = np.array([pts[k] for k in pivots if k in pts]).reshape(-1, 2)
         self.pivot_marks.set_data(piv[:, 0], piv[:, 1])
         if self.show_ground:
             self.ground_line.set_data(*ground_symbols(piv, self._ground_size).T)
-        moving = np.array([v for k, v in pts.items() if k not in self.mechanism.pivots] or [[np.nan, np.nan]])
+        moving = np.array([v for k, v in pts.items() if k not in pivots] or [[np.nan, np.nan]])
         self.joint_marks.set_data(moving[:, 0], moving[:, 1])
         for line, seg in zip(self.extra_lines, self.extras(i)):
             line.set_data(seg[:, 0], seg[:, 1])
+        for patch, part in zip(self.fills, self.filled):
+            patch.set_xy(part.at(i))
+        if self.noted:
+            self.note.set_text(self.noted[0].at(i))
         if self.show_labels:
             self._place_labels(i, pts, piv)
         if self.show_dimensions:
@@ -302,28 +331,29 @@ class LinkageDrawing:
         centre = finite.mean(axis=0)
         for name, p in pts.items():
             away = _unit(p - centre, fallback=(-0.7, 0.7))
-            if name in self.mechanism.pivots:   # the support is below a pivot: its letter above it
+            if name in self.sketch.pivots:   # the support is below a pivot: its letter above it
                 away = _unit(np.array([away[0], max(away[1], 0.6)]))
             text = self.letters[name]
             text.xy = p
             text.set_position(LETTER_OFFSET * away)
         parts = self.numbered_parts(i)
-        for k, (text, part) in enumerate(zip(self.numbers, parts)):
+        for k, (text, part, spec) in enumerate(zip(self.numbers, parts, self.numbered)):
             where, normal = _label_anchor(part, centre)
-            text.set_text(str(k + 1) if self.link_numbers is None else (self.link_numbers[k] or ""))
+            text.set_text(str(k + 1) if spec.number is True else spec.number)
             text.xy = where
             text.set_position(NUMBER_OFFSET * normal)
         if not parts:
             return
         frame = self.numbers[len(parts)]
-        frame.set_text(self.frame_number or str(len(parts) + 1))
+        frame.set_text(self.sketch.frame_number or str(len(parts) + 1))
         if len(piv):   # beside the first fixed pivot's hatching
             frame.xy = piv[0] + np.array([-1.9, -1.7]) * self._ground_size
             frame.set_position((0.0, 0.0))
         frame.set_visible(bool(len(piv)))
 
     def _place_lengths(self, pts):
-        for text, names in zip(self.lengths, self.mechanism.links):
+        for text, bar in zip(self.lengths, self.bars):
+            names = bar.at
             a, b = pts[names[0]], pts[names[1]]
             where, normal = _label_anchor(np.array([a, b]), None)
             text.set_text(f"{names[0]}{names[1]} = {np.hypot(*(b - a)):.3g}")
@@ -331,16 +361,17 @@ class LinkageDrawing:
             text.set_position(-NUMBER_OFFSET * normal)
 
     def numbered_parts(self, i: int) -> list[np.ndarray]:
-        """The moving links in the order of their numbers, each as a polyline at frame i:
-        the links (those ``link_numbers`` names), then the extras of ``numbered_extras``."""
-        pts = {k: v.p[i] for k, v in self.motion.points.items()}
-        parts = [np.array([pts[k] for k in names]) for names in self.mechanism.links]
-        extras = self.extras(i) if self.numbered_extras else []
-        return parts + [extras[k] for k in self.numbered_extras]
+        """The numbered parts of the sketch (bars, blocks, …) in the order of their numbers, each as a
+        polyline at frame i."""
+        return [part.points(self.motion.points, i) for part in self.numbered]
 
     def extras(self, i: int) -> list[np.ndarray]:
-        """Polylines beyond the links (guides, slots, sliders) at frame i."""
-        return []
+        """The polylines of the sketch's parts beyond the bars (guides, slots, sliders) at frame i."""
+        return [np.asarray(part.at(i), dtype=float).reshape(-1, 2) for part in self.drawn]
+
+    def lines_of(self, role: str) -> list:
+        """The lines drawing the parts of one role (e.g. "slot"), in the sketch's order."""
+        return [line for line, part in zip(self.extra_lines, self.drawn) if part.role == role]
 
     @property
     def label_artists(self):
@@ -348,13 +379,17 @@ class LinkageDrawing:
 
     @property
     def artists(self):
-        return [*self.link_lines, *self.extra_lines, self.trace_line, self.ground_line, self.pivot_marks,
-                self.joint_marks, *self.label_artists, *([self.readout] if self.readout is not None else [])]
+        return [*self.fills, *self.link_lines, *self.extra_lines, self.trace_line, self.ground_line,
+                self.pivot_marks, self.joint_marks, *self.label_artists,
+                *([self.note] if self.note is not None else []), *([self.readout] if self.readout is not None else [])]
 
     def bounds(self, margin: float = 0.15):
-        """(xmin, xmax, ymin, ymax) enclosing every joint over the cycle, with a margin."""
+        """(xmin, xmax, ymin, ymax) enclosing every joint over the cycle and the parts at nine frames
+        along it, with a margin."""
+        frames = np.unique(np.linspace(0, len(self.motion) - 1, 9).astype(int))
         allp = np.concatenate([v.p for v in self.motion.points.values()]
-                              + [seg for j in (0, len(self.motion) // 2) for seg in self.extras(j)])
+                              + [seg for j in frames for seg in self.extras(j)]
+                              + [np.asarray(part.at(j)) for j in frames for part in self.filled])
         lo, hi = np.nanmin(allp, axis=0), np.nanmax(allp, axis=0)
         pad = margin * max(hi - lo) + 1e-9
         return lo[0] - pad, hi[0] + pad, lo[1] - pad, hi[1] + pad
@@ -412,57 +447,6 @@ def ground_symbols(pivots: np.ndarray, size: float) -> np.ndarray:
         for t in np.linspace(-1.1, 1.3, 5) * size:
             pieces += [[x + t, base], [x + t - 0.5 * size, base - 0.5 * size], [np.nan, np.nan]]
     return np.array(pieces or [[np.nan, np.nan]])
-
-
-@register(FourBar)
-class FourBarDrawing(LinkageDrawing):
-    pass
-
-
-@register(SliderCrank)
-class SliderCrankDrawing(LinkageDrawing):
-    """Adds the guide line and the slider block."""
-
-    n_extras = 2
-    numbered_extras = (1,)
-
-    def extras(self, i):
-        m, mo = self.mechanism, self.motion
-        s = mo.s
-        h = 0.08 * (m.crank + m.rod)
-        guide = np.array([[s.min() - 2 * h, m.offset], [s.max() + 2 * h, m.offset]])
-        x = s[i]
-        block = np.array([[x - h, m.offset - h / 2], [x + h, m.offset - h / 2], [x + h, m.offset + h / 2],
-                          [x - h, m.offset + h / 2], [x - h, m.offset - h / 2]])
-        return [guide, block]
-
-
-@register(SlottedLink)
-class SlottedLinkDrawing(LinkageDrawing):
-    """Adds the slotted link: a bar from the pivot B through the pin A."""
-
-    n_extras = 1
-    numbered_extras = (0,)
-
-    def extras(self, i):
-        m = self.mechanism
-        B = self.motion.points["B"].p[i]
-        reach = 1.15 * (m.pivot_distance + m.crank)
-        psi = self.motion.psi[i]
-        return [np.array([B, B + reach * np.array([np.cos(psi), np.sin(psi)])])]
-
-
-@register(SineMechanism)
-class SineMechanismDrawing(LinkageDrawing):
-    """Adds the yoke: the slot (perpendicular to the guide) and its rod along the guide."""
-
-    n_extras = 1
-    numbered_extras = (0,)
-
-    def extras(self, i):
-        r = self.mechanism.crank
-        x = self.motion.s[i]
-        return [np.array([[x, 1.3 * r], [x, -1.3 * r], [x, 0.0], [x + 1.6 * r, 0.0]])]
 
 
 def _diagram_axes(ax):

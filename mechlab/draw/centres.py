@@ -11,51 +11,15 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ..mechanisms.antiparallelogram import Antiparallelogram
 from ..analysis.centres.centrodes import Centrodes
-from ..mechanisms.trammel import EllipticTrammel
 from ..analysis.centres.instant import InstantCentres
 from ..analysis.centres import centrodes
-from . import Animation, LinkageDrawing, drawing_class, fill_axes, register
+from . import Animation, drawing_class, fill_axes
 
 FIXED_STYLE = dict(color="#8c564b", lw=1.6, zorder=1)
 MOVING_STYLE = dict(color="#9467bd", lw=1.6, ls="--", zorder=2)
 POLE_STYLE = dict(ls="none", marker="*", ms=13, color="#d62728", zorder=6)
 CENTRE_STYLE = dict(ls="none", marker="x", ms=8, mew=2, color="#d62728", zorder=6)
-
-
-@register(EllipticTrammel)
-class EllipticTrammelDrawing(LinkageDrawing):
-    """Adds both guides and the two slider blocks. Numbers as Kozhevnikov's Fig. 7.5 (the
-    instantaneous centres use them): 1 the guides (frame), 2 slider A, 3 slider B, 4 the rod;
-    Cardan's crank O-C only parametrises the motion and has no number."""
-
-    n_extras = 4
-    numbered_extras = (2, 3)
-    link_numbers = (None, "4", None, None, "2", "3")
-    frame_number = "1"
-
-    def extras(self, i):
-        m = self.mechanism
-        R = m.fixed_radius
-        ub = np.array([np.cos(m.beta), np.sin(m.beta)])
-        guide_a = np.array([[-1.15 * R, 0.0], [1.15 * R, 0.0]])
-        guide_b = np.array([-1.15 * R * ub, 1.15 * R * ub])
-        h = 0.06 * R
-
-        def block(c, u):
-            v = np.array([-u[1], u[0]])
-            corners = [c - h * u - 0.6 * h * v, c + h * u - 0.6 * h * v, c + h * u + 0.6 * h * v,
-                       c - h * u + 0.6 * h * v, c - h * u - 0.6 * h * v]
-            return np.array(corners)
-
-        A, B = self.motion.points["A"].p[i], self.motion.points["B"].p[i]
-        return [guide_a, guide_b, block(A, np.array([1.0, 0.0])), block(B, ub)]
-
-
-@register(Antiparallelogram)
-class AntiparallelogramDrawing(LinkageDrawing):
-    """The crossed four-bar, drawn like a four-bar."""
 
 
 class CentrodeOverlay:

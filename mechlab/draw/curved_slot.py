@@ -1,100 +1,15 @@
-"""Drawings of curved-slot slotted links, of a linkage's curved-slot twin and of the
-class-IV six-bar; a side-by-side animation of a linkage, its twin and the relative path.
-
-Every drawing follows :class:`mechlab.draw.LinkageDrawing`'s protocol, so
-:func:`mechlab.draw.animate` plays each of them on its own.
-"""
+"""A side-by-side animation of a linkage, its curved-slot twin and the relative path, and a law
+plotted against its base mechanism's (each mechanism drawn from its own ``sketch()``)."""
 
 from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ..analysis.equivalence import EquivalentSlot, base_law, equivalent_slot, relative_path
-from ..mechanisms.curved_slot import CurvedSlotLink, TranslatingCurvedSlot
-from ..mechanisms.sixbar_iv import SixBarIV
-from . import EXTRA_STYLE, Animation, LinkageDrawing, drawing_class, register
+from ..analysis.equivalence import base_law, equivalent_slot, relative_path
+from . import ROLE_STYLES, Animation, drawing_class
 
-SLOT_STYLE = dict(color="#2a7f62", lw=5, alpha=0.45, solid_capstyle="round", zorder=2)
-ARM_STYLE = dict(EXTRA_STYLE)
-
-
-def _rotate(xy, angle):
-    c, s = np.cos(angle), np.sin(angle)
-    return np.stack([c * xy[:, 0] - s * xy[:, 1], s * xy[:, 0] + c * xy[:, 1]], axis=-1)
-
-
-class _SlotDrawing(LinkageDrawing):
-    """A slotted link: its slot (thick translucent curve) and the arm holding it."""
-
-    n_extras = 2
-    numbered_extras = (0,)   # the slotted link's arm (the yoke's rod when it translates)
-    pivot_name = "B"
-
-    def set_motion(self, mechanism, motion):
-        self._slot = mechanism.slot_samples(160)
-        if not hasattr(self, "_slot_line"):
-            (self._slot_line,) = self.ax.plot([], [], **SLOT_STYLE)
-        return super().set_motion(mechanism, motion)
-
-    def _slot_world(self, i):
-        mo = self.motion
-        if mo.output.kind == "angle":
-            P = mo.points[self.pivot_name].p[i]
-            return P + _rotate(self._slot, mo.psi[i])
-        return self._slot + np.array([mo.s[i], 0.0])
-
-    def set_frame(self, i):
-        self._slot_line.set_data(*self._slot_world(i).T)
-        return super().set_frame(i)
-
-    def extras(self, i):
-        mo = self.motion
-        slot = self._slot_world(i)
-        if mo.output.kind == "angle":
-            P = mo.points[self.pivot_name].p[i]
-            return [np.array([P, slot[0]]), np.array([P, slot[-1]])]
-        # translating: the yoke's rod along the guide, from C to the slot
-        C = np.array([mo.s[i], 0.0])
-        a = np.max(np.abs(mo.points["A"].p[:, 1]))
-        span = np.ptp(mo.s) + 2 * a
-        return [np.array([C, C + np.array([1.5 * span, 0.0])]),
-                np.array([[mo.s.min() - 0.5 * span, 0.0], [mo.s.max() + 2.2 * span, 0.0]])]
-
-    @property
-    def artists(self):
-        return [self._slot_line, *super().artists]
-
-    def bounds(self, margin: float = 0.15):
-        pts = [v.p for v in self.motion.points.values()]
-        pts += [self._slot_world(j) for j in range(0, len(self.motion), max(1, len(self.motion) // 8))]
-        allp = np.concatenate(pts)
-        lo, hi = np.nanmin(allp, axis=0), np.nanmax(allp, axis=0)
-        pad = margin * max(hi - lo) + 1e-9
-        return lo[0] - pad, hi[0] + pad, lo[1] - pad, hi[1] + pad
-
-
-@register(CurvedSlotLink)
-class CurvedSlotDrawing(_SlotDrawing):
-    pivot_name = "B"
-
-
-@register(TranslatingCurvedSlot)
-class TranslatingSlotDrawing(_SlotDrawing):
-    pass
-
-
-@register(EquivalentSlot)
-class EquivalentSlotDrawing(_SlotDrawing):
-    pivot_name = "E"
-
-
-@register(SixBarIV)
-class SixBarDrawing(LinkageDrawing):
-    """Links 2 and 4 are triangles (ternary links); the rest as in a four-bar. Numbers as in
-    the class docstring of :class:`SixBarIV`: the group's links 3 = QR, 5 = PT, output 4 = RTE."""
-
-    link_numbers = ("1", "2", "3", "5", "4")
+SLOT_STYLE = ROLE_STYLES["slot"]
 
 
 def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9, 3.2), dpi: int = 55) -> Animation:

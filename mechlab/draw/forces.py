@@ -1,8 +1,8 @@
 """Force plans drawn over a mechanism: reaction arrows in every pair, moved in place.
 
-:class:`ForcePlanDrawing` is registered for :class:`mechlab.kinetostatics.Kinetostatics`, so
+:class:`ForcePlanDrawing` draws a :class:`mechlab.kinetostatics.Kinetostatics`, so
 ``animate(Kinetostatics(mechanism, model, loads, omega1=…), n=36)`` plays the mechanism
-with its reactions. It draws the mechanism with the mechanism's own registered drawing
+with its reactions. It draws the mechanism from the mechanism's own sketch
 and adds one arrow per pair (the force of link a on link b, at the pair's point, all
 arrows at one scale over the cycle) and the balancing torque as text.
 """
@@ -12,14 +12,13 @@ from __future__ import annotations
 import numpy as np
 
 from ..kinetostatics.machines import Kinetostatics
-from . import drawing_class, fill_axes, register
+from . import drawing_class, fill_axes
 
 ARROW_COLOURS = ("#d62728", "#9467bd", "#ff7f0e", "#2ca02c", "#8c564b", "#e377c2", "#17becf", "#bcbd22")
 
 
-@register(Kinetostatics)
 class ForcePlanDrawing:
-    """The mechanism (its registered drawing) plus reaction arrows and the balancing torque.
+    """The mechanism (its own drawing) plus reaction arrows and the balancing torque.
 
     ``pairs`` restricts the arrows to some pairs; ``length`` is the drawn length of the
     largest reaction over the cycle, as a fraction of the mechanism's size.

@@ -1,9 +1,9 @@
-"""Drawings of the Geneva drives: the planar wheel with its slots and locking arcs
-(animated like any linkage), and the spherical Geneva of Vainer & Shatokhina in 3-D.
+"""The spherical Geneva of Vainer & Shatokhina in 3-D (the drawing of a ``spatial`` mechanism: the
+planar wheels are drawn from their ``sketch()`` like any linkage), and the Geneva drives' laws compared.
 
-Both follow the protocol of :class:`mechlab.draw.LinkageDrawing`
+The 3-D drawing follows the protocol of :class:`mechlab.draw.LinkageDrawing`
 (``__init__(ax, mechanism, trace=None, n=...)``, ``set_motion``, ``set_frame(i)`` →
-artists, ``autoscale()``, ``artists``), so :func:`mechlab.draw.animate` plays them.
+artists, ``autoscale()``, ``artists``), so :func:`mechlab.draw.animate` plays it.
 """
 
 from __future__ import annotations
@@ -11,98 +11,14 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ..mechanisms.geneva import ExternalGeneva, PlanarGeneva
+from ..mechanisms.geneva import wheel_outline  # noqa: F401 - where the course's readers look for it
 from ..mechanisms.spherical_geneva import SphericalGeneva
 from ..analysis.intermittency import intermittency
-from . import JOINT_STYLE, LETTER_STYLE, LINK_STYLE, READOUT_STYLE, TRACE_STYLE, LinkageDrawing, register
-
-WHEEL_STYLE = dict(color="#2a7f62", lw=1.6, zorder=2)
-LOCK_STYLE = dict(color="#b8860b", lw=2.2, zorder=2)
-
-
-def _arc(centre, radius, a0, a1, n=40):
-    t = np.linspace(a0, a1, n)
-    return np.asarray(centre) + radius * np.stack([np.cos(t), np.sin(t)], axis=-1)
-
-
-def wheel_outline(g: PlanarGeneva, n_arc: int = 24) -> tuple[np.ndarray, np.ndarray]:
-    """The wheel's outlines in its own frame (W at the origin, ψ = 0), as two polylines.
-
-    External: the slotted rim with the concave locking arcs (radius a - 1.5 r, centred
-    at distance C on the bisectors between slots), and nothing else. Internal: the inner
-    rim with the slots running outwards, and the outer rim.
-    """
-    z, C, r = g.z, g.centre_distance, g.roller_radius
-    w = 1.08 * r  # the slot's half-width, with a little clearance
-    pts = []
-    rim = g.outer_radius if g.kappa < 0 else g.inner_radius
-    top = np.sqrt(max(rim**2 - w**2, 0.0))
-    gap = np.arcsin(w / rim)
-    for k in range(z):
-        th = np.pi - g.kappa * np.pi / z + 2 * np.pi * k / z  # slot k's direction at ψ = 0
-        u = np.array([np.cos(th), np.sin(th)])
-        v = np.array([-u[1], u[0]])
-        # the slot from its -v wall round the bottom (towards W outside, away from W inside)
-        end = th - 1.5 * np.pi if g.kappa < 0 else th + 0.5 * np.pi
-        pts += [top * u - w * v, *_arc(g.slot_bottom * u, w, th - 0.5 * np.pi, end, n_arc), top * u + w * v]
-        t = np.linspace(th + gap, th + 2 * np.pi / z - gap, 3 * n_arc)
-        radius = np.full_like(t, rim)
-        if g.kappa < 0:  # the concave locking arc in the gap after this slot
-            dlt = t - (th + np.pi / z)
-            disc = g.locking_radius**2 - (C * np.sin(dlt)) ** 2
-            near = np.where(disc >= 0, C * np.cos(dlt) - np.sqrt(np.maximum(disc, 0.0)), np.inf)
-            radius = np.minimum(radius, near)
-        pts += list(radius[:, None] * np.stack([np.cos(t), np.sin(t)], axis=-1))
-    outline = np.array(pts + [pts[0]])
-    if g.kappa < 0:
-        return outline, np.empty((0, 2))
-    return outline, _arc((0.0, 0.0), g.outer_radius, 0.0, 2 * np.pi, 120)
-
-
-def _rotate(xy: np.ndarray, angle: float, centre) -> np.ndarray:
-    c, s = np.cos(angle), np.sin(angle)
-    return np.asarray(centre) + xy @ np.array([[c, s], [-s, c]])
-
-
-@register(PlanarGeneva)
-class PlanarGenevaDrawing(LinkageDrawing):
-    """Crank O-A with its roller, the slotted wheel turning about W, and (external
-    drive) the crank's locking disc whose relief lets the wheel turn."""
-
-    n_extras = 3
-
-    def set_motion(self, mechanism, motion):
-        self.ax.set_axis_off()  # tick labels cost most of an animation's rendering time
-        self._outline = wheel_outline(mechanism)
-        for line, style in zip(self.extra_lines, (WHEEL_STYLE, WHEEL_STYLE, LOCK_STYLE)):
-            line.set(**style)
-        return super().set_motion(mechanism, motion)
-
-    def numbered_parts(self, i):
-        """The crank, then the wheel (a radius of it, turning with it, carries its number)."""
-        W, psi = self.motion.points["W"].p[i], self.motion.psi[i]
-        rim = W + 0.7 * self.mechanism.outer_radius * np.array([np.cos(psi), np.sin(psi)])
-        return [*super().numbered_parts(i), np.array([W, rim])]
-
-    def extras(self, i):
-        g, mo = self.mechanism, self.motion
-        W = mo.points["W"].p[i]
-        psi = mo.psi[i]
-        inner, outer = (_rotate(p, psi, W) if len(p) else p for p in self._outline)
-        if isinstance(g, ExternalGeneva):
-            A = mo.points["A"].p[i]
-            pin = np.arctan2(A[1], A[0])
-            s0 = g.engagement_half_angle
-            lock = _arc((0.0, 0.0), g.locking_radius, pin + s0, pin + 2 * np.pi - s0, 60)
-        else:
-            lock = np.empty((0, 2))
-        return [inner, outer, lock]
-
+from . import JOINT_STYLE, LETTER_STYLE, LINK_STYLE, READOUT_STYLE, TRACE_STYLE
 
 # ----------------------------------------------------------------------------------
 # spherical Geneva in 3-D
 # ----------------------------------------------------------------------------------
-@register(SphericalGeneva)
 class SphericalGenevaDrawing:
     """The hemisphere (equator and two parallels), its z meridian slots turning with the
     wheel, the crank axis, the crank arm and the pin on its cone, and the contact point

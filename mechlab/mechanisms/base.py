@@ -1,9 +1,10 @@
-"""What every mechanism shares: the crank's reachable angles, the cycle, and the description of its
+"""What every mechanism shares: the crank's reachable angles, the cycle, the description of its
 structure (links, pairs, structural groups) from which the instantaneous centres, the kinetostatics
-and the curved-slot equivalence are derived."""
+and the curved-slot equivalence are derived, and its sketch, from which it is drawn."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Annotated, Any, ClassVar
 
@@ -143,6 +144,47 @@ class Structure:
         raise MechanismError(f"the {link} is not joined to the frame")
 
 
+@dataclass(frozen=True)
+class Part:
+    """One piece of a mechanism's kinematic diagram.
+
+    ``role`` names its style in the drawing ("link", "output", "guide", "highlight", "extra", "slot",
+    "profile", "fill", "anchor" (not drawn: only carries a number), "note" (a text), …); ``at`` is a
+    tuple of joint names (a bar through them) or ``at(i)`` → the polyline (k, 2) at frame i (NaN rows
+    break it; a ``note``'s text); ``number`` the link number it carries: None, True (the next one) or
+    a label.
+    """
+
+    role: str
+    at: tuple[str, ...] | Callable[[int], Any]
+    number: bool | str | None = None
+
+    def points(self, points: dict, i: int):
+        """The polyline at frame i (``points``: the motion's paths)."""
+        if isinstance(self.at, tuple):
+            return np.array([points[k].p[i] for k in self.at])
+        return self.at(i)
+
+
+@dataclass(frozen=True)
+class Sketch:
+    """What a drawing shows of a mechanism: its ``parts`` in drawing order, the joints fixed to the frame
+    (hatched supports) and the frame's number (None: the one after the moving links)."""
+
+    parts: tuple[Part, ...]
+    pivots: tuple[str, ...]
+    frame_number: str | None = None
+
+
+def block_outline(centre, u, length: float, width: float) -> np.ndarray:
+    """A slider block ``length`` × ``width`` centred on ``centre``, its length along the unit vector u
+    (a closed polyline)."""
+    u = np.asarray(u, dtype=float)
+    n = np.array([-u[1], u[0]])
+    return np.array([centre + a * length / 2 * u + b * width / 2 * n
+                     for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1))])
+
+
 def fmt_ranges(ranges) -> str:
     return " or ".join(f"[{np.degrees(s):.2f}°, {np.degrees(e):.2f}°]" for s, e in ranges)
 
@@ -227,6 +269,19 @@ class Mechanism(Checked):
         """The mechanism's links, pairs and structural groups (a family describes itself here once)."""
         raise MechanismError(f"{type(self).__name__} describes no structure: define its structure() method")
 
+    def sketch(self, motion: Motion) -> Sketch:
+        """The kinematic diagram over ``motion``: a bar through the joints of each of ``links`` (numbered
+        1, 2, …), the fixed ``pivots``, and what ``structure()`` adds: a link carrying a slot drawn as a
+        slotted bar (turning) or a yoke (translating), a link sliding on the frame as a guide and a block;
+        each numbered after the bars. The one method a family overrides to show more (calling this one).
+        """
+        bars = tuple(Part("link", names, True) for names in self.links)
+        try:
+            st = self.structure()
+        except MechanismError:   # no structure: the bars alone
+            return Sketch(bars, self.pivots)
+        return Sketch(bars + _pair_parts(st, motion), self.pivots)
+
     def curved_slot_twin(self) -> tuple[Mechanism, float]:
         """The curved-slot mechanism that moves like this one (Zinchenko et al. (2013) §1), in their frame, and the
         crank-angle shift ``phase`` from this mechanism's frame to it (a family that has one overrides this)."""
@@ -262,6 +317,41 @@ def lift_on_ranges(theta: np.ndarray, phi: np.ndarray, refs) -> np.ndarray:
         on = np.mod(phi - start, TWO_PI) <= end - start
         out[on] = lift(theta[on], mid + turns * phi[on])
     return out
+
+
+def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
+    """The parts the pairs of a structure show: slotted links, yokes, guides and blocks."""
+    pts = motion.points
+    size = 0.08 * float(np.nanmax(np.ptp(np.concatenate([v.p for v in pts.values()]), axis=0)) or 1.0)
+    parts = []
+    for link in st.links:
+        slot = next((p for p in st.pairs if p.kind == "prismatic" and p.a == link.name and st.link(p.b).block), None)
+        guide = next((p for p in st.pairs if p.kind == "prismatic" and p.a == FRAME and p.b == link.name), None)
+        origin = pts[link.origin].p
+        if slot is not None and not link.translates:   # a slotted bar from its pivot along the slot
+            th = link.angle(motion).theta + slot.angle
+            reach = 1.15 * link.length
+            parts.append(Part("extra", lambda i, o=origin, th=th, r=reach: np.array(
+                [o[i], o[i] + r * np.array([np.cos(th[i]), np.sin(th[i])])]), True))
+        elif slot is not None:   # a yoke: the slot across the pin's track, a rod along its guide
+            v = _unit_at(link.axis + slot.angle)
+            u = _unit_at(link.axis + (guide.angle if guide is not None else 0.0))
+            half = 1.3 * float(np.max(np.abs((pts[slot.point].p - origin) @ v)))
+            parts.append(Part("extra", lambda i, o=origin, v=v, u=u, h=half: np.array(
+                [o[i] + h * v, o[i] - h * v, o[i], o[i] + 1.6 / 1.3 * h * u]), True))
+        elif guide is not None and link.translates and not link.block:   # a block on its guide
+            u = _unit_at(link.axis + guide.angle)
+            path = pts[guide.point].p
+            along = path @ u
+            foot = path[0] - along[0] * u
+            rail = np.array([foot + (along.min() - 2 * size) * u, foot + (along.max() + 2 * size) * u])
+            parts += [Part("extra", lambda i, g=rail: g),
+                      Part("extra", lambda i, p=path, u=u: block_outline(p[i], u, 2 * size, size), True)]
+    return tuple(parts)
+
+
+def _unit_at(angle: float) -> np.ndarray:
+    return np.array([np.cos(angle), np.sin(angle)])
 
 
 # a parameter that takes any mechanism (TypeError naming the class otherwise)

@@ -24,7 +24,7 @@ where the pitch curve's convex radius of curvature is ≤ r_r.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import NamedTuple
 
@@ -34,7 +34,7 @@ from scipy.interpolate import PPoly, make_interp_spline
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_number, cross, dot, fixed_point, perp
 from ..motion import AngularMotion, LinearMotion
-from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Structure
+from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure
 
 __all__ = ["TranslatingRollerCam", "OscillatingRollerCam", "CamProfile", "Undercut", "CamUndercutError"]
 
@@ -190,6 +190,25 @@ class RollerCam(Mechanism):
 
     def in_dwell(self, phi) -> np.ndarray:
         return self.programme.in_dwell(phi)
+
+    def sketch(self, motion) -> Sketch:
+        """The cam (its profile and base circle, sampled once in the cam frame and turned by φ), the roller,
+        the common normal at the contact (the line of the force without friction), the follower's arm as a
+        bar, and "dwell" while the follower stands still."""
+        profile, base = self.profile(240, check=False).surface, self.base_radius * _CIRCLE
+        phi, r, reach = motion.phi, self.roller_radius, 0.6 * self.prime_radius
+        C, K = motion.points["C"].p, motion.points["K"].p
+        dwell = self.in_dwell(phi)
+
+        def normal(i):
+            n = C[i] - K[i] if r > 0 else np.zeros(2)
+            n = n / (np.hypot(*n) or 1.0)
+            return np.array([K[i] - reach * n, K[i] + reach * n])
+
+        parts = (Part("fill", lambda i: _turned(profile, phi[i])), Part("profile", lambda i: _turned(profile, phi[i])),
+                 Part("base circle", lambda i: _turned(base, phi[i])), Part("roller", lambda i: C[i] + r * _CIRCLE),
+                 Part("normal", normal), Part("note", lambda i: "dwell" if dwell[i] else ""))
+        return Sketch(tuple(Part("link", names, True) for names in self.links) + parts, self.pivots)
 
     def structure(self) -> Structure:
         """The cam turns about O and drives the follower through the roller's contact K, a higher pair
@@ -420,6 +439,17 @@ class TranslatingRollerCam(RollerCam):
     def _q_at(self, X):
         return X[:, 1] - self.s0
 
+    def sketch(self, motion) -> Sketch:
+        """The cam's parts, and the follower's stem up its guide (a bushing above the stroke)."""
+        sk = super().sketch(motion)
+        C = motion.points["C"].p
+        top = self.s0 + self.programme.stroke + 0.9 * self.prime_radius
+        w = 0.35 * max(self.roller_radius, 0.1 * self.base_radius)
+        y0, x = self.s0 + self.programme.stroke + 0.3 * self.prime_radius, self.offset
+        bushing = np.array([[x - w, y0], [x - w, top], [np.nan, np.nan], [x + w, y0], [x + w, top]])
+        stem = (Part("link", lambda i: np.array([C[i], [x, top]])), Part("guide", lambda i: bushing))
+        return replace(sk, parts=sk.parts + stem)
+
     def _track(self, x, y):
         return x - self.offset, y
 
@@ -492,6 +522,15 @@ class OscillatingRollerCam(RollerCam):
 
     def _fixed_points(self, n: int) -> dict:
         return {"B": fixed_point((self.pivot_distance, 0.0), n)}
+
+
+_CIRCLE = np.stack([np.cos(np.linspace(0, TWO_PI, 60)), np.sin(np.linspace(0, TWO_PI, 60))], axis=-1)
+
+
+def _turned(xy, angle):
+    """Points of the cam frame in the fixed frame, the cam turned by ``angle``."""
+    c, s = np.cos(angle), np.sin(angle)
+    return xy @ np.array([[c, s], [-s, c]])
 
 
 def _check_common(cam) -> None:

@@ -82,7 +82,7 @@ from ..errors import AssemblyError, DimensionError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, cross, crank_point, dot, fixed_point, lift
 from ..motion import AngularMotion, LinearMotion
 from ..validate import Checked, Flag, Function, Length, Point, Real, Spec, mechanism, number
-from .base import FULL_TURN, Mechanism, arc_set, fmt_ranges
+from .base import FULL_TURN, Mechanism, Part, Sketch, arc_set, fmt_ranges
 from .slotted import PivotedSlot, SineMechanism, SlottedLink
 
 # Samples of the curve used to find the working segment and the Newton brackets.
@@ -298,6 +298,31 @@ def _fmt_deg(x):
 
 # a slot given to a mechanism (a DimensionError otherwise, as for any other dimension)
 Slot = Annotated[SlotCurve, mechanism((CircleSlot, ParametricSlot, SampledSlot), error=DimensionError)]
+
+
+def slot_sketch(mech, motion, pivot: str = "B") -> Sketch:
+    """The diagram of a curved-slot link: the crank, the slot (its working part, ``mech.slot_samples``,
+    carried by the link) and the arm holding it: two bars from the pivot to the slot's ends (numbered),
+    or for a translating link a rod along the guide (numbered) and the guide."""
+    slot = mech.slot_samples(160)
+    bars = tuple(Part("link", names, True) for names in mech.links)
+    if motion.output.kind == "angle":
+        P, psi = motion.points[pivot].p, motion.psi
+
+        def world(i):
+            c, s = np.cos(psi[i]), np.sin(psi[i])
+            return P[i] + slot @ np.array([[c, s], [-s, c]])
+
+        parts = (Part("slot", world), Part("extra", lambda i: np.array([P[i], world(i)[0]]), True),
+                 Part("extra", lambda i: np.array([P[i], world(i)[-1]])))
+        return Sketch(bars + parts, mech.pivots)
+    x = motion.s
+    span = np.ptp(x) + 2 * np.max(np.abs(motion.points["A"].p[:, 1]))
+    guide = np.array([[x.min() - 0.5 * span, 0.0], [x.max() + 2.2 * span, 0.0]])
+    parts = (Part("slot", lambda i: slot + np.array([x[i], 0.0])),
+             Part("extra", lambda i: np.array([[x[i], 0.0], [x[i] + 1.5 * span, 0.0]]), True),
+             Part("extra", lambda i: guide))
+    return Sketch(bars + parts, mech.pivots)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -572,6 +597,10 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
         c, s = np.cos(psi), np.sin(psi)
         return np.stack([c * tan_link[:, 0] - s * tan_link[:, 1], s * tan_link[:, 0] + c * tan_link[:, 1]], axis=-1)
 
+    def sketch(self, motion) -> Sketch:
+        """The crank, the slot turning with the link about B, and the arm holding it."""
+        return slot_sketch(self, motion, "B")
+
     def slot_samples(self, n: int = 200) -> np.ndarray:
         """(n, 2) points of the slot's working part in the link frame (for drawings)."""
         if isinstance(self.slot, CircleSlot):
@@ -778,6 +807,10 @@ class TranslatingCurvedSlot(Mechanism):
         if np.any(~lower):
             t[~lower] = upper.t_start + upper.direction * _solve_on_segment(upper, self.slot, neg_y, neg_dy, -y[~lower])
         return self.slot.evaluate(t).d
+
+    def sketch(self, motion) -> Sketch:
+        """The crank, the slot moving with the yoke, its rod and the guide."""
+        return slot_sketch(self, motion)
 
     def slot_samples(self, n: int = 200) -> np.ndarray:
         """(n, 2) points of the slot's working part in the link frame (for drawings)."""

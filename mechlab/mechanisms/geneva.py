@@ -38,13 +38,13 @@ exactly, for any e. The seed's cos γ = cos α·sin ψ (11) is exact as well: it
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Annotated
 
 import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
-from .base import Mechanism
+from .base import Mechanism, Part, Sketch
 from ..motion import AngularMotion, Quantity, Table
 from ..validate import MAX_SLOTS, Length, check, count, length
 
@@ -268,6 +268,24 @@ class PlanarGeneva(Mechanism):
             ("dwell fraction", self.dwell_fraction), ("index angle (deg)", np.degrees(abs(self.index_angle))),
             ("max |ψ'|", self.max_velocity()), ("max |ψ''|", self.max_acceleration())))
 
+    def sketch(self, motion) -> Sketch:
+        """The crank, the slotted wheel (its outlines, :func:`wheel_outline`, turned by ψ about W; a radius
+        of it carries its number)."""
+        sk = super().sketch(motion)
+        W, psi = motion.points["W"].p, motion.psi
+        outlines = wheel_outline(self)
+
+        def turned(k):
+            def at(i):
+                xy = outlines[k]
+                c, s = np.cos(psi[i]), np.sin(psi[i])
+                return W[i] + xy @ np.array([[c, s], [-s, c]]) if len(xy) else xy
+            return at
+
+        radius = 0.7 * self.outer_radius
+        return replace(sk, parts=sk.parts + (Part("wheel", turned(0)), Part("wheel", turned(1)), Part(
+            "anchor", lambda i: np.array([W[i], W[i] + radius * np.array([np.cos(psi[i]), np.sin(psi[i])])]), True)))
+
 
 @dataclass(frozen=True)
 class ExternalGeneva(PlanarGeneva):
@@ -297,6 +315,17 @@ class ExternalGeneva(PlanarGeneva):
         radius, centred at distance C from W on the bisectors between slots."""
         return self.crank_radius - 1.5 * self.roller_radius
 
+    def sketch(self, motion) -> Sketch:
+        """The wheel, and the crank's locking disc whose relief lets the wheel turn."""
+        sk = super().sketch(motion)
+        A, s0 = motion.points["A"].p, self.engagement_half_angle
+
+        def lock(i):
+            pin = np.arctan2(A[i, 1], A[i, 0])
+            return _arc((0.0, 0.0), self.locking_radius, pin + s0, pin + 2 * np.pi - s0, 60)
+
+        return replace(sk, parts=sk.parts[:-1] + (Part("lock", lock),) + sk.parts[-1:])
+
 
 @dataclass(frozen=True)
 class InternalGeneva(PlanarGeneva):
@@ -324,3 +353,41 @@ class InternalGeneva(PlanarGeneva):
         """From the inner rim to the slot's bottom: C + a + r - inner radius."""
         return self.slot_bottom + self.roller_radius - self.inner_radius
 
+
+def _arc(centre, radius, a0, a1, n=40):
+    t = np.linspace(a0, a1, n)
+    return np.asarray(centre) + radius * np.stack([np.cos(t), np.sin(t)], axis=-1)
+
+
+def wheel_outline(g: PlanarGeneva, n_arc: int = 24) -> tuple[np.ndarray, np.ndarray]:
+    """The wheel's outlines in its own frame (W at the origin, ψ = 0), as two polylines.
+
+    External: the slotted rim with the concave locking arcs (radius a - 1.5 r, centred
+    at distance C on the bisectors between slots), and nothing else. Internal: the inner
+    rim with the slots running outwards, and the outer rim.
+    """
+    z, C, r = g.z, g.centre_distance, g.roller_radius
+    w = 1.08 * r  # the slot's half-width, with a little clearance
+    pts = []
+    rim = g.outer_radius if g.kappa < 0 else g.inner_radius
+    top = np.sqrt(max(rim**2 - w**2, 0.0))
+    gap = np.arcsin(w / rim)
+    for k in range(z):
+        th = np.pi - g.kappa * np.pi / z + 2 * np.pi * k / z  # slot k's direction at ψ = 0
+        u = np.array([np.cos(th), np.sin(th)])
+        v = np.array([-u[1], u[0]])
+        # the slot from its -v wall round the bottom (towards W outside, away from W inside)
+        end = th - 1.5 * np.pi if g.kappa < 0 else th + 0.5 * np.pi
+        pts += [top * u - w * v, *_arc(g.slot_bottom * u, w, th - 0.5 * np.pi, end, n_arc), top * u + w * v]
+        t = np.linspace(th + gap, th + 2 * np.pi / z - gap, 3 * n_arc)
+        radius = np.full_like(t, rim)
+        if g.kappa < 0:  # the concave locking arc in the gap after this slot
+            dlt = t - (th + np.pi / z)
+            disc = g.locking_radius**2 - (C * np.sin(dlt)) ** 2
+            near = np.where(disc >= 0, C * np.cos(dlt) - np.sqrt(np.maximum(disc, 0.0)), np.inf)
+            radius = np.minimum(radius, near)
+        pts += list(radius[:, None] * np.stack([np.cos(t), np.sin(t)], axis=-1))
+    outline = np.array(pts + [pts[0]])
+    if g.kappa < 0:
+        return outline, np.empty((0, 2))
+    return outline, _arc((0.0, 0.0), g.outer_radius, 0.0, 2 * np.pi, 120)

@@ -3,14 +3,14 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Annotated
 from functools import cached_property
 import numpy as np
 from ..errors import RotationError
 from ..geometry import PointPath, as_angles, dot, perp, unit
 from .fourbar import FourBar
-from .base import Mechanism
+from .base import Mechanism, Part, Sketch
 from ..motion import AngularMotion
 from ..validate import Coordinate, Distance, Length, Sign, Spec, angle, check
 
@@ -136,6 +136,12 @@ class LambdaMechanism(Mechanism):
         pts = {"O": mo.points["O"], "A": A, "B": B, "C": mo.points["E"], "D": D}
         return AngularMotion(phi, pts, mo.transmission, mo.psi, mo.dpsi, mo.ddpsi)
 
+    def sketch(self, motion) -> Sketch:
+        """The bars, and the symmetry axis of the coupler curve through C."""
+        sk = super().sketch(motion)
+        axis = np.array([self.C - 0.3 * self.axis, self.C + 2.2 * self.axis])
+        return replace(sk, parts=sk.parts + (Part("extra", lambda i: axis),))
+
     def radius_about(self, centre, phi) -> tuple[np.ndarray, np.ndarray]:
         """ρ = |D − Q| and ρ' = dρ/dφ for a fixed point Q."""
         D = self.motion(phi).points["D"]
@@ -154,6 +160,30 @@ class GuidedLambda(LambdaMechanism):
     R0: Distance = 0.0
     R1: Distance = 0.0
     dwell: Dwell = 0.0
+
+    def sketch(self, motion) -> Sketch:
+        """Adds the band: arcs of R0 and R1 about Q near the dwell (so the picture stays readable) and the
+        dwell part of D's path."""
+        sk = super().sketch(motion)
+        q, e = np.array([self.qx, self.qy]), self.axis
+        th0 = np.arctan2(-e[1], -e[0]) if self.R0 > 0 else 0.0
+        span = np.linspace(th0 - 0.9, th0 + 0.9, 121)
+        arcs = [q + R * np.stack([np.cos(span), np.sin(span)], axis=-1) for R in (self.R0, self.R1)]
+        band = (*arcs, dwell_path(self, self.dwell))
+        return replace(sk, parts=sk.parts + tuple(Part("extra", lambda i, xy=xy: xy) for xy in band))
+
+
+def in_dwell(phi, dwell: float):
+    """True where the crank angle φ lies in the dwell of width ``dwell`` centred on φ = π."""
+    return (dwell > 0) & (np.abs((np.asarray(phi) - np.pi + np.pi) % (2 * np.pi) - np.pi) <= dwell / 2)
+
+
+def dwell_path(mech, dwell: float) -> np.ndarray:
+    """The part of D's path traced during the dwell (centred on φ = π) of a lambda or a six-bar on one."""
+    if dwell <= 0:
+        return np.full((1, 2), np.nan)
+    t = np.pi + np.linspace(-dwell / 2, dwell / 2, 121) + 1e-6
+    return mech.base.coupler_point(t) if hasattr(mech, "base") else mech.coupler_point(t)
 
 
 def classic_lambda() -> LambdaMechanism:

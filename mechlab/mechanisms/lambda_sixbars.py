@@ -3,14 +3,14 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 import numpy as np
 from ..errors import MechanismError
 from ..geometry import AnglePath, as_angles, dot, dyad_rpr, dyad_rrr, fixed_point, relative, vector_angle
-from .base import TWO_PI, Mechanism
+from .base import TWO_PI, Mechanism, Part, Sketch
 from ..motion import AngularMotion
-from .lambda_mechanism import Delta, Dwell, LambdaMechanism
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell
 from ..validate import Coordinate, Length, Sign
 from ..errors import InfeasibleDesignError
 
@@ -87,6 +87,15 @@ class LambdaRockerSixBar(Mechanism):
         pts = dict(mo.points)
         pts.update(E=E, F=Fp)
         return AngularMotion(phi, pts, mu, psi, ang.d, ang.dd)
+
+    def sketch(self, motion) -> Sketch:
+        """МЧВ1: the bars, the dwell part of D's path and the output rocker highlighted during the dwell."""
+        sk = super().sketch(motion)
+        path, F, E = dwell_path(self, self.dwell), motion.points["F"].p, motion.points["E"].p
+        still, nan = in_dwell(motion.phi, self.dwell), np.full((2, 2), np.nan)
+        return replace(sk, parts=sk.parts + (
+            Part("extra", lambda i: path),
+            Part("highlight", lambda i: np.array([F[i], E[i]]) if still[i] else nan)))
 
 
 # --------------------------------------------------------------------------------------------
@@ -198,3 +207,19 @@ class LambdaSlottedSixBar(Mechanism):
         """Output rotation per crank turn in revolutions (0 for an oscillating link)."""
         return self._turns[3] / TWO_PI
 
+    def sketch(self, motion) -> Sketch:
+        """МЧВ3: the slotted link (a bar through the pivot along the slot, numbered), highlighted in the
+        dwell, and the dwell part of D's path."""
+        sk = super().sketch(motion)
+        P, psi, still = motion.points["P"].p, motion.psi, in_dwell(motion.phi, self.dwell)
+        reach = 1.2 * np.max(np.hypot(*(motion.points["D"].p - P).T))
+        path, offset = dwell_path(self, self.dwell), self.offset
+
+        def bar(i):
+            u = np.array([np.cos(psi[i]), np.sin(psi[i])])
+            base = P[i] + offset * np.array([-u[1], u[0]])  # the slot is on the left of P for offset > 0
+            return np.array([P[i], base, base + reach * u]) if offset else np.array([P[i] - reach * u, P[i] + reach * u])
+
+        return replace(sk, parts=sk.parts + (
+            Part("output", bar, True), Part("extra", lambda i: path),
+            Part("highlight", lambda i: bar(i) if still[i] else np.full((2, 2), np.nan))))

@@ -3,14 +3,14 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 import numpy as np
 from ..errors import MechanismError
 from ..geometry import PointPath, as_angles, cross, dyad_rrp, unit
-from .base import TWO_PI, Mechanism
+from .base import TWO_PI, Mechanism, Part, Sketch, block_outline
 from ..motion import LinearMotion
-from .lambda_mechanism import Delta, Dwell, LambdaMechanism
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell
 from ..validate import Angle, Coordinate, Length, Sign
 from ..errors import InfeasibleDesignError
 
@@ -99,6 +99,22 @@ class LambdaSliderSixBar(_OnLambda):
 
         return LinearMotion(phi, pts, mu2, s.theta, s.d, s.dd)
 
+    def sketch(self, motion) -> Sketch:
+        """МЧВ2: the guide through Q, the slider block at E (numbered, highlighted in the dwell), D's dwell
+        path."""
+        sk = super().sketch(motion)
+        u, s, E, still = self.u, motion.s, motion.points["E"].p, in_dwell(motion.phi, self.dwell)
+        size = 0.2 * self.rod
+        guide = np.array([self.Q + (s.min() - 2 * size) * u, self.Q + (s.max() + 2 * size) * u])
+        path = dwell_path(self, self.dwell)
+
+        def block(i):
+            return block_outline(E[i], u, size, size)
+
+        return replace(sk, parts=sk.parts + (
+            Part("guide", lambda i: guide), Part("output", block, True), Part("extra", lambda i: path),
+            Part("highlight", lambda i: block(i) if still[i] else np.full((2, 2), np.nan))))
+
 
 # --------------------------------------------------------------------------------------------
 # МЧВ5: block at D in the straight slot of a translating output
@@ -166,3 +182,26 @@ class LambdaTranslatingSlot(_OnLambda):
         pts["E"] = PointPath(self.P + s[:, None] * w, ds[:, None] * w, dds[:, None] * w)
         return LinearMotion(phi, pts, np.full(len(phi), self.transmission_angle), s, ds, dds)
 
+    def sketch(self, motion) -> Sketch:
+        """МЧВ5: the fixed guide (a bushing beyond the bar's travel), the output link (a slot through D
+        and a bar along the guide; numbered, highlighted in the dwell), the block at D, D's dwell path."""
+        sk = super().sketch(motion)
+        v, w = np.array([np.cos(self.slot), np.sin(self.slot)]), np.array([np.cos(self.guide), np.sin(self.guide)])
+        E, D = motion.points["E"].p, motion.points["D"].p
+        still = in_dwell(motion.phi, self.dwell)
+        # the slot spans D's whole sweep along it, the bar reaches back along the guide past the curve
+        reach = float(np.ptp(D @ w)) + 0.3
+        s, n, g = motion.s, np.array([-w[1], w[0]]), 0.04
+        lo, hi = self.P + (s.max() + 0.4 * reach) * w, self.P + (s.max() + 0.8 * reach) * w
+        guide = np.array([lo + g * n, hi + g * n, [np.nan, np.nan], lo - g * n, hi - g * n])
+        path = dwell_path(self, self.dwell)
+
+        def link(i):
+            along = (D - E[i]) @ v
+            slot = np.array([E[i] + (along.min() - 0.1) * v, E[i] + (along.max() + 0.1) * v])
+            return np.array([slot[0], slot[1], E[i], E[i] + reach * w])
+
+        return replace(sk, parts=sk.parts + (
+            Part("guide", lambda i: guide), Part("output", link, True),
+            Part("output", lambda i: block_outline(D[i], v, 0.08, 0.08)), Part("extra", lambda i: path),
+            Part("highlight", lambda i: link(i) if still[i] else np.full((4, 2), np.nan))))

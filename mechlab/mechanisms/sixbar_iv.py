@@ -37,7 +37,7 @@ J·x'' = -(…) (analytic; J's determinant vanishes at a dead position of the gr
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
 import numpy as np
@@ -46,7 +46,7 @@ from scipy.optimize import brentq
 from ..errors import AssemblyError, DimensionError, RotationError, SingularityError
 from ..geometry import (AnglePath, PointPath, as_angles, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit,
                         vector_angle)
-from .base import Mechanism
+from .base import FRAME, Link, Mechanism, Pair, Sketch, Structure
 from .curved_slot import CurvedSlotLink, ParametricSlot
 from ..motion import AngularMotion
 from ..validate import Length, OptionalAngle, Point, Sign
@@ -277,6 +277,29 @@ class SixBarIV(Mechanism):
         slot = ParametricSlot(lambda t: self.relative_pin(t).p, lambda t: self.relative_pin(t).d,
                               lambda t: self.relative_pin(t).dd, -np.pi, np.pi, periodic=True)
         return CurvedSlotLink(self.crank, self.ground, slot, start=self.start_angle), np.pi
+
+    def structure(self) -> Structure:
+        """Crank O→A and the class-IV group: coupler A-Q-P (axis Q→P), link 3 Q→R, link 5 P→T and the
+        output R-T-E turning about E (axis at ψ); seven revolute pairs."""
+        def output_axis(mo):
+            return mo.psi, mo.dpsi, mo.ddpsi
+
+        return Structure(
+            (Link("crank", "O", ("O", "A"), self.crank), Link("coupler", "A", ("Q", "P"), self.qp),
+             Link("link 3", "Q", ("Q", "R"), self.link3), Link("link 5", "P", ("P", "T"), self.link5),
+             Link("output", "E", output_axis)),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "coupler", "A"),
+             Pair("revolute", "Q", "coupler", "link 3", "Q"), Pair("revolute", "P", "coupler", "link 5", "P"),
+             Pair("revolute", "R", "link 3", "output", "R"), Pair("revolute", "T", "link 5", "output", "T"),
+             Pair("revolute", "E", FRAME, "output", "E")),
+            (("coupler", "link 3", "link 5", "output"),), "output", scale=self.ground)
+
+    def sketch(self, motion) -> Sketch:
+        """Links 2 and 4 are triangles (ternary links); numbered as in the class docstring: the group's
+        links 3 = QR, 5 = PT, output 4 = RTE."""
+        sk = super().sketch(motion)
+        labels = iter(("1", "2", "3", "5", "4"))
+        return replace(sk, parts=tuple(replace(p, number=next(labels)) if p.number else p for p in sk.parts))
 
     def motion(self, phi) -> AngularMotion:
         """Joint paths (O, A, Q, P, R, T, E) and ψ, ψ', ψ'' of link 4 at crank angles φ (radians)."""

@@ -54,6 +54,7 @@ class SphericalGeneva(Mechanism):
     z: Slots
     pin_diameter: Length = 10.0
 
+    spatial = True   # drawn in 3-D
     links = (("B", "P"),)
     pivots = ("O", "O1")
     output = "angle"

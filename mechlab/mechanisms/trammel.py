@@ -15,7 +15,7 @@ from typing import Annotated
 
 import numpy as np
 from ..geometry import PointPath, as_angles, fixed_point, unit
-from .base import FRAME, Link, Mechanism, Pair, Structure
+from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, block_outline
 from ..motion import LinearMotion
 from ..validate import Length, angle
 
@@ -74,6 +74,20 @@ class EllipticTrammel(Mechanism):
              Pair("revolute", "A", "slider A", "rod", "A"), Pair("revolute", "B", "slider B", "rod", "B")),
             (), "slider A", scale=self.fixed_radius, numbering=("frame", "slider A", "slider B", "rod"),
             input_rate=-1.0)
+
+    def sketch(self, motion) -> Sketch:
+        """Both guides (through O, 1.15 R either side) and the two blocks; numbered as Kozhevnikov's
+        Fig. 7.5 (the centres use it): 1 the guides (frame), 2 slider A, 3 slider B, 4 the rod; Cardan's
+        crank O-C only parametrises the motion and has no number."""
+        R = self.fixed_radius
+        h = 0.06 * R
+        parts = [Part("link", ("O", "C")), Part("link", ("A", "B"), "4"), Part("link", ("B", "C")),
+                 Part("link", ("C", "A"))]
+        for name, guide, number in (("A", 0.0, "2"), ("B", self.beta, "3")):
+            u, P = unit(guide), motion.points[name].p
+            parts += [Part("extra", lambda i, u=u: np.array([-1.15 * R * u, 1.15 * R * u])),
+                      Part("extra", lambda i, P=P, u=u: block_outline(P[i], u, 2 * h, 1.2 * h), number)]
+        return Sketch(tuple(parts), self.pivots, frame_number="1")
 
     def motion(self, phi) -> LinearMotion:
         """Paths of O, C, A, B and the slider law s = x_A, s', s'' at crank angles φ (rad)."""

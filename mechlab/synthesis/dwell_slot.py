@@ -59,7 +59,7 @@ import numpy as np
 from numpy.polynomial import Polynomial
 from ..errors import DimensionError, MechanismError
 from ..geometry import as_angles, wrap
-from ..mechanisms.base import Mechanism
+from ..mechanisms.base import Mechanism, Part, Sketch
 from ..motion import Table, scalar_law
 from ..validate import MAX_GRID, Checked, Distance, Length, angle, check, choice, count, number, validated
 
@@ -573,6 +573,38 @@ class DwellSlotMechanism(Mechanism):
     def motion(self, phi):
         """ψ, ψ', ψ'' and the pressure angle through the slot (the curved-slot solver)."""
         return self.link.motion(phi)
+
+    def structure(self):
+        """The curved-slot link's: crank, slotted link, the slot's higher pair at A."""
+        return self.link.structure()
+
+    def sketch(self, motion) -> Sketch:
+        """The crank; the link's slot (centre line, the dwell arc highlighted, the roller's flanks) drawn
+        in the link frame once and turned by ψ about B; the arm holding it (numbered); the roller; and
+        "dwell" while the link stands still."""
+        from .slot_export import slot_profile
+
+        centre, arc, rho = self.slot_points(160), self.dwell_points(60), self.roller_radius
+        flanks = []
+        if rho > 0:
+            prof = slot_profile(self, n=160)
+            flanks = [prof.left, prof.right]
+        B, psi, A = motion.points["B"].p, motion.psi, motion.points["A"].p
+        still = self.law.in_dwell(motion.phi)
+        ring = rho * np.stack([np.cos(np.linspace(0, 2 * np.pi, 40)), np.sin(np.linspace(0, 2 * np.pi, 40))], -1)
+
+        def world(xy, i):
+            c, s = np.cos(psi[i]), np.sin(psi[i])
+            return B[i] + xy @ np.array([[c, s], [-s, c]])
+
+        parts = (Part("link", ("O", "A"), True),
+                 Part("arm", lambda i: np.array([world(centre[:1], i)[0], B[i], world(centre[-1:], i)[0]])),
+                 Part("anchor", lambda i: np.array([world(centre[:1], i)[0], B[i]]), True),
+                 Part("slot centre", lambda i: world(centre, i)), Part("dwell", lambda i: world(arc, i)),
+                 *(Part("flank", lambda i, f=f: world(f, i)) for f in flanks),
+                 *((Part("roller", lambda i: A[i] + ring),) if rho > 0 else ()),
+                 Part("note", lambda i: "dwell" if still[i] else ""))
+        return Sketch(parts, self.pivots)
 
     @validated
     def slot_points(self, n: Annotated[int, count(2)] = 401) -> np.ndarray:

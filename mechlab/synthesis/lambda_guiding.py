@@ -151,7 +151,7 @@ class CircleGuide:
 
     @property
     def guided(self) -> "GuidedLambda":
-        """The mechanism with its band attached (drawn by :mod:`mechlab.draw.chebyshev`)."""
+        """The mechanism with its band attached (its sketch shows the band)."""
         q = self.centre
         return GuidedLambda(self.r, self.a, self.delta, 1, float(q[0]), float(q[1]), self.R0, self.R1, self.dwell)
 
