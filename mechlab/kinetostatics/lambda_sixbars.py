@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .model import FRAME, Body, ForceModel, Revolute, Torque
+from .model import ForceModel, Torque, model_for
 from .solve import solve
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar
 
@@ -26,21 +26,9 @@ __all__ = ["mchv1_model", "mchv1_forces", "ForceInvariants"]
 
 
 def mchv1_model(six: LambdaRockerSixBar, inertia: float, friction: float = 0.0, radius: float = 0.0) -> ForceModel:
-    """Force model of МЧВ1: massless links, the output rocker carrying the reduced inertia J about F."""
-    bodies = (
-        Body("crank", "O", ("O", "A")),
-        Body("coupler", "A", ("A", "B")),
-        Body("rocker", "C", ("C", "B")),
-        Body("rod", "D", ("D", "E")),
-        Body("output", "F", ("F", "E"), inertia=inertia),
-    )
-    pairs = (
-        Revolute("O", FRAME, "crank", "O"), Revolute("A", "crank", "coupler", "A"),
-        Revolute("B", "coupler", "rocker", "B"), Revolute("C", FRAME, "rocker", "C"),
-        Revolute("D", "coupler", "rod", "D"), Revolute("E", "rod", "output", "E"),
-        Revolute("F", FRAME, "output", "F"),
-    )
-    model = ForceModel(bodies, pairs, (("rod", "output"), ("coupler", "rocker")), "crank", "O")
+    """Force model of МЧВ1 from its structure: massless links, the output rocker carrying the reduced
+    inertia J (massless, so J acts about F as about any point)."""
+    model = model_for(six).with_body("output", inertia=inertia)
     return model.with_friction(friction, radius) if friction else model
 
 

@@ -176,6 +176,16 @@ class Sketch:
     frame_number: str | None = None
 
 
+def bars(mechanism) -> tuple[Part, ...]:
+    """A numbered bar through the joints of each of ``mechanism.links``."""
+    return tuple(Part("link", names, True) for names in mechanism.links)
+
+
+def output_axis(motion) -> tuple:
+    """The output angle ψ with ψ′, ψ″: the axis of a link that turns with the output."""
+    return motion.psi, motion.dpsi, motion.ddpsi
+
+
 def block_outline(centre, u, length: float, width: float) -> np.ndarray:
     """A slider block ``length`` × ``width`` centred on ``centre``, its length along the unit vector u
     (a closed polyline)."""
@@ -275,12 +285,11 @@ class Mechanism(Checked):
         slotted bar (turning) or a yoke (translating), a link sliding on the frame as a guide and a block;
         each numbered after the bars. The one method a family overrides to show more (calling this one).
         """
-        bars = tuple(Part("link", names, True) for names in self.links)
         try:
             st = self.structure()
         except MechanismError:   # no structure: the bars alone
-            return Sketch(bars, self.pivots)
-        return Sketch(bars + _pair_parts(st, motion), self.pivots)
+            return Sketch(bars(self), self.pivots)
+        return Sketch(bars(self) + _pair_parts(st, motion), self.pivots)
 
     def curved_slot_twin(self) -> tuple[Mechanism, float]:
         """The curved-slot mechanism that moves like this one (Zinchenko et al. (2013) §1), in their frame, and the
@@ -335,12 +344,12 @@ def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
                 [o[i], o[i] + r * np.array([np.cos(th[i]), np.sin(th[i])])]), True))
         elif slot is not None:   # a yoke: the slot across the pin's track, a rod along its guide
             v = _unit_at(link.axis + slot.angle)
-            u = _unit_at(link.axis + (guide.angle if guide is not None else 0.0))
+            u = _unit_at(guide.angle if guide is not None else link.axis)
             half = 1.3 * float(np.max(np.abs((pts[slot.point].p - origin) @ v)))
             parts.append(Part("extra", lambda i, o=origin, v=v, u=u, h=half: np.array(
                 [o[i] + h * v, o[i] - h * v, o[i], o[i] + 1.6 / 1.3 * h * u]), True))
         elif guide is not None and link.translates and not link.block:   # a block on its guide
-            u = _unit_at(link.axis + guide.angle)
+            u = _unit_at(guide.angle)   # the frame's axis is x
             path = pts[guide.point].p
             along = path @ u
             foot = path[0] - along[0] * u

@@ -34,7 +34,7 @@ from scipy.interpolate import PPoly, make_interp_spline
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_number, cross, dot, fixed_point, perp
 from ..motion import AngularMotion, LinearMotion
-from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure
+from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars
 
 __all__ = ["TranslatingRollerCam", "OscillatingRollerCam", "CamProfile", "Undercut", "CamUndercutError"]
 
@@ -208,7 +208,7 @@ class RollerCam(Mechanism):
         parts = (Part("fill", lambda i: _turned(profile, phi[i])), Part("profile", lambda i: _turned(profile, phi[i])),
                  Part("base circle", lambda i: _turned(base, phi[i])), Part("roller", lambda i: C[i] + r * _CIRCLE),
                  Part("normal", normal), Part("note", lambda i: "dwell" if dwell[i] else ""))
-        return Sketch(tuple(Part("link", names, True) for names in self.links) + parts, self.pivots)
+        return Sketch(bars(self) + parts, self.pivots)
 
     def structure(self) -> Structure:
         """The cam turns about O and drives the follower through the roller's contact K, a higher pair

@@ -82,7 +82,7 @@ from ..errors import AssemblyError, DimensionError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, cross, crank_point, dot, fixed_point, lift
 from ..motion import AngularMotion, LinearMotion
 from ..validate import Checked, Flag, Function, Length, Point, Real, Spec, mechanism, number
-from .base import FULL_TURN, Mechanism, Part, Sketch, arc_set, fmt_ranges
+from .base import FRAME, FULL_TURN, Link, Mechanism, Pair, Part, Sketch, Structure, arc_set, bars, fmt_ranges, output_axis
 from .slotted import PivotedSlot, SineMechanism, SlottedLink
 
 # Samples of the curve used to find the working segment and the Newton brackets.
@@ -300,12 +300,17 @@ def _fmt_deg(x):
 Slot = Annotated[SlotCurve, mechanism((CircleSlot, ParametricSlot, SampledSlot), error=DimensionError)]
 
 
+def _unit_normal(tangent: np.ndarray) -> np.ndarray:
+    """Unit normals (n, 2) to tangents (n, 2): the common normal of a pin in a curved slot."""
+    return np.stack([-tangent[:, 1], tangent[:, 0]], axis=-1) / np.hypot(*tangent.T)[:, None]
+
+
 def slot_sketch(mech, motion, pivot: str = "B") -> Sketch:
     """The diagram of a curved-slot link: the crank, the slot (its working part, ``mech.slot_samples``,
     carried by the link) and the arm holding it: two bars from the pivot to the slot's ends (numbered),
     or for a translating link a rod along the guide (numbered) and the guide."""
     slot = mech.slot_samples(160)
-    bars = tuple(Part("link", names, True) for names in mech.links)
+    crank = bars(mech)
     if motion.output.kind == "angle":
         P, psi = motion.points[pivot].p, motion.psi
 
@@ -315,14 +320,14 @@ def slot_sketch(mech, motion, pivot: str = "B") -> Sketch:
 
         parts = (Part("slot", world), Part("extra", lambda i: np.array([P[i], world(i)[0]]), True),
                  Part("extra", lambda i: np.array([P[i], world(i)[-1]])))
-        return Sketch(bars + parts, mech.pivots)
+        return Sketch(crank + parts, mech.pivots)
     x = motion.s
     span = np.ptp(x) + 2 * np.max(np.abs(motion.points["A"].p[:, 1]))
     guide = np.array([[x.min() - 0.5 * span, 0.0], [x.max() + 2.2 * span, 0.0]])
     parts = (Part("slot", lambda i: slot + np.array([x[i], 0.0])),
              Part("extra", lambda i: np.array([[x[i], 0.0], [x[i] + 1.5 * span, 0.0]]), True),
              Part("extra", lambda i: guide))
-    return Sketch(bars + parts, mech.pivots)
+    return Sketch(crank + parts, mech.pivots)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -597,6 +602,18 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
         c, s = np.cos(psi), np.sin(psi)
         return np.stack([c * tan_link[:, 0] - s * tan_link[:, 1], s * tan_link[:, 0] + c * tan_link[:, 1]], axis=-1)
 
+    def structure(self) -> Structure:
+        """Crank O→A; the pin A in the link's curved slot, a higher pair whose normal is the slot's at the
+        pin; the link turning about B (axis at ψ); one group, the link (Zinchenko et al. (2013) §2)."""
+        def normal(mo):
+            return _unit_normal(self._slot_tangent_world(mo.phi, mo.psi))
+
+        return Structure(
+            (Link("crank", "O", ("O", "A"), self.crank), Link("link", "B", output_axis, label="slotted link")),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("higher", "slot", "link", "crank", "A", normal=normal),
+             Pair("revolute", "B", FRAME, "link", "B")),
+            (("link",),), "link", scale=self.crank + self.pivot_distance)
+
     def sketch(self, motion) -> Sketch:
         """The crank, the slot turning with the link about B, and the arm holding it."""
         return slot_sketch(self, motion, "B")
@@ -807,6 +824,18 @@ class TranslatingCurvedSlot(Mechanism):
         if np.any(~lower):
             t[~lower] = upper.t_start + upper.direction * _solve_on_segment(upper, self.slot, neg_y, neg_dy, -y[~lower])
         return self.slot.evaluate(t).d
+
+    def structure(self) -> Structure:
+        """Crank O→A; the pin A in the yoke's curved slot (a higher pair, the slot's normal at the pin);
+        the yoke at C sliding on the frame along x; one group, the yoke."""
+        def normal(mo):
+            return _unit_normal(self._tangent(mo.phi))
+
+        return Structure(
+            (Link("crank", "O", ("O", "A"), self.crank), Link("yoke", "C", 0.0)),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("higher", "slot", "yoke", "crank", "A", normal=normal),
+             Pair("prismatic", "guide", FRAME, "yoke", "C", 0.0)),
+            (("yoke",),), "yoke", scale=self.crank)
 
     def sketch(self, motion) -> Sketch:
         """The crank, the slot moving with the yoke, its rod and the guide."""

@@ -44,7 +44,7 @@ from typing import Annotated
 import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
-from .base import Mechanism, Part, Sketch
+from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
 from ..motion import AngularMotion, Quantity, Table
 from ..validate import MAX_SLOTS, Length, check, count, length
 
@@ -267,6 +267,24 @@ class PlanarGeneva(Mechanism):
             ("slot bottom from W", self.slot_bottom), ("slot length", self.slot_length),
             ("dwell fraction", self.dwell_fraction), ("index angle (deg)", np.degrees(abs(self.index_angle))),
             ("max |ψ'|", self.max_velocity()), ("max |ψ''|", self.max_acceleration())))
+
+    def structure(self) -> Structure:
+        """Crank O→A and the wheel turning about W (axis at ψ), joined by one higher pair at the pin A: while
+        the pin is in a slot its normal is the slot's (across the radius W→A); during the dwell the locking
+        arcs, concentric with O, hold the wheel, and their reaction passes through O (taken on the line
+        O→A), so the crank drives nothing. One group, the wheel."""
+        def normal(mo):
+            A, W = mo.points["A"].p, mo.points["W"].p
+            radial = (A - W) / np.hypot(*(A - W).T)[:, None]
+            across = np.stack([-radial[:, 1], radial[:, 0]], axis=-1)
+            lock = A / np.hypot(*A.T)[:, None]
+            return np.where(self.engaged(mo.phi)[:, None], across, lock)
+
+        return Structure(
+            (Link("crank", "O", ("O", "A"), self.crank_radius), Link("wheel", "W", output_axis)),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("higher", "pin", "wheel", "crank", "A", normal=normal),
+             Pair("revolute", "W", FRAME, "wheel", "W")),
+            (("wheel",),), "wheel", scale=self.centre_distance)
 
     def sketch(self, motion) -> Sketch:
         """The crank, the slotted wheel (its outlines, :func:`wheel_outline`, turned by ψ about W; a radius

@@ -10,7 +10,7 @@ import numpy as np
 from ..errors import RotationError
 from ..geometry import PointPath, as_angles, dot, perp, unit
 from .fourbar import FourBar
-from .base import Mechanism, Part, Sketch
+from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure
 from ..motion import AngularMotion
 from ..validate import Coordinate, Distance, Length, Sign, Spec, angle, check
 
@@ -136,6 +136,10 @@ class LambdaMechanism(Mechanism):
         pts = {"O": mo.points["O"], "A": A, "B": B, "C": mo.points["E"], "D": D}
         return AngularMotion(phi, pts, mo.transmission, mo.psi, mo.dpsi, mo.ddpsi)
 
+    def structure(self) -> Structure:
+        """The four-bar O-A-B-C: crank O→A, coupler A→B carrying D, rocker C→B (the output); one RRR group."""
+        return Structure(lambda_links(self), lambda_pairs(), (("coupler", "rocker"),), "rocker", scale=self.a)
+
     def sketch(self, motion) -> Sketch:
         """The bars, and the symmetry axis of the coupler curve through C."""
         sk = super().sketch(motion)
@@ -171,6 +175,18 @@ class GuidedLambda(LambdaMechanism):
         arcs = [q + R * np.stack([np.cos(span), np.sin(span)], axis=-1) for R in (self.R0, self.R1)]
         band = (*arcs, dwell_path(self, self.dwell))
         return replace(sk, parts=sk.parts + tuple(Part("extra", lambda i, xy=xy: xy) for xy in band))
+
+
+def lambda_links(m) -> tuple[Link, ...]:
+    """The lambda mechanism's moving links (the base of its six-bars): crank, coupler, rocker."""
+    return (Link("crank", "O", ("O", "A"), m.r), Link("coupler", "A", ("A", "B"), 1.0),
+            Link("rocker", "C", ("C", "B"), 1.0))
+
+
+def lambda_pairs() -> tuple[Pair, ...]:
+    """The lambda mechanism's revolute pairs O, A, B, C."""
+    return (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "coupler", "A"),
+            Pair("revolute", "B", "coupler", "rocker", "B"), Pair("revolute", "C", FRAME, "rocker", "C"))
 
 
 def in_dwell(phi, dwell: float):

@@ -8,9 +8,9 @@ from functools import cached_property
 import numpy as np
 from ..errors import MechanismError
 from ..geometry import AnglePath, as_angles, dot, dyad_rpr, dyad_rrr, fixed_point, relative, vector_angle
-from .base import TWO_PI, Mechanism, Part, Sketch
+from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, output_axis
 from ..motion import AngularMotion
-from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 from ..validate import Coordinate, Length, Sign
 from ..errors import InfeasibleDesignError
 
@@ -87,6 +87,16 @@ class LambdaRockerSixBar(Mechanism):
         pts = dict(mo.points)
         pts.update(E=E, F=Fp)
         return AngularMotion(phi, pts, mu, psi, ang.d, ang.dd)
+
+    def structure(self) -> Structure:
+        """МЧВ1: the lambda mechanism, the rod D→E and the output rocker F→E; groups (rod, output), then
+        (coupler, rocker) (Kinitsky (1994), ch. 3)."""
+        r = self.base
+        return Structure(
+            (*lambda_links(r), Link("rod", "D", ("D", "E"), self.rod), Link("output", "F", ("F", "E"), self.rocker)),
+            (*lambda_pairs(), Pair("revolute", "D", "coupler", "rod", "D"), Pair("revolute", "E", "rod", "output", "E"),
+             Pair("revolute", "F", FRAME, "output", "F")),
+            (("rod", "output"), ("coupler", "rocker")), "output", scale=r.a)
 
     def sketch(self, motion) -> Sketch:
         """МЧВ1: the bars, the dwell part of D's path and the output rocker highlighted during the dwell."""
@@ -207,10 +217,20 @@ class LambdaSlottedSixBar(Mechanism):
         """Output rotation per crank turn in revolutions (0 for an oscillating link)."""
         return self._turns[3] / TWO_PI
 
+    def structure(self) -> Structure:
+        """МЧВ3: the lambda mechanism, a block at D sliding in the slot of the output link (pivot P, axis at
+        ψ along the slot); groups (block, output), then (coupler, rocker)."""
+        return Structure(
+            (*lambda_links(self.base), Link("block", "D", output_axis, block=True),
+             Link("output", "P", output_axis, label="slotted link")),
+            (*lambda_pairs(), Pair("revolute", "D", "coupler", "block", "D"),
+             Pair("prismatic", "slot", "output", "block", "D", 0.0), Pair("revolute", "P", FRAME, "output", "P")),
+            (("block", "output"), ("coupler", "rocker")), "output", scale=self.a)
+
     def sketch(self, motion) -> Sketch:
         """МЧВ3: the slotted link (a bar through the pivot along the slot, numbered), highlighted in the
         dwell, and the dwell part of D's path."""
-        sk = super().sketch(motion)
+        sk = Sketch(bars(self), self.pivots)   # the slotted link drawn here, offset slot and all
         P, psi, still = motion.points["P"].p, motion.psi, in_dwell(motion.phi, self.dwell)
         reach = 1.2 * np.max(np.hypot(*(motion.points["D"].p - P).T))
         path, offset = dwell_path(self, self.dwell), self.offset

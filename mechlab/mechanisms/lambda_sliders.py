@@ -8,9 +8,9 @@ from functools import cached_property
 import numpy as np
 from ..errors import MechanismError
 from ..geometry import PointPath, as_angles, cross, dyad_rrp, unit
-from .base import TWO_PI, Mechanism, Part, Sketch, block_outline
+from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, block_outline
 from ..motion import LinearMotion
-from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 from ..validate import Angle, Coordinate, Length, Sign
 from ..errors import InfeasibleDesignError
 
@@ -99,10 +99,19 @@ class LambdaSliderSixBar(_OnLambda):
 
         return LinearMotion(phi, pts, mu2, s.theta, s.d, s.dd)
 
+    def structure(self) -> Structure:
+        """МЧВ2: the lambda mechanism, the rod D→E and the slider E on the guide (angle θ); groups
+        (rod, slider), then (coupler, rocker)."""
+        return Structure(
+            (*lambda_links(self.base), Link("rod", "D", ("D", "E"), self.rod), Link("slider", "E", self.theta)),
+            (*lambda_pairs(), Pair("revolute", "D", "coupler", "rod", "D"), Pair("revolute", "E", "rod", "slider", "E"),
+             Pair("prismatic", "guide", FRAME, "slider", "E", self.theta)),
+            (("rod", "slider"), ("coupler", "rocker")), "slider", scale=self.a)
+
     def sketch(self, motion) -> Sketch:
         """МЧВ2: the guide through Q, the slider block at E (numbered, highlighted in the dwell), D's dwell
         path."""
-        sk = super().sketch(motion)
+        sk = Sketch(bars(self), self.pivots)   # the guide and the output drawn here
         u, s, E, still = self.u, motion.s, motion.points["E"].p, in_dwell(motion.phi, self.dwell)
         size = 0.2 * self.rod
         guide = np.array([self.Q + (s.min() - 2 * size) * u, self.Q + (s.max() + 2 * size) * u])
@@ -182,10 +191,20 @@ class LambdaTranslatingSlot(_OnLambda):
         pts["E"] = PointPath(self.P + s[:, None] * w, ds[:, None] * w, dds[:, None] * w)
         return LinearMotion(phi, pts, np.full(len(phi), self.transmission_angle), s, ds, dds)
 
+    def structure(self) -> Structure:
+        """МЧВ5: the lambda mechanism, a block at D in the output's slot (angle ``slot``), the output
+        translating along ``guide`` through E; groups (block, output), then (coupler, rocker)."""
+        return Structure(
+            (*lambda_links(self.base), Link("block", "D", self.slot, block=True), Link("output", "E", self.guide)),
+            (*lambda_pairs(), Pair("revolute", "D", "coupler", "block", "D"),
+             Pair("prismatic", "slot", "output", "block", "D", self.slot - self.guide),
+             Pair("prismatic", "guide", FRAME, "output", "E", self.guide)),
+            (("block", "output"), ("coupler", "rocker")), "output", scale=self.a)
+
     def sketch(self, motion) -> Sketch:
         """МЧВ5: the fixed guide (a bushing beyond the bar's travel), the output link (a slot through D
         and a bar along the guide; numbered, highlighted in the dwell), the block at D, D's dwell path."""
-        sk = super().sketch(motion)
+        sk = Sketch(bars(self), self.pivots)   # the guide and the output drawn here
         v, w = np.array([np.cos(self.slot), np.sin(self.slot)]), np.array([np.cos(self.guide), np.sin(self.guide)])
         E, D = motion.points["E"].p, motion.points["D"].p
         still = in_dwell(motion.phi, self.dwell)

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from typing import Annotated
 
 import numpy as np
-from ..errors import DimensionError
+from ..errors import DimensionError, MechanismError
 from ..geometry import AnglePath, PointPath, as_angles, vector_angle
 from .base import Mechanism
 from ..motion import AngularMotion, Quantity, Table
@@ -37,6 +37,10 @@ class SphericalModel:
 Allowance = Annotated[float, number(5.0, 8.0, why="within [5, 8] mm, seed formula (9)")]
 
 
+class SpatialMechanismError(MechanismError):
+    """A planar method (instantaneous centres, planar kinetostatics) asked of a spatial mechanism."""
+
+
 @dataclass(frozen=True)
 class SphericalGeneva(Mechanism):
     """Hemispherical Geneva with perpendicular axes and offset e (Vainer & Shatokhina).
@@ -58,6 +62,16 @@ class SphericalGeneva(Mechanism):
     links = (("B", "P"),)
     pivots = ("O", "O1")
     output = "angle"
+
+    def structure(self):
+        """None in the plane: crank and wheel turn about perpendicular axes and the pin touches the slot on
+        the sphere, so the planar structure of links, planar pairs and Assur groups, and with it the
+        instantaneous centres and the planar kinetostatics, does not apply; the crank torque comes from the
+        power balance (:func:`mechlab.kinetostatics.geneva.crank_torque`). SpatialMechanismError says so."""
+        raise SpatialMechanismError(
+            "the spherical Geneva is a spatial mechanism (crank and wheel axes perpendicular, the contact on the "
+            "sphere): it has no planar structure, so planar instantaneous centres and the planar kinetostatics do "
+            "not apply; use mechlab.kinetostatics.geneva.crank_torque (the power balance) for its torque")
 
     def __post_init__(self):
         super().__post_init__()
