@@ -8,6 +8,7 @@ from typing import Mapping
 import numpy as np
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import PointPath, cross, dot, perp, relative, unit, vector_angle
+from ..mechanisms.base import output_axis  # Body(..., axis=output_axis): readers import it from here
 from ..motion import Motion
 from .model import (FRAME, Force, ForceModel, G, HigherPair, LoadError, Prismatic, Revolute, SelfLockingError,
                     StructureError, Torque)
@@ -46,11 +47,6 @@ class _Frame:
     def velocity_at(self, p: np.ndarray) -> np.ndarray:
         """Velocity analog of the link's point that coincides with positions ``p``."""
         return self.o.d + self.dth[:, None] * perp(p - self.o.p)
-
-
-def output_axis(motion) -> tuple:
-    """The output angle ψ with ψ', ψ'' as a link axis (``Body(..., axis=output_axis)``)."""
-    return motion.psi, motion.dpsi, motion.ddpsi
 
 
 def _frames(model: ForceModel, motion: Motion) -> dict[str, _Frame]:

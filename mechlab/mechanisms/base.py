@@ -11,7 +11,7 @@ from typing import Annotated, Any, ClassVar
 import numpy as np
 
 from ..errors import AssemblyError, DimensionError, MechanismError, RotationError
-from ..geometry import AnglePath, lift, relative, vector_angle
+from ..geometry import AnglePath, lift, relative, unit, vector_angle
 from ..motion import Motion, scalar_in_scalar_out
 from ..validate import Checked, Samples, mechanism, validated
 
@@ -342,14 +342,14 @@ def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
             reach = 1.15 * link.length
             parts.append(Part("extra", lambda i, o=origin, th=th, r=reach: np.array(
                 [o[i], o[i] + r * np.array([np.cos(th[i]), np.sin(th[i])])]), True))
-        elif slot is not None:   # a yoke: the slot across the pin's track, a rod along its guide
-            v = _unit_at(link.axis + slot.angle)
-            u = _unit_at(guide.angle if guide is not None else link.axis)
-            half = 1.3 * float(np.max(np.abs((pts[slot.point].p - origin) @ v)))
-            parts.append(Part("extra", lambda i, o=origin, v=v, u=u, h=half: np.array(
-                [o[i] + h * v, o[i] - h * v, o[i], o[i] + 1.6 / 1.3 * h * u]), True))
+        elif slot is not None:   # a yoke: the slot across the pin's track (1.3 × its reach), a rod along the guide
+            v = unit(link.axis + slot.angle)
+            u = unit(guide.angle if guide is not None else link.axis)
+            reach = float(np.max(np.abs((pts[slot.point].p - origin) @ v)))
+            parts.append(Part("extra", lambda i, o=origin, v=v, u=u, r=reach: np.array(
+                [o[i] + 1.3 * r * v, o[i] - 1.3 * r * v, o[i], o[i] + 1.6 * r * u]), True))
         elif guide is not None and link.translates and not link.block:   # a block on its guide
-            u = _unit_at(guide.angle)   # the frame's axis is x
+            u = unit(guide.angle)   # the frame's axis is x
             path = pts[guide.point].p
             along = path @ u
             foot = path[0] - along[0] * u
@@ -357,10 +357,6 @@ def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
             parts += [Part("extra", lambda i, g=rail: g),
                       Part("extra", lambda i, p=path, u=u: block_outline(p[i], u, 2 * size, size), True)]
     return tuple(parts)
-
-
-def _unit_at(angle: float) -> np.ndarray:
-    return np.array([np.cos(angle), np.sin(angle)])
 
 
 # a parameter that takes any mechanism (TypeError naming the class otherwise)

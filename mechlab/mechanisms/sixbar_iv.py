@@ -46,7 +46,7 @@ from scipy.optimize import brentq
 from ..errors import AssemblyError, DimensionError, RotationError, SingularityError
 from ..geometry import (AnglePath, PointPath, as_angles, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit,
                         vector_angle)
-from .base import FRAME, Link, Mechanism, Pair, Sketch, Structure
+from .base import FRAME, Link, Mechanism, Pair, Sketch, Structure, output_axis
 from .curved_slot import CurvedSlotLink, ParametricSlot
 from ..motion import AngularMotion
 from ..validate import Length, OptionalAngle, Point, Sign
@@ -281,9 +281,6 @@ class SixBarIV(Mechanism):
     def structure(self) -> Structure:
         """Crank O→A and the class-IV group: coupler A-Q-P (axis Q→P), link 3 Q→R, link 5 P→T and the
         output R-T-E turning about E (axis at ψ); seven revolute pairs."""
-        def output_axis(mo):
-            return mo.psi, mo.dpsi, mo.ddpsi
-
         return Structure(
             (Link("crank", "O", ("O", "A"), self.crank), Link("coupler", "A", ("Q", "P"), self.qp),
              Link("link 3", "Q", ("Q", "R"), self.link3), Link("link 5", "P", ("P", "T"), self.link5),

@@ -1,8 +1,8 @@
 """Instantaneous centres and centrodes (Kozhevnikov, §7.1-7.2).
 
 * :func:`instant_centres` — every relative centre of any mechanism that describes its
-  ``structure()`` (four-bar, slider-crank, slotted link, sine mechanism, elliptic trammel,
-  antiparallelogram, the cams), by Kennedy's theorem
+  ``structure()`` (every planar family: linkages, the lambda six-bars, the class-IV six-bar,
+  curved slots, Geneva wheels, cams; the spherical Geneva refuses by name), by Kennedy's theorem
   (or, as a check, from the links' velocity twists), vectorised over φ; centres at
   infinity are explicit (homogeneous coordinates, :class:`Centre`).
 * :func:`centrodes` — fixed and moving centrodes of any link relative to any other.
