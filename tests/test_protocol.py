@@ -173,3 +173,18 @@ def test_a_family_without_structure_draws_its_bars():
     assert len(d.link_lines) == 3 and d.extra_lines == []
     assert np.allclose(np.column_stack(d.link_lines[1].get_data()), [d.motion.points[k].p[0] for k in "AB"])
     plt.close("all")
+
+
+def test_one_drawing_goes_from_family_to_family_restyling_its_lines():
+    fig, ax = plt.subplots()
+    d = LinkageDrawing(ax, cams()[0], n=12)   # a profile, its fill, a roller, a stem, a "dwell" note
+    d.set_mechanism(SkewYoke(0.3))
+    children = len(ax.get_children())   # the yoke's letter K and its numbers added
+    assert [line.get_visible() for line in d.extra_lines][1:] == [False] * (len(d.extra_lines) - 1)
+    assert d.extra_lines[0].get_color() == "#2a7f62" and d.extra_lines[0].get_linewidth() == 2.5   # the yoke
+    assert not d.fills[0].get_visible() and not d.note.get_visible()
+    d.set_mechanism(cams()[0])
+    assert [line.get_color() for line in d.lines_of("roller")] == ["#1f4e79"] and d.fills[0].get_visible()
+    d.set_mechanism(SkewYoke(0.3))
+    assert len(ax.get_children()) == children   # nothing made twice
+    plt.close(fig)

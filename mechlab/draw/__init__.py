@@ -210,6 +210,7 @@ class LinkageDrawing:
         self.extra_lines = []    # one per other polyline part, styled by its role
         self.fills = []          # filled outlines (a cam's body)
         self.note = None         # a text in the corner ("dwell")
+        self._roles = {}         # the role each line is styled for
         (self.trace_line,) = ax.plot([], [], **TRACE_STYLE)
         (self.ground_line,) = ax.plot([], [], **GROUND_STYLE)
         (self.pivot_marks,) = ax.plot([], [], **PIVOT_STYLE)
@@ -260,15 +261,18 @@ class LinkageDrawing:
             self.fills.append(ax.fill([], [])[0])
         if self.noted and self.note is None:
             self.note = ax.text(0.02, 0.95, "", transform=ax.transAxes, **NOTE_STYLE)
-        for line, part in zip(self.link_lines, self.bars):
-            line.set(visible=True, **ROLE_STYLES.get(part.role, LINK_STYLE))
-        for line, part in zip(self.extra_lines, self.drawn):
-            line.set(**{"visible": True, **ROLE_STYLES.get(part.role, EXTRA_STYLE)})
-        for patch, part in zip(self.fills, self.filled):
-            patch.set(visible=True, **ROLE_STYLES["fill"])
+        roles = [*(("link", p.role) for p in self.bars), *(("extra", p.role) for p in self.drawn),
+                 *(("fill", "fill") for _ in self.filled)]
+        artists = [*self.link_lines[:len(self.bars)], *self.extra_lines[:len(self.drawn)], *self.fills[:len(self.filled)]]
+        for artist, (kind, role) in zip(artists, roles):
+            if self._roles.get(artist) != role:   # restyled only when its role changes
+                default = LINK_STYLE if kind == "link" else EXTRA_STYLE
+                artist.set(**{"visible": True, **ROLE_STYLES.get(role, default)})
+                self._roles[artist] = role
         for spare in (*self.link_lines[len(self.bars):], *self.extra_lines[len(self.drawn):],
                       *self.fills[len(self.filled):]):
             spare.set_visible(False)
+            self._roles[spare] = None
         if self.note is not None:
             self.note.set_visible(bool(self.noted))
 

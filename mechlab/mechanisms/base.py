@@ -331,7 +331,6 @@ def lift_on_ranges(theta: np.ndarray, phi: np.ndarray, refs) -> np.ndarray:
 def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
     """The parts the pairs of a structure show: slotted links, yokes, guides and blocks."""
     pts = motion.points
-    size = 0.08 * float(np.nanmax(np.ptp(np.concatenate([v.p for v in pts.values()]), axis=0)) or 1.0)
     parts = []
     for link in st.links:
         slot = next((p for p in st.pairs if p.kind == "prismatic" and p.a == link.name and st.link(p.b).block), None)
@@ -351,11 +350,12 @@ def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
         elif guide is not None and link.translates and not link.block:   # a block on its guide
             u = unit(guide.angle)   # the frame's axis is x
             path = pts[guide.point].p
+            size = 0.08 * float(np.nanmax(np.ptp(np.concatenate([v.p for v in pts.values()]), axis=0)) or 1.0)
             along = path @ u
             foot = path[0] - along[0] * u
             rail = np.array([foot + (along.min() - 2 * size) * u, foot + (along.max() + 2 * size) * u])
             parts += [Part("extra", lambda i, g=rail: g),
-                      Part("extra", lambda i, p=path, u=u: block_outline(p[i], u, 2 * size, size), True)]
+                      Part("extra", lambda i, p=path, u=u, h=size: block_outline(p[i], u, 2 * h, h), True)]
     return tuple(parts)
 
 
