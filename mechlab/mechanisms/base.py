@@ -350,7 +350,7 @@ def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
         elif guide is not None and link.translates and not link.block:   # a block on its guide
             u = unit(guide.angle)   # the frame's axis is x
             path = pts[guide.point].p
-            size = 0.08 * float(np.nanmax(np.ptp(np.concatenate([v.p for v in pts.values()]), axis=0)) or 1.0)
+            size = 0.08 * st.scale
             along = path @ u
             foot = path[0] - along[0] * u
             rail = np.array([foot + (along.min() - 2 * size) * u, foot + (along.max() + 2 * size) * u])
