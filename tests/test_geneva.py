@@ -12,6 +12,7 @@ from mechlab.kinetostatics.drive import DriveError
 from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, impact_kind
 from mechlab.mechanisms.spherical_geneva import SphericalGeneva
 from mechlab.analysis.intermittency import compare, detect_impacts, intermittency
+from mechlab.analysis.motion_laws import invariants, rise_invariants
 from mechlab.kinetostatics.geneva import crank_torque, drive, drive_angles
 from mechlab.kinetostatics.drive import drive as fdrive
 from mechlab.mechanisms.fourbar import FourBar
@@ -426,7 +427,7 @@ def test_impact_detection_and_comparison():
     ext = intermittency(ExternalGeneva(4, 1.0), n=14401)
     assert ext.dwell_fraction == pytest.approx(0.75, abs=2e-4) and ext.index_deg == pytest.approx(90.0)
     assert ext.max_dpsi == pytest.approx(np.sqrt(2) + 1, rel=1e-9)
-    assert ext.Cv == pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3)
+    assert ext.B == pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3)
     shifted = intermittency(ExternalGeneva(4, 1.0), n=14401, phase=0.3)
     assert shifted.dwell_fraction == pytest.approx(0.75, abs=2e-4) and shifted.impact == "soft"
     loose = intermittency(ExternalGeneva(4, 1.0), n=14401, dwell_tol=0.5)
@@ -438,6 +439,26 @@ def test_impact_detection_and_comparison():
     # seed 004's motivation: the spherical drive accelerates less than the external planar one
     assert rows[1].max_ddpsi < rows[0].max_ddpsi
 
+
+
+@pytest.mark.parametrize("cls", [ExternalGeneva, InternalGeneva])
+@pytest.mark.parametrize("z", [4, 6, 8])
+def test_intermittency_is_the_motion_law_invariants(cls, z):
+    """intermittency's B, C, D are rise_invariants of the engaged part of the turn, and B, C equal the
+    Geneva's closed forms max|ψ'|·Φ/h and max|ψ''|·Φ²/h with Φ = 2σ0, h = 2π/z."""
+    g = cls(z, 1.0)
+    r = intermittency(g, n=14401)
+    s0, h = g.engagement_half_angle, abs(g.index_angle)
+    phi = np.pi + np.linspace(-s0, s0, 20001)
+    mo = g.motion(phi)
+    rise = rise_invariants(phi, mo.psi, mo.dpsi, mo.ddpsi)
+    assert r.B == pytest.approx(g.max_velocity() * 2 * s0 / h, rel=1e-3)
+    assert r.C == pytest.approx(g.max_acceleration() * (2 * s0) ** 2 / h, rel=2e-3)
+    assert (r.B, r.C, r.D) == pytest.approx(rise.values, rel=2e-3)
+    # the one definition: the same samples through invariants give intermittency's numbers exactly
+    turn = g.motion(np.linspace(0.0, 2 * np.pi, 14401))
+    same = invariants((1 - r.dwell_fraction) * 2 * np.pi, turn.psi[-1] - turn.psi[0], turn.dpsi, turn.ddpsi)
+    assert (r.B, r.C, r.D) == same.values
 
 # -- exercises and errata -------------------------------------------------------------------------
 

@@ -14,6 +14,7 @@ from ..mechanisms.geneva import TWO_PI
 from ..motion import Table
 from ..validate import MAX_SAMPLES, Angle, count, number, validated
 from ..validate import mechanism as mechanism_of
+from .motion_laws import invariants
 
 
 # ----------------------------------------------------------------------------------
@@ -43,15 +44,18 @@ def detect_impacts(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)],
 
 @dataclass(frozen=True)
 class Intermittency:
-    """The invariants of one crank turn (:func:`intermittency`); ``index_deg`` = |Δψ| in degrees."""
+    """The invariants of one crank turn (:func:`intermittency`); ``index_deg`` = |Δψ| in degrees;
+    B, C, D are the motion-law invariants (:class:`~mechlab.analysis.motion_laws.Invariants`, the
+    glossary's C_v, C_a, C_p) of the motion part of the turn."""
 
     name: str
     dwell_fraction: float
     index_deg: float
     max_dpsi: float
     max_ddpsi: float
-    Cv: float
-    Ca: float
+    B: float
+    C: float
+    D: float
     impact: str
 
 
@@ -61,12 +65,12 @@ def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
                   dwell_tol: Annotated[float, number(0.0, 1.0, open=True)] = 1e-9, phase: Angle = 0.0,
                   name: str | None = None) -> Intermittency:
     """Invariants of one crank turn: dwell fraction (share of φ with |ψ'| ≤ dwell_tol·max|ψ'|),
-    output turn Δψ per crank turn, max |ψ'| and |ψ''|, and the dimensionless invariants
-    C_v = max|ψ'|·Φ/|Δψ| and C_a = max|ψ''|·Φ²/|Δψ| with Φ = (1 - dwell)·2π the crank
-    angle of the motion: the cam-law coefficients (cycloidal law: C_v = 2, C_a = 2π).
+    output turn Δψ per crank turn, max |ψ'| and |ψ''|, and the motion-law invariants B, C, D
+    (:func:`~mechlab.analysis.motion_laws.invariants`) with h = Δψ over Φ = (1 - dwell)·2π, the crank
+    angle of the motion (cycloidal law: B = 2, C = 2π; Kinitsky, 1994, chapter 2).
     An approximate dwell (a linkage's) needs a larger ``dwell_tol`` (in (0, 1)); the samples start at
     ``phase``; ``name`` labels the row (by default the mechanism's class). The output must turn:
-    DimensionError for a rocker (Δψ = 0 per turn, C_v undefined)."""
+    DimensionError for a rocker (Δψ = 0 per turn, B undefined)."""
     if mechanism.output != "angle":
         raise DimensionError(f"mechanism must have an angular output (ψ), got a {type(mechanism).__name__}")
     phi = phase + np.linspace(0.0, TWO_PI, n)
@@ -77,12 +81,11 @@ def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
     dpsi_turn = float(mo.psi[-1] - mo.psi[0])
     if abs(dpsi_turn) <= 1e-9:
         raise DimensionError(f"the output does not advance over a crank turn (Δψ = {dpsi_turn:.3g} rad): "
-                             f"C_v and C_a are defined for an indexing output, not a rocker")
-    amax = float(np.max(np.abs(mo.ddpsi)))
-    Phi = (1.0 - dwell) * TWO_PI
+                             f"B and C are defined for an indexing output, not a rocker")
+    inv = invariants((1.0 - dwell) * TWO_PI, dpsi_turn, mo.dpsi, mo.ddpsi)
     return Intermittency(type(mechanism).__name__ if name is None else name, dwell,
-                         float(np.degrees(abs(dpsi_turn))), vmax, amax, vmax * Phi / abs(dpsi_turn),
-                         amax * Phi**2 / abs(dpsi_turn), detect_impacts(mechanism, phase=phase))
+                         float(np.degrees(abs(dpsi_turn))), vmax, float(np.max(np.abs(mo.ddpsi))), *inv.values,
+                         detect_impacts(mechanism, phase=phase))
 
 
 def compare(mechanisms: dict, **kw) -> Table:

@@ -14,8 +14,9 @@ them. ``signed=True`` gives the signed maxima max y'' and max y'y'' instead (the
 only). They differ where the law is not odd about mid-rise: for the double harmonic law
 D = 9.8948 (absolute) against 7.7516 (signed), and the thesis prints 7.00, neither.
 
-:func:`rise_invariants` measures the same numbers on any output law ψ(φ) sampled by a
-mechanism (analogs ψ', ψ'' with respect to φ), so linkages and cams go in one table.
+:func:`invariants` measures the same numbers on any output law ψ(φ) sampled by a mechanism
+(analogs ψ', ψ'' with respect to φ; :func:`rise_invariants` over one sampled rise), so linkages
+and cams go in one table.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from scipy.optimize import minimize_scalar
 
 from ..errors import MechanismError
 
-__all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "rise_invariants", "thesis_cam_rows",
+__all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "invariants", "rise_invariants", "thesis_cam_rows",
            "thesis_mchv1_rows"]
 
 
@@ -172,23 +173,27 @@ def law_invariants(law: RiseLaw | str, n: int = 20001, *, signed: bool = False) 
                       peak(lambda s: size(law.dy(s) * law.ddy(s))))
 
 
-def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: np.ndarray, *,
-                    signed: bool = False) -> Invariants:
-    """B, C, D of an output law sampled over one rise (φ from its start to its end).
+def invariants(Phi: float, h: float, dpsi: np.ndarray, ddpsi: np.ndarray, *, signed: bool = False) -> Invariants:
+    """B, C, D of an output law that moves by ``h`` over the crank angle ``Phi``, from its analogs.
 
-    With Φ = φ_end − φ_start and h = ψ_end − ψ_start: B = max|ψ'|·Φ/|h|, C = max|ψ''|·Φ²/|h|,
-    D = max|ψ'ψ''|·Φ³/h² (Kinitsky, 1994, chapter 2: invariants of velocity, acceleration and kinetic
-    power); with ``signed`` C and D are the signed maxima in the direction of the rise.
-    Raises MechanismError if the output does not move.
+    B = max|ψ'|·Φ/|h|, C = max|ψ''|·Φ²/|h|, D = max|ψ'ψ''|·Φ³/h² (Kinitsky, 1994, chapter 2:
+    invariants of velocity, acceleration and kinetic power); with ``signed`` C and D are the signed
+    maxima in the direction of the rise. Raises MechanismError if the output does not move.
     """
-    Phi = float(phi[-1] - phi[0])
-    h = float(psi[-1] - psi[0])
+    Phi, h = float(Phi), float(h)
     if not abs(h) > 0 or not Phi > 0:
         raise MechanismError(f"no rise to normalise: stroke h = {h:.3g}, duration Φ = {Phi:.3g}")
     acc, power = np.asarray(ddpsi) * np.sign(h), np.asarray(dpsi) * np.asarray(ddpsi)  # along the rise
     if not signed:
         acc, power = np.abs(acc), np.abs(power)
     return Invariants(np.max(np.abs(dpsi)) * Phi / abs(h), np.max(acc) * Phi**2 / abs(h), np.max(power) * Phi**3 / h**2)
+
+
+def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: np.ndarray, *,
+                    signed: bool = False) -> Invariants:
+    """:func:`invariants` of an output law sampled over one rise (φ from its start to its end):
+    Φ = φ_end − φ_start and h = ψ_end − ψ_start."""
+    return invariants(phi[-1] - phi[0], psi[-1] - psi[0], dpsi, ddpsi, signed=signed)
 
 
 def thesis_cam_rows() -> dict:
