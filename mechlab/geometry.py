@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import os
 from concurrent.futures import ThreadPoolExecutor
-from typing import NamedTuple
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -65,12 +65,16 @@ class PointPath:
         return f"PointPath(n={len(self.p)})"
 
 
-class AnglePath(NamedTuple):
-    """An angle θ(φ) and its analogs θ' and θ''."""
+@dataclass(frozen=True, eq=False)
+class AnglePath:
+    """An angle θ(φ) and its analogs θ' and θ''; unpacks like the tuple ``(theta, d, dd)``."""
 
     theta: np.ndarray
     d: np.ndarray
     dd: np.ndarray
+
+    def __iter__(self):
+        return iter((self.theta, self.d, self.dd))
 
 
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:

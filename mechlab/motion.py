@@ -12,14 +12,15 @@ from __future__ import annotations
 
 import functools
 import html
-from dataclasses import dataclass, field, fields
+import inspect
+from dataclasses import dataclass, field, fields, is_dataclass, replace
 from numbers import Real
 from typing import Callable, Mapping
 
 import numpy as np
 
 from .errors import DimensionError, SingularityError
-from .geometry import PointPath, as_angles, relative, vector_angle
+from .geometry import AnglePath, PointPath, as_angles, relative, vector_angle
 from .validate import Reals, validated
 
 
@@ -231,17 +232,48 @@ def scalar_in_scalar_out(motion):
     return wrapped
 
 
+def first_of(result):
+    """A result over crank angles [φ] (arrays of one) as the result at φ: every array, path and motion
+    taken at its first row, in the result itself or in a field of a frozen dataclass result
+    (one level down, so that a mechanism held by the result is left alone). A result with its own
+    ``_first()`` (a motion, the instantaneous centres) gives that."""
+    if hasattr(result, "_first"):
+        return result._first()
+    if is_dataclass(result) and not isinstance(result, (type, AnglePath)):
+        return replace(result, **{f.name: _first(getattr(result, f.name)) for f in fields(result) if f.init})
+    return _first(result)
+
+
+def _first(value):
+    if hasattr(value, "_first"):
+        return value._first()
+    if isinstance(value, (PointPath, AnglePath)):
+        return type(value)(*(v[0] for v in value))
+    if isinstance(value, np.ndarray):
+        return value[0] if value.ndim else value
+    if isinstance(value, tuple):
+        return tuple(_first(v) for v in value)
+    if isinstance(value, dict):
+        return {k: first_of(v) for k, v in value.items()}
+    return value
+
+
 def scalar_law(law_of):
-    """Wrap ``law_of(x, phi, ...)``, which returns a law (a frozen dataclass or a named tuple of
-    arrays over φ), so that a real scalar φ gives the law's values at that φ as scalars."""
+    """Wrap ``law_of(x, ..., phi, ...)`` (a function of an object and crank angles ``phi``, or a
+    method), which returns results over φ, so that a real scalar φ gives the results at that φ as scalars
+    (:func:`first_of`)."""
+    at = list(inspect.signature(law_of).parameters).index("phi") - 1   # in args after x
+
     @functools.wraps(law_of)
-    def wrapped(x, phi, *args, **kwargs):
+    def wrapped(x, *args, **kwargs):
+        phi = args[at] if len(args) > at else kwargs.get("phi")
         if not _real_scalar(phi):
-            return law_of(x, phi, *args, **kwargs)
-        law = law_of(x, as_angles(phi), *args, **kwargs)
-        if hasattr(law, "_fields"):   # a named tuple
-            return law._make(v[0] for v in law)
-        return type(law)(**{f.name: getattr(law, f.name)[0] for f in fields(law)})
+            return law_of(x, *args, **kwargs)
+        if len(args) > at:
+            args = (*args[:at], as_angles(phi), *args[at + 1:])
+        else:
+            kwargs["phi"] = as_angles(phi)
+        return first_of(law_of(x, *args, **kwargs))
     return wrapped
 
 

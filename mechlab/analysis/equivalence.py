@@ -1,46 +1,15 @@
-"""Kinematic equivalence of linkages with one second-order group and curved-slot
-slotted links; the base mechanism; the symmetry of the two assemblies (Zinchenko et al. (2013), §1).
+"""Kinematic equivalence of linkages with one second-order group and curved-slot slotted links; the
+base mechanism; the symmetry of the two assemblies (Zinchenko et al. (2013), §1, Figs. 1-6).
 
-Zinchenko et al. (2013) §1 (Fig. 1-4): a linkage made of a crank, the frame and one second-order
-structural group (a dyad, or the class-IV group of :mod:`mechlab.mechanisms.sixbar_iv`) has one
-degree of freedom relative to its output link, so the crank pin A traces a fixed
-curve in the output link's frame — the **relative path**. A slotted link whose slot
-follows that curve, pivoted (or guided) like the output link and driven by the same
-crank, moves exactly like the linkage's output. For the four-bar the curve is the
-circle of radius l_AB about B (Fig. 2), for the slider-crank the circle of radius
-l_AB about the slider's pin (Fig. 4), for the class-IV six-bar a four-bar coupler curve.
-
-Public API
-----------
-* ``relative_path(mechanism, phi) -> PointPath`` — A in the output link's frame
-  (origin at the output pivot, x axis along ψ = 0; for a translating output the
-  frame's origin is C = (s, 0)), with its φ-analogs.
-* ``equivalent_slot(mechanism) -> EquivalentSlot`` — the curved-slot twin, a
-  :class:`~mechlab.mechanisms.base.Mechanism` in the linkage's own frame whose
-  ``motion(phi)`` reproduces the linkage's law; ``.slot_mechanism`` is the
-  :class:`~mechlab.mechanisms.curved_slot.CurvedSlotLink` /
-  :class:`~mechlab.mechanisms.curved_slot.TranslatingCurvedSlot` in Zinchenko et al.'s (2013) frame.
-* ``equivalence_error(mechanism, phi) -> float`` — max |law difference| (ψ, ψ', ψ'').
-* ``base_mechanism(mechanism)`` — ``SlottedLink(l_OA, l_OE)`` (straight slot through
-  the output pivot, seed Fig. 5) or ``SineMechanism(l_OA)`` (seed Fig. 6).
-* ``base_law(mechanism, phi) -> AnglePath`` — the base mechanism's law ψ_K, ψ_K', ψ_K''
-  (or x_K …) expressed in the mechanism's own frame.
-* ``other_assembly(mechanism)``, ``assembly_symmetry(mechanism, phi) -> AssemblySymmetry``
-  — the exact relations between the kc = +1 and kc = -1 assemblies (below).
-
-Symmetry of the assemblies (Zinchenko et al. (2013) §1, after Fig. 6; derived here, not copied).
-The relative path of a four-bar is the whole circle about B; the assembly kc = +1
-uses one arc (α1–α1), kc = -1 the other (α2–α2), and the two arcs are mirror images
-in the output link's axis E→B. With ψ measured from the frame line (x axis):
-
-* ψ₋(φ) = -ψ₊(-φ) (mod 2π), ψ'₋(φ) = ψ'₊(-φ), ψ''₋(φ) = -ψ''₊(-φ)  (mirror in the frame line);
-* (ψ₊(φ) + ψ₋(φ))/2 = ψ_K(φ) (mod π) and likewise for ψ', ψ'': the two assemblies
-  deviate from the base mechanism by equal and opposite angles β (formula (12));
-* the relative paths mirror: y₋(φ) = -y₊(φ), x₋(φ) = x₊(φ) in the output link's frame.
-
-For the slider-crank (assemblies ±1 = slider ahead of / behind the pin):
-s₋(φ) = -s₊(π - φ) (mirror in the y axis), (s₊ + s₋)/2 = x_K = l_OA cos φ, and the
-relative paths mirror in the slot frame's vertical axis: x₋ = -x₊, y₋ = y₊.
+A crank, the frame and one second-order group (a dyad, or the class-IV group of
+:mod:`mechlab.mechanisms.sixbar_iv`) leave one degree of freedom relative to the output link, so the
+pin A traces a fixed curve in the output's frame, the **relative path** (:func:`relative_path`):
+a circle of radius l_AB for the four-bar (Fig. 2) and the slider-crank (Fig. 4), a coupler curve for
+the class-IV six-bar. A slotted link with that slot, pivoted like the output, moves exactly like it
+(:func:`equivalent_slot`, :class:`EquivalentSlot`). :func:`base_mechanism` and :func:`base_law` give
+the straight-slot base mechanism (Figs. 5-6) in the mechanism's own frame;
+:func:`assembly_symmetry` checks the relations between the k_c = +1 and -1 assemblies (after Fig. 6,
+derived here). The book's first chapters derive all three.
 """
 
 from __future__ import annotations
@@ -81,6 +50,7 @@ def _rot(angle, v):
 # ---------------------------------------------------------------------------------------------
 # relative path
 # ---------------------------------------------------------------------------------------------
+@scalar_law
 @validated
 def relative_path(mechanism: AnyMechanism, phi: Angles) -> PointPath:
     """The crank pin A seen from the output link, with its φ-analogs (Zinchenko et al. (2013) §1, Fig. 1-4).
@@ -238,7 +208,7 @@ def other_assembly(mechanism: Mechanism) -> Mechanism:
 
 @dataclass(frozen=True)
 class AssemblySymmetry:
-    """Max residuals of the exact relations between the two assemblies (see the module docstring)."""
+    """Max residuals of the exact relations between the two assemblies (listed in :func:`assembly_symmetry`)."""
 
     mirror: float        # ψ₋(φ) = -ψ₊(-φ) … / s₋(φ) = -s₊(π - φ) …, over the law and both analogs
     mean_is_base: float  # (ψ₊ + ψ₋)/2 = ψ_K … / (s₊ + s₋)/2 = x_K …
@@ -250,7 +220,13 @@ class AssemblySymmetry:
 
 @validated
 def assembly_symmetry(mechanism: AnyMechanism, phi: Angles) -> AssemblySymmetry:
-    """Residuals of the assembly relations for a FourBar or SliderCrank at crank angles φ."""
+    """Residuals of the assembly relations for a FourBar or SliderCrank at crank angles φ.
+
+    Four-bar (ψ from the frame line): ψ₋(φ) = -ψ₊(-φ) (mod 2π), ψ'₋(φ) = ψ'₊(-φ),
+    ψ''₋(φ) = -ψ''₊(-φ); (ψ₊ + ψ₋)/2 = ψ_K (mod π), likewise for the analogs (equal and opposite β,
+    formula (12)); relative paths y₋ = -y₊, x₋ = x₊. Slider-crank (±1: slider ahead of / behind the
+    pin): s₋(φ) = -s₊(π - φ), (s₊ + s₋)/2 = l_OA cos φ; relative paths x₋ = -x₊, y₋ = y₊.
+    """
     phi = as_angles(phi)
     plus = mechanism if mechanism.assembly == 1 else other_assembly(mechanism)
     minus = other_assembly(plus)

@@ -1,38 +1,16 @@
 """Half-turn relations (Zinchenko et al. (2013), Tables 1-2, formulas (1)-(17)) and the limit theorem.
 
-Where the relations hold
-------------------------
-Frame: the crank angle φ and the output angle ψ are measured from the frame line
-through O and the output pivot (Zinchenko et al.'s (2013) frame, or the four-bar's, which differs
-by a half turn and gives the same relations); the slotted link's pin runs back and
-forth along one piece of the slot, so its place on the slot depends only on its
-distance S(φ) from the pivot (oscillating link) or its height l_OA·sin φ (translating
-link). Every linkage with one second-order group does this (see
-:mod:`mechlab.analysis.equivalence`), and so does every :class:`CurvedSlotLink`.
+They hold where the pin runs back and forth along one piece of the slot, so that its place on the
+slot depends only on its distance S(φ) from the pivot or its height l_OA·sin φ: every linkage with
+one second-order group (:mod:`mechlab.analysis.equivalence`) and every curved-slot link. With
+ψ = ψ_K - β (formula (12)) and φ* = 2π - φ (Table 2; φ* = π - φ and s = x_K - x_α, Table 1):
+ψ(φ*) = ψ(φ) - 2ψ_K(φ), ψ'(φ*) = 2ψ_K'(φ) - ψ'(φ), ψ''(φ*) = ψ''(φ) - 2ψ_K''(φ)
+(:func:`other_half`), so a law can be chosen on [0, π] only.
 
-Oscillating or rotating link (Table 2), φ* = 2π - φ (S(φ*) = S(φ), so β(φ*) = β(φ)):
-with ψ = ψ_K - β (formula (12)),
-
-    ψ(φ*) = ψ(φ) - 2ψ_K(φ)          (= -[ψ_K(φ) + β], mod 2π)
-    ψ'(φ*) = 2ψ_K'(φ) - ψ'(φ)       (= ψ_K'(φ) + β')
-    ψ''(φ*) = ψ''(φ) - 2ψ_K''(φ)    (= -[ψ_K''(φ) + β''])
-
-Translating link (Table 1), φ* = π - φ (sin φ* = sin φ, so x_α(φ*) = x_α(φ)), with
-s = x_K - x_α, x_K = l_OA cos φ:
-
-    s(φ*) = s(φ) - 2x_K(φ),  s'(φ*) = 2x_K'(φ) - s'(φ),  s''(φ*) = s''(φ) - 2x_K''(φ).
-
-So the law on one half of the crank turn fixes it on the other half: it can be
-chosen freely on [0, π] only (Zinchenko et al. (2013), text after Table 2).
-
-Limit theorem (Zinchenko et al. (2013) §2, conclusions before §3)
------------------------------------------------------------------
-Adding the relations for the first analog: ψ'(φ) + ψ'(φ*) = 2ψ_K'(φ), so
-max(|ψ'(φ)|, |ψ'(φ*)|) ≥ |ψ_K'(φ)| at every φ, whence
-max_φ |ψ'| ≥ max_φ |ψ_K'| = λ/|1 - λ| (at φ = π, from (19)). Likewise
-ψ''(φ) - ψ''(φ*) = 2ψ_K''(φ) gives max |ψ''| ≥ max |ψ_K''|, the peak of (20) (closed
-form in :func:`base_peaks`). The same holds for translating links with x_K = l_OA cos φ
-(peaks l_OA and l_OA). Equality needs β' ≡ 0 (resp. β'' ≡ 0): the base mechanism itself.
+Limit theorem (§2, conclusions before §3), :func:`limit_theorem`: ψ'(φ) + ψ'(φ*) = 2ψ_K'(φ) gives
+max|ψ'| ≥ max|ψ_K'| = λ/|1 - λ| (at φ = π, (19)), and likewise max|ψ''| ≥ max|ψ_K''| (the peak of
+(20), :func:`base_peaks`); equality only for the base mechanism itself. The book's chapter on the base
+mechanism derives both.
 """
 
 from __future__ import annotations
@@ -126,6 +104,7 @@ def _law(mo) -> AnglePath:
     return AnglePath(out.value, out.d, out.dd)
 
 
+@scalar_law
 @validated
 def other_half(mechanism: AnyMechanism, phi: Angles) -> HalfTurn:
     """Predict the law at φ* = 2π - φ (or π - φ) from the law at φ and the base mechanism."""

@@ -28,9 +28,10 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from ..errors import MechanismError
+from ..motion import Table
 
-__all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "invariants", "rise_invariants", "thesis_cam_rows",
-           "thesis_mchv1_rows"]
+__all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "invariants", "rise_invariants", "PrintedInvariants",
+           "thesis_cam_rows", "thesis_mchv1_rows"]
 
 
 @dataclass(frozen=True)
@@ -196,18 +197,33 @@ def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: n
     return invariants(phi[-1] - phi[0], psi[-1] - psi[0], dpsi, ddpsi, signed=signed)
 
 
-def thesis_cam_rows() -> dict:
+@dataclass(frozen=True)
+class PrintedInvariants:
+    """One cam row of Kinitsky's (1994) table as printed: the law and its B, C, D (None: not readable)."""
+
+    law: str
+    B: float | None
+    C: float | None
+    D: float | None
+
+    @property
+    def values(self) -> tuple:
+        """(B, C, D)."""
+        return self.B, self.C, self.D
+
+
+def thesis_cam_rows() -> Table:
     """The cam rows of the table on page 21 of Kinitsky (1994) as printed (B, C, D), where the OCR is
-    readable; keys are the laws of :data:`LAWS`. The rows "Stoddart", "Kurd" and the power law
+    readable; the laws are those of :data:`LAWS`. The rows "Stoddart", "Kurd" and the power law
     with sine-type acceleration are not decodable reliably and are left out."""
-    return {
-        "constant acceleration": (2.00, 4.00, 8.00),
-        "linearly falling acceleration": (1.50, 6.00, 3.46),
-        "cosine": (1.57, 4.94, 3.88),
-        "cycloidal (sine)": (2.00, 6.28, 8.15),
-        "3-4-5 polynomial": (1.875, 5.77, None),  # printed D is garbled ("6.ВЭ")
-        "double harmonic": (2.04, 9.88, 7.00),
-    }
+    return Table(PrintedInvariants(*row) for row in (
+        ("constant acceleration", 2.00, 4.00, 8.00),
+        ("linearly falling acceleration", 1.50, 6.00, 3.46),
+        ("cosine", 1.57, 4.94, 3.88),
+        ("cycloidal (sine)", 2.00, 6.28, 8.15),
+        ("3-4-5 polynomial", 1.875, 5.77, None),  # printed D is garbled ("6.ВЭ")
+        ("double harmonic", 2.04, 9.88, 7.00),
+    ))
 
 
 def thesis_mchv1_rows() -> list:

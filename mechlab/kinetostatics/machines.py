@@ -8,7 +8,7 @@ from typing import Annotated, Any, Callable
 
 import numpy as np
 
-from ..motion import Motion
+from ..motion import Motion, scalar_law
 from ..mechanisms.base import Mechanism
 from ..validate import Distance, Length, OptionalAngles, Point, Real, Spec, number, validated
 from ..validate import mechanism as mechanism_of
@@ -69,6 +69,7 @@ class Kinetostatics(Mechanism):
     def motion(self, phi):
         return self.mechanism.motion(phi)
 
+    @scalar_law
     @validated
     def forces(self, phi: OptionalAngles = None, motion: Motion | None = None, **kw) -> ForceResult:
         """Solve at crank angles φ (default: the mechanism's cycle) or on a given motion."""

@@ -9,7 +9,7 @@ import numpy as np
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import PointPath, cross, dot, perp, relative, unit, vector_angle
 from ..mechanisms.base import output_axis  # Body(..., axis=output_axis): readers import it from here
-from ..motion import Motion
+from ..motion import Motion, first_of
 from .model import (FRAME, Force, ForceModel, G, HigherPair, LoadError, Prismatic, Revolute, SelfLockingError,
                     StructureError, Torque)
 
@@ -288,12 +288,21 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
     Groups are solved in ``model.groups`` order (output first), then the crank. Each
     group's 3k equilibrium equations (ΣF = 0, ΣM about each link's origin = 0) form a
     batch of linear systems in its unknown reactions, solved at every crank angle at
-    once. Friction (if any pair has f > 0) is linearised and iterated on its senses, see
-    the module docstring. Raises SingularityError where a group cannot carry its loads (a dead
-    point) and SelfLockingError where friction locks the mechanism. A motion at one scalar φ
-    gives results at that one angle (arrays of one).
+    once. Raises SingularityError where a group cannot carry its loads (a dead point) and
+    SelfLockingError where friction locks the mechanism. A motion at one scalar φ gives the
+    results at that angle as scalars.
+
+    Friction (any pair with f > 0) is linearised on its senses: with the direction ê of a journal's
+    reaction R and the sign of a normal force N from the previous pass, f·r·|R| = f·r·ê·R and
+    f·|N| = f·sgn(N)·N are linear in the unknowns and go into each group's matrix; the passes stop
+    when ê·R = |R| to 1e-12 and every sgn N is consistent (3-6 passes; the first is frictionless).
+    Unlike friction lagging a full pass behind, this converges also where f·tan(pressure angle) > 1.
+    No consistent senses, or a singular group matrix with friction, is self-locking. The sense of
+    sliding comes from the analogs and the sign of ω1 (ω1 = 0: the start of a motion with ω1 > 0).
+    Prismatic friction is f·|N| with N the resultant normal force (edge pressures not modelled).
     """
-    motion = motion.as_arrays()
+    if np.ndim(motion.phi) == 0:
+        return first_of(solve(model, motion.as_arrays(), loads, omega1, eps1, gravity, maxiter=maxiter, tol=tol))
     omega1, eps1 = float(omega1), float(eps1)
     if not (np.isfinite(omega1) and np.isfinite(eps1)):
         raise DimensionError(f"crank speed and acceleration must be finite, got ω1 = {omega1}, ε1 = {eps1}")

@@ -1,51 +1,18 @@
-"""Dwell synthesis with a curved slot (Zinchenko et al. (2013), §3, Fig. 9-10, formulas (21)-(25)).
+"""Dwell synthesis with a curved slot (Zinchenko et al. (2013), §3, Figs. 9-10, formulas (21)-(25)).
 
-Frame of Zinchenko et al. (2013) §2 (as :class:`~mechlab.mechanisms.slotted.SlottedLink`): crank pivot
-O at the origin, link pivot B at (-d, 0) with d = ``pivot_distance``, crank radius
-r = λd, φ = 0 where the pin A is farthest from B. The **base mechanism** (straight slot
-through B) has the law ψ_K(φ) = atan2(λ sin φ, 1 + λ cos φ) (formula (18)) with
-ψ_K' = λ(λ + cos φ)/D, ψ_K'' = λ(λ² - 1) sin φ / D², D = 1 + λ² + 2λ cos φ ((19), (20),
-re-derived with sympy: both are printed correctly).
+Frame of §2 (as :class:`~mechlab.mechanisms.slotted.SlottedLink`): O at the origin, the link's pivot
+B at (-d, 0), crank r = λd, φ = 0 where A is farthest from B. The base mechanism's law
+ψ_K = atan2(λ sin φ, 1 + λ cos φ) and its analogs are formulas (18)-(20) (:func:`base_law`).
+In the link's frame the pin sits at (S, β) with S(φ) = d·sqrt(1 + λ² + 2λ cos φ) and β = ψ_K - ψ
+(formula (12); the printed S has a wrong sign, :mod:`mechlab.course.errata.seed000_dwell`).
+S(-φ) = S(φ) gives the half-turn relation (Table 2): a law chosen on [0, π] fixes the slot and
+the other half of the turn (:meth:`DwellLaw.__call__`).
 
-**Slot and law.** In the frame of the moving link (origin B, x axis = the link's
-reference line, which passes through the slot's far end E), the pin sits at polar
-coordinates (S, β) with S(φ) = |A - B| = d·sqrt(1 + λ² + 2λ cos φ) and β = ψ_K - ψ
-(formula (12); the printed S has a wrong sign, see :mod:`mechlab.course.errata.seed000_dwell`).
-S(φ) = S(-φ), so a slot whose centre line meets every circle about B once is passed at
-φ and at -φ in the same point: β(-φ) = β(φ), hence the half-turn relation (Table 2)
-
-    ψ(-φ) = ψ(φ) - 2ψ_K(φ),  ψ'(-φ) = 2ψ_K'(φ) - ψ'(φ),  ψ''(-φ) = ψ''(φ) - 2ψ_K''(φ).
-
-A law chosen on [0, π] therefore fixes the slot and the other half of the turn. Odd
-derivatives of ψ must equal the base mechanism's at φ = 0 and π (else they jump:
-ψ'(0±) differ by 2(ψ'(0+) - ψ_K'(0))), even ones are continuous there automatically.
-
-**Design** (Zinchenko et al. (2013) formulas (21)-(25)): ψ = ψ_B on the dwell [φ1, φ2] (the slot there
-is an arc of radius l_OA about the link-frame image of O), and transitions
-ψ = ψ_B + p(φ1 - φ) on [0, φ1], ψ = ψ_B + q(φ - φ2) on [φ2, π] with polynomials p, q
-that start at the join with ψ' = ψ'' = 0 and reach the base mechanism's velocity
-analog at 0 and π, and ψ(0) = 0 (this fixes ψ_B). Two transition laws:
-
-* ``"cubic"`` (the seed's (21), (23)): p = a1 u³, q = a2 v³ with the *correct* signs
-  a1 = -λ / (3(λ + 1)φ1²), a2 = λ / (3(λ - 1)(π - φ2)²), ψ_B = λφ1 / (3(λ + 1)).
-  ψ, ψ', ψ'' are continuous, but the jerk ψ''' jumps at 0, φ1, φ2, π and the slot's
-  curvature grows like 1/φ towards its ends (the pin's reversal points φ = 0, π),
-  because β'''(0) = ψ_K'''(0) - ψ'''(0) ≠ 0.
-* ``"quintic"``: p = c4 u⁴ + c5 u⁵, q = d4 v⁴ + d5 v⁵ matching also the base
-  mechanism's jerk at 0 and π (ψ_K'''(0) = λ(λ - 1)/(λ + 1)³, ψ_K'''(π) = -λ(λ + 1)/(λ - 1)³)
-  and ψ''' = 0 at the joins: ψ''' is continuous over the whole turn and the slot's
-  curvature is bounded, also at its ends.
-
-The pressure angle θ (between the slot's normal, along which the pin pushes, and the
-velocity of the link's point under the pin) is the angle between the slot's tangent and
-the ray B → A, a property of the slot point alone: tan θ = S |dβ/dS|
-= S² |β'| / (r d |sin φ|), equal at φ and -φ. On the dwell arc it is
-θ = |π/2 - (φ - ψ_K(φ))|, zero where OA ⊥ BA (cos φ = -λ).
-
-:func:`curved_slot_dwell` returns a :class:`DwellSlotMechanism` whose ``motion(phi)``
-solves the pin-in-slot loop through :class:`mechlab.mechanisms.curved_slot.CurvedSlotLink`
-with the designed slot (not by evaluating the law); ``law`` keeps the design for
-comparison.
+:class:`DwellLaw` holds the designed law (a dwell ψ_B on [φ1, φ2], transitions of
+:data:`TRANSITIONS`, formulas (21)-(25) with corrected signs) and the slot it fixes;
+:func:`curved_slot_dwell` returns a :class:`DwellSlotMechanism` whose ``motion(phi)`` solves the
+pin in the designed slot through :class:`~mechlab.mechanisms.curved_slot.CurvedSlotLink` (not by
+evaluating the law). The book's chapter on the curved-slot dwell derives it.
 """
 
 from __future__ import annotations
@@ -225,6 +192,14 @@ class DwellLaw(Checked):
 
     ``lam`` = λ, ``phi1`` < ``phi2`` the dwell (radians, strictly inside (0, π)),
     ``transition`` one of :data:`TRANSITIONS`, ``pivot_distance`` d = l_OB.
+
+    ψ = ψ_B on the dwell (the slot an arc of radius l_OA), ψ = ψ_B + p(φ1 - φ) on [0, φ1] and
+    ψ_B + q(φ - φ2) on [φ2, π], starting with ψ' = ψ'' = 0 at the joins, reaching ψ_K' at 0 and π
+    (odd derivatives must match the base mechanism's there), and ψ(0) = 0. ``"cubic"`` ((21),
+    (23)): p = a1 u³, q = a2 v³, a1 = -λ/(3(λ + 1)φ1²), a2 = λ/(3(λ - 1)(π - φ2)²),
+    ψ_B = λφ1/(3(λ + 1)); its jerk jumps and the slot's curvature grows like 1/φ at the ends.
+    ``"quintic"``: p = c4 u⁴ + c5 u⁵ (q alike), also matching ψ_K‴ at 0 and π
+    (λ(λ - 1)/(λ + 1)³ and -λ(λ + 1)/(λ - 1)³) with ψ‴ = 0 at the joins: bounded curvature.
     """
 
     lam: float
@@ -297,6 +272,7 @@ class DwellLaw(Checked):
     def _pieces(self, phi):
         return phi < self.phi1, phi > self.phi2
 
+    @scalar_law
     def half(self, phi) -> BaseLaw:
         """ψ, ψ', ψ'', ψ''' for φ in [0, π] (the designed half)."""
         phi = as_angles(phi)
@@ -312,6 +288,7 @@ class DwellLaw(Checked):
             out[m][R] += _horner(cr[m], v)
         return BaseLaw(*out)
 
+    @scalar_law
     def __call__(self, phi) -> BaseLaw:
         """ψ(φ) and its analogs over any crank angles: the designed half on [0, π], the
         half-turn relation (Table 2) on (-π, 0), and ψ(φ + 2π) = ψ(φ) + 2π·[λ > 1]."""
@@ -331,12 +308,14 @@ class DwellLaw(Checked):
             psi = psi + 2 * np.pi * turns
         return BaseLaw(psi, d1, d2, d3)
 
+    @scalar_law
     def in_dwell(self, phi) -> np.ndarray:
         """True where wrap(φ) lies in [φ1, φ2]."""
         red = wrap(as_angles(phi))
         return (red >= self.phi1) & (red <= self.phi2)
 
     # -- the slot --------------------------------------------------------------------------
+    @scalar_law
     def S(self, phi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """|A - B| and its two analogs (Zinchenko et al. (2013) §3, S(φ) corrected to the §2 frame)."""
         phi = as_angles(phi)
@@ -346,11 +325,13 @@ class DwellLaw(Checked):
         ddS = (-r * d * np.cos(phi) - dS**2) / S
         return S, dS, ddS
 
+    @scalar_law
     def beta(self, phi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """β = ψ_K - ψ (polar angle of the pin in the link's frame) and β', β'' for φ in [0, π]."""
         h, K = self.half(phi), base_law(self.lam, phi)
         return K.psi - h.psi, K.d - h.d, K.dd - h.dd
 
+    @scalar_law
     def slot_points(self, phi) -> np.ndarray:
         """Points of the slot's centre line in the link's frame (origin B), φ in [0, π]."""
         S, _, _ = self.S(phi)
@@ -410,6 +391,7 @@ class DwellLaw(Checked):
         dg = C * ((1.0 + t * t) / (2.0 * D) - t * Dx / D**2) - _horner(dP, x) * s - _horner(P, x) * ds
         return g, dg / np.sin(x)
 
+    @scalar_law
     def pressure_angle(self, phi) -> np.ndarray:
         """Pressure angle θ (radians) at the pin for any φ, from the slot's geometry:
         tan θ = S²|β'|/(r d |sin φ|) (exact limit at the slot's ends φ = 0, π)."""
@@ -418,6 +400,7 @@ class DwellLaw(Checked):
         g = self._g(phi)
         return np.arctan(S * S * np.abs(g) / (self.crank * self.pivot_distance))
 
+    @scalar_law
     def curvature(self, phi) -> np.ndarray:
         """Signed curvature of the slot's centre line where the pin is at crank angle φ ∈ [0, π]
         (sign taken along increasing distance from B), from the slot parametrised by S:
@@ -631,7 +614,7 @@ class DwellSlotMechanism(Mechanism):
         i = int(np.argmax(th))
         best_phi, best = float(phi[i]), float(th[i])
         lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, n - 1)]
-        res = minimize_scalar(lambda x: -self.law.pressure_angle(x)[0], bounds=(lo, hi), method="bounded",
+        res = minimize_scalar(lambda x: -self.law.pressure_angle(x), bounds=(lo, hi), method="bounded",
                               options={"xatol": 1e-10})
         refined = float(self.motion(res.x).pressure_angle)
         if refined > best:

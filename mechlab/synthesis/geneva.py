@@ -41,13 +41,13 @@ def spherical_table(R: float, e: float, z_values: Annotated[np.ndarray, Spec("sa
 
 
 # Vainer & Shatokhina, Table 1 as printed (R = 40 mm, e = 15 mm, d = 10 mm).
-TABLE1_PRINTED = {
-    3: {"alpha0": 66.60, "beta0": 60.0, "omega_max": 1.89, "eps_max": 2.51, "alpha1": 16.40, "beta1": 27.80},
-    4: {"alpha0": 62.06, "beta0": 45.0, "omega_max": 1.13, "eps_max": 1.06, "alpha1": 27.26, "beta1": 27.56},
-    5: {"alpha0": 57.46, "beta0": 36.0, "omega_max": 0.86, "eps_max": 0.71, "alpha1": 34.96, "beta1": 26.22},
-    6: {"alpha0": 53.15, "beta0": 30.0, "omega_max": 0.72, "eps_max": 0.57, "alpha1": 41.60, "beta1": 25.38},
-    8: {"alpha0": 45.58, "beta0": 22.5, "omega_max": 0.58, "eps_max": 0.46, "alpha1": 52.93, "beta1": 24.85},
-}
+TABLE1_PRINTED = Table(SphericalRow(*row) for row in (
+    (3, 66.60, 60.0, 1.89, 2.51, 16.40, 27.80),
+    (4, 62.06, 45.0, 1.13, 1.06, 27.26, 27.56),
+    (5, 57.46, 36.0, 0.86, 0.71, 34.96, 26.22),
+    (6, 53.15, 30.0, 0.72, 0.57, 41.60, 25.38),
+    (8, 45.58, 22.5, 0.58, 0.46, 52.93, 24.85),
+))
 
 
 TABLE1_COLUMNS = ("alpha0", "beta0", "omega_max", "eps_max", "alpha1", "beta1")
@@ -73,11 +73,12 @@ class Cell:
 def table1_comparison(R: float = 40.0, e: float = 15.0) -> Table:
     """Every cell of Vainer & Shatokhina's Table 1 (:data:`TABLE1_PRINTED`, two decimals printed)
     against :func:`spherical_table`."""
-    rows = spherical_table(R, e, sorted(TABLE1_PRINTED)).by("z")
+    rows = spherical_table(R, e, TABLE1_PRINTED.column("z")).by("z")
     out = []
-    for z, printed in TABLE1_PRINTED.items():
+    for printed in TABLE1_PRINTED:
+        z = printed.z
         for col in TABLE1_COLUMNS:
-            p, c = printed[col], float(getattr(rows[z], col))
+            p, c = getattr(printed, col), float(getattr(rows[z], col))
             diff = abs(p - c)
             status = "agrees" if diff <= 0.005 + 1e-12 else "last digit" if diff <= 0.015 else "differs"
             out.append(Cell(z, col, p, c, status))

@@ -1,27 +1,18 @@
 """Six-bar dwell mechanisms made by attaching a dyad to the coupler point D (Kinitsky (1994), Figs. 1, 3).
 
-* МЧВ1 (:class:`LambdaRockerSixBar`, synthesis :func:`mchv1`): a circle-guiding lambda
-  mechanism, a connecting rod D-E of length R (so E sits near the arc centre Q while D runs
-  along the arc) and a rocker E-F. While D is in the band, E stays within about E of Q: the
-  rocker dwells. Synthesis by time ratio K and swing β_m (Kinitsky (1994), formulas (14), (15) and
-  the construction of Fig. 3): the rocker is farthest out when DE lies on the normal to the
-  coupler curve at D, i.e. at the crank angle t = α + φ_n with φ_n = 2K(π − α)/(1 + K) after
-  the dwell centre; E1 = D1 + R·n there; F lies on the perpendicular bisector of Q-E1 and the
-  rocker length is b = S/(2 sin(β_m/2)) with S = |Q E1|.
-* МЧВ3 (:class:`LambdaSlottedSixBar`): a straight-line lambda mechanism whose coupler point
-  D drives a slotted link (straight slot, pin D) turning about a pivot P. With the slot
-  through P (offset 0) and P on the line of the straight part of the curve, beyond the curve,
-  the link oscillates with a dwell (МЧВ3-1М); with P on the straight part itself it turns
-  180° per crank turn with a dwell (МЧВ3-2М). The 360° variant МЧВ3-3М is reconstructed
-  (the abstract only says: pivot inside the curve, dwell adjusted by moving it): pivot inside
-  the curve just past the end of the straight part, slot offset from the pivot so that it lies
-  along the straight line — an approximate dwell whose residual motion is ≈ E/(distance of
-  the pivot's foot from the dwell part); moving the pivot along the line trades length against
-  accuracy. (With the pivot's foot inside the dwell part the slot is tangent to the offset
-  circle there and the residual grows to ≈ √(4E/e).)
+* МЧВ1 (:class:`LambdaRockerSixBar`, :func:`mchv1`): a circle-guiding lambda mechanism, a rod D-E of
+  length R (E near the arc centre Q while D runs on the arc) and a rocker E-F that dwells. By time
+  ratio K and swing β_m (formulas (14), (15), Fig. 3): farthest out where DE lies on the normal to
+  the curve at D, t = α + φ_n, φ_n = 2K(π − α)/(1 + K); E1 = D1 + R·n; F on the perpendicular
+  bisector of Q-E1, rocker b = S/(2 sin(β_m/2)), S = |QE1|.
+* МЧВ3 (:class:`LambdaSlottedSixBar`): a straight-line lambda mechanism driving a slotted link about
+  P. Slot through P, P on the line beyond the curve: oscillation with a dwell (МЧВ3-1М); P on the
+  straight part: 180° per turn with a dwell (МЧВ3-2М). МЧВ3-3М (360°) is reconstructed (the abstract:
+  pivot inside the curve, dwell adjusted by moving it): slot offset to lie along the line, residual
+  ≈ E/(distance of the pivot's foot from the dwell part), ≈ √(4E/e) with the foot inside it.
 
-Frames and angles as in :mod:`mechlab.synthesis.lambda_guiding`: the dwell is centred on
-φ = π (A farthest from C); the crank turns counter-clockwise.
+Frames as in :mod:`mechlab.synthesis.lambda_guiding`: the dwell centred on φ = π, the crank turning
+counter-clockwise.
 """
 
 from __future__ import annotations
@@ -37,6 +28,7 @@ from ..mechanisms.base import TWO_PI
 from .lambda_guiding import CircleGuide, StraightGuide
 from ..errors import InfeasibleDesignError
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
+from ..motion import scalar_law
 from ..validate import MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check, mechanism, number, validated
 
 # A time ratio K (> 0), the working limit μ_min of a transmission angle (None: no limit), the guides
@@ -257,6 +249,7 @@ def dwell_extent(mech, tol: float = 0.02, n: int = 2881) -> float:
     return float(phi[hi] - phi[lo])
 
 
+@scalar_law
 @validated
 def slot_residual_first_order(mech: Annotated[LambdaSlottedSixBar, mechanism(LambdaSlottedSixBar)], guide: Straight,
                               phi: Angles) -> np.ndarray:

@@ -129,14 +129,28 @@ def write_csv(mechanism: Designed, path: Annotated[Any, Spec("path", optional=Tr
     return text
 
 
-def read_csv(path_or_text) -> dict[str, np.ndarray]:
-    """Columns of a CSV written by :func:`write_csv` as float arrays."""
+@dataclass(frozen=True, eq=False)
+class Columns:
+    """The columns of a CSV file read back (:func:`read_csv`): ``names`` in the file's order and
+    ``columns["x"]`` the column "x" as a float array."""
+
+    names: tuple[str, ...]
+    values: tuple[np.ndarray, ...]
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name not in self.names:
+            raise KeyError(f"no column {name!r}; the file has {', '.join(self.names)}")
+        return self.values[self.names.index(name)]
+
+
+def read_csv(path_or_text) -> Columns:
+    """Columns of a CSV written by :func:`write_csv` or :func:`write_cam_csv` as float arrays."""
     text = str(path_or_text)
     if "\n" not in text:
         text = Path(text).read_text()
     rows = list(csv.reader(io.StringIO(text)))
     head, body = rows[0], np.array(rows[1:], dtype=float)
-    return {h: body[:, j] for j, h in enumerate(head)}
+    return Columns(tuple(head), tuple(body[:, j] for j in range(len(head))))
 
 
 def _angle_deg(v) -> float:

@@ -26,6 +26,7 @@ from .homogeneous import Centre, CentreAtInfinity, in_frame
 from .instant import InstantCentres, instant_centres
 from ...mechanisms.base import AnyMechanism
 from ...errors import MechanismError
+from ...motion import scalar_law
 from ...validate import Name, OptionalAngles, validated
 
 
@@ -98,6 +99,7 @@ class Centrodes:
         return self._place(self.moving, self.link, i)
 
 
+@scalar_law
 @validated
 def centrodes(mechanism: AnyMechanism, link: Name, reference: Name = "frame", phi: OptionalAngles = None,
               method: str = "kennedy") -> Centrodes:

@@ -44,7 +44,7 @@ class Centre:
     """An instantaneous centre over n crank angles, in normalised homogeneous coordinates.
 
     ``h`` is ``(n, 3)``: rows ``(x, y, 1)`` for finite points and ``(dx, dy, 0)`` with a
-    unit direction for points at infinity. Build one with :func:`finite`,
+    unit direction for points at infinity; ``(3,)`` (one row) at a scalar crank angle. Build one with :func:`finite`,
     :func:`at_infinity` or :func:`normalise`.
     """
 
@@ -52,33 +52,37 @@ class Centre:
     name: str = "P"
 
     def __len__(self) -> int:
-        return len(self.h)
+        return len(np.atleast_2d(self.h))
 
     @property
     def finite(self) -> np.ndarray:
         """Boolean mask: True where the centre is a finite point."""
-        return self.h[:, 2] != 0.0
+        return self.h[..., 2] != 0.0
 
     @property
     def xy(self) -> np.ndarray:
         """Positions ``(n, 2)``; raises :class:`CentreAtInfinity` if any centre is at infinity."""
         if not np.all(self.finite):
-            i = int(np.argmin(self.finite))
-            d = self.h[i, :2]
+            i = int(np.argmin(np.atleast_1d(self.finite)))
+            d = np.atleast_2d(self.h)[i, :2]
             raise CentreAtInfinity(
                 f"{self.name} lies at infinity at sample {i} (direction ({d[0]:.4g}, {d[1]:.4g})): "
                 f"the two links translate relative to each other there; use .finite / .direction")
-        return self.h[:, :2].copy()
+        return self.h[..., :2].copy()
 
     @property
     def direction(self) -> np.ndarray:
         """Unit directions ``(n, 2)`` of the centres at infinity (rows of finite centres are zero)."""
-        return np.where(self.finite[:, None], 0.0, self.h[:, :2])
+        return np.where(self.finite[..., None], 0.0, self.h[..., :2])
 
     def masked(self) -> np.ma.MaskedArray:
         """Positions as a masked array, masked where the centre is at infinity (for plotting)."""
-        mask = np.repeat(~self.finite[:, None], 2, axis=1)
-        return np.ma.array(np.where(mask, 0.0, self.h[:, :2]), mask=mask)
+        mask = np.repeat(~self.finite[..., None], 2, axis=-1)
+        return np.ma.array(np.where(mask, 0.0, self.h[..., :2]), mask=mask)
+
+    def _first(self) -> Centre:
+        """The centre at the first crank angle, as at a scalar φ (``h`` of shape (3,))."""
+        return Centre(self.h[0], self.name)
 
     def __getitem__(self, idx) -> "Centre":
         return Centre(np.atleast_2d(self.h[idx]), self.name)

@@ -27,7 +27,7 @@ import numpy as np
 from ...errors import MechanismError, SingularityError
 from ...geometry import AnglePath, PointPath, as_angles, dot, fixed_point, perp, unit
 from ...mechanisms.base import FRAME, Structure
-from ...motion import Motion
+from ...motion import Motion, scalar_law
 from .homogeneous import Centre, at_infinity, finite, line_with_direction
 from .kennedy import Pair, centres_from_twists, kennedy, pair
 from ...mechanisms.base import AnyMechanism
@@ -170,15 +170,32 @@ class InstantCentres:
         return f"P{i}{j}"
 
     # -- analogs read from the centres ---------------------------------------------
+    def _rows(self, i, j) -> Centre:
+        # the centre over an array of crank angles (one row at a scalar φ), for the analogs below
+        c = self.centres[pair(i, j)]
+        return Centre(np.atleast_2d(c.h), c.name)
+
+    def _first(self) -> InstantCentres:
+        """The centres at the first crank angle, as at a scalar φ."""
+        return InstantCentres(self.mechanism, self.motion._first(), self.structure,
+                              {k: c._first() for k, c in self.centres.items()}, self.method, self.steps)
+
+    def _shaped(self, values: np.ndarray) -> np.ndarray:
+        return values[0] if np.ndim(self.phi) == 0 else values
+
     def angular_analog(self, link) -> np.ndarray:
         """ω_link / ω_crank from the centres only (Kennedy's ratio theorem); 0 where the link translates."""
+        return self._shaped(self._angular_analog(link))
+
+    def _angular_analog(self, link) -> np.ndarray:
         k, one, f = self.index(link), self.index(self.structure.input), self.index(self.structure.frame)
         rate = self.structure.input_rate
+        phi = np.atleast_1d(self.phi)
         if k == one:
-            return np.full(len(self.phi), rate)
+            return np.full(len(phi), rate)
         if k == f:
-            return np.zeros(len(self.phi))
-        p1k, p1f, pkf = self.centres[pair(one, k)], self.centres[pair(one, f)], self.centres[pair(k, f)]
+            return np.zeros(len(phi))
+        p1k, p1f, pkf = self._rows(one, k), self._rows(one, f), self._rows(k, f)
         X, w = p1k.h[:, :2], p1k.h[:, 2]
         u = X - w[:, None] * p1f.xy
         v = X - w[:, None] * np.where(pkf.finite[:, None], pkf.h[:, :2], 0.0)
@@ -186,25 +203,28 @@ class InstantCentres:
         bad = pkf.finite & (vv <= (1e-14 * self.structure.scale) ** 2)
         if np.any(bad):
             i = int(np.argmax(bad))
-            raise SingularityError(f"{p1k.name} coincides with {pkf.name} at φ = {np.degrees(self.phi[i]):.4g}°: "
+            raise SingularityError(f"{p1k.name} coincides with {pkf.name} at φ = {np.degrees(phi[i]):.4g}°: "
                                    f"a dead point, ω_{k + 1} is unbounded")
         return rate * np.where(pkf.finite, dot(u, v) / np.where(pkf.finite, vv, 1.0), 0.0)
 
     def velocity_analog(self, link, point: np.ndarray) -> np.ndarray:
         """Velocity analog (n, 2) of a point (n, 2) carried by ``link``, from the centres only."""
+        return self._shaped(self._velocity_analog(link, point))
+
+    def _velocity_analog(self, link, point: np.ndarray) -> np.ndarray:
         k, one, f = self.index(link), self.index(self.structure.input), self.index(self.structure.frame)
-        point = np.broadcast_to(np.asarray(point, dtype=float), (len(self.phi), 2))
+        point = np.broadcast_to(np.asarray(point, dtype=float), (np.size(self.phi), 2))
         if k == f:
             return np.zeros_like(point)
-        om = self.angular_analog(link)
-        pkf = self.centres[pair(k, f)]
+        om = self._angular_analog(link)
+        pkf = self._rows(k, f)
         out = np.where(pkf.finite[:, None], om[:, None] * perp(point - np.where(pkf.finite[:, None],
                                                                                   pkf.h[:, :2], 0.0)), 0.0)
         if k == one:
             return out
         trans = ~pkf.finite
         if np.any(trans):
-            p1k, p1f = self.centres[pair(one, k)], self.centres[pair(one, f)]
+            p1k, p1f = self._rows(one, k), self._rows(one, f)
             if np.any(trans & ~p1k.finite):
                 raise SingularityError(f"{p1k.name} and {pkf.name} both at infinity: the crank would not turn")
             base = self.structure.input_rate * perp(np.where(p1k.finite[:, None], p1k.h[:, :2], 0.0) - p1f.xy)
@@ -217,7 +237,7 @@ class InstantCentres:
         if st.guide is None:
             return self.angular_analog(st.output)
         o, _ = st.poses[st.output]
-        return dot(self.velocity_analog(st.output, o.p), np.broadcast_to(st.guide, o.p.shape))
+        return self._shaped(dot(self._velocity_analog(st.output, o.p), np.broadcast_to(st.guide, o.p.shape)))
 
     def collinearity(self) -> float:
         """Largest violation of Kennedy's theorem over all triples of links and angles:
@@ -227,7 +247,7 @@ class InstantCentres:
         for i in range(n):
             for j in range(i + 1, n):
                 for k in range(j + 1, n):
-                    rows = [self.centres[(i, j)].h, self.centres[(j, k)].h, self.centres[(i, k)].h]
+                    rows = [self._rows(i, j).h, self._rows(j, k).h, self._rows(i, k).h]
                     rows = [r * [1.0 / self.structure.scale, 1.0 / self.structure.scale, 1.0] for r in rows]
                     rows = [r / np.linalg.norm(r, axis=1)[:, None] for r in rows]
                     det = np.abs(np.linalg.det(np.stack(rows, axis=1)))
@@ -235,10 +255,12 @@ class InstantCentres:
         return worst
 
 
+@scalar_law
 @validated
 def instant_centres(mechanism: AnyMechanism, phi: OptionalAngles = None,
                     method: Annotated[str, choice("kennedy", "velocity")] = "kennedy") -> InstantCentres:
-    """All instantaneous centres of ``mechanism`` at crank angles φ (default: its cycle).
+    """All instantaneous centres of ``mechanism`` at crank angles φ (default: its cycle); a scalar φ
+    gives a motion of scalars and centres of one row each (``h`` of shape (3,)).
 
     ``method="kennedy"``: from positions only — the pairs' own centres and the higher
     pairs' common normals, then Kennedy's theorem (Kozhevnikov, §7.1). ``method="velocity"``:

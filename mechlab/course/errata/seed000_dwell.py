@@ -63,7 +63,7 @@ def _beta_right():
     Kpi = base_law(LAM, np.pi)
     printed_dbeta_pi = Kpi.d - LAM / ((1 - LAM) * W**2) * W**2   # derivative of the printed cubic term at π
     psi_d_printed = Kpi.d - printed_dbeta_pi
-    correct = law.beta(np.pi)[1][0]
+    correct = law.beta(np.pi)[1]
     return Claim(Kpi.d, psi_d_printed, Kpi.d - correct, 1e-12, text=(f"λ = 0.5, φ2 = 150°: with the printed β, β'(π) = {printed_dbeta_pi:+.3f} and ψ'(π) = ψ_K'(π) - β'(π) = "
             f"{psi_d_printed:+.3f} instead of ψ_K'(π) = {Kpi.d:+.3f} (a velocity jump of "
             f"{abs(2 * printed_dbeta_pi):.3f}·ω1 at φ = π); corrected β'(π) = {correct:.1e}"))
