@@ -1,92 +1,17 @@
-"""Kinetostatics: loads, reactions group by group, balancing torque, friction, efficiency, drive.
+"""Kinetostatics' force model: links (:class:`Body`), pairs (:class:`Revolute`, :class:`Prismatic`,
+:class:`HigherPair`), structural groups (:class:`ForceModel`) and loads (:class:`Force`, :class:`Torque`).
 
-The method is the one the SibSIU proceedings, "Kinetostatic analysis of the
-slider-crank mechanism with an additional link", formulas (1)-(5) and the force plans
-of its Figs. 2-5) applies by hand: split the mechanism into structural groups of zero
-mobility (Assur groups), load every link with its gravity, its d'Alembert inertia
-force and couple and the external loads, and solve the groups **from the output back
-to the crank**, each group's reactions becoming known loads on the links it is
-attached to; the crank (the leading link) is solved last and gives the balancing
-(driving) torque. Here every group is solved at once for all crank angles: the
-3·k equilibrium equations of its k links are a batch of small linear systems.
+The method is the SibSIU proceedings' ("Kinetostatic analysis of the slider-crank mechanism with an
+additional link", formulas (1)-(5), Figs. 2-5): cut the mechanism into structural groups of zero
+mobility (Assur groups), load every link with gravity, d'Alembert inertia and the external loads,
+and solve the groups from the output back to the crank, which gives the balancing torque last
+(:func:`mechlab.kinetostatics.solve.solve`, all crank angles at once). The book's chapter on forces
+derives it.
 
-Stable API (used by the chapters on Chebyshev six-bars and Geneva drives)
--------------------------------------------------------------------------
-Structure (frozen dataclasses; lengths and masses in one consistent unit system —
-with metres, kilograms and rad/s, forces come out in N and torques in N·m):
-
-* ``Body(name, origin, axis=0.0, mass=0, inertia=0, com=(0, 0), length=0)`` — a link.
-  ``origin`` is a joint (a key of ``motion.points``) fixed on the link; ``axis`` is
-  its x axis: a pair of joint names ``(P, Q)`` (direction P→Q, the two points need not
-  both lie on the link, the direction must be fixed in it), a constant angle
-  (a translating link), or ``axis(motion) → (θ, θ', θ'')`` such as ``output_axis``.
-  ``com`` = centre of mass in link coordinates (along the axis, to its left);
-  ``inertia`` = moment of inertia J_S about the centre of mass.
-* ``Revolute(name, a, b, point, friction=0, radius=0)`` — turning pair at a joint;
-  ``friction`` is Coulomb's f, ``radius`` the journal radius r (friction couple f·r·|R|).
-* ``Prismatic(name, a, b, point, angle=0, friction=0)`` — link b slides on link a
-  along a guide at ``angle`` to a's axis (absolute when a is the frame); reaction =
-  normal force N plus a couple (the offset of N along the guide); friction f·|N|.
-* ``HigherPair(name, a, b, point, normal, friction=0)`` — contact at the moving point
-  ``point`` with the common normal at angle ``normal`` to a's axis, or
-  ``normal(motion) → (n, 2)`` unit vectors (a curved slot, a cam); reaction N along it.
-* ``ForceModel(bodies, pairs, groups, crank, pivot)`` — ``groups`` lists the structural
-  groups (tuples of body names) in solving order, output first; ``crank`` is the
-  leading link turning about the joint ``pivot``. Pair ``a`` or ``b`` may be ``FRAME``.
-  ``model.with_body(name, mass=…, inertia=…, com=…)``, ``model.with_friction(f, radius)``
-  return modified copies. ``model_for(mechanism)`` builds the model of any mechanism from its
-  ``structure()`` (massless, frictionless, com mid-link).
-
-Loads: ``Force(body, at, value)`` (``at`` a joint name or link coordinates) and
-``Torque(body, value)``; a value is a constant, an array over the crank angles, or a
-callable ``value(motion)`` returning one (so the load follows any sampling).
-
-Analysis:
-
-* ``solve(model, motion, loads=(), omega1=1.0, eps1=0.0, gravity=(0, -9.81))`` →
-  :class:`ForceResult` with ``reactions[name]`` (:class:`Reaction`: point, force of a
-  on b, couple, normal force), ``torque`` (balancing torque on the crank, from the
-  groups), ``torque_power`` (the same from the power balance, computed independently),
-  ``ideal_torque`` (without friction, by virtual work), ``losses`` (friction power per
-  unit ω1), ``residual`` (largest equilibrium residual of any link), ``verify(tol=1e-9)``
-  (both built-in checks, raises if either fails), ``efficiency()``, ``cycle_efficiency(...)``.
-* ``virtual_work_torque(model, motion, loads, omega1, eps1, gravity)`` — the frictionless
-  balancing torque from the power balance alone: M_b = −Σ(F_i·v_i + M_i·ω_i)/ω1
-  (Zhukovsky's lever in analytic form).
-* ``drive(torque, phi, omega1, overload=2.0, efficiency=1.0)`` → :class:`Drive` — the
-  course's one rule for the motor of a crank without a flywheel (the Geneva's
-  :func:`mechlab.kinetostatics.geneva.drive` calls it): motor torque M/η where the motor drives, M·η
-  where it is driven back; mean power ⟨M_m⟩·ω1 (Vainer & Shatokhina, last section) for the energy;
-  nominal torque max(M_rms, M_peak/k) — the rms (equivalent) torque for the heating, the
-  peak within the overload factor k; ``choose(catalogue)`` picks a motor.
-* ``Kinetostatics(mechanism, model, loads, omega1, eps1, gravity)`` — a mechanism with
-  its loads: ``.motion(phi)``/``.cycle(n)`` delegate to the mechanism, ``.forces(phi)``
-  solves; :mod:`mechlab.draw.forces` draws it with reaction arrows (``animate`` works).
-* The chapter's examples: ``press(...)`` (a crank press, the resistance ``press_load(P,
-  work_fraction)`` on its slider) and ``rocker_drive(...)`` (a four-bar with a resisting
-  torque on the rocker), both returning a Kinetostatics; ``rpm_to_rad(rpm)``.
-
-Friction is solved by **linearisation and iteration on its senses**: with the direction
-ê of a journal's reaction R and the sign of a sliding pair's normal force N taken from
-the previous pass, the friction couple f·r·|R| = f·r·ê·R and the friction force
-f·|N| = f·sgn(N)·N are *linear* in the unknowns, so they go into each group's matrix
-and every pass is still a linear group-by-group solve (the first pass is frictionless).
-The passes stop when the linearisation is exact (ê·R = |R| to 1e-12, every sgn N
-consistent) — usually after 3-6 passes. A friction force that is less than a full
-pass behind would not converge where f·tan(pressure angle) > 1 even though a solution
-exists; this scheme does. Where no consistent senses exist (a sense keeps reversing)
-or the group's matrix with friction is singular, the mechanism is self-locking there:
-:class:`SelfLockingError` names the crank angle. The sense of sliding comes from the
-analogs and the sign of ω1 (ω1 = 0 is treated as the start of a motion with ω1 > 0).
-Prismatic friction is f·|N| with N the resultant normal force (edge pressures from
-the reaction couple are not modelled).
-
-Efficiency (Kinitsky (1994), chapter 3): the instantaneous efficiency from the power balance,
-η = 1 − P_friction / P_drive = M_ideal / M_b, defined where the drive delivers power
-and the loads absorb it (P_drive > 0 and M_ideal·ω1 > 0; elsewhere masked); the thesis' cycle efficiency
-is the arithmetic mean
-of the instantaneous values over the period in which the output moves
-(``how="mean"``); ``how="work"`` gives the energy ratio 1 − A_friction / A_drive.
+Units: one consistent system (m, kg, rad/s give N and N·m). A load's value is a constant, an
+array over the crank angles or a callable ``value(motion)``. :func:`model_for` builds the
+massless, frictionless model of any mechanism from its ``structure()``;
+``model.with_body(...)`` and ``model.with_friction(f, radius)`` return modified copies.
 """
 
 from __future__ import annotations

@@ -1,25 +1,17 @@
 """Disc cams with a roller follower, translating (with offset) or oscillating.
 
-Frame: the cam turns counter-clockwise about O = (0, 0) by the cam angle φ (the input,
-radians); profiles are given in the cam's own frame, which coincides with the fixed frame
-at φ = 0. The follower's law over one turn is a programme
-(:class:`mechlab.synthesis.cam_design.CamProgramme`: rise, outer dwell, return, inner dwell, each
-transition one of the laws of :mod:`mechlab.analysis.motion_laws`); the cam needs of it only
-``programme(phi)`` → (y, y′, y″), its ``stroke``, its phase ``breaks`` and ``in_dwell``.
+The cam turns counter-clockwise about O = (0, 0) by φ; profiles are in the cam's frame (the fixed
+frame at φ = 0). The law is a :class:`~mechlab.synthesis.cam_design.CamProgramme` (rise, dwell,
+return, dwell with the laws of :mod:`mechlab.analysis.motion_laws`).
 
-* :class:`TranslatingRollerCam`: the roller centre C = (e, s0 + s) moves on the line x = e
-  (offset e), s0 = √((r_b + r_r)² − e²); output s, the lift above the lowest position.
-* :class:`OscillatingRollerCam`: arm B→C of length L about B = (d, 0), roller below the line
-  OB, output ψ = angle of B→C; the lift turns the arm counter-clockwise, ψ = ψ0 + y.
+* :class:`TranslatingRollerCam`: roller centre C = (e, s0 + s) on x = e, s0 = √((r_b + r_r)² − e²).
+* :class:`OscillatingRollerCam`: arm B→C of length L about B = (d, 0), ψ = ψ0 + y.
 
-The design (pitch curve, profile, pressure angle, curvature) follows from the law in closed
-form; :meth:`RollerCam.motion` does not read the law back: it places the roller tangent to
-the sampled and splined profile (the machined surface) and finds the contact by Newton's
-method, so it checks the design and is what a cam made from the exported profile would do.
-Relations used (derived in ``notebooks/07_cam_motion_laws.ipynb``): the pitch curve in the
-cam frame is P(θ) = Rot(−θ)·C(θ); pressure angle tan α = (s′ − e)/(s + s0) for the
-translating follower; the profile is the inner offset of the pitch curve by r_r, undercut
-where the pitch curve's convex radius of curvature is ≤ r_r.
+Pitch curve P(θ) = Rot(−θ)·C(θ), pressure angle tan α = (s′ − e)/(s + s0) (translating), profile
+the inner offset of the pitch curve by r_r, undercut where its convex radius of curvature ≤ r_r
+(derived in the book's cam chapter). :meth:`RollerCam.motion` does not read the law back: it
+places the roller tangent to the splined profile by Newton's method, as a cam cut from the
+exported profile would move.
 """
 
 from __future__ import annotations

@@ -1,72 +1,17 @@
-"""Slotted links whose slot is a curve: Zinchenko et al. (2013), §1-2 (Fig. 2, 4, 7, 8).
+"""Slotted links whose slot is a curve: Zinchenko et al. (2013), §1-2 (Figs. 2, 4, 7, 8).
 
-Public API (kept stable; other modules build on it)
----------------------------------------------------
-Slot curves, each given in the frame of the slotted link and evaluated by
-``curve.evaluate(t) -> PointPath(c, c_t, c_tt)`` (position and its first two
-derivatives with respect to the curve parameter t, analytic):
+Slot curves in the link's frame, ``curve.evaluate(t)`` → PointPath (c, c_t, c_tt): :class:`CircleSlot`
+(closed form), :class:`ParametricSlot` (three vectorised functions), :class:`SampledSlot` (a cubic
+spline, chord-length parameter). Mechanisms: :class:`CurvedSlotLink` (pivoted link, ψ = ψ_K - β,
+formula (12), in the frame of §2, Fig. 8) and :class:`TranslatingCurvedSlot` (s = x_K - x_α,
+formula (1), Figs. 4, 7). ``start`` picks the curve parameter where the pin sits at φ = 0 when
+more than one point qualifies (for a circle, the arc the pin runs on).
 
-* ``CircleSlot(center, radius)`` — c(t) = center + radius·(cos t, sin t), periodic;
-  mechanisms with a circular slot are solved in closed form.
-* ``ParametricSlot(f, df, ddf, t0, t1, periodic=False)`` — any smooth curve from
-  three vectorised functions t ↦ (n, 2) arrays.
-* ``SampledSlot(points, closed=False)`` — a cubic spline (scipy CubicSpline,
-  chord-length parameter) through sampled points; its derivatives are the
-  spline's (exact for the spline, not for the curve it was sampled from).
-
-Mechanisms (frozen dataclasses, subclasses of :class:`~mechlab.mechanisms.base.Mechanism`):
-
-* ``CurvedSlotLink(crank, pivot_distance, slot, start=None)`` — oscillating or
-  fully rotating slotted link. **Frame of Zinchenko et al. (2013) §2 (Fig. 8)**, as
-  :class:`~mechlab.mechanisms.slotted.SlottedLink`: crank pivot O at the origin, link
-  pivot B at (-pivot_distance, 0), φ = 0 where the pin A is farthest from B
-  (A = (crank, 0)). ψ is the angle of the link's own x axis (the x axis of the frame
-  in which ``slot`` is given) from the ray B→O. ``motion(phi)`` → AngularMotion with
-  ψ, ψ', ψ'' and points O, A, B; ``beta(phi)`` → AnglePath of the seed's β (polar angle
-  of the pin in the link frame), so that ψ = ψ_K - β with ψ_K the base mechanism's
-  angle (formula (12)); ``base()`` → the base mechanism ``SlottedLink(crank, pivot_distance)``.
-* ``TranslatingCurvedSlot(crank, slot, start=None)`` — the slotted link translates
-  along the x axis (Zinchenko et al. (2013) Fig. 4, 7). Frame: O at the origin, φ from +x; the link
-  frame's origin C = (s, 0) moves along the x axis, so the pin satisfies
-  A = (s + x_α, y_α) with (x_α, y_α) the slot point. ``motion(phi)`` → LinearMotion
-  with s, s', s'' and points O, A, C; ``x_alpha(phi)`` → AnglePath (x_α, x_α', x_α'')
-  so that s = x_K - x_α (formula (1)); ``base()`` → ``SineMechanism(crank)``.
-
-``start`` is a curve parameter near the point where the pin sits at φ = 0 (distance
-crank + pivot_distance from B; for the translating link, the point on the x axis,
-y_α = 0); it can be omitted when only one point of the curve qualifies. For a
-circular slot it chooses the arc (the side of the line pivot → centre) the pin runs on.
-
-How it is solved
-----------------
-The pin A lies on the slot: B + R(ψ)·c(t) = A(φ). Taking lengths, |c(t)| = |A - B| =
-S(φ) = sqrt(a² + d² + 2ad·cos φ) (the seed's S(φ), after formula (25)), a scalar
-equation for t alone; then ψ = angle(A - B) - angle(c(t)) = ψ_K - β. As φ runs over
-a turn S goes from a + d (φ = 0) to |a - d| (φ = π) and back, so the pin runs along a
-piece of the slot on which |c| decreases strictly from a + d to |a - d| and back
-again: that working segment is found once (in ``__post_init__``), and each φ is
-solved on it by a vectorised bracketed Newton iteration on |c(t)|² - S² = 0 with the
-analytic derivative 2c·c_t, started from the inverse of a monotone table
-(no loop over angles). Circular slots use the closed form of the triangle B-centre-A.
-Analogs from differentiating c·c = S²: t' = (S²)'/(2c·c_t),
-t'' = ((S²)''/2 - (|c_t|² + c·c_tt)·t'²)/(c·c_t); β' = θ_t·t', β'' = θ_tt·t'² + θ_t·t''.
-The translating link likewise solves y_α(t) = a·sin φ.
-
-Scope and its one limitation: the pin runs *back and forth* over one piece of the
-slot (the case of Tables 1-2 and of every equivalent linkage). A slot on which the pin
-would pass through a point where the slot is tangent to the pin's circle about B —
-e.g. the two-branch slot of Zinchenko et al. (2013) Fig. 10, whose outermost point E the pin reaches
-at φ = 0 — is the degenerate case the seed itself calls unworkable (pressure angle
-π/2): it raises SingularityError rather than guessing a branch. A parameter t with
-|c(t)| strictly monotone on the working piece (e.g. the distance from B itself, the
-choice made by :mod:`mechlab.synthesis.dwell_slot`) is always safe; c'(t) must not vanish there.
-
-Errors: where the slot ends before the pin's distance range is covered, the crank
-cannot turn fully (``crank_ranges()`` shrinks, ``motion`` raises AssemblyError
-"the pin would leave the slot …"); where the slot becomes tangent to the circle about
-the pivot (c·c_t = 0: pressure angle 90°, the crank cannot drive the link past it),
-SingularityError; a slot that never reaches the pin's starting point, DimensionError
-/ AssemblyError with the numbers.
+The pin lies on the slot where |c(t)| = S(φ) = sqrt(a² + d² + 2ad·cos φ) (after formula (25)),
+solved on the one working piece of the curve over which |c| runs from a + d to |a - d|
+(:meth:`CurvedSlotLink.beta`). A slot tangent to the pin's circle about the pivot (pressure angle
+90°, e.g. the two-branch slot of Fig. 10 at E) raises SingularityError; a slot that ends too soon
+narrows ``crank_ranges()`` and ``motion`` raises AssemblyError.
 """
 
 from __future__ import annotations
@@ -498,7 +443,16 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
         return q, dq, ddq
 
     def beta(self, phi) -> AnglePath:
-        """β(φ), β'(φ), β''(φ): the pin's polar angle in the link frame (Zinchenko et al. (2013), formula (12))."""
+        """β(φ), β'(φ), β''(φ): the pin's polar angle in the link frame (Zinchenko et al. (2013), formula (12)).
+
+        B + R(ψ)·c(t) = A(φ) gives |c(t)| = S(φ), an equation for t alone, solved on the working
+        segment (found once, in ``__post_init__``) by a vectorised bracketed Newton iteration on
+        |c(t)|² - S² = 0 (derivative 2c·c_t) started from a monotone table; a circle in closed form
+        (triangle B-centre-A). Analogs from c·c = S²: t' = (S²)'/(2c·c_t),
+        t'' = ((S²)''/2 - (|c_t|² + c·c_tt)·t'²)/(c·c_t); β' = θ_t·t', β'' = θ_tt·t'² + θ_t·t''.
+        A parameter with |c(t)| strictly monotone on the piece (the distance from B, as
+        :mod:`mechlab.synthesis.dwell_slot` uses) is always safe; c_t must not vanish there.
+        """
         phi = as_angles(phi)
         self.check_reachable(phi)
         A = crank_point(self.crank, phi)

@@ -1,39 +1,12 @@
-"""Geneva drives: the planar external and internal Geneva, and the spherical offset
-Geneva with perpendicular axes of Vainer & Shatokhina).
+"""Planar Geneva drives, external and internal (Vainer & Shatokhina, their refs. [2], [3]; the
+spherical offset Geneva is :mod:`mechlab.mechanisms.spherical_geneva`).
 
-Planar Geneva (what every course teaches and Vainer & Shatokhina assumes, its refs. [2], [3])
----------------------------------------------------------------------------------------------
-Crank pivot O = (0, 0), wheel centre W = (C, 0), crank radius a, z radial slots,
-roller (pin) radius r. *Radial entry*: the pin enters a slot moving along it, so
-OA ⟂ WA at entry; the right triangle O-A-W with the angle π/z at W gives
-``a = C·sin(π/z)`` and ``|WA| = C·cos(π/z)`` (both drives). With λ = sin(π/z) and σ
-the crank angle from the middle of the motion, the wheel's angle from the line W→O
-(derived from the vector loop A - W, see :meth:`PlanarGeneva.closed_form`) is
-
-* external (κ = -1, the pin on the near side, wheel turns against the crank),
-* internal (κ = +1, the pin on the far side, wheel turns with the crank):
-
-    β = κ·atan(λ sin σ / (1 + κλ cos σ)),
-    β' = κλ (cos σ + κλ) / D,   β'' = -κλ (1 - λ²) sin σ / D²,   D = 1 + 2κλ cos σ + λ²,
-
-while |σ| ≤ σ0 = π/2 + κπ/z (the pin in a slot); the wheel is locked otherwise.
-The crank angle φ of the library is σ + π: φ = 0 is the middle of the dwell.
-
-Spherical offset Geneva (Vainer & Shatokhina)
----------------------------------------------
-Sphere (the hemispherical wheel) of radius R about O, wheel axis z, slots in the
-meridian planes. The crank axis is the line {y = 0, z = -e} (perpendicular to the
-wheel axis, offset e); its point O1 = (0, 0, -e) nearest O lies on the wheel axis.
-The pin axis is a generatrix of the cone with apex O1, axis x and half-angle ψ
-(seed's ψ, formula (3)): d(α) = (cos ψ, sin ψ sin α, sin ψ cos α), α = 0 at the
-crank's lowest position (seed Fig. 2). Because O1 is on the wheel axis, the whole pin
-axis lies in the meridian plane of its contact point A = O1 + u·d with the sphere, so
-the wheel angle is the azimuth of d:
-
-    tan β = tan ψ · sin α            (equivalent to seed formula (18)),
-
-exactly, for any e. The seed's cos γ = cos α·sin ψ (11) is exact as well: its
-"neglected" term C1 of (10) is identically zero by formula (3).
+Crank pivot O = (0, 0), wheel centre W = (C, 0), crank radius a, z radial slots, roller radius r.
+Radial entry (OA ⟂ WA as the pin enters) gives a = C·sin(π/z) and |WA| = C·cos(π/z); with
+λ = sin(π/z) and σ the crank angle from the middle of the motion, the wheel's angle follows in
+closed form (:meth:`PlanarGeneva.closed_form`) while |σ| ≤ σ0 = π/2 + κπ/z, κ = -1 external (the
+wheel turns against the crank), +1 internal; the wheel is locked otherwise. The library's crank
+angle is φ = σ + π (φ = 0 mid-dwell). The book's Geneva chapter derives it.
 """
 
 from __future__ import annotations
@@ -170,7 +143,8 @@ class PlanarGeneva(Mechanism):
     # -- closed forms -----------------------------------------------------------------
     def closed_form(self, sigma) -> AnglePath:
         """β, β', β'' (wheel angle from the line W→O) at crank angles σ from the middle
-        of the motion, from the vector loop A - W (formulas in the module docstring).
+        of the motion, from the vector loop A - W: β = κ·atan(λ sin σ/(1 + κλ cos σ)),
+        β' = κλ(cos σ + κλ)/D, β'' = -κλ(1 - λ²) sin σ/D², D = 1 + 2κλ cos σ + λ².
         Valid while engaged, |σ| ≤ σ0."""
         s = np.asarray(sigma, dtype=float)
         k, lam = self.kappa, self.lam

@@ -101,7 +101,7 @@ class LambdaMechanism(Mechanism):
         return 2.0 * np.arcsin(np.clip(d / 2.0, -1.0, 1.0))
 
     def coupler_point(self, phi) -> np.ndarray:
-        """Positions of D by the closed form (*) of the module docstring (no dyad solve)."""
+        """Positions of D by the closed form (*) of :mod:`mechlab.synthesis.lambda_guiding` (no dyad solve)."""
         phi = as_angles(phi)
         A = np.stack([self.r * np.cos(phi), self.r * np.sin(phi)], axis=-1)
         v = A - self.C

@@ -1,37 +1,18 @@
 """A six-bar linkage with a class-IV, second-order Assur group (Zinchenko et al. (2013) §1).
 
-Structure (Artobolevsky's classification, the seed's reference [1]): frame 1, crank
-2' = O-A, and one group of four links and six revolute pairs, two of them external
-(order 2):
+Frame 1, crank 2' = O-A, and one group of four links and six revolute pairs (Artobolevsky's
+classification, the seed's ref. [1]): link 2 ternary (A, Q, P; the coupler), links 3 = Q-R and
+5 = P-T binary, link 4 ternary (R, T, E; the output, turning about E). Its contour Q-R-T-P has four
+sides (class IV) and W = 3·4 - 2·6 = 0, so both loop equations are solved together. Seen from the
+output, links 3, 2, 5 form a four-bar whose coupler carries A: the relative path is a coupler curve
+(:mod:`mechlab.analysis.equivalence`).
 
-* link 2, ternary: joints A (to the crank), Q and P — the "coupler";
-* link 3, binary: Q-R;
-* link 5, binary: P-T;
-* link 4, ternary: joints R, T and E (to the frame) — the **output**, turning about E.
-
-The group's closed contour Q-R-T-P has four sides (links 2, 3, 4, 5), which makes it
-class IV; it has W = 3·4 - 2·6 = 0 degrees of freedom, and the whole six-bar
-W = 3·5 - 2·7 = 1. Unlike a dyad, its position cannot be found link by link: both
-loop equations must be solved together. This is the group the seed uses the
-curved-slot equivalence for: seen from the output link 4, links 3, 2, 5 form a
-four-bar R-Q-P-T whose coupler (link 2) carries A, so the path of A relative to the
-output link is a four-bar coupler curve, and the six-bar moves exactly like a
-slotted link whose slot follows that curve (see :mod:`mechlab.analysis.equivalence`).
-
-Frame: as :class:`~mechlab.mechanisms.FourBar`: crank pivot O at the origin, output
-pivot E at (ground, 0), φ and ψ counter-clockwise from the ray O→E. The output link's
-own frame has its origin at E and its x axis along ψ; ``r_joint`` and ``t_joint`` are
-R and T in that frame. Link 2's frame has its origin at Q and its x axis along Q→P;
-``coupler_point`` is A in that frame.
-
-Solution: unknowns x = (θ2, ψ) (θ2 = angle of Q→P), loop equations
-F1 = |Q - R|² - l3², F2 = |P - T|² - l5² with Q = A - Rot(θ2)·a, P = Q + l_QP·e(θ2),
-R = E + Rot(ψ)·r, T = E + Rot(ψ)·t. The starting assembly at φ = π (A farthest from
-E) is chosen by ``inner_assembly`` and ``start``; continuation over a 720-step grid
-(predictor x + x'Δφ, Newton corrector) follows it round the turn once, and each
-requested φ is then polished by a vectorised Newton iteration from the interpolated
-grid. Analogs from the differentiated loop equations, J·x' = -F_φ and
-J·x'' = -(…) (analytic; J's determinant vanishes at a dead position of the group).
+Frame as :class:`~mechlab.mechanisms.FourBar` (O at the origin, E at (ground, 0)); ``r_joint``,
+``t_joint`` are R, T in the output's frame (origin E, x along ψ), ``coupler_point`` is A in link 2's
+frame (origin Q, x along Q→P). Solution (:meth:`SixBarIV.motion`): unknowns (θ2, ψ), loop equations
+F1 = |Q - R|² - l3², F2 = |P - T|² - l5²; continuation over a 720-step grid from the assembly at
+φ = π chosen by ``inner_assembly`` and ``start``, then a vectorised Newton polish; analogs from
+J·x' = -F_φ and its derivative (J singular at a dead position of the group).
 """
 
 from __future__ import annotations

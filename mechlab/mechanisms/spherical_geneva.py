@@ -1,4 +1,12 @@
 """The offset spherical Geneva drive (Vainer & Shatokhina): design and exact 3-D model.
+
+Sphere of radius R about O, wheel axis z, slots in the meridian planes; the crank axis is the line
+{y = 0, z = -e}, its point O1 = (0, 0, -e) on the wheel axis. The pin axis is a generatrix of the
+cone with apex O1, axis x and half-angle ψ (formula (3)): d(α) = (cos ψ, sin ψ sin α, sin ψ cos α),
+α = 0 at the crank's lowest position (Fig. 2). As O1 is on the wheel axis, the pin axis lies in the
+meridian plane of its contact point, so the wheel angle is the azimuth of d: tan β = tan ψ·sin α,
+exact for any e (equivalent to formula (18)); cos γ = cos α·sin ψ (11) is exact too, the
+"neglected" term C1 of (10) being identically zero by (3).
 """
 
 from __future__ import annotations

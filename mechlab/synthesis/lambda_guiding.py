@@ -1,31 +1,19 @@
 """The symmetric lambda mechanism of Chebyshev and its circle- and straight-line-guiding synthesis.
 
-Source: Kinitsky (1994), Ya.T. Kinitsky's thesis abstract (Khmelnytskyi), chapter 1,
-Fig. 1a-b and formulas (1)-(13). The OCR of (2)-(11) is unreadable; everything here
-is re-derived from the geometry the text describes and checked numerically.
+Source: Kinitsky (1994), chapter 1, Fig. 1a-b and formulas (1)-(13); the OCR of (2)-(11) is
+unreadable, so everything here is re-derived from the geometry the text describes and checked
+numerically. Crank O-A (r), coupler A-B-D, rocker B-C with l_AB = l_BC = l_BD = l = 1, frame O-C of
+length a, break angle δ = ∠ABD. Frame: O = (0, 0), C = (a, 0), φ counter-clockwise from O→C
+(as :class:`mechlab.mechanisms.FourBar`), so A is farthest from C at φ = π; the thesis' t = φ − π.
 
-Geometry (Kinitsky, 1994, Fig. 1a): crank O-A (length r), coupler A-B-D, rocker B-C with
-l_AB = l_BC = l_BD = l = 1 (all lengths in units of l), frame O-C of length a, coupler
-break angle δ = ∠ABD. Frame of this module: O = (0, 0), C = (a, 0); φ is measured
-counter-clockwise from the ray O→C (as in :class:`mechlab.mechanisms.FourBar`), so A is
-farthest from C, |CA| = a + r, at φ = π; the thesis' crank angle measured from that
-position is t = φ − π.
-
-Derivation (the key to the whole chapter). B is equidistant (= 1) from A, C and D, so A,
-C, D lie on the unit circle about B. With μ = ∠ABC (the transmission angle of the
-four-bar O-A-B-C): |CA| = 2 sin(μ/2), and in the thesis' assembly C lies on the arc AD
-of central angle δ, so the inscribed angle ∠ACD = π − δ/2 is *constant* and
-|CD| = 2 sin((δ − μ)/2). Hence D is the image of A under a rotation about C by the fixed
-angle −(π − δ/2) and a scaling that depends on |CA| only:
+A, C, D lie on the unit circle about B, so with μ = ∠ABC, |CA| = 2 sin(μ/2), the inscribed angle
+∠ACD = π − δ/2 is constant and |CD| = 2 sin((δ − μ)/2):
 
     D − C = [sin((δ − μ)/2) / sin(μ/2)] · Rot(−(π − δ/2)) (A − C).          (*)
 
-Since A(π + t) and A(π − t) are mirror images in the line OC with the same |CA|, D(π + t)
-and D(π − t) are mirror images in the line through C whose ray C→D0 makes π − δ/2 with the
-ray C→O (D0 = D(π)): the coupler curve is symmetric about that axis, as the thesis states,
-and the motion along it is symmetric in time about φ = π too. (For δ > π the coupler is bent
-the other way; the same formulas hold, and the thesis' table uses δ up to 270°.)
-The distance of D from any point Q = C + c·e on the axis is then a function of μ alone.
+Hence the coupler curve and the motion along it are symmetric about the axis through C at π − δ/2
+from C→O (also for δ > π), and the distance of D from a point on that axis depends on μ alone.
+The book's chapter on Chebyshev dwell synthesis derives it.
 """
 
 from __future__ import annotations

@@ -1,44 +1,16 @@
 """Six-bar dwell mechanisms with a translating output on the lambda mechanism: МЧВ2 and МЧВ5
 (Kinitsky (1994), chapter 1, the list of kinds before Fig. 1 and the caption of Fig. 1 в, д).
 
-Kinitsky (1994) sorts its dwell six-bars by the class-II group attached to the coupler point D:
-kind 1 (RRR, МЧВ1), kind 2 (RRP, МЧВ2), kind 3 (RPR, МЧВ3) and kind 5 (RPP, МЧВ5). The abstract
-only names МЧВ2 and МЧВ5, says that the program SK5 synthesises МЧВ2 (whose dyad's transmission
-angle it calls μ2′) and that "МЧВ3 and МЧВ5 allow a simple rigid locking of the output during its
-stop". The geometry below is reconstructed from that and from the МЧВ1 construction (Fig. 3,
-formulas (14)-(15)); what was assumed is stated with each mechanism.
+Kinitsky sorts the dwell six-bars by the class-II group attached at the coupler point D (kind 1
+RRR, МЧВ1; kind 2 RRP, МЧВ2; kind 3 RPR, МЧВ3; kind 5 RPP, МЧВ5). The abstract only names МЧВ2 and
+МЧВ5; their geometry is reconstructed from it and from the МЧВ1 construction (Fig. 3, formulas
+(14)-(15)), and what was assumed is stated with each function.
 
-МЧВ2, :class:`LambdaSliderSixBar` (circle guide): a rod D-E of length R and a slider E on a fixed
-straight guide **through the arc centre Q**. While D runs along the arc (|DQ| = R ± E) the circle of
-radius R about D passes within about E of Q, so the slider stays at Q to the order of E: E = Q + s·u
-with s = (D−Q)·u ± √(R² − ((D−Q)×u)²) (the RRP dyad of :func:`mechlab.geometry.dyad_rrp`); in the
-dwell the root is the one near 0, |s| ≈ | |DQ|² − R² | / (2|(D−Q)·u|) ≤ E/cos β, β the angle between
-QD and the guide. Assumed: the guide's direction is the design freedom. As for МЧВ1 the slider is
-farthest out where the rod lies on the normal n-n to D's path (s' = (E−D)·D'/((E−D)·u) = 0), at
-the crank angle t = α + φ_n after the dwell centre, φ_n = 2K(π − α)/(1 + K) (14)-(15); so for a
-time ratio K the far position is E1 = D1 + R·n and the guide is the line Q-E1: the stroke is
-h = |QE1| (:func:`mchv2`). K = 1 puts the guide on the symmetry axis and gives the smallest stroke,
-h = R − |QD(0)|; the seed's "S = |D0D1| at K = 1" (text after (15)) holds to E: |D0D1| = R0 − |QD(0)|
-= h + (R0 − R). A larger stroke needs K ≠ 1 (:func:`mchv2_stroke`); h(K) = h(1/K) (mirror guides).
-The dwell holds while (D − Q)·u keeps its sign over the dwell, and then the residual is bounded by
-2·max|ρ² − R²| / min|(D − Q)·u| (≈ 2E/cos β; → 2E as the dwell shrinks). The transmission angle of the dyad, μ2′, is
-defined as for a slider-crank: the angle between the rod D-E and the normal to the guide,
-μ2′ = π/2 − β with sin β = (distance of D from the guide)/R; the slider's pressure angle is β.
-
-МЧВ5, :class:`LambdaTranslatingSlot` (straight-line guide): a block pinned at D slides in a straight
-slot of an output link that translates in a fixed guide. The slot is parallel to the straight part
-of D's path (perpendicular to the symmetry axis e), so while D runs along it the output stands still
-to within the deviation E. With the slot direction v and the guide direction w, the slot line through
-P + s·w contains D: s = v×(D − P) / (v×w) — a closed form, and its analogs are the same projection
-of D′ and D″. With the guide along e (:func:`mchv5`, γ = 0) s = x − Y, the axis coordinate of D minus
-the line's offset: the residual is exactly 2E; turning the guide by γ scales the stroke by 1/cos γ
-at the price of a constant pressure angle γ. The time ratio is K = 1 whatever γ (x(π + t) = x(π − t)
-by the curve's symmetry), so K cannot be chosen.
-
-The circle-guide counterpart of МЧВ5 is **not** a straight slot: a translating link whose slot is an
-arc of radius R about a point E of the link holds the block D at distance R from E, which is the rod
-D-E of МЧВ2 (a curved slot replaces a binary link, chapter 2 of this course), so on a circle guide the
-translating slotted link is МЧВ2 again, with the same s(φ).
+* МЧВ2, :class:`LambdaSliderSixBar` (circle guide): rod D-E of length R, slider E on a straight
+  guide through the arc centre Q (:func:`mchv2`, :func:`mchv2_stroke`, :func:`mchv2_far_position`).
+* МЧВ5, :class:`LambdaTranslatingSlot` (straight-line guide): a block at D in a straight slot of an
+  output translating in a fixed guide (:func:`mchv5`). On a circle guide the translating slotted
+  link is МЧВ2 again (a curved slot replaces the rod D-E).
 
 Frames as in :mod:`mechlab.synthesis.lambda_guiding`: O = (0, 0), C = (a, 0), the dwell centred on
 φ = π, the crank turning counter-clockwise, lengths in units of l.
@@ -97,6 +69,14 @@ def mchv2(guide: Circle, K: TimeRatio = 1.0, *, normal: Annotated[int | None, Sp
     would stand across the guide somewhere, the simulated far extreme is not the designed one, or the
     transmission angle μ2′ falls below ``mu_min`` (radians; by default the thesis' working limit 30°,
     as for :func:`mchv1`; ``mu_min=None`` accepts any).
+
+    Assumed: the guide's direction is the design freedom. While D runs on the arc the slider stays
+    at Q to the order of E: E = Q + s·u, s = (D−Q)·u ± √(R² − ((D−Q)×u)²) (the RRP dyad of
+    :func:`mechlab.geometry.dyad_rrp`), the residual bounded by 2·max|ρ² − R²|/min|(D − Q)·u|
+    (≈ 2E/cos β) while (D − Q)·u keeps its sign. The slider is farthest out where the rod lies on
+    the normal to D's path, at t = α + φ_n, φ_n = 2K(π − α)/(1 + K) ((14)-(15)): E1 = D1 + R·n,
+    h = |QE1|; K = 1 gives the least stroke h = R − |QD(0)| (the seed's |D0D1| to within E);
+    h(K) = h(1/K). μ2′ = π/2 − β with sin β = (distance of D from the guide)/R.
     """
     if normal is not None:
         return _mchv2(guide, K, normal, mu_min)
@@ -213,6 +193,11 @@ def mchv5(guide: Straight, stroke: Annotated[float | None, Spec("length", 0.0, N
     Give either ``guide_angle`` γ (radians, default 0: s = x − Y, stroke h0 = range of x) or a
     ``stroke`` h ≥ h0 (γ = arccos(h0/h), turned by ``side``·γ). Raises InfeasibleDesignError
     when h < h0 or the needed pressure angle γ exceeds ``max_pressure``.
+
+    With the slot direction v and the guide direction w, s = v×(D − P)/(v×w) in closed form (its
+    analogs the same projection of D′, D″); with γ = 0, s = x − Y and the residual is exactly 2E,
+    a turned guide scales the stroke by 1/cos γ at a constant pressure angle γ. K = 1 whatever γ
+    (the curve's symmetry), so K cannot be chosen.
     """
     if stroke is not None and guide_angle is not None:
         raise MechanismError("give either the stroke or the guide angle γ, not both")
