@@ -159,3 +159,17 @@ def test_read_csv_gives_named_columns():
     assert np.array_equal(cols["y"], [2.0, 4.0])
     with pytest.raises(KeyError, match="no column 'z'; the file has x, y"):
         cols["z"]
+
+
+def test_no_named_tuple_class_in_the_library():
+    """Results of methods too (Undercut, AnglePath were named tuples): no class of mechlab is one."""
+    import importlib
+    import pkgutil
+    found = []
+    for info in pkgutil.walk_packages(ml.__path__, "mechlab."):
+        if info.name.startswith(("mechlab.widgets", "mechlab.draw")):
+            continue   # they import the plotting stack; they define no results
+        module = importlib.import_module(info.name)
+        found += [f"{info.name}.{k}" for k, v in vars(module).items()
+                  if inspect.isclass(v) and v.__module__ == info.name and issubclass(v, tuple) and hasattr(v, "_fields")]
+    assert found == []

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from functools import cached_property
-from typing import NamedTuple
 
 import numpy as np
 from scipy.interpolate import PPoly, make_interp_spline
@@ -67,7 +66,8 @@ class CamProfile:
             return 1.0 / self.curvature - self.roller_radius
 
 
-class Undercut(NamedTuple):
+@dataclass(frozen=True, eq=False)
+class Undercut:
     """Where the pitch curve is too sharp for the roller: the smallest convex radius of curvature
     ``radius`` at cam angle ``phi`` (radians), and the cam angles ``where`` with ρ ≤ r_r."""
 
