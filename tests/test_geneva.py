@@ -500,7 +500,7 @@ def test_planar_drawing_matches_the_motion():
         n_art = len(d.artists)
         for i in range(24):
             assert len(d.set_frame(i)) == n_art
-            if not g.engaged(d.motion.phi[i])[0]:
+            if not g.engaged(d.motion.phi[i]):
                 continue
             # the pin lies on a slot's centre line of the drawn (rotated) wheel
             A, W = d.motion.points["A"].p[i], d.motion.points["W"].p[i]
@@ -517,7 +517,7 @@ def test_planar_drawing_matches_the_motion():
         d.set_frame(i)
         lock = np.column_stack(lock_line.get_data())
         toward_w = np.any(np.abs(np.arctan2(lock[:, 1], lock[:, 0])) < np.radians(6))
-        assert toward_w == (not g.engaged(phi)[0]) or abs(abs(phi - np.pi) - g.engagement_half_angle) < 0.2
+        assert toward_w == (not g.engaged(phi)) or abs(abs(phi - np.pi) - g.engagement_half_angle) < 0.2
     plt.close(fig)
 
 
@@ -535,7 +535,7 @@ def test_spherical_drawing_and_comparison_plot():
     for i in range(20):
         d.set_frame(i)
         x, y, z = (np.asarray(a) for a in d.contact.get_data_3d())
-        assert (len(x) == 1) == bool(g.engaged(d.motion.phi[i])[0])
+        assert (len(x) == 1) == bool(g.engaged(d.motion.phi[i]))
         if len(x):  # the contact point lies on one of the drawn slot arcs' meridians
             az = [np.arctan2(*np.asarray(s.get_data_3d())[1::-1, -1]) for s in d.slot_lines[:g.z]]
             from mechlab.geometry import wrap

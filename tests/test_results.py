@@ -173,3 +173,54 @@ def test_no_named_tuple_class_in_the_library():
         found += [f"{info.name}.{k}" for k, v in vars(module).items()
                   if inspect.isclass(v) and v.__module__ == info.name and issubclass(v, tuple) and hasattr(v, "_fields")]
     assert found == []
+
+
+def _method_objects():
+    from test_textbook import FAMILIES
+    objects = {name: make() for name, make in FAMILIES.items()}
+    programme = ml.CamProgramme(20.0, 120 * DEG, 100 * DEG, 40 * DEG, law="cycloidal (sine)")
+    objects["CamProgramme"] = programme
+    objects["TranslatingRollerCam"] = ml.TranslatingRollerCam(programme, 40.0, 10.0, offset=8.0)
+    objects["OscillatingRollerCam"] = ml.OscillatingRollerCam(
+        ml.CamProgramme(20 * DEG, 120 * DEG, 100 * DEG, 40 * DEG), 40.0, 8.0, pivot_distance=90.0, arm=70.0)
+    return objects
+
+
+def _phi_methods():
+    for name, obj in _method_objects().items():
+        for attr in dir(obj):
+            if attr.startswith("_") and attr != "__call__":
+                continue
+            f = getattr(type(obj), attr, None)
+            if not callable(f) or isinstance(f, type):
+                continue
+            params = list(inspect.signature(inspect.unwrap(f)).parameters.values())[1:]
+            required = [p.name for p in params if p.default is p.empty and p.kind is p.POSITIONAL_OR_KEYWORD]
+            if required == ["phi"]:
+                yield f"{name}.{attr}"
+
+
+PHI_METHODS = sorted(set(_phi_methods()))
+
+
+def test_the_methods_taking_phi_are_found():
+    assert {"FourBar.motion", "ExternalGeneva.engaged", "CurvedSlotLink.beta", "TranslatingRollerCam.pressure_angle",
+            "CamProgramme.__call__"} <= set(PHI_METHODS)
+
+
+@pytest.mark.parametrize("name", PHI_METHODS)
+def test_every_public_method_taking_phi_gives_scalars_for_a_scalar(name):
+    obj_name, attr = name.split(".")
+    obj = _method_objects()[obj_name]
+    f = getattr(obj, attr)
+    phi = obj.cycle(9)[1:-1] if hasattr(obj, "cycle") else np.linspace(0.3, 6.0, 7)
+    if inspect.signature(inspect.unwrap(f)).parameters["phi"].annotation == "float":   # one angle only
+        assert not isinstance(f(float(phi[1])), np.ndarray)
+        return
+    many = f(phi)
+    for k in (1, 4):
+        one = f(float(phi[k]))
+        for (key, v), (_, w) in zip(_leaves(one), _leaves(many)):
+            if np.ndim(w) >= 1 and len(w) == len(phi):
+                assert np.ndim(v) == np.ndim(w) - 1, f"{name}: {key} has shape {np.shape(v)} at a scalar φ"
+                assert np.allclose(v, w[k], atol=1e-9), key

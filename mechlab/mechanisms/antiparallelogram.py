@@ -9,7 +9,7 @@ from ..errors import DimensionError
 from ..geometry import PointPath, as_angles, dot, fixed_point, unit
 from .base import Mechanism
 from .fourbar import FourBar
-from ..motion import AngularMotion
+from ..motion import AngularMotion, scalar_law
 from ..validate import Length, Samples, validated
 
 
@@ -76,6 +76,7 @@ class Antiparallelogram(Mechanism):
         """The same lengths as a FourBar with a fixed assembly sign (valid on half a turn each)."""
         return FourBar(self.crank, self.ground, self.crank, self.ground, assembly)
 
+    @scalar_law
     def output_angle(self, phi) -> np.ndarray:
         """ψ(φ) on the crossed branch, continuous over any range of φ."""
         phi = as_angles(phi)

@@ -24,7 +24,7 @@ from scipy.interpolate import PPoly, make_interp_spline
 
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_number, cross, dot, fixed_point, perp
-from ..motion import AngularMotion, LinearMotion
+from ..motion import AngularMotion, LinearMotion, scalar_law
 from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars
 
 __all__ = ["TranslatingRollerCam", "OscillatingRollerCam", "CamProfile", "Undercut", "CamUndercutError"]
@@ -132,6 +132,7 @@ class RollerCam(Mechanism):
         d2 = Cqq * (q.d**2)[:, None] + Cq * q.dd[:, None]
         return C, d1, d2, Cq
 
+    @scalar_law
     def pitch(self, phi) -> PointPath:
         """The pitch curve P(θ) = Rot(−θ)·C(θ) in the cam frame, with P′ and P″."""
         theta = as_angles(phi)
@@ -141,11 +142,13 @@ class RollerCam(Mechanism):
         v2 = d2 - 2 * perp(d1) - C
         return PointPath(_rotate(C, -theta), _rotate(v1, -theta), _rotate(v2, -theta))
 
+    @scalar_law
     def curvature(self, phi) -> np.ndarray:
         """Curvature of the pitch curve (1/length), positive where convex (the curve runs clockwise)."""
         P = self.pitch(phi)
         return -cross(P.d, P.dd) / np.hypot(*P.d.T) ** 3
 
+    @scalar_law
     def pressure_angle(self, phi) -> np.ndarray:
         """Signed pressure angle α (radians) between the contact normal and the follower's motion."""
         theta = as_angles(phi)

@@ -25,7 +25,7 @@ from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, cross, crank_point, dot, fixed_point, lift
-from ..motion import AngularMotion, LinearMotion
+from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import Checked, Flag, Function, Length, Point, Real, Spec, mechanism, number
 from .base import FRAME, FULL_TURN, Link, Mechanism, Pair, Part, Sketch, Structure, arc_set, bars, fmt_ranges, output_axis
 from .slotted import PivotedSlot, SineMechanism, SlottedLink
@@ -442,6 +442,7 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
         ddq = 2.0 * (dot(A.d, A.d) + dot(v, A.dd))
         return q, dq, ddq
 
+    @scalar_law
     def beta(self, phi) -> AnglePath:
         """β(φ), β'(φ), β''(φ): the pin's polar angle in the link frame (Zinchenko et al. (2013), formula (12)).
 
@@ -709,6 +710,7 @@ class TranslatingCurvedSlot(Mechanism):
         return self._range_reason()
 
     # -- kinematics ---------------------------------------------------------------------------
+    @scalar_law
     def x_alpha(self, phi) -> AnglePath:
         """x_α(φ) with its analogs: the slot point's abscissa in the link frame (formula (1))."""
         phi = as_angles(phi)

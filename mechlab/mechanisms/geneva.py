@@ -18,7 +18,7 @@ import numpy as np
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
-from ..motion import AngularMotion, Quantity, Table
+from ..motion import AngularMotion, Quantity, Table, scalar_law
 from ..validate import MAX_SLOTS, Length, check, count, length
 
 
@@ -228,6 +228,7 @@ class PlanarGeneva(Mechanism):
         mu = np.full(n, np.pi / 2)
         return AngularMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "W": W}, mu, psi, dpsi, ddpsi)
 
+    @scalar_law
     def engaged(self, phi) -> np.ndarray:
         """True where the pin is in a slot."""
         return np.abs(mid_motion_angle(as_angles(phi))) <= self.engagement_half_angle

@@ -11,7 +11,7 @@ from ..errors import RotationError
 from ..geometry import PointPath, as_angles, dot, perp, unit
 from .fourbar import FourBar
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure
-from ..motion import AngularMotion
+from ..motion import AngularMotion, scalar_law
 from ..validate import Coordinate, Distance, Length, Sign, Spec, angle, check
 
 __all__ = ["LambdaMechanism", "GuidedLambda", "classic_lambda"]
@@ -94,12 +94,14 @@ class LambdaMechanism(Mechanism):
     def C(self) -> np.ndarray:
         return np.array([self.a, 0.0])
 
+    @scalar_law
     def mu(self, phi) -> np.ndarray:
         """Transmission angle μ = ∠ABC at crank angles φ: |CA| = 2 sin(μ/2)."""
         phi = as_angles(phi)
         d = np.sqrt(self.a**2 + self.r**2 - 2 * self.a * self.r * np.cos(phi))
         return 2.0 * np.arcsin(np.clip(d / 2.0, -1.0, 1.0))
 
+    @scalar_law
     def coupler_point(self, phi) -> np.ndarray:
         """Positions of D by the closed form (*) of :mod:`mechlab.synthesis.lambda_guiding` (no dyad solve)."""
         phi = as_angles(phi)
@@ -111,6 +113,7 @@ class LambdaMechanism(Mechanism):
         c, s = np.cos(th), np.sin(th)
         return self.C + k[:, None] * np.stack([c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]], axis=-1)
 
+    @scalar_law
     def axis_coordinates(self, phi) -> tuple[np.ndarray, np.ndarray]:
         """D in the axis frame at C: x along e (towards D0), y across (left of e)."""
         w = self.coupler_point(phi) - self.C

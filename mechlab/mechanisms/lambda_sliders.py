@@ -9,7 +9,7 @@ import numpy as np
 from ..errors import MechanismError
 from ..geometry import PointPath, as_angles, cross, dyad_rrp, unit
 from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, block_outline
-from ..motion import LinearMotion
+from ..motion import LinearMotion, scalar_law
 from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 from ..validate import Angle, Coordinate, Length, Sign
 from ..errors import InfeasibleDesignError
@@ -79,6 +79,7 @@ class LambdaSliderSixBar(_OnLambda):
         """Unit vector of the guide."""
         return unit(self.theta)
 
+    @scalar_law
     def offsets(self, phi) -> np.ndarray:
         """Signed distance u × (D − Q) of D from the guide line (closed form of D)."""
         D = self.base.coupler_point(phi)

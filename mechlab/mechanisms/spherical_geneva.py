@@ -18,7 +18,7 @@ import numpy as np
 from ..errors import DimensionError, MechanismError
 from ..geometry import AnglePath, PointPath, as_angles, vector_angle
 from .base import Mechanism
-from ..motion import AngularMotion, Quantity, Table
+from ..motion import AngularMotion, Quantity, Table, scalar_law
 from ..validate import Length, length, number, validated
 from .geneva import Impact, OffsetError, Slots, TWO_PI, mid_motion_angle
 
@@ -267,6 +267,7 @@ class SphericalGeneva(Mechanism):
                      * self.rho0 / (2.0 * self.e))
 
     # -- Mechanism protocol --------------------------------------------------------------
+    @scalar_law
     def engaged(self, phi) -> np.ndarray:
         return np.abs(mid_motion_angle(as_angles(phi))) <= self.alpha0
 

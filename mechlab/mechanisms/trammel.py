@@ -16,7 +16,7 @@ from typing import Annotated
 import numpy as np
 from ..geometry import PointPath, as_angles, fixed_point, unit
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, block_outline
-from ..motion import LinearMotion
+from ..motion import LinearMotion, scalar_law
 from ..validate import Length, angle
 
 
@@ -60,6 +60,7 @@ class EllipticTrammel(Mechanism):
         """Radius of the fixed centrode (centre O): rod / sin β (Kozhevnikov, formula (7.12))."""
         return self.rod / np.sin(self.beta)
 
+    @scalar_law
     def rod_angle(self, phi) -> np.ndarray:
         """Angle θ of the rod A→B at crank angles φ: θ = π/2 + β - φ."""
         return np.pi / 2 + self.beta - as_angles(phi)
