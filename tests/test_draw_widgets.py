@@ -320,3 +320,18 @@ def test_blitted_frames_match_a_full_drawing_of_the_same_frame(law):
         differ = np.abs(full - blitted) > 40   # more than the palette's rounding
         assert differ.mean() < 0.003, differ.mean()
     plt.close("all")
+
+
+def test_force_explorer_greys_and_names_where_efficiency_is_undefined():
+    from mechlab.widgets.forces import press_explorer
+    ex = press_explorer(f=0.1)
+    undefined = np.ma.getmaskarray(ex.result.efficiency())
+    assert 0 < undefined.sum() < len(undefined)   # the press's inertia drives the crank over part of the turn
+    # the grey spans cover the masked angles and none of the others
+    deg = np.degrees(ex.result.phi)
+    grey = np.array([any(p.contains_point((d, 0.5)) for p in ex._undefined.get_paths()) for d in deg])
+    assert np.array_equal(grey, undefined)
+    assert "undefined" in ex.ax_eta.get_legend().get_texts()[0].get_text()
+    ex.sliders["P"].value = 10000.0   # a rebuild replaces the spans, it does not stack them
+    assert sum(isinstance(c, type(ex._undefined)) for c in ex.ax_eta.collections) == 1
+    plt.close("all")

@@ -53,6 +53,7 @@ class ForceExplorer(Explorer):
         self.ax_eta.set_ylabel("efficiency η (–)")
         self.ax_eta.set_xlabel("crank angle φ (degrees)")
         self.ax_eta.set_xticks(np.arange(0, 361, 90))
+        self._undefined = None   # the grey spans where η is undefined, redrawn with each rebuild
         for ax in (self.ax_torque, self.ax_eta):
             ax.grid(True, alpha=0.3)
         self.drawing = None
@@ -83,6 +84,7 @@ class ForceExplorer(Explorer):
             self.lines[key].set_data(deg, y)
         self._eta = result.efficiency().filled(np.nan)
         self.lines["eta"].set_data(deg, self._eta)
+        self._shade_undefined(deg, np.isnan(self._eta))
         lo, hi = float(np.min(result.torque)), float(np.max(result.torque))
         pad = 0.08 * (hi - lo) + 1e-9
         self.ax_torque.set_xlim(deg[0], deg[-1])
@@ -100,6 +102,21 @@ class ForceExplorer(Explorer):
         self._animate_moving()   # the arrows are new artists after each rebuild
         self._select_frame()
         self._redraw()
+
+    def _shade_undefined(self, deg, undefined):
+        """Grey where η is undefined (the drive or the ideal loads deliver no power: the links' inertia or
+        gravity drive the crank; Kinetostatics.efficiency masks it): the η line has gaps there by
+        definition, and the plot says why."""
+        if self._undefined is not None:
+            self._undefined.remove()
+            self._undefined = None
+        legend = self.ax_eta.get_legend()
+        if legend is not None:
+            legend.remove()
+        if np.any(undefined):
+            self._undefined = self.ax_eta.fill_between(deg, 0.0, 1.05, where=undefined, step="mid", color="0.88",
+                                                       lw=0, label="η undefined: loads or inertia\ndrive the crank")
+            self.ax_eta.legend(loc="lower left", fontsize=7)
 
     def _select_frame(self):
         phi = np.degrees(self.result.phi)
