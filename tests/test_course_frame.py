@@ -378,3 +378,44 @@ def test_every_explorer_asks_a_question(path):
     shown = [source(c) for c in cells(path) if c["cell_type"] == "code" and not source(c).startswith("%")]
     unasked = [name for code in shown for name in unasked_explorers(code, names)]
     assert not unasked, f"{path.name}: explorers without question=: {unasked}"
+
+
+GREEK = {r"\varphi": "φ", r"\psi": "ψ", r"\omega": "ω", r"\mu": "μ", r"\theta": "θ", r"\lambda": "λ",
+         r"\alpha": "α", r"\Delta": "Δ", r"\beta": "β", r"\delta": "δ", r"\varepsilon": "ε"}
+
+
+def symbol_pattern(symbol: str) -> re.Pattern:
+    """A glossary symbol ("k_{ov}", "\\mu", "P_{ij}") as a chapter may write it: LaTeX or Unicode, with or
+    without braces and underscore; "ij" stands for two link numbers."""
+    parts = []
+    for token in re.split(r"(\\[A-Za-z]+|_\{?[a-z0-9]+\}?)", symbol):
+        if token in GREEK:
+            parts.append(f"(?:{re.escape(token)}(?![A-Za-z])|{GREEK[token]})")
+        elif token.startswith("_"):
+            sub = token.strip("_{}")
+            parts.append(r"_?\{?" + (r"\d\d" if sub == "ij" else re.escape(sub)) + r"\}?")
+        else:
+            parts.append(re.escape(token))
+    return re.compile("".join(parts))
+
+
+def test_the_glossary_symbols_are_used_in_the_chapters_it_lists():
+    """The symbol table's chapters column follows the chapter numbers (it lagged a renumbering once)."""
+    rows = re.findall(r"^\| \$(.+?)\$.*\| ([^|]+) \|$", (ROOT / "book" / "glossary.md").read_text(), re.M)
+    assert len(rows) >= 15
+    texts = {int(p.name[:2]): "\n".join(source(c) for c in cells(p)) for p in CHAPTERS}
+    wrong = []
+    for symbol, listed in rows:
+        symbol = re.split(r",| =", symbol)[0].strip()
+        if listed.strip() == "all":
+            continue
+        pattern = symbol_pattern(symbol)
+        wrong += [f"{symbol} not in chapter {n}" for n in sorted(chapter_numbers(listed)) if not pattern.search(texts[n])]
+    assert not wrong, wrong
+
+
+def test_a_glossary_symbol_pattern_tells_symbols_apart():
+    assert symbol_pattern("k_{ov}").search("overload $k_{ov}$") and symbol_pattern("k_{ov}").search("k_ov = 2")
+    assert symbol_pattern(r"\mu").search("μ_min") and not symbol_pattern(r"\mu").search(r"\mult")
+    assert symbol_pattern("P_{ij}").search("$P_{13}$") and not symbol_pattern("P_{ij}").search("P_b")
+    assert not symbol_pattern("k_a").search("k_c")
