@@ -335,3 +335,19 @@ def test_force_explorer_greys_and_names_where_efficiency_is_undefined():
     ex.sliders["P"].value = 10000.0   # a rebuild replaces the spans, it does not stack them
     assert sum(isinstance(c, type(ex._undefined)) for c in ex.ax_eta.collections) == 1
     plt.close("all")
+
+
+def test_plot_efficiency_draws_eta_whole_where_defined_and_greys_the_rest():
+    from mechlab.draw.forces import UNDEFINED_LABEL, plot_efficiency
+    from mechlab.kinetostatics.machines import press
+    k = press(f=0.1, radius=0.01)
+    res = k.forces(motion=k.motion(k.cycle(121)))
+    ax = plot_efficiency(res)
+    line = ax.get_lines()[0]
+    eta = res.efficiency()
+    defined = ~np.ma.getmaskarray(eta)
+    assert np.array_equal(np.isfinite(line.get_ydata()), defined)
+    assert np.allclose(line.get_ydata()[defined], eta.data[defined])
+    assert [c.get_label() for c in ax.collections] == [UNDEFINED_LABEL]
+    assert "degrees" in ax.get_xlabel() and "η" in ax.get_ylabel()
+    plt.close("all")

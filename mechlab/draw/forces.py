@@ -9,6 +9,7 @@ arrows at one scale over the cycle) and the balancing torque as text.
 
 from __future__ import annotations
 
+import matplotlib.pyplot as plt
 import numpy as np
 
 from ..kinetostatics.machines import Kinetostatics
@@ -93,3 +94,32 @@ class ForcePlanDrawing:
 
     def autoscale(self):
         fill_axes(self.ax, self.bounds())
+
+
+UNDEFINED_LABEL = "η undefined: loads or inertia\ndrive the crank"
+
+
+def shade_undefined(ax, deg, undefined):
+    """Grey the crank angles (degrees) where the efficiency is undefined; returns the spans or None.
+
+    :meth:`mechlab.kinetostatics.solve.ForceResult.efficiency` masks η where the drive or the ideal
+    loads deliver no power (the links' inertia or gravity drive the crank), so an η line has gaps
+    there; the grey band and its legend entry say why.
+    """
+    if not np.any(undefined):
+        return None
+    return ax.fill_between(deg, 0.0, 1.05, where=undefined, step="mid", color="0.88", lw=0, label=UNDEFINED_LABEL)
+
+
+def plot_efficiency(result, ax=None, **style):
+    """The instantaneous efficiency η(φ) of a force result, its undefined spans grey; returns the axes."""
+    if ax is None:
+        ax = plt.subplots(figsize=(8, 3.2))[1]   # 8 in: at least 600 px in the book's column
+    eta = result.efficiency()
+    deg = np.degrees(result.phi)
+    ax.plot(deg, eta.filled(np.nan), **{"color": "#2a7f62", "lw": 1.5, "label": "η", **style})
+    shade_undefined(ax, deg, np.ma.getmaskarray(eta))
+    ax.set(xlabel="crank angle φ (degrees)", ylabel="efficiency η (–)", ylim=(0.0, 1.05))
+    ax.set_xticks(np.arange(0, 361, 90))
+    ax.grid(True, alpha=0.3)
+    return ax

@@ -17,6 +17,7 @@ from typing import Callable
 import numpy as np
 
 from ..draw import drawing_class
+from ..draw.forces import shade_undefined
 from ..errors import MechanismError
 from ..kinetostatics.drive import drive
 from ..kinetostatics.machines import press, rocker_drive
@@ -104,18 +105,14 @@ class ForceExplorer(Explorer):
         self._redraw()
 
     def _shade_undefined(self, deg, undefined):
-        """Grey where η is undefined (the drive or the ideal loads deliver no power: the links' inertia or
-        gravity drive the crank; Kinetostatics.efficiency masks it): the η line has gaps there by
-        definition, and the plot says why."""
+        """Grey where η is undefined (:func:`mechlab.draw.forces.shade_undefined`), replacing the last rebuild's."""
         if self._undefined is not None:
             self._undefined.remove()
-            self._undefined = None
         legend = self.ax_eta.get_legend()
         if legend is not None:
             legend.remove()
-        if np.any(undefined):
-            self._undefined = self.ax_eta.fill_between(deg, 0.0, 1.05, where=undefined, step="mid", color="0.88",
-                                                       lw=0, label="η undefined: loads or inertia\ndrive the crank")
+        self._undefined = shade_undefined(self.ax_eta, deg, undefined)
+        if self._undefined is not None:
             self.ax_eta.legend(loc="lower left", fontsize=7)
 
     def _select_frame(self):
