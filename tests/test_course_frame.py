@@ -45,7 +45,9 @@ def is_check(cell):
 
 
 def asserts_in(code: str) -> int:
-    return sum(isinstance(node, ast.Assert) for node in ast.walk(ast.parse(code)))
+    """Asserts, and `raise AssertionError` (an assert in disguise: a teaching cell shows the error, a check cell checks it)."""
+    return sum(isinstance(node, ast.Assert) or (isinstance(node, ast.Raise) and "AssertionError" in ast.unparse(node))
+               for node in ast.walk(ast.parse(code)))
 
 
 def test_there_are_chapters():
@@ -224,6 +226,8 @@ def test_the_scans_would_see_a_seed_and_a_bare_figure():
     assert SEED.search("as seed 000 shows") and not SEED.search("seeding")
     assert figure_problems("see Fig. 7.3 and Figs. 2-4", "# after Kozhevnikov, Fig. 7.3") == ["Figs. 2"]
     assert asserts_in("x = 1\nfor i in range(2):\n    assert i < 2\n") == 1
+    assert asserts_in("try:\n    f()\nexcept E:\n    pass\nelse:\n    raise AssertionError('accepted')\n") == 1
+    assert asserts_in("raise ValueError('no')\n") == 0
 
 
 @pytest.mark.parametrize("name", sorted(MACHINES))
