@@ -94,6 +94,35 @@ def test_live_explorer_blits_the_crank_and_redraws_on_new_lengths():
     assert ex.message == "" and ex.mechanism.rocker == pytest.approx(3.3)
 
 
+def test_the_canvas_frames_sent_to_the_browser_rebuild_its_image_exactly():
+    """The full image, then diffs cropped at their last changed pixel, painted over it at the
+    top-left corner as ipympl's browser side does, give the canvas's own pixels, every step."""
+    import io
+
+    from PIL import Image
+    pytest.importorskip("ipympl")
+    ex = fourbar_explorer(live=True)
+    canvas = ex.fig.canvas
+    canvas.syncing_data_url = False   # as with JupyterLab connected
+    sent = []
+    canvas.send_binary = sent.append
+    canvas.draw()
+    screen = np.asarray(Image.open(io.BytesIO(sent[-1]))).copy()
+    assert canvas._current_image_mode == "full" and screen.shape[:2] == canvas.get_renderer().buffer_rgba().shape[:2]
+    sizes = []
+    for value in (10.0, 12.0, 200.0, 202.0, 0.0):
+        ex.angle.value = value
+        diff = np.asarray(Image.open(io.BytesIO(sent[-1])))
+        assert canvas._current_image_mode == "diff"
+        h, w = diff.shape[:2]
+        drawn = diff[..., 3] > 0
+        screen[:h, :w][drawn] = diff[drawn]
+        assert np.array_equal(screen, np.asarray(canvas.get_renderer().buffer_rgba()))
+        sizes.append((h, w))
+    assert min(h * w for h, w in sizes) < screen.shape[0] * screen.shape[1]   # cropped when it can be
+    plt.close("all")
+
+
 def test_choice_controls_reach_the_factory():
     from mechlab.widgets import Choice, Control, MechanismExplorer
     seen = []

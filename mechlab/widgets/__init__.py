@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import html
 import os
+import struct
+import zlib
 from dataclasses import dataclass
 from typing import Callable
 
@@ -128,6 +130,44 @@ def _ipympl_canvas(fig):
     return canvas
 
 
+def png_rgba(rgba) -> bytes:
+    """An RGBA array (rows × columns × 4, uint8) as a PNG: no row filter and zlib level 1, so
+    that a frame's diff, mostly transparent zeros, is encoded 2-3× faster than by Pillow's
+    defaults (adaptive filters, level 6) for a few KiB more (PNG, ISO/IEC 15948:2004)."""
+    h, w, _ = rgba.shape
+    rows = np.zeros((h, 4 * w + 1), np.uint8)   # each row: filter type 0, then its pixels
+    rows[:, 1:] = rgba.reshape(h, 4 * w)
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(rows.tobytes(), 1)) + chunk(b"IEND", b""))
+
+
+def diff_image(canvas):
+    """What a web canvas (ipympl's) sends after a draw or a blit: the whole image, or only the
+    pixels that changed since the last one, in an image cropped below and right of the last
+    changed pixel (the browser draws it at the top-left corner over the old image); None if
+    nothing new was drawn. Replaces ``FigureCanvasWebAggCore.get_diff_image``, same protocol."""
+    if not canvas._png_is_old:
+        return None
+    pixels = np.asarray(canvas.get_renderer().buffer_rgba())
+    buff = pixels.view(np.uint32).squeeze(2)   # one uint32 per pixel: compared in one pass
+    if canvas._force_full or buff.shape != canvas._last_buff.shape or (pixels[:, :, 3] != 255).any():
+        canvas.set_image_mode("full")   # a diff cannot make a pixel transparent again
+        output = buff
+    else:
+        canvas.set_image_mode("diff")
+        changed = buff != canvas._last_buff
+        rows, cols = np.flatnonzero(changed.any(axis=1)), np.flatnonzero(changed.any(axis=0))
+        h, w = (rows[-1] + 1, cols[-1] + 1) if len(rows) else (1, 1)
+        output = np.where(changed[:h, :w], buff[:h, :w], 0)
+    canvas._last_buff = buff.copy()
+    canvas._force_full = canvas._png_is_old = False
+    return png_rgba(output.view(np.uint8).reshape(*output.shape, 4))
+
+
 def live_by_default() -> bool:
     """Live (ipympl canvas, blitting) in a Jupyter kernel, static in the book and outside a kernel."""
     if os.environ.get("MECHLAB_WIDGETS") == "static":
@@ -185,6 +225,8 @@ class Explorer:
             self.fig.suptitle(title)
         self.error_text = self.fig.text(0.5, 0.5, "", ha="center", va="center", wrap=True, color="#b00020",
                                         fontsize=12, bbox=dict(fc="#fff0f0", ec="#b00020"))
+        if hasattr(canvas, "get_diff_image"):   # a web canvas: its frames encoded faster
+            canvas.get_diff_image = lambda: diff_image(canvas)
         self.output = None if self.live else W.Output()
         # live without ipympl (benchmarks, tests) renders off screen: nothing to place in the layout
         self._canvas_widget = canvas if isinstance(canvas, W.Widget) else (self.output or W.HTML())
