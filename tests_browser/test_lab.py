@@ -121,16 +121,19 @@ _STATE_JS = """() => {
 }"""
 
 # the first widget output that has a slider handle and a plot (an image re-shown in an Output
-# widget, or an ipympl canvas); marked for the test, with its crank-angle slider ("φ"; else its
-# first slider). Returns "angle" or "other" (a widget without a crank angle, e.g. chapter 12's).
+# widget, or an ipympl canvas); marked for the test, with its crank-angle slider ("crank angle",
+# else a slider whose label has a φ; else its first slider). Returns "angle" or "other" (a widget
+# without a crank angle, e.g. chapter 12's).
 _MARK_WIDGET_JS = """() => {
   document.querySelectorAll('[data-mechtest]').forEach(e => e.removeAttribute('data-mechtest'));
   const root = window.jupyterapp.shell.currentWidget.node;  // this notebook's panel only
   for (const o of Array.from(root.querySelectorAll('.jp-OutputArea-output'))) {
     if (o.querySelector('.noUi-handle') && (o.querySelector('img') || o.querySelector('canvas'))) {
       o.setAttribute('data-mechtest', 'explorer');
-      const angle = Array.from(o.querySelectorAll('.widget-slider'))
-        .find(s => (s.querySelector('.widget-label') || {}).textContent.includes('φ'));
+      const sliders = Array.from(o.querySelectorAll('.widget-slider'));
+      const label = s => (s.querySelector('.widget-label') || {}).textContent || '';
+      // the crank angle, not a dimension whose label names an angle φ1 (the dwell's start)
+      const angle = sliders.find(s => label(s).includes('crank angle')) || sliders.find(s => label(s).includes('φ'));
       (angle || o.querySelector('.widget-slider')).setAttribute('data-mechtest-slider', 'angle');
       return angle ? 'angle' : 'other';
     }
