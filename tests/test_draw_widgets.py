@@ -123,6 +123,24 @@ def test_the_canvas_frames_sent_to_the_browser_rebuild_its_image_exactly():
     plt.close("all")
 
 
+def test_a_crank_key_press_costs_the_kernel_one_request_and_no_echo():
+    """The play button drives the slider in the browser (no message back per key press) and
+    starts where the slider is; the kernel does not echo the crank angle back."""
+    from ipywidgets.widgets.widget import _instances
+    from ipywidgets.widgets.widget_link import DirectionalLink, Link
+    ex = fourbar_explorer(live=True)
+    links = [w for w in _instances.values()
+             if isinstance(w, Link) and w.source == (ex.play, "value") and w.target == (ex.angle, "value")]
+    assert len(links) == 1 and isinstance(links[0], DirectionalLink)
+    assert ex.angle.trait_metadata("value", "echo_update") is False
+    assert ex.sliders["crank"].trait_metadata("value", "echo_update") is None   # other sliders keep theirs
+    ex.angle.value = 100.0
+    assert ex.play.value == 100
+    ex.angle.value = 360.0
+    assert ex.play.value == ex.play.max
+    plt.close("all")
+
+
 def test_choice_controls_reach_the_factory():
     from mechlab.widgets import Choice, Control, MechanismExplorer
     seen = []

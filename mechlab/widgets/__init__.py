@@ -29,6 +29,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from IPython import get_ipython
 from IPython.display import display
+from traitlets import CFloat
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
@@ -176,6 +177,14 @@ def live_by_default() -> bool:
     return _uses_ipympl() or (shell is not None and hasattr(shell, "kernel"))
 
 
+class AngleSlider(W.FloatSlider):
+    """The crank-angle slider: the kernel does not echo its value back to the browser (one
+    message fewer per key press; the browser set the value, and ipywidgets needs the echo only
+    when several browsers show the same widget)."""
+
+    value = CFloat(0.0, help="Float value").tag(sync=True, echo_update=False)
+
+
 class Explorer:
     """What every explorer shares: controls → ``factory(**values)``, a crank-angle slider,
     one figure shown on the right canvas, a MechanismError shown in place of the plots, and
@@ -203,13 +212,14 @@ class Explorer:
         self.frame = 0
         self.sliders = {name: c.widget() for name, c in controls.items()}
         self.angle_step = 360.0 / (n - 1)
-        self.angle = W.FloatSlider(value=self.angle_step * round(angle / self.angle_step), min=0.0, max=360.0,
+        self.angle = AngleSlider(value=self.angle_step * round(angle / self.angle_step), min=0.0, max=360.0,
                                    step=self.angle_step, description="crank angle φ (°)", continuous_update=True,
                                    readout_format=".0f", **SLIDER_STYLE)
         self.status = W.HTML()
         self.question = W.HTML(f"<b>Investigate:</b> {html.escape(question)}" if question else "")
         self.live = live_by_default() if live is None else live
         self._background = None
+        self._player = None
         canvas = None
         if _uses_ipympl():
             with plt.ioff():
@@ -258,10 +268,15 @@ class Explorer:
         return int(np.argmin(np.abs((deg - self.angle.value + 180.0) % 360.0 - 180.0)))
 
     def _play(self, interval: int = 60) -> W.Play:
-        """A play button moving the crank slider by one sample per tick (linked in the browser)."""
+        """A play button moving the crank slider by one sample per tick (linked in the browser),
+        starting from the slider's angle."""
         step = max(1, round(self.angle_step))
         play = W.Play(value=0, min=0, max=int(360 - step), step=step, interval=interval, description="play")
-        W.jslink((play, "value"), (self.angle, "value"))
+        # play → slider in the browser; slider → play from the kernel, after the redraw: a two-way
+        # link would send the play's value to the kernel with each key press, a second request
+        # (and its echo and busy/idle messages) ahead of the slider's own
+        W.jsdlink((play, "value"), (self.angle, "value"))
+        self._player = play
         return play
 
     # -- to define in a subclass --------------------------------------------------------
@@ -308,10 +323,11 @@ class Explorer:
         self.rebuild()
 
     def _on_angle(self, change=None):
-        if not self._ready():
-            return
-        self._select_frame()
-        self._blit_or_redraw()
+        if self._ready():
+            self._select_frame()
+            self._blit_or_redraw()
+        if self._player is not None:
+            self._player.value = min(self._player.max, round(self.angle.value))
 
     def _blit_or_redraw(self):
         """Redraw only the moving artists over the saved background when live, else everything."""
