@@ -29,9 +29,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 from IPython import get_ipython
 from IPython.display import display
-from traitlets import CFloat
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from traitlets import CFloat
 
 from ..draw import drawing_class, fill_axes
 from ..errors import MechanismError
