@@ -30,6 +30,16 @@ class SynthesisError(MechanismError):
     """A requested lambda-mechanism design does not exist (outside the existence limits)."""
 
 
+class NoDesignError(SynthesisError):
+    """A circle-guiding request refused with its evidence: ``kind`` names the reason (``"frame"``,
+    ``"resolution"``, ``"rotation"``, ``"fold"``, ``"whole turn"``) and ``evidence`` holds the numbers
+    that justify it, so that a caller (or a test) can check them."""
+
+    def __init__(self, message: str, kind: str = "", **evidence):
+        super().__init__(message)
+        self.kind, self.evidence = kind, evidence
+
+
 class InfeasibleDesignError(SynthesisError):
     """A six-bar requested by K, β_m (or a pivot position) cannot be built."""
 

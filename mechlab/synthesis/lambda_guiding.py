@@ -19,10 +19,11 @@ The book's chapter on Chebyshev dwell synthesis derives it.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 import numpy as np
 from scipy.optimize import brentq, minimize, minimize_scalar, root
 
-from ..errors import DimensionError, MechanismError, SynthesisError
+from ..errors import DimensionError, MechanismError, NoDesignError, SynthesisError
 from ..geometry import check_length, check_number
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
 from ..validate import Flag, Spec, check, mechanism
@@ -34,6 +35,8 @@ __all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding",
 
 MAX_SAMPLES = 100_000  # samples of a curve
 RIPPLE_FLOOR = 1e-12   # (in l) the equal-ripple equations are solved to about this; a finer band is not resolved
+RESOLUTION = 1e-9      # (in l) a band narrower than this may be refused as unresolved (with the band found)
+MAX_STEPS = 400        # continuation steps in α per request (a whole turn takes about 40)
 MAX_ISO_POINTS = 400   # frames a per iso-dwell line: each is a synthesis (≈ 10 ms)
 MAX_ARC = 40.0         # arclength of a traced line in (r, a, k, t3, t2): the region is far smaller
 
@@ -206,14 +209,17 @@ def _circle_eqs(delta, a, alpha):
 
 
 def _fifth_point(delta: float, a: float):
-    """(r, k) of the fifth-order-contact mechanism with frame a (None if the line misses a)."""
-    r5, a5, k5 = fifth_order_line(delta, 801)
-    i = np.nonzero(np.sign(a5[1:] - a) * np.sign(a5[:-1] - a) <= 0)[0]
-    if len(a5) < 2 or len(i) == 0:
+    """(r, k) of the fifth-order-contact mechanism with frame a, solved for μ0 by brentq on the closed
+    form of :func:`fifth_order_line` (a grows monotonically along it); None if the line misses a."""
+    mu = np.linspace(1e-9, delta - 1e-9, 801)
+    r5, a5, _, _ = _fifth_terms(delta, mu)
+    ok = (r5 > -1e-12) & (r5 <= a5) & (r5 + a5 <= 2)  # the line's ends (r = 0) included, a sample may sit on one
+    i = np.nonzero(ok[1:] & ok[:-1] & ((a5[1:] - a) * (a5[:-1] - a) <= 0))[0]
+    if len(i) == 0:
         return None
-    i = i[0]
-    w = (a - a5[i]) / (a5[i + 1] - a5[i])
-    return r5[i] + w * (r5[i + 1] - r5[i]), k5[i] + w * (k5[i + 1] - k5[i])
+    m0 = brentq(lambda m: _fifth_terms(delta, m)[1] - a, mu[i[0]], mu[i[0] + 1], xtol=1e-15)
+    r5, _, k5, _ = _fifth_terms(delta, m0)
+    return (float(r5), float(k5)) if r5 > 0 else None
 
 
 def _merged(t3, t2, alpha) -> bool:
@@ -221,41 +227,98 @@ def _merged(t3, t2, alpha) -> bool:
     return min(t3, t2 - t3, alpha - t2) < 1e-3 * alpha
 
 
+def _band_spread(delta, a, alpha, r, k, n=401) -> float:
+    """Half the spread of |D − Q| (Q = C + e/k; of x for k = 0) over t ∈ [0, α] sampled n times: the
+    half-width of a band that holds D over the dwell, so an upper bound on the best band's E."""
+    P, X, _, _ = _band_terms(r, a, delta, _mu_at(r, a, np.linspace(0.0, alpha, n)))
+    return 0.5 * float(np.ptp(_offset(k, P, X)))
+
+
 @dataclass(frozen=True)
 class _Reach:
-    """How far the continuation from the fifth-order contact got: the solution at 2α = ``dwell``."""
+    """How far a continuation got: the last solution x = (r, k, t3, t2) at 2α = ``dwell``; ``resolved``
+    False where the band is too narrow for the equations (x then interpolates at fixed nodes)."""
 
     x: np.ndarray
     dwell: float
+    resolved: bool
 
 
-def _continuation(delta, a, alpha) -> _Reach | None:
-    """Follow the equal-ripple solution from the fifth-order contact (2α → 0) towards α, touches
-    started at t = α sin 30°, α sin 60° (the equal-ripple nodes of a quadratic in t²); the step in α
-    halves where a solve fails and grows again after a success. Returns the last solution reached
-    (at α itself when it succeeds), None when the fifth-order line misses a."""
-    start = _fifth_point(delta, a)
-    if start is None:
-        return None
-    al = min(alpha, np.radians(2.0))
-    x, step, prev = np.array([start[0], start[1], 0.5 * al, np.sqrt(3) / 2 * al]), np.radians(4.0), al
-    reached = None
-    while True:
-        x0 = np.r_[x[:2], x[2:] * al / prev]
-        eqs = _circle_eqs(delta, a, al)
-        sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13))
-        good = (np.max(np.abs(eqs(sol.x))) < 1e-10 and 0 < sol.x[0] < min(a, 2 - a)
-                and 0 < sol.x[2] < sol.x[3] < al and not _merged(sol.x[2], sol.x[3], al))
-        if good:
-            reached = _Reach(sol.x, 2 * al)
-            if al == alpha:
-                return reached
-            x, prev, step = sol.x, al, min(1.5 * step, np.radians(12.0))
-        elif reached is None or step < np.radians(0.05):
-            return reached
-        else:
+def _step(delta, a, al, x0):
+    """One solve at half-dwell al from x0: ("resolved", x) for a converged equal-ripple solution whose
+    band the equations resolve; ("unresolved", x) where the band is below RESOLUTION (x: r, k
+    interpolating at the nodes α sin 30°, α sin 60° of the small-dwell limit); ("failed", None)."""
+    hi = min(a, 2 - a)
+    eqs = _circle_eqs(delta, a, al)
+    sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13, maxfev=400))
+    r, k, t3, t2 = sol.x
+    if np.all(np.isfinite(sol.x)) and 0 < r < hi and 0 < t3 < t2 < al and not _merged(t3, t2, al):
+        u = _offset(k, *_band_terms(r, a, delta, _mu_at(r, a, [0.0, t3]))[:2])
+        E = 0.5 * abs(u[0] - u[1])
+        if E >= 0.1 * RESOLUTION and np.max(np.abs(eqs(sol.x))) <= 1e-4 * E:
+            return "resolved", sol.x
+    nodes = [0.5 * al, 0.5 * np.sqrt(3) * al]
+    sub = root(lambda y: eqs([*y, *nodes])[:2], x0[:2], method="hybr", options=dict(xtol=1e-13, maxfev=200))
+    # a band up to 100 × RESOLUTION is passed through (the full solve may only succeed further on); r must
+    # stay near the last one: r → 0 is a trivial narrow band (D stops moving), not the design followed
+    if (np.all(np.isfinite(sub.x)) and 0 < sub.x[0] < hi and abs(sub.x[0] - x0[0]) < 0.1 * x0[0]
+            and _band_spread(delta, a, al, *sub.x) < 100 * RESOLUTION):
+        return "unresolved", np.r_[sub.x, nodes]
+    return "failed", None
+
+
+def _follow(delta, a, x, al, alpha) -> _Reach:
+    """Continue the solution x at half-dwell al (up or down) towards α: touches scaled with α, the step
+    halved where a solve fails (down to 0.02°), grown again after a success. Returns the last point reached."""
+    sign = 1.0 if alpha >= al else -1.0
+    reached, step = None, np.radians(4.0)
+    for _ in range(MAX_STEPS):
+        nxt = alpha if abs(alpha - al) <= step else al + sign * step
+        x0 = np.r_[x[:2], x[2:] * nxt / al]
+        kind, y = _step(delta, a, nxt, x0)
+        if kind == "failed":
+            if step < np.radians(0.02):
+                break
             step /= 2
-        al = min(alpha, prev + step)
+            continue
+        x, al, reached = y, nxt, _Reach(y, 2 * nxt, kind == "resolved")
+        if al == alpha:
+            break
+        step = min(1.5 * step, np.radians(12.0))
+    return reached
+
+
+def _rotation_limit_dwell(delta, a, reach: _Reach) -> float | None:
+    """The dwell 2α at which the design's crank reaches the rotation limit r = min(a, 2 − a) (the
+    equal-ripple equations at that r, unknowns k, t3, t2, α), from the last design reached; None if
+    that solve fails."""
+    rl = min(a, 2 - a) * (1 - 1e-9)
+
+    def eqs(y):
+        return _circle_eqs(delta, a, y[3])([rl, *y[:3]])
+
+    sol = root(eqs, [*reach.x[1:], reach.dwell / 2], method="hybr", options=dict(xtol=1e-13, maxfev=400))
+    k, t3, t2, al = sol.x
+    if np.max(np.abs(eqs(sol.x))) > 1e-10 or not 0 < t3 < t2 < al <= np.pi or al < reach.dwell / 2 * (1 - 1e-9):
+        return None
+    return float(2 * al)
+
+
+@lru_cache(maxsize=32)
+def _whole_turn_cached(delta: float) -> WholeTurnLine:
+    return whole_turn_line(delta)
+
+
+def _whole_turn_start(delta, a):
+    """(r, k, t3, t2) of the whole-turn design with frame a, interpolated on :func:`whole_turn_line`
+    (None if the line misses a)."""
+    line = _whole_turn_cached(delta)
+    i = np.nonzero(np.sign(line.a[1:] - a) * np.sign(line.a[:-1] - a) <= 0)[0]
+    if len(i) == 0:
+        return None
+    i = i[0]
+    w = (a - line.a[i]) / (line.a[i + 1] - line.a[i])
+    return np.array([(1 - w) * v[i] + w * v[i + 1] for v in (line.r, 1 / line.c, line.t3, line.t2)])
 
 
 def _minimax_guess(delta, a, alpha):
@@ -285,7 +348,7 @@ def _solve_circle(delta, a, dwell, x0):
     returns (CircleGuide, None) or (None, reason)."""
     alpha = dwell / 2
     eqs = _circle_eqs(delta, a, alpha)
-    sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13))
+    sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13, maxfev=400))
     r, k, t3, t2 = (float(v) for v in sol.x)
     if np.max(np.abs(eqs(sol.x))) > 1e-10:
         return None, f"the equal-ripple equations did not converge ({sol.message.strip()})"
@@ -295,6 +358,8 @@ def _solve_circle(delta, a, dwell, x0):
         return None, (f"the touch points are not four distinct ones (t3 = {np.degrees(t3):.6g}°, "
                       f"t2 = {np.degrees(t2):.6g}°, α = {np.degrees(alpha):.6g}°)")
     g = CircleGuide(delta, a, dwell, r, 0.0 if k == 0 else k, t3, t2)
+    if g.E < 0.1 * RESOLUTION:
+        return None, f"the band E = {g.E:.3g} is too narrow for its touches to be told from rounding"
     if np.max(np.abs(eqs(sol.x))) > 1e-4 * g.E + 1e-15:
         return None, f"the equations are not solved finely enough to resolve the band E = {g.E:.3g}"
     dense = g.deviation(np.pi + np.linspace(-alpha, alpha, 4001))
@@ -302,6 +367,16 @@ def _solve_circle(delta, a, dwell, x0):
         return None, (f"the best circle leaves the band inside the dwell (max |ρ − R| = "
                       f"{np.max(np.abs(dense)):.3g} > E = {g.E:.3g}; a ripple near {RIPPLE_FLOOR:g} l is not resolved)")
     return g, None
+
+
+def _frame_span(delta: float) -> tuple[float, float]:
+    """The frames a the existence region spans: from the lower end of the fifth-order line on r = 0,
+    a = 2 sin((δ − π)/2) (0 for δ ≤ π), to point A, a = 2 sin(δ/4), or for δ < 120° on to the far end
+    of the whole-turn line, which rises above A there (those frames have long dwells only)."""
+    lo, hi = 2 * np.sin(max(delta - np.pi, 0.0) / 2), 2 * np.sin(delta / 4)
+    if delta < np.radians(120):
+        hi = max(hi, float(_whole_turn_cached(delta).a.max()))
+    return lo, hi
 
 
 def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None = None,
@@ -313,47 +388,73 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     ρ'(t2) = 0 (four alternating touches on each half, the Chebyshev best approximation with
     the three free parameters r, Q, R). The unknowns are (r, k, t3, t2): k = 1/|CQ| passes
     through 0 where the best band is straight, so no design near the straight crossing is lost.
-    Solved with scipy's ``root`` (hybr), started by continuation in α from the closed-form
-    fifth-order contact (2α → 0, :func:`fifth_order_line`) or, failing that, from a minimax
-    estimate (Nelder-Mead on (r, k)); ``guess`` = (r, k, t3, t2) starts from a neighbouring
-    solution instead; ``minimax=False`` skips the (slower) Nelder-Mead fallback.
-    Raises SynthesisError, with the reason, where no design exists (outside the map of Fig. 2a).
+    Solved with scipy's ``root`` (hybr) by continuation in α from the closed-form fifth-order contact
+    (2α → 0, :func:`fifth_order_line`), or for frames above point A (δ < 120°) down from the
+    whole-turn line (2α = 360°, :func:`whole_turn_line`); 2α = 360° itself is :func:`whole_turn_guiding`.
+    ``guess`` = (r, k, t3, t2) tries a neighbouring solution first; ``minimax=False`` skips the
+    (slower) Nelder-Mead fallback.
+
+    Raises NoDesignError where no design is returned, with ``kind`` and the evidence:
+    ``"frame"`` (a outside the region's span), ``"rotation"`` (the crank reaches the rotation limit at
+    2α = ``dwell_max`` < 2α), ``"fold"`` (above A the designs start at 2α = ``dwell_min``),
+    ``"resolution"`` (a band of half-width ``bound`` < RESOLUTION about Q = C + e/``k`` with crank
+    ``r`` holds D: the ripple is below what double precision resolves), ``"whole turn"``.
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
     minimax = check("minimax", minimax, Flag.__metadata__[0])
     alpha = dwell / 2
-    span = _frame_span(delta)
-    if not span[0] < a < span[1]:
-        raise SynthesisError(
-            f"no circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}: the existence "
-            f"region of Fig. 2a spans a ∈ ({span[0]:.4g}, {span[1]:.4g}) only (the ends of the fifth-order line)")
-    fail = "the continuation from the fifth-order contact does not start"
+    where = f"no circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}, " \
+            f"2α = {np.degrees(dwell):.4g}°"
+    lo, hi = _frame_span(delta)
+    if not lo < a < hi:
+        raise NoDesignError(f"{where}: the existence region of Fig. 2a spans a ∈ ({lo:.4g}, {hi:.4g}) only "
+                            f"(the ends of the fifth-order and whole-turn lines)", "frame", span=(lo, hi))
+    if alpha >= np.pi:
+        try:
+            return whole_turn_guiding(delta, a, _whole_turn_cached(delta))
+        except SynthesisError as err:
+            line = _whole_turn_cached(delta)
+            raise NoDesignError(f"{where}: {err}", "whole turn", span=(float(line.a.min()), float(line.a.max())))
     if guess is not None:
-        g, fail = _solve_circle(delta, a, dwell, guess)
+        g, _ = _solve_circle(delta, a, dwell, np.asarray(guess, dtype=float))
         if g is not None:
             return g
-    reach = _continuation(delta, a, alpha)
+    start = _fifth_point(delta, a)
+    if start is not None:
+        al0 = min(alpha, np.radians(1.0))
+        reach = _follow(delta, a, np.array([*start, 0.5 * al0, 0.5 * np.sqrt(3) * al0]), al0, alpha)
+    else:  # above A: down from the whole-turn line
+        x = _whole_turn_start(delta, a)
+        reach = None if x is None else _follow(delta, a, x, np.pi, alpha)
     if reach is not None and reach.dwell == dwell:
-        g, fail = _solve_circle(delta, a, dwell, reach.x)
+        g, _ = _solve_circle(delta, a, dwell, reach.x)
         if g is not None:
             return g
+        if not reach.resolved and (bound := _band_spread(delta, a, alpha, *reach.x[:2], 4001)) < RESOLUTION:
+            r, k = reach.x[:2]
+            raise NoDesignError(
+                f"{where}: the ripple is below what double precision resolves: the crank r = {r:.6g} with the "
+                f"band about Q = C + e/k, k = {k:.6g}, holds D within ± {bound:.2g} l over the dwell, so the best "
+                f"band is narrower still", "resolution", r=float(r), k=float(k), bound=bound)
+    if reach is not None and start is not None:
+        top = _rotation_limit_dwell(delta, a, reach)
+        if top is not None and top < dwell:
+            raise NoDesignError(
+                f"{where}: the longest dwell this frame allows is 2α = {np.degrees(top):.6g}°, where the crank "
+                f"reaches the rotation limit r = min(a, 2 − a) = {min(a, 2 - a):.6g} (a dead point)",
+                "rotation", dwell_max=top, r_limit=min(a, 2 - a))
+    if reach is not None and start is None and reach.dwell > dwell:
+        raise NoDesignError(
+            f"{where}: above point A designs start at 2α = {np.degrees(reach.dwell):.6g}° (the family of designs "
+            f"from the whole-turn line folds back there)", "fold", dwell_min=reach.dwell)
     if minimax:
         x0 = _minimax_guess(delta, a, alpha)
-        g, fail = _solve_circle(delta, a, dwell, x0) if x0 is not None else (None, "no minimax start")
-        if g is not None:
-            return g
-    if reach is not None and reach.dwell < dwell:
-        fail = (f"followed from the fifth-order contact, the design reaches only 2α = {np.degrees(reach.dwell):.4g}°, "
-                f"with r = {reach.x[0]:.4g} against the rotation limit min(a, 2 − a) = {min(a, 2 - a):.4g}")
-    raise SynthesisError(
-        f"no circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}, "
-        f"2α = {np.degrees(dwell):.4g}°: {fail}; choose (δ, a, 2α) inside the existence map")
-
-
-def _frame_span(delta: float) -> tuple[float, float]:
-    """The frames a the existence region spans: between the ends of the fifth-order line on r = 0,
-    a = 2 sin((δ − π)/2) (0 for δ ≤ π) and a = 2 sin(δ/4) (point A)."""
-    return 2 * np.sin(max(delta - np.pi, 0.0) / 2), 2 * np.sin(delta / 4)
+        if x0 is not None:
+            g, _ = _solve_circle(delta, a, dwell, x0)
+            if g is not None:
+                return g
+    got = "no start" if reach is None else f"the continuation stops at 2α = {np.degrees(reach.dwell):.6g}°"
+    raise SynthesisError(f"{where}: the equal-ripple solve fails ({got}); choose (δ, a, 2α) inside the existence map")
 
 
 @dataclass(frozen=True)
@@ -588,7 +689,18 @@ def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray
     """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     n = int(_bounded("n", n, 2, MAX_SAMPLES))
-    mu = np.linspace(1e-3, delta - 1e-3, n)
+    r, a, k, ok = _fifth_terms(delta, np.linspace(1e-3, delta - 1e-3, n))
+    return r[ok], a[ok], k[ok]
+
+
+def _fifth_terms(delta, mu):
+    """(r, a, k, ok) of the fifth-order contact at μ0 = mu (closed form, :func:`fifth_order_line`);
+    ok where the crank turns fully."""
+    with np.errstate(divide="ignore", invalid="ignore"):  # k → ±∞ where the line meets r = 0 at μ0 → 0
+        return _fifth_closed(delta, mu)
+
+
+def _fifth_closed(delta, mu):
     u, v = (delta - mu) / 2, mu / 2
     rc, drc, ddrc = 2 * np.sin(u), -np.cos(u), -0.5 * np.sin(u)
     d, dd, ddd = 2 * np.sin(v), np.cos(v), -0.5 * np.sin(v)
@@ -602,8 +714,7 @@ def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray
     g = (f1 * h1b - f2 * h1a) / det
     a = 0.5 * (d + g / d)
     r = 0.5 * (d - g / d)
-    ok = (r > 0) & (r < a) & (r + a < 2)
-    return r[ok], a[ok], (w / a)[ok]
+    return r, a, w / a, (r > 0) & (r < a) & (r + a < 2)
 
 
 @dataclass(frozen=True)
