@@ -298,7 +298,7 @@ def _rotation_limit_dwell(delta, a, reach: _Reach) -> float | None:
         return _circle_eqs(delta, a, y[3])([rl, *y[:3]])
 
     sol = root(eqs, [*reach.x[1:], reach.dwell / 2], method="hybr", options=dict(xtol=1e-13, maxfev=400))
-    k, t3, t2, al = sol.x
+    _, t3, t2, al = sol.x
     if np.max(np.abs(eqs(sol.x))) > 1e-10 or not 0 < t3 < t2 < al <= np.pi or al < reach.dwell / 2 * (1 - 1e-9):
         return None
     return float(2 * al)
