@@ -452,16 +452,16 @@ def _alternations(dev, E):
 
 def _check_outcome(delta, a, dwell):
     """A design verified on the simulated coupler curve, or a NoDesignError whose evidence is checked."""
-    from time import perf_counter
+    from time import process_time  # CPU time of this process: other jobs may load the machine
 
     from mechlab.errors import NoDesignError
     from mechlab.synthesis.lambda_guiding import RESOLUTION
 
-    t0 = perf_counter()
+    t0 = process_time()
     try:
         g = circle_guiding(delta * DEG, a, dwell * DEG, minimax=False)
     except NoDesignError as err:
-        assert perf_counter() - t0 < 1.0
+        assert process_time() - t0 < 1.0
         ev = err.evidence
         if err.kind == "frame":
             assert not ev["span"][0] < a < ev["span"][1]
@@ -487,7 +487,7 @@ def _check_outcome(delta, a, dwell):
         else:
             raise AssertionError(f"unexpected refusal {err.kind!r}: {err}")
         return err.kind
-    assert perf_counter() - t0 < 1.0
+    assert process_time() - t0 < 1.0
     rho = _sim_band(delta * DEG, a, g.r, g.k, dwell * DEG)
     dev = rho - 0.5 * (rho.max() + rho.min())
     E = 0.5 * np.ptp(rho)

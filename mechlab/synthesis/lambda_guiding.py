@@ -21,7 +21,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 import numpy as np
-from scipy.optimize import brentq, minimize, minimize_scalar, root
+from scipy.optimize import brentq, least_squares, minimize, minimize_scalar, root
 
 from ..errors import DimensionError, MechanismError, NoDesignError, SynthesisError
 from ..geometry import check_length, check_number
@@ -234,6 +234,19 @@ def _band_spread(delta, a, alpha, r, k, n=401) -> float:
     return 0.5 * float(np.ptp(_offset(k, P, X)))
 
 
+def _narrowest_band(delta, a, alpha, r, k):
+    """(r, k, half-width) of the narrowest band found near (r, k) by Nelder-Mead on the sampled spread
+    (relative steps in r and k); the half-width is measured on 4001 samples, an upper bound on the best E."""
+    def spread(v):
+        return _band_spread(delta, a, alpha, r * (1 + v[0]), k * (1 + v[1]), 401) if abs(v[0]) < 0.5 else 1.0
+
+    v = minimize(spread, [0.0, 0.0], method="Nelder-Mead",
+                 options=dict(initial_simplex=[[0, 0], [1e-7, 0], [0, 1e-7]], xatol=1e-13, fatol=1e-19,
+                              maxiter=1000)).x
+    rr, kk = (r * (1 + v[0]), k * (1 + v[1])) if spread(v) < spread([0, 0]) else (r, k)
+    return float(rr), float(kk), _band_spread(delta, a, alpha, rr, kk, 4001)
+
+
 @dataclass(frozen=True)
 class _Reach:
     """How far a continuation got: the last solution x = (r, k, t3, t2) at 2α = ``dwell``; ``resolved``
@@ -244,32 +257,51 @@ class _Reach:
     resolved: bool
 
 
+def _equal_ripple(eqs, x0, maxfev=400):
+    """Solve the equal-ripple equations: scipy's hybr, then least_squares scaled by the Jacobian where hybr
+    stalls (a band centre close to C, |k| ≫ 1, makes the system badly scaled)."""
+    sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13, maxfev=maxfev))
+    res = np.max(np.abs(eqs(sol.x)))
+    if res <= _noise(sol.x[1]) or res > 1e-6 or not np.all(np.isfinite(sol.x)):  # solved, or not close
+        return sol.x
+    ls = least_squares(eqs, sol.x, x_scale="jac", xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=60)
+    return ls.x if np.max(np.abs(eqs(ls.x))) < np.max(np.abs(eqs(sol.x))) else sol.x
+
+
+def _noise(k) -> float:
+    """Rounding level of the equations k·ΔP − 2ΔX (P, X of order 1): a residual below it is a solution."""
+    return 1e-15 * (1 + abs(k))
+
+
 def _step(delta, a, al, x0):
     """One solve at half-dwell al from x0: ("resolved", x) for a converged equal-ripple solution whose
     band the equations resolve; ("unresolved", x) where the band is below RESOLUTION (x: r, k
     interpolating at the nodes α sin 30°, α sin 60° of the small-dwell limit); ("failed", None)."""
     hi = min(a, 2 - a)
     eqs = _circle_eqs(delta, a, al)
-    sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13, maxfev=400))
-    r, k, t3, t2 = sol.x
-    if np.all(np.isfinite(sol.x)) and 0 < r < hi and 0 < t3 < t2 < al and not _merged(t3, t2, al):
-        u = _offset(k, *_band_terms(r, a, delta, _mu_at(r, a, [0.0, t3]))[:2])
-        E = 0.5 * abs(u[0] - u[1])
-        if E >= 0.1 * RESOLUTION and np.max(np.abs(eqs(sol.x))) <= 1e-4 * E:
-            return "resolved", sol.x
     nodes = [0.5 * al, 0.5 * np.sqrt(3) * al]
     sub = root(lambda y: eqs([*y, *nodes])[:2], x0[:2], method="hybr", options=dict(xtol=1e-13, maxfev=200))
-    # a band up to 100 × RESOLUTION is passed through (the full solve may only succeed further on); r must
-    # stay near the last one: r → 0 is a trivial narrow band (D stops moving), not the design followed
-    if (np.all(np.isfinite(sub.x)) and 0 < sub.x[0] < hi and abs(sub.x[0] - x0[0]) < 0.1 * x0[0]
-            and _band_spread(delta, a, al, *sub.x) < 100 * RESOLUTION):
+    # r must stay near the last one: r → 0 is a trivial narrow band (D stops moving), not the design followed
+    near = np.all(np.isfinite(sub.x)) and 0 < sub.x[0] < hi and abs(sub.x[0] - x0[0]) < 0.1 * x0[0]
+    spread = _band_spread(delta, a, al, *sub.x) if near else np.inf
+    if spread < 0.1 * RESOLUTION:  # too narrow for any design to be returned: no full solve
+        return "unresolved", np.r_[sub.x, nodes]
+    x = _equal_ripple(eqs, x0, maxfev=100)  # a continuation step converges in a few iterations or not at all
+    r, k, t3, t2 = x
+    if np.all(np.isfinite(x)) and 0 < r < hi and 0 < t3 < t2 < al and not _merged(t3, t2, al):
+        u = _offset(k, *_band_terms(r, a, delta, _mu_at(r, a, [0.0, t3]))[:2])
+        E = 0.5 * abs(u[0] - u[1])
+        if E >= 0.1 * RESOLUTION and np.max(np.abs(eqs(x))) <= 1e-4 * E + _noise(k):
+            return "resolved", x
+    # a band up to 100 × RESOLUTION is passed through (the full solve may only succeed further on)
+    if spread < 100 * RESOLUTION:
         return "unresolved", np.r_[sub.x, nodes]
     return "failed", None
 
 
 def _follow(delta, a, x, al, alpha) -> _Reach:
     """Continue the solution x at half-dwell al (up or down) towards α: touches scaled with α, the step
-    halved where a solve fails (down to 0.02°), grown again after a success. Returns the last point reached."""
+    halved where a solve fails (down to 0.005°), grown again after a success. Returns the last point reached."""
     sign = 1.0 if alpha >= al else -1.0
     reached, step = None, np.radians(4.0)
     for _ in range(MAX_STEPS):
@@ -277,7 +309,7 @@ def _follow(delta, a, x, al, alpha) -> _Reach:
         x0 = np.r_[x[:2], x[2:] * nxt / al]
         kind, y = _step(delta, a, nxt, x0)
         if kind == "failed":
-            if step < np.radians(0.02):
+            if step < np.radians(0.005):
                 break
             step /= 2
             continue
@@ -348,10 +380,10 @@ def _solve_circle(delta, a, dwell, x0):
     returns (CircleGuide, None) or (None, reason)."""
     alpha = dwell / 2
     eqs = _circle_eqs(delta, a, alpha)
-    sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13, maxfev=400))
-    r, k, t3, t2 = (float(v) for v in sol.x)
-    if np.max(np.abs(eqs(sol.x))) > 1e-10:
-        return None, f"the equal-ripple equations did not converge ({sol.message.strip()})"
+    x = _equal_ripple(eqs, x0)
+    r, k, t3, t2 = (float(v) for v in x)
+    if not np.max(np.abs(eqs(x))) <= 1e-10:
+        return None, f"the equal-ripple equations did not converge (residual {np.max(np.abs(eqs(x))):.3g})"
     if not 1e-4 < r < min(a, 2 - a):
         return None, f"the crank leaves (0, min(a, 2 − a)) = (0, {min(a, 2 - a):.4g}): r = {r:.4g}"
     if not 0.0 < t3 < t2 < alpha or _merged(t3, t2, alpha):
@@ -360,7 +392,7 @@ def _solve_circle(delta, a, dwell, x0):
     g = CircleGuide(delta, a, dwell, r, 0.0 if k == 0 else k, t3, t2)
     if g.E < 0.1 * RESOLUTION:
         return None, f"the band E = {g.E:.3g} is too narrow for its touches to be told from rounding"
-    if np.max(np.abs(eqs(sol.x))) > 1e-4 * g.E + 1e-15:
+    if np.max(np.abs(eqs(x))) > 1e-4 * g.E + _noise(k):
         return None, f"the equations are not solved finely enough to resolve the band E = {g.E:.3g}"
     dense = g.deviation(np.pi + np.linspace(-alpha, alpha, 4001))
     if np.max(np.abs(dense)) > g.E * (1 + 1e-6) + RIPPLE_FLOOR:
@@ -423,15 +455,16 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     if start is not None:
         al0 = min(alpha, np.radians(1.0))
         reach = _follow(delta, a, np.array([*start, 0.5 * al0, 0.5 * np.sqrt(3) * al0]), al0, alpha)
-    else:  # above A: down from the whole-turn line
+    else:  # above A: down from the whole-turn line (its design at 2α = 360° is the first one reached)
         x = _whole_turn_start(delta, a)
-        reach = None if x is None else _follow(delta, a, x, np.pi, alpha)
+        kind, x = ("failed", None) if x is None else _step(delta, a, np.pi, x)
+        reach = None if kind != "resolved" else (_follow(delta, a, x, np.pi, alpha) or _Reach(x, 2 * np.pi, True))
     if reach is not None and reach.dwell == dwell:
         g, _ = _solve_circle(delta, a, dwell, reach.x)
         if g is not None:
             return g
-        if not reach.resolved and (bound := _band_spread(delta, a, alpha, *reach.x[:2], 4001)) < RESOLUTION:
-            r, k = reach.x[:2]
+        if not reach.resolved and (best := _narrowest_band(delta, a, alpha, *reach.x[:2]))[2] < RESOLUTION:
+            r, k, bound = best
             raise NoDesignError(
                 f"{where}: the ripple is below what double precision resolves: the crank r = {r:.6g} with the "
                 f"band about Q = C + e/k, k = {k:.6g}, holds D within ± {bound:.2g} l over the dwell, so the best "
@@ -444,9 +477,10 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
                 f"reaches the rotation limit r = min(a, 2 − a) = {min(a, 2 - a):.6g} (a dead point)",
                 "rotation", dwell_max=top, r_limit=min(a, 2 - a))
     if reach is not None and start is None and reach.dwell > dwell:
-        raise NoDesignError(
-            f"{where}: above point A designs start at 2α = {np.degrees(reach.dwell):.6g}° (the family of designs "
-            f"from the whole-turn line folds back there)", "fold", dwell_min=reach.dwell)
+        why = ("its crank reaches the rotation limit r = a" if reach.x[0] > 0.98 * min(a, 2 - a) else
+               "the family of designs from the whole-turn line folds back")
+        raise NoDesignError(f"{where}: above point A designs start at 2α = {np.degrees(reach.dwell):.6g}° (to 0.01°; {why})",
+                            "fold", dwell_min=reach.dwell, r=float(reach.x[0]))
     if minimax:
         x0 = _minimax_guess(delta, a, alpha)
         if x0 is not None:
