@@ -401,6 +401,28 @@ def _solve_circle(delta, a, dwell, x0):
     return g, None
 
 
+def _from_inside(delta, a, dwell, depth):
+    """Continuation in the frame for a near an end of the fifth-order line's span (r → 0 there, and the
+    design's r changes too fast with α for the continuation in α): the design at a frame ten times
+    further from that end, followed to a in 24 steps uniform in log|a − end|. x = (r, k, t3, t2) or None."""
+    lo5, hi5 = 2 * np.sin(max(delta - np.pi, 0.0) / 2), 2 * np.sin(delta / 4)
+    end = lo5 if a - lo5 < hi5 - a else hi5
+    if abs(a - end) > 0.1 * (hi5 - lo5):
+        return None
+    a_in = end + 10 * (a - end)
+    try:
+        g = _circle(delta, a_in, dwell, None, False, depth + 1)
+    except SynthesisError:
+        return None
+    x = np.array([g.r, g.k, g.t3, g.t2])
+    for s in np.linspace(np.log(abs(a_in - end)), np.log(abs(a - end)), 25)[1:]:
+        ai = end + np.sign(a - end) * np.exp(s)
+        x = _equal_ripple(_circle_eqs(delta, ai, dwell / 2), x, maxfev=100)
+        if not (np.all(np.isfinite(x)) and 0 < x[0] < min(ai, 2 - ai) and 0 < x[2] < x[3] < dwell / 2):
+            return None
+    return x
+
+
 def _frame_span(delta: float) -> tuple[float, float]:
     """The frames a the existence region spans: from the lower end of the fifth-order line on r = 0,
     a = 2 sin((δ − π)/2) (0 for δ ≤ π), to point A, a = 2 sin(δ/4), or for δ < 120° on to the far end
@@ -423,6 +445,8 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     Solved with scipy's ``root`` (hybr) by continuation in α from the closed-form fifth-order contact
     (2α → 0, :func:`fifth_order_line`), or for frames above point A (δ < 120°) down from the
     whole-turn line (2α = 360°, :func:`whole_turn_line`); 2α = 360° itself is :func:`whole_turn_guiding`.
+    Near the span's ends, where r → 0, a design at a frame ten times further inside is followed in a
+    (:func:`_from_inside`); where hybr stalls, scipy's ``least_squares`` polishes.
     ``guess`` = (r, k, t3, t2) tries a neighbouring solution first; ``minimax=False`` skips the
     (slower) Nelder-Mead fallback.
 
@@ -434,6 +458,11 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
     minimax = check("minimax", minimax, Flag.__metadata__[0])
+    return _circle(delta, a, dwell, guess, minimax)
+
+
+def _circle(delta, a, dwell, guess, minimax, depth=0):
+    """circle_guiding after its input checks; ``depth`` counts the nested solves of :func:`_from_inside`."""
     alpha = dwell / 2
     where = f"no circle-guiding lambda mechanism for δ = {np.degrees(delta):.4g}°, a = {a:.4g}, " \
             f"2α = {np.degrees(dwell):.4g}°"
@@ -481,6 +510,10 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
                "the family of designs from the whole-turn line folds back")
         raise NoDesignError(f"{where}: above point A designs start at 2α = {np.degrees(reach.dwell):.6g}° (to 0.01°; {why})",
                             "fold", dwell_min=reach.dwell, r=float(reach.x[0]))
+    if start is not None and depth < 3 and (x := _from_inside(delta, a, dwell, depth)) is not None:
+        g, _ = _solve_circle(delta, a, dwell, x)
+        if g is not None:
+            return g
     if minimax:
         x0 = _minimax_guess(delta, a, alpha)
         if x0 is not None:
