@@ -18,8 +18,8 @@ from .analysis.half_turn import base_peaks, formula_18, limit_theorem, other_hal
 from .analysis.intermittency import compare, detect_impacts, intermittency
 from .analysis.textbook import (TransmissionExtremes, crank_ranges_degrees, nearest_assembly, transmission_extremes,
                                 zero_acceleration)
-from .errors import (AssemblyError, DimensionError, InfeasibleDesignError, MechanismError, RotationError,
-                     SingularityError, SynthesisError)
+from .errors import (AssemblyError, DimensionError, InfeasibleDesignError, MechanismError, NoDesignError,
+                     RotationError, SingularityError, SynthesisError)
 from .kinetostatics import (Body, DriveError, Force, ForceModel, HigherPair, Kinetostatics, Prismatic, Revolute,
                             SelfLockingError, Torque, model_for)
 from .mechanisms import (Antiparallelogram, CamUndercutError, CircleSlot, CurvedSlotLink,
@@ -77,7 +77,7 @@ __all__ = [
     "mchv1", "mchv2", "mchv2_far_position", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best",
     "mchv3_half_turn", "mchv3_oscillating", "slot_residual_first_order", "mchv5", "dwell_extent", "rise_law",
     "time_ratio_far_angle",
-    "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError",
+    "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError", "NoDesignError",
     # Geneva
     "spherical_table", "table1_comparison", "TABLE1_PRINTED", "compare", "intermittency", "detect_impacts",
     "SlotCountError", "OffsetError",
