@@ -299,7 +299,7 @@ def _step(delta, a, al, x0):
     return "failed", None
 
 
-def _follow(delta, a, x, al, alpha) -> _Reach:
+def _follow(delta, a, x, al, alpha) -> _Reach | None:
     """Continue the solution x at half-dwell al (up or down) towards α: touches scaled with α, the step
     halved where a solve fails (down to 0.005°), grown again after a success. Returns the last point reached."""
     sign = 1.0 if alpha >= al else -1.0
