@@ -1,12 +1,17 @@
 """The install split: every part course.py installs is an extra of pyproject.toml whose
 packages environment.txt pins, and the hub's image (binder/postBuild) installs one of them
-with environment.txt as constraints."""
+with environment.txt as constraints, on a Python the pins install on; where repo2docker is
+installed, its rendering of binder/ is checked too."""
 
 import os
 import re
+import shutil
+import subprocess
 import sys
 import tomllib
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
@@ -41,3 +46,27 @@ def test_the_hub_image_installs_a_part_with_the_pins_as_constraints():
     assert len(install) == 1 and "-c environment.txt" in install[0]
     part = re.search(r'-e "\.\[(\w+)\]"', install[0])[1]
     assert part in EXTRAS and "lab" in course.PARTS[part]
+
+
+def test_the_hub_image_uses_a_python_the_pins_install_on():
+    runtime = (ROOT / "binder" / "runtime.txt").read_text().strip()
+    version = tuple(int(n) for n in re.fullmatch(r"python-(\d+)\.(\d+)", runtime).groups())
+    assert version >= course.MIN_PYTHON, runtime
+
+
+REPO2DOCKER = shutil.which(os.environ.get("REPO2DOCKER", "repo2docker"))
+
+
+@pytest.mark.skipif(not REPO2DOCKER, reason="repo2docker is not installed (set REPO2DOCKER to its executable)")
+def test_repo2docker_renders_an_image_that_runs_the_post_build_on_the_runtime_python(tmp_path):
+    """repo2docker's own reading of binder/ (--no-build: the Dockerfile only, no Docker engine needed)."""
+    clone = tmp_path / "course"
+    subprocess.run(["git", "clone", "-q", str(ROOT), str(clone)], check=True)
+    done = subprocess.run([REPO2DOCKER, "--no-build", "--debug", "--user-id", "1000", "--user-name", "jovyan",
+                           str(clone)], check=False, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    out = done.stdout + done.stderr
+    python = (ROOT / "binder" / "runtime.txt").read_text().strip().removeprefix("python-")
+    assert f"Building conda environment for python={python}" in out
+    copy, post_build = out.index("src/ ${REPO_DIR}/"), out.index("RUN ./binder/postBuild")
+    assert copy < post_build  # the post-build step installs from the copied repository
