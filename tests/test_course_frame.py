@@ -304,6 +304,7 @@ STATED = {
                                   "40": "the course's transmission-angle limit"},
     "chebyshev_dwell_sixbars": {"0.4": "the crank of Chebyshev's lambda, a given design",
                                 "250": "the dwell of two rows of Kinitsky's (1994) table, quoted"},
+    "geneva_spherical": {"60": "the six-slot indexing table of the drawing turns 360°/6 per index"},
 }
 
 
