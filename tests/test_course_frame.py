@@ -250,6 +250,37 @@ def test_schematic_is_labelled_and_draws_its_mechanism_where_it_is(name):
         plt.close(fig)
 
 
+@pytest.mark.parametrize("name", sorted(MACHINES))
+def test_schematic_is_as_wide_as_an_animation_and_its_letters_clear_of_leader_lines(name):
+    """As the notebook shows it (inline backend: the figure's dpi, bbox_inches="tight"), a schematic
+    is at least 640 px wide, and no label's arrow crosses a joint letter."""
+    import io
+
+    from matplotlib.path import Path as MplPath
+    from PIL import Image
+
+    fig = schematic(name)
+    try:
+        assert fig.dpi == matplotlib.rcParams["figure.dpi"]
+        png = io.BytesIO()
+        fig.savefig(png, format="png", bbox_inches="tight")
+        width = Image.open(png).size[0]
+        assert width >= 640, f"{name}: {width} px wide"
+        fig.canvas.draw()
+        (ax,) = fig.axes
+        letters = [t for t in ax.texts if re.fullmatch(r"[A-Z]", t.get_text())]
+        arrows = [t.arrow_patch for t in ax.texts if getattr(t, "arrow_patch", None) is not None]
+        for letter in letters:
+            box = letter.get_window_extent()
+            for arrow in arrows:
+                # shaft and head as open polylines (the head's CLOSEPOLY vertex is a dummy (0, 0))
+                lines = arrow.get_path().transformed(arrow.get_transform()).to_polygons(closed_only=False)
+                assert not any(MplPath(line).intersects_bbox(box, filled=False) for line in lines), \
+                    f"{name}: a leader line crosses {letter.get_text()}"
+    finally:
+        plt.close(fig)
+
+
 def test_unknown_machine_is_named():
     with pytest.raises(MechanismError, match=r"name = 'lathe' is not one of .*film_projector"):
         schematic("lathe")
@@ -304,6 +335,7 @@ STATED = {
                                   "40": "the course's transmission-angle limit"},
     "chebyshev_dwell_sixbars": {"0.4": "the crank of Chebyshev's lambda, a given design",
                                 "250": "the dwell of two rows of Kinitsky's (1994) table, quoted"},
+    "geneva_spherical": {"60": "the six-slot indexing table of the drawing turns 360°/6 per index"},
 }
 
 

@@ -398,3 +398,24 @@ def test_plot_efficiency_draws_eta_whole_where_defined_and_greys_the_rest():
     assert [c.get_label() for c in ax.collections] == [UNDEFINED_LABEL]
     assert "degrees" in ax.get_xlabel() and "η" in ax.get_ylabel()
     plt.close("all")
+
+
+def test_plot_cam_laws_draws_each_law_normalised():
+    from mechlab.analysis.motion_laws import LAWS
+    from mechlab.draw import plot_cam_laws
+    from mechlab.errors import MechanismError
+
+    fig = plot_cam_laws(n=51)
+    try:
+        lift, velocity, acceleration = fig.axes
+        assert [line.get_label() for line in lift.lines] == list(LAWS)
+        for line in lift.lines:            # every law rises from 0 to the stroke over the interval
+            x, y = line.get_data()
+            assert len(x) == 51 and y[0] == pytest.approx(0, abs=1e-12) and y[-1] == pytest.approx(1)
+        assert "Y″" in acceleration.get_ylabel() and "Φ" in velocity.get_xlabel()
+    finally:
+        plt.close(fig)
+    with pytest.raises(MechanismError, match="law names"):
+        plot_cam_laws(["trapezoid?"])
+    with pytest.raises(MechanismError, match="n"):
+        plot_cam_laws(n=1)

@@ -111,7 +111,19 @@ def test_planar_dimensions():
     assert i.dwell_fraction == pytest.approx(1 / 3) and i.max_velocity() == pytest.approx(1 / 3)
     assert i.slot_length == pytest.approx(50 + 25 + i.roller_radius - i.inner_radius)
     assert i.inner_radius < i.entry_radius < i.slot_bottom < i.outer_radius
-    assert set(g.design().by("name")) >= {"crank radius a", "slot length", "dwell fraction"}
+    rows = g.design().by("name")
+    assert set(rows) >= {"crank radius a (mm)", "slot length (mm)", "dwell fraction"}
+    assert rows["C (mm)"].value == 100 and rows["crank radius a (mm)"].value == pytest.approx(100 / np.sqrt(2))
+    assert "slot length (in)" in g.design(unit="in").by("name")
+
+
+def test_geneva_design_names_its_unit():
+    """Every length of the design table names its unit; an unknown unit is refused by name."""
+    names = [q.name for q in ExternalGeneva(6, 100.0).design()]
+    lengths = [n for n in names if n != "z" and not any(w in n for w in ("fraction", "deg", "ψ"))]
+    assert len(lengths) == 6 and all(n.endswith(" (mm)") for n in lengths), names
+    with pytest.raises(DimensionError, match="unit"):
+        ExternalGeneva(6, 100.0).design(unit="furlong")
 
 
 def test_geneva_turns_accumulate():

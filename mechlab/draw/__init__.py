@@ -575,3 +575,34 @@ def plot_law(motion: Motion, axes=None, label: str | None = None, **style):
         ax.grid(True, alpha=0.3)
     axes[-1].set_xlabel("crank angle φ (degrees)")
     return lines
+
+
+def plot_cam_laws(names=None, n: int = 401):
+    """Plot cam motion laws side by side, normalised (rise h = 1 over the interval Φ = 1):
+    lift Y(x), velocity analog Y′(x) and acceleration analog Y″(x), x = φ/Φ; returns the Figure.
+
+    Parameters
+    ----------
+    names : law names of :data:`mechlab.analysis.motion_laws.LAWS` (all of them when None).
+    n : samples over the rise, at least 2.
+    """
+    from ..analysis.motion_laws import LAWS
+    from ..errors import MechanismError
+    from ..validate import check, count
+
+    names = list(LAWS) if names is None else list(names)
+    unknown = [name for name in names if name not in LAWS]
+    if unknown or not names:
+        raise MechanismError(f"law names = {unknown or names!r}: not among {', '.join(LAWS)}")
+    x = np.linspace(0.0, 1.0, check("n", n, count(2)))
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
+    for name in names:
+        for ax, y in zip(axes, LAWS[name](x)):
+            ax.plot(x, y, label=name)
+    for ax, label in zip(axes, ("lift Y (fraction of h)", "velocity analog Y′", "acceleration analog Y″")):
+        ax.set_xlabel("x = φ / Φ (fraction of the rise)")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+    axes[2].legend(fontsize=7)
+    fig.tight_layout()
+    return fig

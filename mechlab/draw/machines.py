@@ -25,13 +25,14 @@ from ..mechanisms.fourbar import FourBar
 from ..mechanisms.geneva import ExternalGeneva
 from ..mechanisms.slider_crank import SliderCrank
 from ..synthesis.cam_design import CamProgramme
-from . import LINK_STYLE, draw
+from . import LINK_STYLE, MIN_WIDTH_PX, draw
 
 MACHINE_STYLE = dict(color="#555555", lw=1.5, zorder=1)
 PART_FILL = dict(facecolor="#e8e8e8", edgecolor="#555555", lw=1.2, zorder=1)
 WORK_FILL = dict(facecolor="#f2c14e", edgecolor="#8a6d1c", lw=1.2, zorder=2)
 LABEL_STYLE = dict(fontsize=10, color="#222222", zorder=6,
                    arrowprops=dict(arrowstyle="-|>", color="#444444", lw=0.9, shrinkA=2, shrinkB=3))
+LETTER_BOX = {"boxstyle": "round,pad=0.1", "facecolor": "white", "edgecolor": "none", "alpha": 0.85}  # over a line
 DEG = np.pi / 180
 
 
@@ -67,7 +68,7 @@ def _letters(ax, points: dict, names: str, offset=(0.0, 0.0)):
     for name in names:
         x, y = points[name]
         ax.text(x + offset[0], y + offset[1], name, fontsize=11, fontweight="bold", color="#1f4e79",
-                ha="left", va="bottom", zorder=7)
+                ha="left", va="bottom", zorder=7, bbox=LETTER_BOX)
 
 
 def label_joints(drawing, i: int = 0):
@@ -100,7 +101,8 @@ def _geneva(ax, z: int, phi: float, disc_distance: float, disc_radius: float):
     g = ExternalGeneva(z, 1.0)
     draw(g, phi, ax=ax, labels=False, ground=False)
     pts, mo = _frame_points(g, phi)
-    _letters(ax, pts, "OWA", (0.04, 0.05))
+    _letters(ax, pts, "OW", (-0.12, 0.06))
+    _letters(ax, pts, "A", (0.0, -0.22))                 # below the pin, clear of the crank's leader line
     for p in "OW":
         _ground(ax, pts[p] + (0, -0.08), 0.1)
     W = pts["W"]
@@ -130,7 +132,7 @@ def film_projector(ax=None):
     ax.add_patch(Polygon([[fx - 0.9, gate_y - 0.18], [fx - 0.9, gate_y + 0.18], [fx - 0.25, gate_y]],
                          facecolor="#fff3b0", edgecolor="#b8860b", zorder=1))
     ax.add_patch(Rectangle((fx + 0.3, gate_y - 0.22), 0.35, 0.44, **PART_FILL))
-    _label(ax, "crank O-A with its pin\n(turns uniformly, one turn per frame)", A, O + (-0.6, 1.5))
+    _label(ax, "crank O-A with its pin\n(turns uniformly, one turn per frame)", (O + A) / 2, O + (-0.6, 1.5))
     _label(ax, "Geneva wheel (4 slots):\na quarter turn, then locked", W + (0.35, 0.45), W + (0.0, 1.9))
     _label(ax, "sprocket on the\nwheel's shaft", S + (0.0, -rs), S + (-0.2, -1.2))
     _label(ax, "film gate: the frame stands\nstill while it is projected", (fx, gate_y + 0.3),
@@ -157,7 +159,7 @@ def indexing_table(ax=None):
         ax.add_patch(Rectangle(T + 0.78 * rt * u - 0.09, 0.18, 0.18, **WORK_FILL))
         ax.text(*(T + 1.32 * rt * u), name, ha="center", va="center", fontsize=9)
     ax.plot(*T, "^", color="#555555", ms=9)
-    _label(ax, "drive crank O-A\n(turns uniformly)", A, O + (-0.4, 1.4))
+    _label(ax, "drive crank O-A\n(turns uniformly)", (O + A) / 2, O + (-0.6, 1.4))
     _label(ax, "Geneva wheel, 6 slots:\nindexes 60°, then locked", W + (0.1, 0.75), W + (0.5, 1.6))
     _label(ax, "index table on the wheel's shaft:\nparts move from station to station",
            T + (0.0, -rt), T + (0.0, -1.75))
@@ -178,7 +180,8 @@ def screen_printing(ax=None):
     phi = np.pi
     draw(six, phi, ax=ax, trace="D", labels=False, ground=False)
     pts, _ = _frame_points(six, phi)
-    _letters(ax, pts, "OABCDEF", (0.04, 0.03))
+    _letters(ax, pts, "OBCDEF", (0.04, 0.03))
+    _letters(ax, pts, "A", (-0.2, 0.03))                 # the crank points left: A left of its pin
     for p in ("O", "C", "F"):
         _ground(ax, pts[p] + (0, -0.05), 0.09)
     F, E = pts["F"], pts["E"]
@@ -216,8 +219,9 @@ def forging_press(ax=None):
     ax.plot(*np.array([A, B]).T, **LINK_STYLE)
     ax.plot(*np.array([A, B]).T, "o", ms=6, mfc="white", mec="#1f4e79", mew=1.5, zorder=4)
     ax.plot(*O, "^", ms=11, color="#555555", zorder=2)
-    for name, p in zip("OAB", (O, A, B)):
-        ax.text(p[0] + 0.12, p[1] + 0.05, name, fontsize=11, fontweight="bold", color="#1f4e79", zorder=7)
+    for name, p, dx in zip("OAB", (O, A, B), (-0.4, 0.12, 0.12)):   # O left of its crank
+        ax.text(p[0] + dx, p[1] + 0.05, name, fontsize=11, fontweight="bold", color="#1f4e79", zorder=7,
+                bbox=LETTER_BOX)
     ax.add_patch(Circle(O, 1.45, fill=False, edgecolor="#555555", lw=1.2, ls="--", zorder=0))
     ram_w, ram_h = 1.0, 0.9
     ax.add_patch(Rectangle((B[0] - ram_w / 2, B[1] - ram_h), ram_w, ram_h, **PART_FILL))
@@ -233,11 +237,11 @@ def forging_press(ax=None):
     feed = np.array([2.6, bottom - 0.15])
     ax.add_patch(FancyBboxPatch(feed - (0.45, 0.3), 0.9, 0.6, boxstyle="round,pad=0.05", **PART_FILL))
     ax.plot([0.25, feed[0] - 0.5], [bottom - 0.15, bottom - 0.15], color="#8a6d1c", lw=2, zorder=2)
-    _label(ax, "flywheel and crank O-A", O + (-1.0, 1.05), O + (-2.6, 1.6))
+    _label(ax, "flywheel and crank O-A", O + (-1.0, 1.05), O + (-3.1, 1.3))
     _label(ax, "connecting rod A-B", (A + B) / 2, (A + B) / 2 + (2.3, 0.3))
-    _label(ax, "ram (slider B) in its guides", B + (ram_w / 2, -ram_h / 2), B + (2.6, -0.5))
+    _label(ax, "ram (slider B) in its guides", B + (ram_w / 2, -ram_h / 2), B + (3.1, -0.5))
     _label(ax, "die and workpiece", (0.0, bottom - 0.3), (-2.6, bottom - 1.2))
-    _label(ax, "wire feed: a Chebyshev dwell\nsix-bar (chapter 8)", feed + (0, 0.3), feed + (0.3, 1.5))
+    _label(ax, "wire feed: a Chebyshev dwell\nsix-bar (chapter 8)", feed + (0, 0.3), feed + (0.8, 1.5))
     _fit(ax)
     ax.set_title("Crank press (nail-making automaton): the slider-crank drives the ram")
     return ax.figure
@@ -273,7 +277,7 @@ def packaging_line(ax=None):
     filler = np.array([tip[0] + 0.8, belt_y + 0.75])
     ax.add_patch(Polygon([filler + (-0.2, 0.2), filler + (0.2, 0.2), filler + (0.05, -0.2), filler + (-0.05, -0.2)],
                          **PART_FILL))
-    _label(ax, "crank O-A with the pin A", pts["A"], pts["A"] + (0.9, 0.5))
+    _label(ax, "crank O-A with the pin A", (pts["O"] + pts["A"]) / 2, pts["A"] + (0.9, 0.5))
     _label(ax, "slotted link about B: its slot\nhas an arc of radius OA (the dwell)", B + (0.3, 0.03),
            B + (0.6, 1.3))
     _label(ax, "arm and pusher on the link:\nstill while a carton is filled", tip - 0.3 * u, tip + (-1.5, 0.7))
@@ -314,7 +318,7 @@ def cartoning_cam(ax=None):
     ax.add_patch(Polygon([head + (-14, 14), head + (14, 14), head + (4, -14), head + (-4, -14)], **PART_FILL))
     ax.add_patch(Rectangle((plate[0] + 60, high - 2), 30, 30, **WORK_FILL))
     _label(ax, "disc cam on the line's shaft O:\none turn per carton", O + (-30.0, -30.0), O + (-95.0, -45.0))
-    _label(ax, "roller, centre C", C + (10.0, 0.0), C + (75.0, -30.0))
+    _label(ax, "roller, centre C", C + (7.0, -7.5), C + (75.0, -30.0))   # below the letter C
     _label(ax, "pusher stem in its guide", (C + plate) / 2 + (-3.0, -5.0), (C + plate) / 2 + (-110.0, -5.0))
     _label(ax, f"pusher: lifts the carton {programme.stroke:g} mm,\nholds it while it is taken over",
            plate + (20.0, 0.0), plate + (95.0, -45.0))
@@ -333,7 +337,8 @@ def loom(ax=None):
     phi = 0.6
     draw(fb, phi, ax=ax, labels=False, ground=False)
     pts, _ = _frame_points(fb, phi)
-    _letters(ax, pts, "OABE", (0.08, 0.05))
+    _letters(ax, pts, "OA", (-0.32, 0.05))   # left of the crank, which points up and to the right
+    _letters(ax, pts, "BE", (0.08, 0.05))
     for p in ("O", "E"):
         _ground(ax, pts[p] + (0, -0.08), 0.15)
     E, B = pts["E"], pts["B"]
@@ -344,7 +349,7 @@ def loom(ax=None):
     for y in np.linspace(top[1] - 0.5, top[1] + 0.3, 5):
         ax.plot([top[0] - 2.6, top[0] + 2.2], [y, y], color="#999999", lw=0.8, zorder=0)
     ax.add_patch(Rectangle((top[0] - 3.4, top[1] - 0.6), 2.5, 1.0, facecolor="#d9d0c1", edgecolor="#6b5f4b"))
-    _label(ax, "crank shaft O-A", (pts["O"] + pts["A"]) / 2, pts["O"] + (-0.8, -1.2))
+    _label(ax, "crank shaft O-A", (pts["O"] + pts["A"]) / 2, pts["O"] + (1.2, -1.2))
     _label(ax, "crank arm (coupler) A-B", (pts["A"] + B) / 2, (pts["A"] + B) / 2 + (-2.0, 0.4))
     _label(ax, "sley sword: rocker E-B", (E + B) / 2, (E + B) / 2 + (1.8, -0.4))
     _label(ax, "reed beats the weft\ninto the cloth", top + 0.5 * u, top + (1.5, 1.1))
@@ -372,4 +377,20 @@ def schematic(name: str, ax=None):
     """
     if name not in MACHINES:
         raise MechanismError(f"machine name = {name!r} is not one of {', '.join(sorted(MACHINES))}")
-    return MACHINES[name](ax)
+    fig = MACHINES[name](ax)
+    if ax is None:
+        _widen(fig, SCHEMATIC_WIDTH_PX)
+    return fig
+
+
+SCHEMATIC_WIDTH_PX = MIN_WIDTH_PX + 20   # shown width (tight crop, figure dpi): animations' width and a margin
+
+
+def _widen(fig, px: float) -> None:
+    """Scale ``fig`` so that its tight crop, the image the notebook shows (bbox_inches="tight"),
+    is at least ``px`` wide at the figure's dpi; an equal-aspect drawing leaves margins uncropped."""
+    for _ in range(3):   # labels keep their point size, so the crop grows a little less than the figure
+        width = fig.get_tightbbox(fig.canvas.get_renderer()).width * fig.dpi
+        if width >= px:
+            return
+        fig.set_size_inches(fig.get_size_inches() * (px / width))

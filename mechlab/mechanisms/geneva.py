@@ -19,7 +19,9 @@ from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
 from ..motion import AngularMotion, Quantity, Table, scalar_law
-from ..validate import MAX_SLOTS, Length, check, count, length
+from ..validate import MAX_SLOTS, Length, check, choice, count, length
+
+LENGTH_UNITS = ("mm", "cm", "m", "in")   # the units a design table may name
 
 
 TWO_PI = 2.0 * np.pi
@@ -233,15 +235,22 @@ class PlanarGeneva(Mechanism):
         """True where the pin is in a slot."""
         return np.abs(mid_motion_angle(as_angles(phi))) <= self.engagement_half_angle
 
-    def design(self) -> Table:
-        """The main sizes (lengths in the unit of C, angles in degrees), a :class:`Table` of
-        :class:`Quantity` rows."""
+    def design(self, unit: str = "mm") -> Table:
+        """The main sizes, a :class:`Table` of :class:`Quantity` rows whose names carry their unit.
+
+        Parameters
+        ----------
+        unit : the unit of C, which every length shares: "mm" (the default), "cm", "m" or "in".
+            Angles are in degrees; ψ' and ψ'' (derivatives in the crank angle φ) have no unit.
+        """
+        unit = check("unit", unit, choice(*LENGTH_UNITS))
+        lengths = (("C", self.centre_distance), ("crank radius a", self.crank_radius),
+                   ("pin radius at entry |WA|", self.entry_radius), ("roller radius", self.roller_radius),
+                   ("slot bottom from W", self.slot_bottom), ("slot length", self.slot_length))
         return Table(Quantity(k, v) for k, v in (
-            ("z", self.z), ("C", self.centre_distance), ("crank radius a", self.crank_radius),
-            ("pin radius at entry |WA|", self.entry_radius), ("roller radius", self.roller_radius),
-            ("slot bottom from W", self.slot_bottom), ("slot length", self.slot_length),
+            ("z", self.z), *((f"{k} ({unit})", v) for k, v in lengths),
             ("dwell fraction", self.dwell_fraction), ("index angle (deg)", np.degrees(abs(self.index_angle))),
-            ("max |ψ'|", self.max_velocity()), ("max |ψ''|", self.max_acceleration())))
+            ("max |ψ'| = |dψ/dφ|", self.max_velocity()), ("max |ψ''| = |d²ψ/dφ²|", self.max_acceleration())))
 
     def structure(self) -> Structure:
         """Crank O→A and the wheel turning about W (axis at ψ), joined by one higher pair at the pin A: while
