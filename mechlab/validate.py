@@ -47,7 +47,7 @@ class Spec:
 
     kind: "number" (real), "length" (> 0, or ≥ 0 with ``zero``), "angle" (radians),
     "count" (whole), "sign" (±1), "choice" (one of ``options``), "flag" (bool),
-    "point" (a 2-vector), "points" (an (m, 2) array, m ≥ lo), "mechanism" (an instance of ``expected``),
+    "point" (a 2-vector), "points" (an (m, width) array, m ≥ lo), "mechanism" (an instance of ``expected``),
     "items" (a sequence of instances of ``expected``, made a tuple), "text" (a non-empty str), "function",
     "samples" (a 1-D array of at least ``lo`` finite numbers), "path" (a str or os.PathLike),
     "angles" (crank angles: a scalar or a 1-D array of at least ``lo``, radians), "reals" (a number or an array).
@@ -64,6 +64,7 @@ class Spec:
     error: type = DimensionError
     why: str = ""
     function_ok: bool = False  # a function of the motion may stand for the value (a load, an axis)
+    width: int = 2  # columns of "points": 2 for (x, y), 3 for homogeneous (x, y, w)
 
     def check(self, name: str, value):
         """``value`` converted (float, int, tuple) or the declared error naming ``name``."""
@@ -210,8 +211,8 @@ def _point(spec, name, value):
 
 def _points(spec, name, value):
     arr = np.asarray(value) if not isinstance(value, str | bytes) and value is not None else np.asarray(0.0)
-    if arr.dtype.kind not in "biuf" or arr.ndim != 2 or arr.shape[1] != 2 or len(arr) < spec.lo:
-        spec.fail(name, f"an (m, 2) array of real coordinates with m ≥ {spec.lo}",
+    if arr.dtype.kind not in "biuf" or arr.ndim != 2 or arr.shape[1] != spec.width or len(arr) < spec.lo:
+        spec.fail(name, f"an (m, {spec.width}) array of real coordinates with m ≥ {spec.lo}",
                   f"shape {arr.shape}, dtype {arr.dtype}" if isinstance(value, np.ndarray | list | tuple) else value)
     arr = arr.astype(float)
     if not np.all(np.abs(arr) <= MAGNITUDE[1]):  # NaN compares False
@@ -290,7 +291,8 @@ def _samples(spec, name, value):
 
 def _mechanism(spec, name, value):
     if not isinstance(value, spec.expected):
-        raise spec.error(f"{name} must be a {_names(spec.expected)}, got {type(value).__name__} {_show(value)}")
+        hint = f" ({spec.why})" if spec.why else ""
+        raise spec.error(f"{name} must be a {_names(spec.expected)}, got {type(value).__name__} {_show(value)}{hint}")
     return value
 
 
@@ -326,9 +328,10 @@ def choice(*options, optional: bool = False, error=DimensionError):
     return Spec("choice", options=options, optional=optional, error=error)
 
 
-def mechanism(expected, *, optional: bool = False, error=TypeError):
-    """An instance of ``expected`` (a class or a tuple of classes); TypeError (or ``error``) otherwise."""
-    return Spec("mechanism", expected=expected, optional=optional, error=error)
+def mechanism(expected, *, optional: bool = False, error=TypeError, why=""):
+    """An instance of ``expected`` (a class, a tuple of classes or a runtime-checkable protocol); TypeError
+    (or ``error``) otherwise."""
+    return Spec("mechanism", expected=expected, optional=optional, error=error, why=why)
 
 
 Length = Annotated[float, length()]

@@ -15,6 +15,7 @@ derived here). The book's first chapters derive all three.
 from __future__ import annotations
 
 from dataclasses import dataclass, fields, replace
+from typing import Annotated
 
 import numpy as np
 
@@ -23,8 +24,11 @@ from ..geometry import AnglePath, PointPath, as_angles, perp, wrap
 from ..mechanisms.base import FULL_TURN, AnyMechanism, Mechanism
 from ..mechanisms.curved_slot import slot_sketch
 from ..mechanisms.slotted import SineMechanism, SlottedLink
-from ..motion import AngularMotion, LinearMotion, scalar_law
+from ..motion import AngularMotion, LinearMotion, Motion, scalar_law
 from ..validate import Angles, validated
+from ..validate import mechanism as instance_of
+
+AnyMotion = Annotated[Motion, instance_of(Motion)]
 
 
 def _output_pivot(mechanism) -> str:
@@ -147,9 +151,15 @@ def equivalent_slot(mechanism: AnyMechanism) -> EquivalentSlot:
     return EquivalentSlot(mechanism, twin, phase)
 
 
-def law_difference(m1, m2) -> tuple[float, float, float]:
-    """Max |difference| of the law (angles compared mod 2π) and its two analogs."""
+@validated
+def law_difference(m1: AnyMotion, m2: AnyMotion) -> tuple[float, float, float]:
+    """Max |difference| of the law (angles compared mod 2π) and its two analogs, of two motions
+    over the same crank angles."""
     a, b = m1.output, m2.output
+    if a.kind != b.kind or np.shape(a.value) != np.shape(b.value) or np.size(a.value) == 0:
+        raise DimensionError(f"m1 and m2 must be motions of the same kind over the same (one or more) crank angles, "
+                             f"got a "
+                             f"{a.kind} over {np.size(a.value)} and a {b.kind} over {np.size(b.value)}")
     d0 = wrap(a.value - b.value) if a.kind == "angle" else a.value - b.value
     return float(np.max(np.abs(d0))), float(np.max(np.abs(a.d - b.d))), float(np.max(np.abs(a.dd - b.dd)))
 

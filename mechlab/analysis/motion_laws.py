@@ -22,13 +22,17 @@ and cams go in one table.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable
+from typing import Annotated
 
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from ..errors import MechanismError
+from ..errors import DimensionError, MechanismError
 from ..motion import Table
+from ..validate import MAX_SAMPLES, Checked, Flag, Function, Name, Real, Spec, check, choice, count, number, validated
+
+Sampled = Annotated[np.ndarray, Spec("samples", lo=2, hi=MAX_SAMPLES)]  # one value a crank angle
+Analogs = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)]
 
 __all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "invariants", "rise_invariants", "PrintedInvariants",
            "thesis_cam_rows", "thesis_mchv1_rows"]
@@ -56,14 +60,22 @@ class Invariants:
 
 
 @dataclass(frozen=True)
-class RiseLaw:
-    """A rise law y(x) with y'(x), y''(x) (vectorised) and its closed-form invariants."""
+class RiseLaw(Checked):
+    """A rise law y(x) with y'(x), y''(x) (vectorised) and its closed-form invariants
+    (B, C, D; None where no closed form is known)."""
 
-    name: str
-    y: Callable
-    dy: Callable
-    ddy: Callable
-    closed: tuple  # (B, C, D) in closed form
+    name: Name
+    y: Function
+    dy: Function
+    ddy: Function
+    closed: tuple
+
+    def __post_init__(self):
+        super().__post_init__()
+        if isinstance(self.closed, str) or np.ndim(self.closed) != 1 or len(self.closed) != 3:
+            raise DimensionError(f"closed must be the closed forms (B, C, D), got {self.closed!r:.60}")
+        object.__setattr__(self, "closed", tuple(None if v is None else check(f"closed[{i}]", v, number())
+                                                 for i, v in enumerate(self.closed)))
 
     def __call__(self, x):
         x = np.asarray(x, dtype=float)
@@ -152,16 +164,19 @@ LAWS["4-5-6-7 polynomial"] = RiseLaw(*[getattr(LAWS["4-5-6-7 polynomial"], k) fo
                                      (35 / 16, _closed_4567(), None))
 
 
-def law_invariants(law: RiseLaw | str, n: int = 20001, *, signed: bool = False) -> Invariants:
-    """B, C, D of a rise law, measured on n samples of x ∈ [0, 1] and polished by a bounded
-    scalar search around the best sample (independent of the closed forms). C and D are the
-    absolute extremes, or with ``signed`` the signed maxima (module docstring)."""
-    law = LAWS[law] if isinstance(law, str) else law
+@validated
+def law_invariants(law: RiseLaw | str, n: Annotated[int, count(3)] = 20001, *, signed: Flag = False) -> Invariants:
+    """B, C, D of a rise law (one of :data:`LAWS` or its name), measured on n samples of x ∈ [0, 1] and
+    polished by a bounded scalar search around the best sample (independent of the closed forms). C and D
+    are the absolute extremes, or with ``signed`` the signed maxima (module docstring)."""
+    law = law if isinstance(law, RiseLaw) else LAWS[check("law", law, choice(*LAWS))]
     size = (lambda v: v) if signed else np.abs
     x = np.linspace(0.0, 1.0, n)
 
     def peak(f):
-        v = f(x)
+        v = np.broadcast_to(np.asarray(f(x), dtype=float), x.shape)
+        if not np.all(np.isfinite(v)):
+            raise DimensionError(f"law {law.name!r} gives NaN or inf at x = {x[~np.isfinite(v)][0]:g}")
         i = int(np.argmax(v))
         lo, hi = x[max(i - 1, 0)], x[min(i + 1, n - 1)]
         if hi - lo <= 0:
@@ -174,26 +189,39 @@ def law_invariants(law: RiseLaw | str, n: int = 20001, *, signed: bool = False) 
                       peak(lambda s: size(law.dy(s) * law.ddy(s))))
 
 
-def invariants(Phi: float, h: float, dpsi: np.ndarray, ddpsi: np.ndarray, *, signed: bool = False) -> Invariants:
+@validated
+def invariants(Phi: Real, h: Real, dpsi: Analogs, ddpsi: Analogs, *, signed: Flag = False) -> Invariants:
     """B, C, D of an output law that moves by ``h`` over the crank angle ``Phi``, from its analogs.
 
     B = max|ψ'|·Φ/|h|, C = max|ψ''|·Φ²/|h|, D = max|ψ'ψ''|·Φ³/h² (Kinitsky, 1994, chapter 2:
     invariants of velocity, acceleration and kinetic power); with ``signed`` C and D are the signed
     maxima in the direction of the rise. Raises MechanismError if the output does not move.
     """
-    Phi, h = float(Phi), float(h)
+    if len(dpsi) != len(ddpsi):
+        raise DimensionError(f"dpsi and ddpsi must be samples at the same angles, got {len(dpsi)} and "
+                             f"{len(ddpsi)} values")
+    Phi, h = np.float64(Phi), np.float64(h)  # numpy floats: an overflow gives inf, refused below
     if not abs(h) > 0 or not Phi > 0:
         raise MechanismError(f"no rise to normalise: stroke h = {h:.3g}, duration Φ = {Phi:.3g}")
     acc, power = np.asarray(ddpsi) * np.sign(h), np.asarray(dpsi) * np.asarray(ddpsi)  # along the rise
     if not signed:
         acc, power = np.abs(acc), np.abs(power)
-    return Invariants(np.max(np.abs(dpsi)) * Phi / abs(h), np.max(acc) * Phi**2 / abs(h), np.max(power) * Phi**3 / h**2)
+    with np.errstate(over="ignore"):
+        inv = Invariants(np.max(np.abs(dpsi)) * Phi / abs(h), np.max(acc) * Phi**2 / abs(h),
+                         np.max(power) * Phi**3 / h**2)
+    if not np.all(np.isfinite(inv.values)):
+        raise DimensionError(f"the invariants overflow: duration Φ = {Phi:.3g} and stroke h = {h:.3g} with "
+                             f"max|dpsi| = {np.max(np.abs(dpsi)):.3g}, max|ddpsi| = {np.max(np.abs(ddpsi)):.3g}")
+    return inv
 
 
-def rise_invariants(phi: np.ndarray, psi: np.ndarray, dpsi: np.ndarray, ddpsi: np.ndarray, *,
-                    signed: bool = False) -> Invariants:
+@validated
+def rise_invariants(phi: Sampled, psi: Sampled, dpsi: Sampled, ddpsi: Sampled, *, signed: Flag = False) -> Invariants:
     """:func:`invariants` of an output law sampled over one rise (φ from its start to its end):
     Φ = φ_end − φ_start and h = ψ_end − ψ_start."""
+    if not len(phi) == len(psi) == len(dpsi) == len(ddpsi):
+        raise DimensionError(f"phi, psi, dpsi and ddpsi must be samples at the same angles, got {len(phi)}, "
+                             f"{len(psi)}, {len(dpsi)} and {len(ddpsi)} values")
     return invariants(phi[-1] - phi[0], psi[-1] - psi[0], dpsi, ddpsi, signed=signed)
 
 

@@ -15,12 +15,12 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from ..errors import DimensionError
-from ..geometry import check_number
 from ..mechanisms.base import AnyMechanism
-from ..validate import count, validated
+from ..validate import Angle, Spec, check, count, validated
 
 
-def nearest_assembly(mechanism, phi: float, **joints):
+@validated
+def nearest_assembly(mechanism: AnyMechanism, phi: Angle, **joints):
     """The assembly of ``mechanism`` whose joints at crank angle ``phi`` (radians) lie nearest
     the given points, e.g. ``nearest_assembly(FourBar(1, 3, 3, 4), np.radians(60), B=(2.8, 2.7))``.
 
@@ -31,13 +31,7 @@ def nearest_assembly(mechanism, phi: float, **joints):
         raise DimensionError(f"{type(mechanism).__name__} has no assembly to choose")
     if not joints:
         raise DimensionError("nearest_assembly needs at least one joint and its sketched point, e.g. B=(x, y)")
-    phi = check_number("phi", phi)
-    points = {}
-    for name, xy in joints.items():
-        xy = np.asarray(xy, dtype=float)
-        if xy.shape != (2,) or not np.all(np.isfinite(xy)):
-            raise DimensionError(f"the sketched point {name} must be two finite numbers (x, y), got {joints[name]!r}")
-        points[name] = xy
+    points = {name: np.array(check(f"the sketched point {name}", xy, Spec("point"))) for name, xy in joints.items()}
     best = None
     for sign in (1, -1):
         candidate = dataclasses.replace(mechanism, assembly=sign)

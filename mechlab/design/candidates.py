@@ -5,13 +5,15 @@ from __future__ import annotations
 import csv
 import io
 from dataclasses import dataclass
+from typing import Annotated
 
 import numpy as np
 
 from ..errors import MechanismError
-from .criteria import Criteria, Structure, evaluate
+from ..validate import Length, Spec, validated
+from .criteria import AnyMovable, Criteria, Phase, Structure, evaluate
 from .families import FAMILIES, Design, Unsuitable
-from .spec import IMPACTS, Specification
+from .spec import IMPACTS, AnySpecification, Specification
 
 
 @dataclass(frozen=True)
@@ -60,21 +62,41 @@ def _value(c: Criteria, key: str):
     return np.degrees(v) if key == "pressure_angle" else v
 
 
-def _missed(spec: Specification, c: Criteria) -> list[str]:
-    """The specification's limits this simulated design misses, each with its numbers."""
-    out = []
+@dataclass(frozen=True)
+class Verdict:
+    """One limit of a specification: met or missed, in words with the numbers."""
+
+    criterion: str
+    met: bool
+    text: str
+
+    @property
+    def reason(self) -> str:
+        """The criterion and its numbers, as a refusal states it."""
+        return f"{self.criterion}: {self.text}"
+
+    def __str__(self) -> str:
+        return f"{'✓' if self.met else '✗'} {self.reason}"
+
+
+def limits(spec: Specification, c: Criteria) -> list[Verdict]:
+    """The specification's limits on a simulated design (dwell, pressure angle, size, impacts), each
+    met or missed with its numbers: :func:`check_design` reports them, :func:`candidates` refuses on them."""
     # a longer dwell than asked still serves the machine; a shorter one does not
-    if c.dwell_fraction < spec.dwell_fraction - spec.dwell_tolerance:
-        out.append(f"simulated dwell {c.dwell_fraction:.3f} of the turn < {spec.dwell_fraction:.3f} "
-                   f"− {spec.dwell_tolerance:.3f} asked")
-    if c.pressure_angle > spec.max_pressure_angle + 1e-9:
-        out.append(f"pressure angle {np.degrees(c.pressure_angle):.1f}° > "
-                   f"{np.degrees(spec.max_pressure_angle):.1f}°")
-    if c.size > spec.max_size:
-        out.append(f"size {c.size:.0f} mm > {spec.max_size:.0f} mm")
-    if IMPACTS.index(c.impact) > IMPACTS.index(spec.impacts):
-        out.append(f"{c.impact} impacts where {spec.impacts} at worst are admitted")
-    return out
+    dwell_ok = c.dwell_fraction >= spec.dwell_fraction - spec.dwell_tolerance
+    pa_ok = c.pressure_angle <= spec.max_pressure_angle + 1e-9
+    size_ok = c.size <= spec.max_size
+    impact_ok = IMPACTS.index(c.impact) <= IMPACTS.index(spec.impacts)
+    return [
+        Verdict("dwell", dwell_ok, f"{c.dwell_fraction:.3f} of the turn (output within ± {spec.dwell_precision:g} of "
+                                   f"its amplitude) {'≥' if dwell_ok else '<'} {spec.dwell_fraction:.3f} − "
+                                   f"{spec.dwell_tolerance:.3f} asked"),
+        Verdict("pressure angle", pa_ok, f"worst {np.degrees(c.pressure_angle):.1f}° {'≤' if pa_ok else '>'} "
+                                         f"{np.degrees(spec.max_pressure_angle):.1f}°"),
+        Verdict("size", size_ok, f"{c.size:.0f} mm {'≤' if size_ok else '>'} {spec.max_size:.0f} mm"),
+        Verdict("impacts", impact_ok, f"{c.impact}, {spec.impacts} at worst admitted" if impact_ok
+                else f"{c.impact} where {spec.impacts} at worst are admitted"),
+    ]
 
 
 @dataclass(frozen=True)
@@ -108,7 +130,8 @@ class Comparison:
                                     for k, _, _, f in COLUMNS) for c in self.candidates]
         return [head] + body
 
-    def to_csv(self, path=None) -> str:
+    @validated
+    def to_csv(self, path: Annotated[object, Spec("path", optional=True)] = None) -> str:
         """The table as CSV (full precision); written to ``path`` when given."""
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")
@@ -138,15 +161,15 @@ class Comparison:
                 f"<tbody>{body}</tbody></table></div>" + (f"<p>Refused:</p><ul>{refused}</ul>" if refused else ""))
 
 
-def candidates(spec: Specification, families=None) -> Comparison:
+@validated
+def candidates(spec: AnySpecification, families: Annotated[tuple | None, Spec("items", expected=str, optional=True)] = None
+               ) -> Comparison:
     """Synthesise a design of every family (or of ``families``, names of :data:`FAMILIES`) for ``spec``.
 
     Each design is simulated and judged by :func:`~mechlab.design.criteria.evaluate`; a family
-    whose synthesis refuses, or whose simulated design misses a limit of the specification,
-    is listed among the refusals with the reason.
+    whose synthesis refuses, or whose simulated design misses a limit of the specification
+    (:func:`limits`), is listed among the refusals with the reason.
     """
-    if not isinstance(spec, Specification):
-        raise TypeError(f"candidates needs a mechlab.design.Specification, got {type(spec).__name__}")
     names = list(FAMILIES) if families is None else list(families)
     unknown = [n for n in names if n not in FAMILIES]
     if unknown:
@@ -163,24 +186,12 @@ def candidates(spec: Specification, families=None) -> Comparison:
         except MechanismError as err:
             refused.append(Refusal(name, f"{type(err).__name__}: {err}"))
             continue
-        missed = _missed(spec, crit)
+        missed = [v.reason for v in limits(spec, crit) if not v.met]
         if missed:
             refused.append(Refusal(name, "; ".join(missed)))
         else:
             found.append(Candidate(design, crit))
     return Comparison(spec, tuple(found), tuple(refused))
-
-
-@dataclass(frozen=True)
-class Verdict:
-    """One limit of a specification: met or missed, in words with the numbers."""
-
-    criterion: str
-    met: bool
-    text: str
-
-    def __str__(self) -> str:
-        return f"{'✓' if self.met else '✗'} {self.criterion}: {self.text}"
 
 
 @dataclass(frozen=True)
@@ -205,16 +216,10 @@ class DesignReport:
         return f"<p><b>The design {head}</b></p><ul>{rows}</ul>"
 
 
-def check_design(spec: Specification, mechanism, *, scale: float = 1.0, phase: float = 0.0) -> DesignReport:
+@validated
+def check_design(spec: AnySpecification, mechanism: AnyMovable, *, scale: Length = 1.0, phase: Phase = 0.0) -> DesignReport:
     """Run ``mechanism`` (its lengths × ``scale`` = mm) against ``spec``: amplitude, dwell, pressure
     angle, size and impacts, each met or missed with the numbers, from its simulated motion."""
-    if not isinstance(spec, Specification):
-        raise TypeError(f"check_design needs a mechlab.design.Specification, got {type(spec).__name__}")
-    if not hasattr(mechanism, "motion"):
-        raise TypeError(f"check_design needs a mechanism (with motion(phi)), got {type(mechanism).__name__}")
-    scale = float(scale)
-    if not (np.isfinite(scale) and scale > 0):
-        raise MechanismError(f"scale must be a positive number (mm per length unit), got {scale!r}")
     c = evaluate(mechanism, spec, scale=scale, structure=Structure(0, 0, 0), phase=phase)
     phi = phase + np.linspace(0.0, 2 * np.pi, 2881)
     x = np.asarray(mechanism.motion(phi).output.value, float) * (1.0 if spec.rotary else scale)
@@ -223,15 +228,4 @@ def check_design(spec: Specification, mechanism, *, scale: float = 1.0, phase: f
     amp_ok = abs(reached - spec.amplitude) <= 0.01 * spec.amplitude
     v = [Verdict("amplitude", amp_ok, f"{shown(reached):.4g} {unit} reached, {shown(spec.amplitude):.4g} {unit} "
                                       f"asked (± 1 %)")]
-    v.append(Verdict("dwell", c.dwell_fraction >= spec.dwell_fraction - spec.dwell_tolerance,
-                     f"{c.dwell_fraction:.3f} of the turn within ± {spec.dwell_precision:g} of the amplitude, "
-                     f"{spec.dwell_fraction:.3f} − {spec.dwell_tolerance:.3f} asked at least"))
-    pa = np.degrees(c.pressure_angle)
-    v.append(Verdict("pressure angle", c.pressure_angle <= spec.max_pressure_angle + 1e-9,
-                     f"worst {pa:.1f}° {'≤' if c.pressure_angle <= spec.max_pressure_angle + 1e-9 else '>'} "
-                     f"{np.degrees(spec.max_pressure_angle):.1f}°"))
-    v.append(Verdict("size", c.size <= spec.max_size, f"{c.size:.0f} mm {'≤' if c.size <= spec.max_size else '>'} "
-                                                      f"{spec.max_size:.0f} mm"))
-    v.append(Verdict("impacts", IMPACTS.index(c.impact) <= IMPACTS.index(spec.impacts),
-                     f"{c.impact} (worst admitted: {spec.impacts})"))
-    return DesignReport(spec, c, tuple(v))
+    return DesignReport(spec, c, tuple(v + limits(spec, c)))

@@ -12,23 +12,44 @@ from __future__ import annotations
 
 from collections import deque
 from dataclasses import dataclass
+from typing import Annotated, Protocol, runtime_checkable
 
 import numpy as np
 
 from ..analysis.motion_laws import rise_invariants
 from ..kinetostatics.drive import drive
-from .spec import Specification
+from ..errors import DimensionError
+from ..mechanisms.base import TWO_PI
+from ..validate import Checked, Length, Spec, angle, check, count, length, validated
+from ..validate import mechanism as instance_of
+from .spec import AnySpecification
+
+Circles = Annotated[tuple, Spec("items", expected=tuple)]  # ((x, y), r) pairs
+
+
+@runtime_checkable
+class Movable(Protocol):
+    """What a design is judged by: its motion at crank angles (a mechlab mechanism, or one of the student's)."""
+
+    def motion(self, phi): ...
+
+
+AnyMovable = Annotated[Movable, instance_of(Movable, why="an object with motion(phi), e.g. a mechlab mechanism")]
 
 SAMPLES = 2880  # crank angles per turn (1/8°): the dwell is found to this resolution
 
 
+Parts = Annotated[int, count(0, 1000)]
+Phase = Annotated[float, angle(-TWO_PI, TWO_PI)]  # a shift of the sampled crank angles (rad)
+
+
 @dataclass(frozen=True)
-class Structure:
+class Structure(Checked):
     """What a design is built of: moving parts, lower pairs and higher pairs (cam, pin in slot)."""
 
-    parts: int
-    lower_pairs: int
-    higher_pairs: int
+    parts: Parts
+    lower_pairs: Parts
+    higher_pairs: Parts
 
     def __str__(self) -> str:
         higher = f" + {self.higher_pairs} higher" if self.higher_pairs else ""
@@ -110,30 +131,40 @@ def longest_still(x: np.ndarray, shift: float, band: float) -> tuple[int, int]:
     return start % n, best[1]
 
 
-def _jumps(mechanism, phase: float) -> tuple[float, float]:
-    """Largest neighbour-to-neighbour change of x′ and x″ that does not shrink when the grid is halved."""
-    out = []
-    for n in (SAMPLES, 2 * SAMPLES):
-        phi = phase + np.linspace(0.0, 2 * np.pi, n + 1)
-        law = mechanism.motion(phi).output
-        d1, d2 = law.d, law.dd
-        out.append((np.max(np.abs(np.diff(d1))), np.max(np.abs(np.diff(d2))), np.max(np.abs(d1)),
-                    np.max(np.abs(d2))))
-    (v1, a1, _, _), (v2, a2, vmax, amax) = out
+def _jumps(mechanism, phase: float, d1: np.ndarray, d2: np.ndarray) -> tuple[float, float]:
+    """Largest neighbour-to-neighbour change of x′ and x″ that does not shrink when the grid is halved.
+
+    ``d1``, ``d2``: x′ and x″ on the judge's grid (SAMPLES steps from ``phase``); the motion is
+    evaluated again only on the halved grid.
+    """
+    law = mechanism.motion(phase + np.linspace(0.0, 2 * np.pi, 2 * SAMPLES + 1)).output
+    v1, a1 = np.max(np.abs(np.diff(d1))), np.max(np.abs(np.diff(d2)))
+    v2, a2 = np.max(np.abs(np.diff(law.d))), np.max(np.abs(np.diff(law.dd)))
+    vmax, amax = np.max(np.abs(law.d)), np.max(np.abs(law.dd))
     # a continuous derivative's largest step halves with the step; a jump stays
     v = v2 / vmax if v2 > 0.75 * v1 and vmax > 0 else 0.0
     a = a2 / amax if a2 > 0.75 * a1 and amax > 0 else 0.0
     return float(v), float(a)
 
 
-def evaluate(mechanism, spec: Specification, *, scale: float, structure: Structure,
-             circles=(), pressure_angle: float | None = None, phase: float = 0.0) -> Criteria:
+def _circle(i: int, circle: tuple) -> tuple[tuple, float]:
+    if len(circle) != 2:
+        raise DimensionError(f"circles[{i}] must be a (centre, radius) pair, got {circle!r:.60}")
+    return check(f"circles[{i}] centre", circle[0], Spec("point")), check(f"circles[{i}] radius", circle[1], length())
+
+
+@validated
+def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
+             structure: Annotated[Structure, instance_of(Structure)], circles: Circles = (),
+             pressure_angle: Annotated[float | None, angle(0.0, np.pi / 2, optional=True)] = None,
+             phase: Phase = 0.0) -> Criteria:
     """Judge ``mechanism`` (lengths × ``scale`` = mm) against ``spec`` from its simulated motion.
 
     ``circles`` are (centre, radius) pairs of parts the joints do not trace (a Geneva wheel, a
     cam disc), in the mechanism's units, added to the footprint; ``pressure_angle``, when
     given, replaces the motion's own (a family whose motion does not carry one).
     """
+    circles = tuple(_circle(i, c) for i, c in enumerate(circles))
     phi = phase + np.linspace(0.0, 2 * np.pi, SAMPLES + 1)
     mo = mechanism.motion(phi)
     x, d1, d2 = (np.asarray(a, float) for a in (mo.output.value, mo.output.d, mo.output.dd))
@@ -159,7 +190,7 @@ def evaluate(mechanism, spec: Specification, *, scale: float, structure: Structu
         xs = xs[:len(k)]
     rise_phi = phi[0] + k * (2 * np.pi / SAMPLES)
     inv = rise_invariants(rise_phi, xs, d1[:-1][k % SAMPLES], d2[:-1][k % SAMPLES])
-    v_jump, a_jump = _jumps(mechanism, phase)
+    v_jump, a_jump = _jumps(mechanism, phase, np.asarray(mo.output.d, float), np.asarray(mo.output.dd, float))
     impact = "hard" if v_jump > 1e-6 else "soft" if a_jump > 1e-6 else "none"
     jerk = None
     if impact == "none":

@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 
 import numpy as np
 
 from ..errors import DimensionError
+from ..validate import Checked, Spec, choice, count, mechanism
 
 MOTIONS = ("index", "swing", "stroke")
 IMPACTS = ("none", "soft", "hard")  # in order of severity
@@ -16,21 +18,16 @@ class SpecificationError(DimensionError):
     """A specification that no mechanism can be asked for (its message names the field)."""
 
 
-def _number(name: str, value, lo: float = -np.inf, hi: float = np.inf, *, open_lo=False) -> float:
-    if isinstance(value, (str, bytes, complex)) or value is None:
-        raise SpecificationError(f"{name} must be a real number, got {value!r}")
-    try:
-        x = float(value)
-    except (TypeError, ValueError, OverflowError):
-        raise SpecificationError(f"{name} must be a real number, got {value!r}") from None
-    if not np.isfinite(x) or x < lo or x > hi or (open_lo and x == lo):
-        bound = f"({lo:g}, {hi:g}]" if open_lo else f"[{lo:g}, {hi:g}]"
-        raise SpecificationError(f"{name} must lie in {bound}, got {x:g}")
-    return x
+def _within(lo: float, hi: float, *, open_lo: bool = False, optional: bool = False) -> Spec:
+    """A real number in [lo, hi] (or (lo, hi] with ``open_lo``), refused as a SpecificationError."""
+    return Spec("number", lo, hi, open_lo=open_lo, optional=optional, error=SpecificationError)
+
+
+Fraction = Annotated[float, _within(0.0, 0.95, open_lo=True)]
 
 
 @dataclass(frozen=True)
-class Specification:
+class Specification(Checked):
     """One machine's requirement on a dwell mechanism (angles in radians, lengths in mm, SI loads).
 
     Parameters
@@ -70,57 +67,37 @@ class Specification:
         Motor overload factor of the course's motor rule (:func:`mechlab.kinetostatics.drive`).
     """
 
-    motion: str
-    dwell_fraction: float
-    amplitude: float | None = None
-    stations: int | None = None
-    rpm: float = 60.0
-    inertia: float = 0.0
-    mass: float = 0.0
-    resisting: float = 0.0
-    max_pressure_angle: float = np.radians(45.0)
-    max_size: float = 1000.0
-    impacts: str = "hard"
-    dwell_tolerance: float = 0.03
-    dwell_precision: float = 0.001
-    crank_radius: float = 50.0
-    overload: float = 2.0
+    motion: Annotated[str, choice(*MOTIONS, error=SpecificationError)]
+    dwell_fraction: Fraction
+    amplitude: Annotated[float | None, _within(0.0, 1e5, open_lo=True, optional=True)] = None
+    stations: Annotated[int | None, count(2, 360, optional=True, error=SpecificationError)] = None
+    rpm: Annotated[float, _within(0.0, 1e5, open_lo=True)] = 60.0
+    inertia: Annotated[float, _within(0.0, 1e6)] = 0.0
+    mass: Annotated[float, _within(0.0, 1e6)] = 0.0
+    resisting: Annotated[float, _within(0.0, 1e9)] = 0.0
+    max_pressure_angle: Annotated[float, _within(0.0, np.pi / 2, open_lo=True)] = np.radians(45.0)
+    max_size: Annotated[float, _within(0.0, 1e5, open_lo=True)] = 1000.0
+    impacts: Annotated[str, choice(*IMPACTS, error=SpecificationError)] = "hard"
+    dwell_tolerance: Annotated[float, _within(0.0, 0.5, open_lo=True)] = 0.03
+    dwell_precision: Annotated[float, _within(0.0, 0.2, open_lo=True)] = 0.001
+    crank_radius: Annotated[float, _within(0.0, 1e4, open_lo=True)] = 50.0
+    overload: Annotated[float, _within(1.0, 100.0)] = 2.0
 
     def __post_init__(self):
-        if self.motion not in MOTIONS:
-            raise SpecificationError(f"motion must be one of {MOTIONS}, got {self.motion!r}")
-        if self.impacts not in IMPACTS:
-            raise SpecificationError(f"impacts must be one of {IMPACTS}, got {self.impacts!r}")
-        fields = dict(dwell_fraction=_number("dwell_fraction", self.dwell_fraction, 0.0, 0.95, open_lo=True),
-                      rpm=_number("rpm", self.rpm, 0.0, 1e5, open_lo=True),
-                      inertia=_number("inertia", self.inertia, 0.0, 1e6),
-                      mass=_number("mass", self.mass, 0.0, 1e6),
-                      resisting=_number("resisting", self.resisting, 0.0, 1e9),
-                      max_pressure_angle=_number("max_pressure_angle", self.max_pressure_angle, 0.0, np.pi / 2,
-                                                 open_lo=True),
-                      max_size=_number("max_size", self.max_size, 0.0, 1e5, open_lo=True),
-                      dwell_tolerance=_number("dwell_tolerance", self.dwell_tolerance, 0.0, 0.5, open_lo=True),
-                      dwell_precision=_number("dwell_precision", self.dwell_precision, 0.0, 0.2, open_lo=True),
-                      crank_radius=_number("crank_radius", self.crank_radius, 0.0, 1e4, open_lo=True),
-                      overload=_number("overload", self.overload, 1.0, 100.0))
+        super().__post_init__()
         if self.motion == "index":
             if self.stations is None:
                 raise SpecificationError("an index motion needs the number of stations")
-            z = _number("stations", self.stations, 2, 360)
-            if z != int(z) or isinstance(self.stations, bool):
-                raise SpecificationError(f"stations must be a whole number, got {self.stations!r}")
-            fields["stations"] = int(z)
-            fields["amplitude"] = 2 * np.pi / int(z)
+            object.__setattr__(self, "amplitude", 2 * np.pi / self.stations)
         else:
             if self.stations is not None:
                 raise SpecificationError(f"stations belong to an index motion, not to a {self.motion}")
             if self.amplitude is None:
                 raise SpecificationError(f"a {self.motion} needs its amplitude "
                                          f"({'swing angle, rad' if self.motion == 'swing' else 'stroke, mm'})")
-            hi = np.pi if self.motion == "swing" else self.max_size
-            fields["amplitude"] = _number("amplitude", self.amplitude, 0.0, hi, open_lo=True)
-        for k, v in fields.items():
-            object.__setattr__(self, k, v)
+            hi, what = (np.pi, "π (a swing)") if self.motion == "swing" else (self.max_size, "max_size (a stroke)")
+            if self.amplitude > hi:
+                raise SpecificationError(f"amplitude must be ≤ {what} = {hi:g}, got {self.amplitude:g}")
 
     @property
     def omega1(self) -> float:
@@ -148,3 +125,6 @@ class Specification:
         return (f"{what}, dwell {self.dwell_fraction:.3f} of the turn ({np.degrees(self.dwell_angle):.4g}°), "
                 f"{self.rpm:.4g} rpm, {load}, pressure angle ≤ {np.degrees(self.max_pressure_angle):.4g}°, "
                 f"size ≤ {self.max_size:.4g} mm, impacts: {self.impacts} at worst")
+
+
+AnySpecification = Annotated[Specification, mechanism(Specification)]

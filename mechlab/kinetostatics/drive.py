@@ -9,7 +9,7 @@ from typing import Annotated, Sequence
 import numpy as np
 
 from ..errors import DimensionError, MechanismError
-from ..validate import Spec, number, validated
+from ..validate import MAX_SAMPLES, Real, Spec, number, validated
 
 __all__ = ["Drive", "DriveError", "drive", "motor_torque", "cycle_mean"]
 
@@ -18,6 +18,10 @@ __all__ = ["Drive", "DriveError", "drive", "motor_torque", "cycle_mean"]
 class DriveError(DimensionError):
     """Inadmissible drive data: efficiency outside (0, 1], overload factor < 1, torque samples
     that are not finite or do not match the crank angles, ω1 = 0."""
+
+
+Efficiency = Annotated[float, Spec("number", 0.0, 1.0, open_lo=True, error=DriveError, why="the efficiency 0 < η ≤ 1")]
+Sampled = Annotated[np.ndarray, Spec("samples", lo=2, hi=MAX_SAMPLES)]
 
 
 @dataclass(frozen=True, eq=False)
@@ -57,12 +61,18 @@ class Drive:
         return ok[0]
 
 
-def cycle_mean(y: np.ndarray, phi: np.ndarray) -> float:
+@validated
+def cycle_mean(y: Sampled, phi: Sampled) -> float:
     """Mean of y(φ) over the sampled interval (trapezoidal rule, any spacing)."""
+    if len(y) != len(phi) or phi[-1] == phi[0]:
+        raise DimensionError(f"y and phi must be samples of one interval, as many y as phi, got {len(y)} y over "
+                             f"{len(phi)} phi from {phi[0]:g} to {phi[-1]:g}")
     return float(np.trapezoid(y, phi) / (phi[-1] - phi[0]))
 
 
-def motor_torque(torque, omega1: float, efficiency: float = 1.0) -> np.ndarray:
+@validated
+def motor_torque(torque: Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)], omega1: Real,
+                 efficiency: Efficiency = 1.0) -> np.ndarray:
     """The motor's torque referred to the crank: M/η where the motor drives (M·ω1 > 0), M·η
     where the mechanism drives the motor back (M·ω1 < 0) through the same transmission."""
     M = np.asarray(torque, dtype=float)
@@ -75,8 +85,7 @@ def drive(torque: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)]
           phi: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)],
           omega1: Annotated[float, number(error=DriveError)], *,
           overload: Annotated[float, number(1.0, error=DriveError, why="the overload factor k ≥ 1")] = 2.0,
-          efficiency: Annotated[float, Spec("number", 0.0, 1.0, open_lo=True, error=DriveError,
-                                            why="the efficiency 0 < η ≤ 1")] = 1.0) -> Drive:
+          efficiency: Efficiency = 1.0) -> Drive:
     """The one rule of the course for sizing a motor that drives a crank without a flywheel.
 
     ``torque`` is the crank torque M(φ) at the crank angles ``phi`` over one cycle (e.g.

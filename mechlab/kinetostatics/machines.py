@@ -12,13 +12,11 @@ from ..motion import Motion, scalar_law
 from ..mechanisms.base import Mechanism
 from ..validate import Distance, Length, OptionalAngles, Point, Real, Spec, number, validated
 from ..validate import mechanism as mechanism_of
-from .model import Force, ForceModel, G, LoadError, Torque, _nonneg, model_for, slender_bar
+from .model import MAX_OMEGA, Eps, Force, ForceModel, G, LoadError, Omega, Torque, _nonneg, model_for, slender_bar
 from .solve import ForceResult, solve
 
 __all__ = ["Kinetostatics", "rpm_to_rad", "press_load", "press", "rocker_drive"]
 
-# Crank speeds beyond this (rad/s, ≈ 10⁷ rpm) overflow the inertia forces' squares.
-MAX_OMEGA = 1e6
 Rpm = Annotated[float, number(0.0, MAX_OMEGA * 60 / (2 * np.pi), why="rev/min")]
 Size = Annotated[float, number(0.0)]  # a mass, a load, a friction coefficient: ≥ 0
 
@@ -33,8 +31,8 @@ class Kinetostatics(Mechanism):
     mechanism: Annotated[Any, mechanism_of(Mechanism)]
     model: ForceModel | None = None
     loads: Annotated[tuple, Spec("items", expected=(Force, Torque))] = ()
-    omega1: Annotated[float, number(-MAX_OMEGA, MAX_OMEGA, why="rad/s")] = 1.0
-    eps1: Annotated[float, number(-MAX_OMEGA**2, MAX_OMEGA**2, why="rad/s²")] = 0.0
+    omega1: Omega = 1.0
+    eps1: Eps = 0.0
     gravity: Point = (0.0, -G)
 
     def __post_init__(self):
@@ -79,12 +77,16 @@ class Kinetostatics(Mechanism):
 
 
 # --------------------------------------------------------------------------- the chapter's two examples
-def rpm_to_rad(rpm: float) -> float:
+@validated
+def rpm_to_rad(rpm: Real) -> float:
     """Crank speed in rad/s from revolutions per minute."""
-    return float(rpm) * 2.0 * np.pi / 60.0
+    return rpm * 2.0 * np.pi / 60.0
 
 
-def press_load(P: float, work_fraction: float = 0.3) -> Callable:
+@validated
+def press_load(P: Annotated[float, number(0.0, error=LoadError, why="the press force, N")],
+               work_fraction: Annotated[float, Spec("number", 0.0, 1.0, open_lo=True, error=LoadError)] = 0.3
+               ) -> Callable:
     """Technological resistance of a press: a force P against the slider while it moves
     towards its outer dead point in the last ``work_fraction`` of its stroke.
 
@@ -94,9 +96,6 @@ def press_load(P: float, work_fraction: float = 0.3) -> Callable:
     sqrt((l + a)² − e²) from O along the guide there, on the side where B is ahead of A,
     so the load at a crank angle does not depend on which other angles are sampled.
     """
-    P = _nonneg("press force P", P, LoadError)
-    if not 0 < work_fraction <= 1:
-        raise LoadError(f"work_fraction must satisfy 0 < fraction ≤ 1, got {work_fraction}")
 
     def load(motion):
         crank, rod, offset, side = _slider_crank_dimensions(motion)

@@ -57,6 +57,10 @@ def _nonneg(name: str, value, exc) -> float:
     return check(name, value, number(0.0, error=exc))
 
 
+# Crank speeds beyond this (rad/s, ≈ 10⁷ rpm) overflow the inertia forces' squares.
+MAX_OMEGA = 1e6
+Omega = Annotated[float, number(-MAX_OMEGA, MAX_OMEGA, why="rad/s")]
+Eps = Annotated[float, number(-MAX_OMEGA**2, MAX_OMEGA**2, why="rad/s²")]
 Mass = Annotated[float, number(0.0, error=MassError)]
 Friction = Annotated[float, Spec("number", 0.0, 1.0, open_hi=True, error=FrictionError, why="0 ≤ f < 1")]
 JournalRadius = Annotated[float, number(0.0, error=FrictionError)]

@@ -4,16 +4,22 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Mapping
+from typing import Annotated, Mapping
 import numpy as np
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import PointPath, cross, dot, perp, relative, unit, vector_angle
 from ..mechanisms.base import output_axis  # Body(..., axis=output_axis): readers import it from here
 from ..motion import Motion, first_of
-from .model import (FRAME, Force, ForceModel, G, HigherPair, LoadError, Prismatic, Revolute, SelfLockingError,
-                    StructureError, Torque)
+from ..validate import Point, Spec, count, number, validated
+from ..validate import mechanism as instance_of
+from .model import (FRAME, Eps, Force, ForceModel, G, HigherPair, LoadError, Omega, Prismatic, Revolute,
+                    SelfLockingError, StructureError, Torque)
 
 __all__ = ["Reaction", "ForceResult", "solve", "virtual_work_torque", "output_axis"]
+
+AnyModel = Annotated[ForceModel, instance_of(ForceModel)]
+AnyMotion = Annotated[Motion, instance_of(Motion)]
+Loads = Annotated[tuple, Spec("items", expected=(Force, Torque))]
 
 
 def _evaluate(value, motion: Motion, shape: tuple, what: str) -> np.ndarray:
@@ -137,8 +143,9 @@ def _known_loads(model, motion, frames, loads, omega1, eps1, gravity) -> _Loads:
     return _Loads(force, moment, power)
 
 
-def virtual_work_torque(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1: float = 0.0,
-                        gravity=(0.0, -G)) -> np.ndarray:
+@validated
+def virtual_work_torque(model: AnyModel, motion: AnyMotion, loads: Loads = (), omega1: Omega = 1.0, eps1: Eps = 0.0,
+                        gravity: Point = (0.0, -G)) -> np.ndarray:
     """Frictionless balancing torque from the power balance alone (no reactions).
 
     All forces — gravity, d'Alembert inertia forces and couples, external loads — and
@@ -147,7 +154,7 @@ def virtual_work_torque(model: ForceModel, motion: Motion, loads=(), omega1: flo
     the load points and link angles: Zhukovsky's lever in analytic form.
     """
     frames = _frames(model, motion)
-    kl = _known_loads(model, motion, frames, loads, float(omega1), float(eps1), gravity)
+    kl = _known_loads(model, motion, frames, loads, omega1, eps1, gravity)
     crank = frames[model.crank]
     return -kl.power / crank.dth
 
@@ -281,8 +288,10 @@ def _sliding(p, frames, P, nrm):
     return dot(fb.velocity_at(P) - fa.velocity_at(P), t), t
 
 
-def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1: float = 0.0,
-          gravity=(0.0, -G), *, maxiter: int = 100, tol: float = 1e-12) -> ForceResult:
+@validated
+def solve(model: AnyModel, motion: AnyMotion, loads: Loads = (), omega1: Omega = 1.0, eps1: Eps = 0.0,
+          gravity: Point = (0.0, -G), *, maxiter: Annotated[int, count(1, 10_000)] = 100,
+          tol: Annotated[float, number(0.0, 1.0, open=True)] = 1e-12) -> ForceResult:
     """Reactions in every pair and the balancing torque, group by group (the SibSIU proceedings' method).
 
     Groups are solved in ``model.groups`` order (output first), then the crank. Each
@@ -303,9 +312,6 @@ def solve(model: ForceModel, motion: Motion, loads=(), omega1: float = 1.0, eps1
     """
     if np.ndim(motion.phi) == 0:
         return first_of(solve(model, motion.as_arrays(), loads, omega1, eps1, gravity, maxiter=maxiter, tol=tol))
-    omega1, eps1 = float(omega1), float(eps1)
-    if not (np.isfinite(omega1) and np.isfinite(eps1)):
-        raise DimensionError(f"crank speed and acceleration must be finite, got ω1 = {omega1}, ε1 = {eps1}")
     n = len(motion)
     pts = motion.points
     for p in model.pairs:

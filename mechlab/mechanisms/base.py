@@ -12,7 +12,7 @@ import numpy as np
 
 from ..errors import AssemblyError, DimensionError, MechanismError, RotationError
 from ..geometry import AnglePath, lift, relative, unit, vector_angle
-from ..motion import Motion, scalar_in_scalar_out
+from ..motion import AngularMotion, Motion, scalar_in_scalar_out
 from ..validate import Checked, Samples, mechanism, validated
 
 TWO_PI = 2.0 * np.pi
@@ -181,7 +181,8 @@ def bars(mechanism) -> tuple[Part, ...]:
     return tuple(Part("link", names, True) for names in mechanism.links)
 
 
-def output_axis(motion) -> tuple:
+@validated
+def output_axis(motion: Annotated[AngularMotion, mechanism(AngularMotion)]) -> tuple:
     """The output angle ψ with ψ′, ψ″: the axis of a link that turns with the output."""
     return motion.psi, motion.dpsi, motion.ddpsi
 

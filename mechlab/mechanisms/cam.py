@@ -25,6 +25,7 @@ from scipy.interpolate import PPoly, make_interp_spline
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_number, cross, dot, fixed_point, perp
 from ..motion import AngularMotion, LinearMotion, scalar_law
+from ..validate import check, count
 from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars
 
 __all__ = ["TranslatingRollerCam", "OscillatingRollerCam", "CamProfile", "Undercut", "CamUndercutError"]
@@ -534,5 +535,4 @@ def _check_common(cam) -> None:
                              f"got {type(cam.programme).__name__}")
     object.__setattr__(cam, "base_radius", check_length("base radius", cam.base_radius))
     object.__setattr__(cam, "roller_radius", check_length("roller radius", cam.roller_radius, allow_zero=True))
-    if int(cam.samples) != cam.samples or cam.samples < 720:
-        raise DimensionError(f"samples (profile nodes per turn) must be an integer ≥ 720, got {cam.samples!r}")
+    object.__setattr__(cam, "samples", check("samples", cam.samples, count(720, why="profile nodes per turn")))

@@ -15,17 +15,15 @@ import numpy as np
 from ..analysis.motion_laws import LAWS, RiseLaw
 from ..errors import DimensionError
 from ..geometry import AnglePath, check_length
+from ..validate import check, choice
 from ..mechanisms.base import TWO_PI
 
 __all__ = ["CamProgramme"]
 
 
-def _law(law) -> RiseLaw:
-    if isinstance(law, RiseLaw):
-        return law
-    if law not in LAWS:
-        raise DimensionError(f"unknown motion law {law!r}; known: {', '.join(LAWS)}")
-    return LAWS[law]
+def _law(name: str, law) -> RiseLaw:
+    """A RiseLaw, or the one :data:`LAWS` names."""
+    return law if isinstance(law, RiseLaw) else LAWS[check(name, law, choice(*LAWS))]
 
 
 @dataclass(frozen=True)
@@ -49,8 +47,9 @@ class CamProgramme:
         for name in ("rise", "ret"):
             object.__setattr__(self, name, check_length(f"{name} angle", getattr(self, name)))
         object.__setattr__(self, "outer_dwell", check_length("outer dwell", self.outer_dwell, allow_zero=True))
-        object.__setattr__(self, "law", _law(self.law))
-        object.__setattr__(self, "return_law", self.law if self.return_law is None else _law(self.return_law))
+        object.__setattr__(self, "law", _law("law", self.law))
+        object.__setattr__(self, "return_law", self.law if self.return_law is None else
+                           _law("return_law", self.return_law))
         total = self.rise + self.outer_dwell + self.ret
         if total > TWO_PI * (1 + 1e-12):
             raise DimensionError(

@@ -29,7 +29,8 @@ from .lambda_guiding import CircleGuide, StraightGuide
 from ..errors import InfeasibleDesignError
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
 from ..motion import scalar_law
-from ..validate import MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check, mechanism, number, validated
+from ..validate import (MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check, count, mechanism, number,
+                        validated)
 
 # A time ratio K (> 0), the working limit μ_min of a transmission angle (None: no limit), the guides
 MIN_SWING = 1e-6  # radians: a smaller swing β_m overflows the rocker's design
@@ -38,11 +39,14 @@ MuMin = Annotated[float | None, angle(0.0, np.pi / 2, optional=True)]
 Circle = Annotated[CircleGuide, mechanism(CircleGuide)]
 Straight = Annotated[StraightGuide, mechanism(StraightGuide)]
 Grid = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_GRID)]  # one axis of a scan
+DwellAngle = Annotated[float, angle(0.0, TWO_PI, open=True)]  # the crank angle 2α of a dwell
+SixBar = Annotated[LambdaSlottedSixBar, mechanism((LambdaRockerSixBar, LambdaSlottedSixBar))]
 
 __all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_turn", "time_ratio_far_angle", "rise_law", "mchv3_full_turn", "dwell_extent", "slot_residual_first_order", "mchv3_full_turn_best"]
 
 
-def time_ratio_far_angle(K: float, dwell: float) -> float:
+@validated
+def time_ratio_far_angle(K: TimeRatio, dwell: DwellAngle) -> float:
     """Crank angle φ_n from the end of the dwell to the far extreme: K = φ_n / (2π − 2α − φ_n),
     so φ_n = 2K(π − α)/(1 + K) (Kinitsky (1994), (14)-(15))."""
     alpha = dwell / 2
@@ -170,14 +174,16 @@ def mchv3_oscillating(guide: Straight, distance: Length) -> LambdaSlottedSixBar:
     return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), 0.0, guide.dwell)
 
 
-def mchv3_half_turn(guide: StraightGuide) -> LambdaSlottedSixBar:
+@validated
+def mchv3_half_turn(guide: Straight) -> LambdaSlottedSixBar:
     """МЧВ3-2М: pivot on the straight part of the path (at D0): 180° per crank turn with a dwell."""
     m = guide.mechanism
     P = m.coupler_point(np.array([np.pi]))[0]
     return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), 0.0, guide.dwell)
 
 
-def rise_law(mech, dwell: float, n: int = 4001):
+@validated
+def rise_law(mech: SixBar, dwell: DwellAngle, n: Annotated[int, count(2)] = 4001):
     """Output law over the rise: from the end of the dwell (φ = π + α) to the far extreme.
 
     Returns (φ, ψ, ψ', ψ'') sampled on n points, ready for
@@ -232,7 +238,9 @@ def mchv3_full_turn(guide: Straight, beyond: Distance = 0.06, depth: Length = 0.
     return best[1]
 
 
-def dwell_extent(mech, tol: float = 0.02, n: int = 2881) -> float:
+@validated
+def dwell_extent(mech: SixBar, tol: Annotated[float, number(0.0, 1.0, open=True)] = 0.02,
+                 n: Annotated[int, count(3)] = 2881) -> float:
     """Crank angle around φ = π over which |ψ'| stays below tol·max|ψ'| (the usable dwell)."""
     phi = mech.cycle(n)
     d = np.abs(mech.motion(phi).dpsi)

@@ -266,7 +266,8 @@ def slider_report(mech: Slider, dwell: OptionalDwell = None) -> SliderReport:
 @validated
 def slider_rise(mech: Slider, dwell: OptionalDwell = None, n: Annotated[int, Spec("count", 3, 10**6)] = 4001):
     """(φ, s, s′, s″) over the rise, from the end of the dwell to the far extreme (:func:`.sixbars.rise_law`)."""
-    return rise_law(_AsAngle(mech), mech.dwell if dwell is None else dwell, n)
+    # the arguments are checked above; rise_law's own check admits the rotary six-bars only
+    return rise_law.__wrapped__(_AsAngle(mech), mech.dwell if dwell is None else dwell, n)
 
 
 @validated

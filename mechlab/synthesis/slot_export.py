@@ -30,7 +30,8 @@ from typing import Annotated, Any
 
 import numpy as np
 
-from ..errors import MechanismError
+from ..errors import DimensionError, MechanismError
+from ..mechanisms.cam import OscillatingRollerCam, TranslatingRollerCam
 from ..validate import FilePath, Spec, count, length, validated
 from ..validate import mechanism as mechanism_of
 from .dwell_slot import DwellSlotMechanism
@@ -93,6 +94,7 @@ def check_roller(mechanism, roller_radius: float) -> None:
 Designed = Annotated[Any, mechanism_of(DwellSlotMechanism)]
 Roller = Annotated[float | None, length(zero=True, optional=True, error=SlotUndercutError)]
 HalfTurnSamples = Annotated[int, count(2)]
+DiscCam = Annotated[Any, mechanism_of((TranslatingRollerCam, OscillatingRollerCam))]
 
 
 @validated
@@ -143,13 +145,26 @@ class Columns:
         return self.values[self.names.index(name)]
 
 
-def read_csv(path_or_text) -> Columns:
-    """Columns of a CSV written by :func:`write_csv` or :func:`write_cam_csv` as float arrays."""
+@validated
+def read_csv(path_or_text: FilePath) -> Columns:
+    """Columns of a CSV written by :func:`write_csv` or :func:`write_cam_csv` as float arrays.
+
+    ``path_or_text`` is a file's path, or the CSV text itself (it holds a line break); a
+    missing file or text that is not such a table raises DimensionError naming it.
+    """
     text = str(path_or_text)
     if "\n" not in text:
+        if not Path(text).is_file():
+            raise DimensionError(f"path_or_text = {text!r} is neither a file nor CSV text (no line break)")
         text = Path(text).read_text()
     rows = list(csv.reader(io.StringIO(text)))
-    head, body = rows[0], np.array(rows[1:], dtype=float)
+    try:
+        head, body = rows[0], np.array(rows[1:], dtype=float)
+    except (IndexError, ValueError) as err:
+        raise DimensionError(f"path_or_text holds no table of numbers under one header row: {err}") from None
+    if body.ndim != 2 or body.shape[1] != len(head) or not np.all(np.isfinite(body)):
+        raise DimensionError(f"path_or_text must hold {len(head)} finite numbers a row under its header "
+                             f"{', '.join(head)}")
     return Columns(tuple(head), tuple(body[:, j] for j in range(len(head))))
 
 
@@ -194,7 +209,9 @@ def write_dxf(mechanism: Designed, path: FilePath, roller_radius: Roller = None,
     return doc
 
 
-def write_cam_csv(cam, path=None, n: int = 721) -> str:
+@validated
+def write_cam_csv(cam: DiscCam, path: Annotated[Any, Spec("path", optional=True)] = None,
+                  n: HalfTurnSamples = 721) -> str:
     """A disc cam's profile as CSV (columns theta_deg, x_pitch, y_pitch, x, y, nx, ny, curvature,
     pressure_angle_deg; x, y the surface, n the outward normal, curvature the pitch curve's), at n
     cam angles over one turn; written to ``path`` if given; returns the text."""
@@ -212,7 +229,8 @@ def write_cam_csv(cam, path=None, n: int = 721) -> str:
     return text
 
 
-def write_cam_dxf(cam, path, n: int = 721):
+@validated
+def write_cam_dxf(cam: DiscCam, path: FilePath, n: HalfTurnSamples = 721):
     """Write a disc cam as DXF (R2010, units mm) with ezdxf: the closed profile, the pitch curve and
     the base circle, at n cam angles over one turn; returns the ezdxf document."""
     import ezdxf

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...geometry import AnglePath, PointPath, as_angles, perp, unit
+from ...geometry import AnglePath, PointPath, perp, unit
 from .homogeneous import Centre, CentreAtInfinity, in_frame
 from .instant import InstantCentres, instant_centres
 from ...mechanisms.base import AnyMechanism
@@ -99,6 +99,15 @@ class Centrodes:
         return self._place(self.moving, self.link, i)
 
 
+def _two_links(ic: InstantCentres, link: str, reference: str) -> None:
+    """``link`` and ``reference`` name two different links of the mechanism, else MechanismError naming them."""
+    for param, name in (("link", link), ("reference", reference)):
+        if name not in ic.links:
+            raise MechanismError(f"{param} must be one of the links {', '.join(ic.links)}, got {name!r}")
+    if link == reference:
+        raise MechanismError(f"link and reference must be two different links, got {link!r} twice")
+
+
 @scalar_law
 @validated
 def centrodes(mechanism: AnyMechanism, link: Name, reference: Name = "frame", phi: OptionalAngles = None,
@@ -106,9 +115,7 @@ def centrodes(mechanism: AnyMechanism, link: Name, reference: Name = "frame", ph
     """Fixed and moving centrodes of ``link`` relative to ``reference`` (link names of
     :func:`instant_centres`, e.g. "coupler" and "frame" of a four-bar)."""
     ic = instant_centres(mechanism, phi, method)
-    for param, name in (("link", link), ("reference", reference)):
-        if name not in ic.links:
-            raise MechanismError(f"{param} must be one of the links {', '.join(ic.links)}, got {name!r}")
+    _two_links(ic, link, reference)
     P = ic(link, reference)
     poses = ic.structure.poses
     o_r, th_r = poses[ic.links[ic.index(reference)]]
@@ -116,7 +123,8 @@ def centrodes(mechanism: AnyMechanism, link: Name, reference: Name = "frame", ph
     return Centrodes(ic, link, reference, P, in_frame(P, o_r.p, th_r.theta), in_frame(P, o_l.p, th_l.theta))
 
 
-def rolling_speeds(mechanism, link: str, reference: str = "frame", phi=None):
+@validated
+def rolling_speeds(mechanism: AnyMechanism, link: Name, reference: Name = "frame", phi: OptionalAngles = None):
     """Arc-length rates |dP/dφ| along the fixed and the moving centrode (formulas (7.8), (7.9)).
 
     Returns ``(fixed_speed, moving_speed, xi, z)``: the two rates (equal: rolling without
@@ -124,8 +132,9 @@ def rolling_speeds(mechanism, link: str, reference: str = "frame", phi=None):
     complex numbers. Uses the link's origin and the point at one unit of length along
     its x-axis as A and B, both seen from the reference link.
     """
-    phi = mechanism.cycle() if phi is None else as_angles(phi)
+    phi = mechanism.cycle() if phi is None else phi
     ic = instant_centres(mechanism, phi, method="velocity")
+    _two_links(ic, link, reference)
     poses = ic.structure.poses
     o_r, th_r = poses[ic.links[ic.index(reference)]]
     o_l, th_l = poses[ic.links[ic.index(link)]]

@@ -19,7 +19,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...errors import SingularityError
+from ...errors import DimensionError, SingularityError
+from ...validate import Checked, Name, Spec, check
+
+ROWS = Spec("points", lo=0, width=3)  # homogeneous rows (x, y, w)
 
 # A meet farther than 1/INFINITY_TOL mechanism sizes away counts as a point at infinity.
 INFINITY_TOL = 1e-12
@@ -40,16 +43,29 @@ def _fmt_phi(phi, i) -> str:
 
 
 @dataclass(frozen=True, eq=False)
-class Centre:
+class Centre(Checked):
     """An instantaneous centre over n crank angles, in normalised homogeneous coordinates.
 
     ``h`` is ``(n, 3)``: rows ``(x, y, 1)`` for finite points and ``(dx, dy, 0)`` with a
     unit direction for points at infinity; ``(3,)`` (one row) at a scalar crank angle. Build one with :func:`finite`,
-    :func:`at_infinity` or :func:`normalise`.
+    :func:`at_infinity` or :func:`normalise`. Raises DimensionError naming ``h`` for rows that are not
+    normalised so (``xy`` would otherwise read a wrong position).
     """
 
     h: np.ndarray
-    name: str = "P"
+    name: Name = "P"
+
+    def __post_init__(self):
+        super().__post_init__()
+        one = np.ndim(self.h) == 1  # one row, at a scalar crank angle
+        rows = check("h", np.atleast_2d(self.h) if one else self.h, ROWS)
+        w, r = rows[:, 2], np.hypot(rows[:, 0], rows[:, 1])
+        bad = ~((w == 1.0) | ((w == 0.0) & (np.abs(r - 1.0) <= 1e-9)))
+        if np.any(bad):
+            i = int(np.argmax(bad))
+            raise DimensionError(f"h[{i}] = {rows[i].tolist()} of centre {self.name} must be normalised: "
+                                 f"(x, y, 1) for a finite point or (dx, dy, 0) with a unit direction")
+        object.__setattr__(self, "h", rows[0] if one else rows)
 
     def __len__(self) -> int:
         return len(np.atleast_2d(self.h))

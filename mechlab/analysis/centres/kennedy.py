@@ -18,15 +18,19 @@ centre degenerates, :class:`~mechlab.analysis.centres.homogeneous.IndeterminateC
 from __future__ import annotations
 
 from itertools import combinations
-from typing import Mapping, Sequence
+from typing import Annotated, Mapping, Sequence
 
 import numpy as np
 
-from ...errors import MechanismError
+from ...errors import DimensionError, MechanismError, SingularityError
+from ...validate import Length, Spec, count, validated
 from ...geometry import perp
 from .homogeneous import COINCIDENT_TOL, Centre, IndeterminateCentre, meet_quality, normalise
 
 Pair = tuple[int, int]
+
+
+Snapshots = Annotated[np.ndarray, Spec("points", lo=1)]  # (n, 2): one point per snapshot
 
 
 def pair(i: int, j: int) -> Pair:
@@ -34,16 +38,15 @@ def pair(i: int, j: int) -> Pair:
     return (i, j) if i < j else (j, i)
 
 
-def centre_count(n_links: int) -> int:
+@validated
+def centre_count(n_links: Annotated[int, count(2, why="a mechanism has at least 2 links, frame included")]) -> int:
     """Number of instantaneous centres of n links, frame included: n(n - 1)/2."""
-    if int(n_links) != n_links or n_links < 2:
-        raise MechanismError(f"a mechanism has at least 2 links (frame included), got {n_links!r}")
-    return int(n_links) * (int(n_links) - 1) // 2
+    return n_links * (n_links - 1) // 2
 
 
-def _lines(p: Centre, q: Centre, scale: float) -> tuple[np.ndarray, np.ndarray]:
-    """Lines through p and q (normalised) and a mask of where they are defined."""
-    L = np.cross(p.h, q.h)
+def _lines(p: np.ndarray, q: np.ndarray, scale: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lines through the homogeneous points p and q (normalised) and a mask of where they are defined."""
+    L = np.cross(p, q)
     ab = np.hypot(L[:, 0], L[:, 1])
     norm = np.where(ab > COINCIDENT_TOL, ab, np.abs(L[:, 2]))
     ok = norm > COINCIDENT_TOL
@@ -57,7 +60,7 @@ def _candidate_lines(centres, valid, normals, i, j, n_links, label):
         if k in (i, j) or pair(i, k) not in centres or pair(k, j) not in centres:
             continue
         a, b = pair(i, k), pair(k, j)
-        L, ok = _lines(Centre(centres[a]), Centre(centres[b]), 1.0)
+        L, ok = _lines(centres[a], centres[b], 1.0)  # rows not yet found are masked
         out.append((f"{label(i, k)}{label(k, j)}", L, ok & valid[a] & valid[b]))
     if (i, j) in normals:
         L = normals[(i, j)]
@@ -157,7 +160,9 @@ def centres_from_twists(omega: Sequence[np.ndarray], v0: Sequence[np.ndarray], *
     return out
 
 
-def five_link_higher_pair(P15, P12, P23, P34, P45, contact, normal, scale: float = 1.0):
+@validated
+def five_link_higher_pair(P15: Snapshots, P12: Snapshots, P23: Snapshots, P34: Snapshots, P45: Snapshots,
+                          contact: Snapshots, normal: Snapshots, scale: Length = 1.0):
     """Kozhevnikov, Fig. 7.3: a five-link mechanism (5 = frame) with pins P15, P12, P23, P34, P45
     and a higher pair between links 2 and 4 touching at ``contact`` with common normal
     ``normal``; every argument is (n, 2) for n snapshots.
@@ -169,10 +174,13 @@ def five_link_higher_pair(P15, P12, P23, P34, P45, contact, normal, scale: float
     along the normal). The twists are the independent check of the construction.
     """
     pins = {(0, 4): P15, (0, 1): P12, (1, 2): P23, (2, 3): P34, (3, 4): P45}
-    pins = {k: np.asarray(v, dtype=float) for k, v in pins.items()}
-    contact = np.asarray(contact, dtype=float)
-    normal = np.asarray(normal, dtype=float)
     n = len(contact)
+    given = {"P15": P15, "P12": P12, "P23": P23, "P34": P34, "P45": P45, "normal": normal}
+    for name, rows in given.items():
+        if len(rows) != n:
+            raise DimensionError(f"{name} must hold one row per snapshot, as contact does ({n}), got {len(rows)}")
+    if np.any(np.hypot(normal[:, 0], normal[:, 1]) == 0.0):
+        raise DimensionError("normal must be a non-zero direction in every snapshot")
     from .homogeneous import finite, line_with_direction
     known = {k: finite(v) for k, v in pins.items()}
     lines = {(1, 3): line_with_direction(contact, normal)}
@@ -204,7 +212,12 @@ def five_link_higher_pair(P15, P12, P23, P34, P45, contact, normal, scale: float
     for comp in (0, 1):  # the contact: (v2(A) - v4(A))·n = 0
         add_motion(row, 1, contact, normal[:, comp], comp)
         add_motion(row, 3, contact, -normal[:, comp], comp)
-    sol = np.linalg.solve(M, rhs[..., None])[..., 0]
+    try:
+        sol = np.linalg.solve(M, rhs[..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        bad = int(np.argmin(np.abs(np.linalg.det(M))))
+        raise SingularityError(f"the velocity constraints are singular in snapshot {bad}: the links' twists are "
+                               f"not fixed by ω1 (the pins and the contact are in a dead-centre position)") from None
     omega = [np.ones(n), sol[:, 0], sol[:, 1], sol[:, 2], np.zeros(n)]
     v0 = [sol[:, 3:5], sol[:, 5:7], sol[:, 7:9], sol[:, 9:11], np.zeros((n, 2))]
     by_twists = centres_from_twists(omega, v0, scale=scale, names=names, known=known)
