@@ -192,7 +192,7 @@ def test_the_table_shows_and_exports(tmp_path):
     by_power = comp.ranked("motor_power")
     powers = [c.criteria.motor_power for c in by_power.candidates]
     assert powers == sorted(powers)
-    with pytest.raises(ml.MechanismError, match="ranked"):
+    with pytest.raises(ml.MechanismError, match="by must be one of"):
         comp.ranked("colour")
 
 

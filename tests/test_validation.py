@@ -241,3 +241,144 @@ def test_an_indexing_measure_of_a_rocker_is_refused_not_infinite():
 def test_lambda_guiding_inputs_are_refused_by_name(call, error, match):
     with pytest.raises(error, match=match):
         call()
+
+
+# -- the exports the fuzz did not reach before (issue 16, item 1), and what its explore mode found ------------
+@pytest.mark.parametrize("call, error, match", [
+    (lambda: ml.centre_count(1.5), DimensionError, "n_links must be a whole number ≥ 2"),
+    (lambda: ml.law_difference(ml.FourBar(1, 3, 3, 4).motion([1.0, 2.0]), 3), TypeError, "m2 must be a Motion"),
+    (lambda: ml.law_difference(*(ml.FourBar(1, 3, 3, 4).motion(np.zeros(k)) for k in (2, 3))), DimensionError,
+     "over the same"),                                                     # was a broadcasting ValueError
+    (lambda: ml.rolling_speeds(ml.FourBar(1, 3, 3, 4), "coupler", reference="coupler"), MechanismError,
+     "two different links"),                                               # was CentreAtInfinity "translates"
+    (lambda: ml.nearest_assembly(ml.FourBar(1, 3, 3, 4), math.nan, B=(2.8, 2.7)), DimensionError, "phi must be"),
+    (lambda: ml.five_link_higher_pair(*np.array([[[1, 0]], [[-1, 0]], [[2, -2]], [[-1, 2]], [[-1, 1]], [[-1, 2]],
+                                                 [[0, 2]]], float)), ml.SingularityError,
+     "singular in snapshot 0"),                                            # was LinAlgError "Singular matrix"
+    (lambda: ml.read_csv("no such file"), DimensionError, "neither a file nor CSV text"),  # was FileNotFoundError
+    (lambda: ml.read_csv("a,b\n1,x\n"), DimensionError, "path_or_text holds no table"),  # was ValueError
+    (lambda: ml.read_csv(3), TypeError, "path_or_text must be a file path"),
+    (lambda: ml.time_ratio_far_angle(1.0, math.nan), DimensionError, "dwell must be finite"),
+    (lambda: ml.dwell_extent(ml.FourBar(1, 3, 3, 4)), TypeError, "mech must be a LambdaRockerSixBar"),
+    (lambda: ml.rise_law(ml.mchv1(guides()[0], 1.0, 20 * DEG), 2 * np.pi), DimensionError, "dwell must be <"),
+    (lambda: ml.TranslatingRollerCam(ml.CamProgramme(10, 1, 1), 40, 8, samples=10**12), DimensionError,
+     "samples must be ≤"),                                                 # was MemoryError
+    (lambda: ml.CamProgramme(10, 1, 1, return_law=math.nan), DimensionError, "return_law must be one of"),
+    (lambda: ml.CamProgramme(10, 1, 1, law=np.array([1.0])), DimensionError, "law must be one of"),  # unhashable
+    (lambda: ml.write_cam_csv(ml.FourBar(1, 3, 3, 4)), TypeError, "cam must be a TranslatingRollerCam"),
+    (lambda: ml.forces.motor_torque(np.array([1.0]), 2.0, efficiency=0), ml.DriveError, "efficiency must be >"),
+    (lambda: ml.forces.cycle_mean(np.ones(3), np.zeros(3)), DimensionError, "samples of one interval"),  # was nan
+    (lambda: ml.forces.solve(ml.model_for(ml.FourBar(1, 3, 3, 4)), ml.FourBar(1, 3, 3, 4).motion([1.0]),
+                             maxiter=0), DimensionError, "maxiter must be a whole number ≥ 1"),
+    (lambda: ml.forces.output_axis(ml.SliderCrank(1, 3).motion([1.0])), TypeError, "motion must be a AngularMotion"),
+    (lambda: ml.motion_laws.law_invariants(math.nan), DimensionError, "law must be one of"),  # was a TypeError
+    (lambda: ml.motion_laws.law_invariants(dataclasses.replace(ml.motion_laws.LAWS["cosine"], dy=lambda x: x / 0)),
+     DimensionError, "gives NaN or inf"),                                  # was nan invariants
+    (lambda: ml.motion_laws.rise_invariants(np.array([0.0, 1e300]), np.array([0.0, 1e-300]), np.ones(2),
+                                            np.ones(2)), DimensionError, "the invariants overflow"),  # was inf
+])
+def test_newly_fuzzed_exports_refuse_by_name(call, error, match):
+    with np.errstate(divide="ignore", invalid="ignore"), pytest.raises(error, match=match):
+        call()
+
+
+def test_a_centre_refuses_rows_that_are_not_normalised():
+    ok = ml.Centre(np.array([[1.0, 2.0, 1.0], [0.6, 0.8, 0.0]]), "P13")
+    assert ok.xy[0].tolist() == [1.0, 2.0] if ok.finite.all() else ok.direction[1].tolist() == [0.6, 0.8]
+    for h, match in (([[2.0, 4.0, 2.0]], r"h\[0\] = \[2.0, 4.0, 2.0\] of centre P must be normalised"),
+                     ([[3.0, 4.0, 0.0]], "unit direction"), ([[np.nan, 0.0, 1.0]], "h must be finite"),
+                     ([[1.0, 2.0]], r"h must be an \(m, 3\) array"), ("abc", r"h must be an \(m, 3\) array")):
+        with pytest.raises(DimensionError, match=match):
+            ml.Centre(np.array(h) if not isinstance(h, str) else h)
+    with pytest.raises(DimensionError, match="name must be a non-empty name"):
+        ml.Centre(np.array([[1.0, 2.0, 1.0]]), name=None)
+
+
+def test_design_inputs_go_through_the_layer():
+    D = ml.design
+    spec = D.Specification("index", 0.75, stations=4)
+    with pytest.raises(D.SpecificationError, match="overload must be finite, got nan"):
+        D.Specification("index", 0.75, stations=4, overload=math.nan)
+    with pytest.raises(D.SpecificationError, match=r"inertia must be a real number \(complex"):
+        D.Specification("index", 0.75, stations=4, inertia=np.complex128(1 + 1j))
+    with pytest.raises(D.SpecificationError, match="amplitude must be ≤ π"):
+        D.Specification("swing", 0.3, amplitude=4.0)
+    with pytest.raises(DimensionError, match="parts must be a whole number ≥ 0"):
+        D.Structure(-1, 2, 2)
+    with pytest.raises(TypeError, match="families must be a tuple of str"):
+        D.candidates(spec, "external Geneva")
+    with pytest.raises(DimensionError, match="phase must be ≤"):
+        D.check_design(spec, ml.ExternalGeneva(4, 1.0), phase=10.0)
+    with pytest.raises(DimensionError, match=r"circles\[0\] radius must be > 0"):
+        D.evaluate(ml.ExternalGeneva(4, 1.0), spec, scale=1.0, structure=D.Structure(2, 2, 2), circles=(((0, 0), -1),))
+    comparison = D.candidates(spec, ["external Geneva"])
+    with pytest.raises(DimensionError, match="by must be one of"):
+        comparison.ranked(np.array([1.0, 2.0]))                   # explore mode: a raw ValueError ("truth value")
+    with pytest.raises(TypeError, match="path must be a file path"):
+        comparison.to_csv(3)                                      # explore mode: wrote to file descriptor 3
+
+
+# -- widgets: every explorer's controls driven to their ends ------------------------------------------------
+def _widget_modules():
+    import importlib
+    import pkgutil
+
+    from mechlab import widgets
+    return [widgets] + [importlib.import_module(f"mechlab.widgets.{m.name}") for m in pkgutil.iter_modules(widgets.__path__)]
+
+
+def _explorer_factories() -> dict:
+    """Every public function of mechlab.widgets that makes an explorer (named …_explorer or …_equivalence)."""
+    return {f"{mod.__name__}.{name}": fn for mod in _widget_modules() for name, fn in vars(mod).items()
+            if callable(fn) and not name.startswith("_") and getattr(fn, "__module__", "") == mod.__name__
+            and not isinstance(fn, type) and name.endswith(("_explorer", "_equivalence"))}
+
+
+# the factories that need an argument; each gets a specification its explorer starts from
+FACTORY_ARGS = {"choosing_explorer": lambda: (ml.design.Specification("index", 0.75, stations=4, inertia=1.0),)}
+
+
+def _ends(widget) -> list:
+    """The values a control can be driven to at its ends: a slider's min and max, every option of a choice."""
+    if hasattr(widget, "min"):
+        return [widget.min, widget.max]
+    return [option[1] if isinstance(option, tuple) else option for option in widget.options]
+
+
+@pytest.mark.parametrize("name", sorted(_explorer_factories()))
+def test_every_explorer_survives_its_controls_at_their_ends(name):
+    """Each slider to its minimum and its maximum (each choice to every option), one at a time, then back:
+    no exception escapes a control (an impossible geometry is shown as the explorer's message), and the
+    explorer recovers its first state."""
+    import matplotlib.pyplot as plt
+
+    fn = _explorer_factories()[name]
+    ex = fn(*FACTORY_ARGS.get(name.rsplit(".", 1)[1], tuple)())
+    first = ex.message
+    controls = dict(ex.sliders)
+    for extra in ("angle", "rank"):  # the crank angle; the choosing explorer's ranking
+        if hasattr(ex, extra):
+            controls[extra] = getattr(ex, extra)
+    assert controls, f"{name} has no controls"
+    for key, w in controls.items():
+        start = w.value
+        for value in _ends(w):
+            w.value = value  # an exception here escaped the explorer's rebuild
+            assert isinstance(ex.message, str), (key, value)
+        w.value = start
+        assert ex.message == first, f"{name}: {key} back at {start} leaves {ex.message!r}"
+    plt.close("all")
+
+
+def test_every_explorer_class_is_driven_to_its_ends():
+    """Every explorer class mechlab.widgets defines is made by a factory the test above drives."""
+    classes = {cls for mod in _widget_modules() for n, cls in vars(mod).items()
+               if isinstance(cls, type) and n.endswith("Explorer") and cls.__module__ == mod.__name__
+               and n != "Explorer"}  # the base of the others, never made alone
+    made = set()
+    for name, fn in _explorer_factories().items():
+        made.add(type(fn(*FACTORY_ARGS.get(name.rsplit(".", 1)[1], tuple)())))
+    import matplotlib.pyplot as plt
+    plt.close("all")
+    assert len(_explorer_factories()) >= 17
+    assert classes <= made, f"explorer classes no factory makes: {classes - made}"

@@ -29,7 +29,20 @@ from scipy.optimize import minimize_scalar
 
 from ..errors import DimensionError, MechanismError
 from ..motion import Table
-from ..validate import MAX_SAMPLES, Checked, Flag, Function, Name, Real, Spec, check, choice, count, number, validated
+from ..validate import (
+    MAX_SAMPLES,
+    Checked,
+    Flag,
+    Function,
+    Name,
+    Real,
+    Spec,
+    check,
+    choice,
+    count,
+    number,
+    validated,
+)
 
 Sampled = Annotated[np.ndarray, Spec("samples", lo=2, hi=MAX_SAMPLES)]  # one value a crank angle
 Analogs = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)]

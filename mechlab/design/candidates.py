@@ -10,7 +10,7 @@ from typing import Annotated
 import numpy as np
 
 from ..errors import MechanismError
-from ..validate import Length, Spec, validated
+from ..validate import Length, Spec, choice, validated
 from .criteria import AnyMovable, Criteria, Phase, Structure, evaluate
 from .families import FAMILIES, Design, Unsuitable
 from .spec import IMPACTS, AnySpecification, Specification
@@ -55,6 +55,9 @@ COLUMNS = (
     ("motor_power", "motor", "W", "{:.3g}"),
     ("structure", "parts and pairs", "", "{}"),
 )
+
+
+RANKABLE = tuple(k for k, *_ in COLUMNS if k not in ("impact", "structure"))  # the numeric columns
 
 
 def _value(c: Criteria, key: str):
@@ -111,11 +114,10 @@ class Comparison:
     candidates: tuple[Candidate, ...]
     refusals: tuple[Refusal, ...]
 
-    def ranked(self, by: str = "motor_power") -> "Comparison":
-        """The same comparison with the candidates ordered by ``by`` (smallest first; a missing J last)."""
-        keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure")]
-        if by not in keys:
-            raise MechanismError(f"ranked(by=...) takes one of {keys}, got {by!r}")
+    @validated
+    def ranked(self, by: Annotated[str, choice(*RANKABLE)] = "motor_power") -> "Comparison":
+        """The same comparison with the candidates ordered by ``by`` (one of :data:`RANKABLE`, smallest first;
+        a missing J last)."""
 
         def key(c):
             v = _value(c.criteria, by)

@@ -17,8 +17,8 @@ from typing import Annotated, Protocol, runtime_checkable
 import numpy as np
 
 from ..analysis.motion_laws import rise_invariants
-from ..kinetostatics.drive import drive
 from ..errors import DimensionError
+from ..kinetostatics.drive import drive
 from ..mechanisms.base import TWO_PI
 from ..validate import Checked, Length, Spec, angle, check, count, length, validated
 from ..validate import mechanism as instance_of

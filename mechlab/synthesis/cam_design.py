@@ -15,8 +15,8 @@ import numpy as np
 from ..analysis.motion_laws import LAWS, RiseLaw
 from ..errors import DimensionError
 from ..geometry import AnglePath, check_length
-from ..validate import check, choice
 from ..mechanisms.base import TWO_PI
+from ..validate import check, choice
 
 __all__ = ["CamProgramme"]
 
