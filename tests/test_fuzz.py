@@ -243,6 +243,7 @@ CASES = {
     # mechlab.motion_laws
     "motion_laws.RiseLaw": lambda: (ML.RiseLaw, tuple(fields_of(ML.LAWS["cycloidal (sine)"])), {}),
     "motion_laws.law_invariants": lambda: (ML.law_invariants, ("cycloidal (sine)",), {"n": 2001, "signed": True}),
+    "motion_laws.invariants": lambda: (ML.invariants, (2.0, 0.5, np.sin(PHI), np.cos(PHI)), {"signed": True}),
     "motion_laws.rise_invariants": lambda: (ML.rise_invariants, ml.rise_law(designs()[0], 120 * DEG, n=101),
                                             {"signed": False}),
     "motion_laws.thesis_cam_rows": lambda: (ML.thesis_cam_rows, (), {}),
@@ -387,7 +388,7 @@ def test_every_parameter_replaced(name):
 # Exported classes whose instances are results, built by the library and never from user input (a Motion is
 # made by motion(), a Criteria by evaluate()); every other exported callable needs a case above.
 RESULTS = {"Mechanism", "Grashof", "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
-           "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive", "motion_laws.Invariants",
+           "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive", "motion_laws.Invariants", "motion_laws.PrintedInvariants",
            "design.Comparison", "design.Candidate", "design.Refusal", "design.DesignReport", "design.Verdict",
            "design.Criteria", "design.Design"}
 # Rewritten by the Chebyshev chapter's issue (15) on a parallel branch, and seen here to raise raw errors
