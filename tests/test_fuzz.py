@@ -107,6 +107,7 @@ def fields_of(obj):
 
 fb = ml.FourBar(1.0, 3.0, 3.0, 4.0)
 PHI = np.linspace(0.1, 6.0, 7)
+TURN = np.linspace(0.0, 2 * np.pi, 9)
 
 # name: (callable, args, kwargs, examples)
 CASES = {
@@ -237,7 +238,7 @@ CASES = {
     "forces.output_axis": lambda: (F.output_axis, (fb.motion(PHI),), {}),
     "forces.slender_bar": lambda: (F.slender_bar, (2.0, 0.3), {}),
     "forces.motor_torque": lambda: (F.motor_torque, (np.array([1.0, -2.0, 3.0]), 4.0), {"efficiency": 0.8}),
-    "forces.cycle_mean": lambda: (F.cycle_mean, (np.cos(PHI) + 2, PHI), {}),
+    "forces.cycle_mean": lambda: (F.cycle_mean, (np.cos(TURN) + 2, TURN), {}),  # a mean over an interval
     "forces.rpm_to_rad": lambda: (F.rpm_to_rad, (120.0,), {}),
     "forces.press_load": lambda: (F.press_load, (2000.0,), {"work_fraction": 0.3}),
     # mechlab.motion_laws

@@ -123,6 +123,7 @@ def centrodes(mechanism: AnyMechanism, link: Name, reference: Name = "frame", ph
     return Centrodes(ic, link, reference, P, in_frame(P, o_r.p, th_r.theta), in_frame(P, o_l.p, th_l.theta))
 
 
+@scalar_law
 @validated
 def rolling_speeds(mechanism: AnyMechanism, link: Name, reference: Name = "frame", phi: OptionalAngles = None):
     """Arc-length rates |dP/dφ| along the fixed and the moving centrode (formulas (7.8), (7.9)).
