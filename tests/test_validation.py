@@ -272,6 +272,12 @@ def test_lambda_guiding_inputs_are_refused_by_name(call, error, match):
                              maxiter=0), DimensionError, "maxiter must be a whole number ≥ 1"),
     (lambda: ml.forces.output_axis(ml.SliderCrank(1, 3).motion([1.0])), TypeError, "motion must be a AngularMotion"),
     (lambda: ml.motion_laws.law_invariants(math.nan), DimensionError, "law must be one of"),  # was a TypeError
+    (lambda: ml.band_touches(np.ones(3), None), DimensionError, "E must be a number, got None"),  # was a TypeError
+    (lambda: ml.circle_guiding(150 * DEG, 0.9, 120 * DEG, guess=(1 + 1j, 1, 1, 1)), DimensionError,
+     r"guess\[0\] must be a real number"),                                  # was a TypeError from float()
+    (lambda: ml.transmission_lines(math.nan), DimensionError, "mu_min must be finite"),  # gave NaN lines
+    (lambda: ml.transmission_lines(n=math.nan), DimensionError, "n must be"),             # was a TypeError
+    (lambda: ml.thesis_iteration(1e-300, 0.9, 60 * DEG), ml.SynthesisError, "did not converge"),  # was LinAlgError
     (lambda: ml.motion_laws.law_invariants(dataclasses.replace(ml.motion_laws.LAWS["cosine"], dy=lambda x: x / 0)),
      DimensionError, "gives NaN or inf"),                                  # was nan invariants
     (lambda: ml.motion_laws.rise_invariants(np.array([0.0, 1e90]), np.array([0.0, 1e-90]), np.ones(2),

@@ -19,6 +19,7 @@ The book's chapter on Chebyshev dwell synthesis derives it.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Annotated
 from functools import lru_cache
 import numpy as np
 from scipy.optimize import brentq, least_squares, minimize, minimize_scalar, root
@@ -26,7 +27,7 @@ from scipy.optimize import brentq, least_squares, minimize, minimize_scalar, roo
 from ..errors import DimensionError, MechanismError, NoDesignError, SynthesisError
 from ..geometry import check_length, check_number
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
-from ..validate import Flag, Spec, check, mechanism
+from ..validate import Flag, Spec, angle, check, count, mechanism, number, validated
 
 __all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "ThesisIteration",
            "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches",
@@ -458,6 +459,10 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
     minimax = check("minimax", minimax, Flag.__metadata__[0])
+    if guess is not None:
+        if isinstance(guess, str) or np.ndim(guess) != 1 or len(guess) != 4:
+            raise DimensionError(f"guess must be (r, k, t3, t2), got {guess!r:.60}")
+        guess = tuple(check(f"guess[{i}]", v, number()) for i, v in enumerate(guess))
     return _circle(delta, a, dwell, guess, minimax)
 
 
@@ -575,7 +580,10 @@ def thesis_iteration(delta: float, a: float, dwell: float, tol: float = 1e-6, ma
     r0, rows = _initial_r(a), []
     for step in range(1, maxiter + 1):
         mu0, mu1 = _mu_at(r0, a, [0.0, alpha])
-        (m3, m2), (p, q), res = _touch_angles(delta, mu0, mu1, _mu_at(r0, a, [alpha / 2, alpha * np.sqrt(3) / 2]))
+        try:
+            (m3, m2), (p, q), res = _touch_angles(delta, mu0, mu1, _mu_at(r0, a, [alpha / 2, alpha * np.sqrt(3) / 2]))
+        except np.linalg.LinAlgError:  # the scheme's touch equations are singular here (e.g. δ → 0)
+            break
         d0 = 2 * np.sin(mu0 / 2)
         r1 = 0.5 * (d0 - (q / p) / d0)
         rows.append((r0, r1, mu0, mu1, m3, m2))
@@ -711,7 +719,9 @@ def _polish_straight(delta, a, alpha, r):
         return np.ptp([v for _, v in _extremes(rr, a, delta, alpha)])
 
     return float(sol.x[0]) if width(sol.x[0]) <= width(r) * (1 + 1e-9) else r
-def band_touches(deviation: np.ndarray, E: float, rtol: float = 1e-6) -> np.ndarray:
+@validated
+def band_touches(deviation: Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)],
+                 E: Annotated[float, number(0.0)], rtol: Annotated[float, number(0.0, 1.0)] = 1e-6) -> np.ndarray:
     """Indices where a sampled deviation reaches ±E (local extrema of |dev| within rtol·E of E),
     with alternating signs required: used by the tests to find touches rather than assume them."""
     dev = np.asarray(deviation)
@@ -728,6 +738,9 @@ def rotation_boundary(n: int = 101) -> tuple[np.ndarray, np.ndarray]:
     return np.minimum(a, 2 - a), a
 
 
+TransmissionAngle = Annotated[float, angle(0.0, np.pi, open=True)]
+
+
 @dataclass(frozen=True)
 class TransmissionLines:
     """The lines μ = μ_min and μ = μ_max in the (r, a) plane, each a pair of arrays (r, a)."""
@@ -736,10 +749,13 @@ class TransmissionLines:
     mu_max: tuple[np.ndarray, np.ndarray]
 
 
-def transmission_lines(mu_min: float = np.radians(30), mu_max: float = np.radians(150),
-                       n: int = 101) -> TransmissionLines:
+@validated
+def transmission_lines(mu_min: TransmissionAngle = np.radians(30), mu_max: TransmissionAngle = np.radians(150),
+                       n: Annotated[int, count(2, MAX_SAMPLES)] = 101) -> TransmissionLines:
     """Working region of the base four-bar: μ = ∠ABC ranges over [2 asin(|a−r|/2), 2 asin((a+r)/2)],
     so μ ≥ μ_min is the line a − r = 2 sin(μ_min/2) and μ ≤ μ_max is a + r = 2 sin(μ_max/2)."""
+    if mu_min >= mu_max:
+        raise DimensionError(f"mu_min must be < mu_max, got {np.degrees(mu_min):.4g}° ≥ {np.degrees(mu_max):.4g}°")
     s1, s2 = 2 * np.sin(mu_min / 2), 2 * np.sin(mu_max / 2)
     r = np.linspace(0.0, 1.0, n)
     return TransmissionLines((r, r + s1), (r, s2 - r))
