@@ -750,7 +750,7 @@ class TransmissionLines:
 
 
 @validated
-def transmission_lines(mu_min: TransmissionAngle = np.radians(30), mu_max: TransmissionAngle = np.radians(150),
+def transmission_lines(mu_min: TransmissionAngle = np.pi / 6, mu_max: TransmissionAngle = 5 * np.pi / 6,
                        n: Annotated[int, count(2, MAX_SAMPLES)] = 101) -> TransmissionLines:
     """Working region of the base four-bar: μ = ∠ABC ranges over [2 asin(|a−r|/2), 2 asin((a+r)/2)],
     so μ ≥ μ_min is the line a − r = 2 sin(μ_min/2) and μ ≤ μ_max is a + r = 2 sin(μ_max/2)."""
