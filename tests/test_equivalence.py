@@ -4,10 +4,16 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 
+import mechlab as ml
 from mechlab import DimensionError, FourBar, SineMechanism, SliderCrank, SlottedLink
-from mechlab.analysis.equivalence import assembly_symmetry, base_law, base_mechanism, equivalence_error, equivalent_slot, law_difference, other_assembly, relative_path
+from mechlab.analysis.equivalence import EquivalentSlot, assembly_symmetry, base_law, base_mechanism, equivalence_error, equivalent_slot, law_difference, other_assembly, relative_path
 from mechlab.analysis.half_turn import formula_18
+from mechlab.geometry import PointPath, as_angles, crank_point, fixed_point
+from mechlab.mechanisms.base import FRAME, Link, Mechanism, Pair, Structure
+from mechlab.mechanisms.sixbar_iv import example
+from mechlab.motion import AngularMotion
 from strategies import revolving_fourbars, revolving_slider_cranks
+from test_protocol import SkewYoke
 
 H = 1e-5
 
@@ -108,10 +114,105 @@ def test_base_mechanisms():
 
 
 def test_unsupported_mechanisms_raise_clear_errors():
-    with pytest.raises(DimensionError, match="no curved-slot equivalent known for SlottedLink"):
-        equivalent_slot(SlottedLink(1.0, 2.0))
     with pytest.raises(DimensionError, match="assembly symmetry is stated for FourBar and SliderCrank"):
         other_assembly(SlottedLink(1.0, 2.0))
+
+
+# -- the default twin, derived from structure() and the motion ----------------------------------------
+class TiltedFourBar(Mechanism):
+    """A four-bar whose frame pivot E lies at angle ``tilt`` from O (not on +x): the FourBar turned by
+    ``tilt``; it defines no curved_slot_twin(). Nothing in mechlab knows this class."""
+
+    def __init__(self, fourbar, tilt):
+        self.fb, self.tilt = fourbar, tilt
+
+    def motion(self, phi):
+        phi = as_angles(phi)
+        mo = self.fb.motion(phi - self.tilt)
+        c, s = np.cos(self.tilt), np.sin(self.tilt)
+        turn = np.array([[c, s], [-s, c]])   # row vectors turned by +tilt
+        pts = {k: PointPath(*(x @ turn for x in v)) for k, v in mo.points.items()}
+        return AngularMotion(phi, pts, mo.transmission, mo.psi + self.tilt, mo.dpsi, mo.ddpsi)
+
+    def structure(self):
+        return self.fb.structure()
+
+
+def default_twin(mech):
+    """The twin from Mechanism.curved_slot_twin (the default), even where the family overrides it."""
+    return EquivalentSlot(mech, *Mechanism.curved_slot_twin(mech))
+
+
+def assert_twin_moves_like(mech, n=361):
+    phi = mech.cycle(n)
+    mo = mech.motion(phi)
+    errs = law_difference(mo, default_twin(mech).motion(phi))
+    scale = 1 + np.max(np.abs(mo.output.dd))
+    assert errs[0] < 1e-8 and errs[1] < 1e-8 * scale and errs[2] < 1e-8 * scale, errs
+
+
+@given(revolving_fourbars())
+@settings(max_examples=60, deadline=None)
+def test_default_twin_of_any_revolving_fourbar(fb):
+    assert_twin_moves_like(fb, 241)
+    # its slot is the relative path: the circle of radius l_AB about B (the override's closed form)
+    slot = default_twin(fb).slot_samples(50)
+    assert np.max(np.abs(np.hypot(slot[:, 0] - fb.rocker, slot[:, 1]) - fb.coupler)) < 1e-9 * (1 + fb.coupler)
+
+
+@given(revolving_slider_cranks())
+@settings(max_examples=60, deadline=None)
+def test_default_twin_of_any_revolving_slider_crank(sc):
+    assert_twin_moves_like(sc, 241)
+
+
+@pytest.mark.parametrize("mech", [FourBar(0.3, 0.8, 1.0, 1.0, 1), FourBar(0.3, 0.8, 1.0, 1.0, -1),
+                                  FourBar(2.0, 1.5, 2.5, 0.6, 1), FourBar(2.0, 1.5, 2.5, 0.6, -1),
+                                  SliderCrank(1.0, 3.0, 0.5, 1), SliderCrank(1.0, 3.0, -0.8, -1),
+                                  example(), SlottedLink(0.5, 1.0), SlottedLink(1.5, 1.0),
+                                  TiltedFourBar(FourBar(0.3, 0.8, 1.0, 1.0, -1), 2.0), SkewYoke(0.3, 1.0)],
+                         ids=["crank-rocker+", "crank-rocker-", "double-crank+", "double-crank-", "offset-slider+",
+                              "offset-slider-", "sixbar-IV", "slotted-rocking", "slotted-turning", "tilted-fourbar",
+                              "skew-yoke"])
+def test_default_twin_reproduces_the_law(mech):
+    """ψ, ψ′, ψ″ (s, s′, s″) of the default twin equal the mechanism's over the crank's turn; the last
+    two families are defined in the tests and override nothing."""
+    assert_twin_moves_like(mech)
+
+
+class CrankOnly(Mechanism):
+    """A crank whose output is the crank itself."""
+
+    def motion(self, phi):
+        phi = as_angles(phi)
+        A = crank_point(1.0, phi)
+        return AngularMotion(phi, {"O": fixed_point((0, 0), len(phi)), "A": A}, np.ones(len(phi)), phi,
+                             np.ones(len(phi)), np.zeros(len(phi)))
+
+    def structure(self):
+        return Structure((Link("crank", "O", ("O", "A"), 1.0),), (Pair("revolute", "O", FRAME, "crank", "O"),),
+                         (), "crank", 1.0)
+
+
+@pytest.mark.parametrize("mech, error, words", [
+    (CrankOnly(), DimensionError, "output of CrankOnly is its crank"),
+    (ml.TranslatingRollerCam(ml.CamProgramme(20.0, 2.0, 1.8, 0.7), 40.0, 10.0), DimensionError, "no pin"),
+    (ml.ExternalGeneva(4, 1.0), DimensionError, "no pin"),
+    (ml.EllipticTrammel(1.0, 2.0), DimensionError, "no crank turning about a frame pivot"),
+    (ml.SphericalGeneva(40, 15, 4), ml.MechanismError, "spatial"),
+    # two groups in series: the pin's path relative to the output is not one slot
+    (ml.mchv1(ml.circle_guiding(150 * np.pi / 180, 0.9, 120 * np.pi / 180), 1.0, 20 * np.pi / 180),
+     DimensionError, "not a function of the pin's distance"),
+])
+def test_no_twin_says_why(mech, error, words):
+    with pytest.raises(error, match=words):
+        equivalent_slot(mech)
+
+
+def test_default_twin_needs_a_turning_crank():
+    """A rocking crank keeps the four-bar's closed-form twin; the default says why it has none."""
+    with pytest.raises(DimensionError, match="needs a crank that turns fully"):
+        default_twin(FourBar(3, 3, 3, 4, 1))
 
 
 # -- drawings, animation, explorer, exercises and errata of chapters 02-04 -------------------------
@@ -120,7 +221,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 from mechlab.draw import drawing_class
 from mechlab.draw.curved_slot import animate_equivalence, plot_against_base
 from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, TranslatingCurvedSlot
-from mechlab.mechanisms.sixbar_iv import example
 
 
 def _slot_distance_to_pin(drawing, i):

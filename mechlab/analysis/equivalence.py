@@ -146,7 +146,9 @@ class EquivalentSlot(Mechanism):
 def equivalent_slot(mechanism: AnyMechanism) -> EquivalentSlot:
     """The curved-slot mechanism whose slot is the linkage's relative path (Zinchenko et al. (2013) §1), from the
     family's ``curved_slot_twin()``: FourBar → a circular slot of radius l_AB about B (Fig. 2),
-    SliderCrank → a translating circular slot (Fig. 4), SixBarIV → its inner four-bar's coupler curve."""
+    SliderCrank → a translating circular slot (Fig. 4); any other family with a structure → the pin's
+    relative path read from it (:func:`mechlab.mechanisms.curved_slot.structural_twin`; for SixBarIV its inner
+    four-bar's coupler curve)."""
     twin, phase = mechanism.curved_slot_twin()
     return EquivalentSlot(mechanism, twin, phase)
 

@@ -10,7 +10,7 @@ from typing import Annotated, Any, ClassVar
 
 import numpy as np
 
-from ..errors import AssemblyError, DimensionError, MechanismError, RotationError
+from ..errors import AssemblyError, MechanismError, RotationError
 from ..geometry import AnglePath, lift, relative, unit, vector_angle
 from ..motion import AngularMotion, Motion, scalar_in_scalar_out
 from ..validate import Checked, Samples, mechanism, validated
@@ -294,9 +294,12 @@ class Mechanism(Checked):
 
     def curved_slot_twin(self) -> tuple[Mechanism, float]:
         """The curved-slot mechanism that moves like this one (Zinchenko et al. (2013) §1), in their frame, and the
-        crank-angle shift ``phase`` from this mechanism's frame to it (a family that has one overrides this)."""
-        raise DimensionError(f"no curved-slot equivalent known for {type(self).__name__}: it defines no "
-                             f"curved_slot_twin()")
+        crank-angle shift ``phase`` from this mechanism's frame to it: by default the slot is the crank pin's
+        path relative to the output link, read from ``structure()`` and the motion
+        (:func:`mechlab.mechanisms.curved_slot.structural_twin`); DimensionError where no twin exists."""
+        from .curved_slot import structural_twin  # curved_slot builds on this module
+
+        return structural_twin(self)
 
 
 def branch_references(ranges, raw_angle, samples: int = 2049):

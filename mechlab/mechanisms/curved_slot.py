@@ -4,7 +4,8 @@ Slot curves in the link's frame, ``curve.evaluate(t)`` → PointPath (c, c_t, c_
 (closed form), :class:`ParametricSlot` (three vectorised functions), :class:`SampledSlot` (a cubic
 spline, chord-length parameter). Mechanisms: :class:`CurvedSlotLink` (pivoted link, ψ = ψ_K - β,
 formula (12), in the frame of §2, Fig. 8) and :class:`TranslatingCurvedSlot` (s = x_K - x_α,
-formula (1), Figs. 4, 7). ``start`` picks the curve parameter where the pin sits at φ = 0 when
+formula (1), Figs. 4, 7). :func:`structural_twin` builds either for any mechanism from its ``structure()``
+(the default ``Mechanism.curved_slot_twin``). ``start`` picks the curve parameter where the pin sits at φ = 0 when
 more than one point qualifies (for a circle, the arc the pin runs on).
 
 The pin lies on the slot where |c(t)| = S(φ) = sqrt(a² + d² + 2ad·cos φ) (after formula (25)),
@@ -24,7 +25,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, SingularityError
-from ..geometry import AnglePath, PointPath, as_angles, cross, crank_point, dot, fixed_point, lift
+from ..geometry import AnglePath, PointPath, as_angles, cross, crank_point, dot, fixed_point, lift, perp
 from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import Checked, Flag, Function, Length, Point, Real, Spec, mechanism, number
 from .base import FRAME, FULL_TURN, Link, Mechanism, Pair, Part, Sketch, Structure, arc_set, bars, fmt_ranges, output_axis
@@ -810,3 +811,141 @@ class TranslatingCurvedSlot(Mechanism):
         uu = np.linspace(0.0, upper.u_end, n - n // 2)
         t = np.concatenate([down.t_start + down.direction * ud, upper.t_start + upper.direction * uu])
         return self.slot.points(t)
+
+
+# ---------------------------------------------------------------------------------------------
+# the twin of any mechanism, from its structure
+# ---------------------------------------------------------------------------------------------
+def _turned(angle, v):
+    """The vectors v (n, 2) turned by ``angle`` (n,)."""
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]], axis=-1)
+
+
+def _slot_in_parameter(path, p, inverse, lo: float, hi: float) -> ParametricSlot:
+    """The relative path as a slot over its own parameter p ∈ [lo, hi] (the pin's distance from the pivot, or its
+    height above the guide), whose value p(φ) reaches lo and hi where the pin reverses on the slot.
+
+    ``path(φ)`` → PointPath (w, w', w'') in φ; ``p(φ)`` → (p, p', p''), ``inverse(p)`` → φ on that half turn. Chain rule:
+    w_p = w'/p', w_pp = (w'' - w_p·p'')/p'²; at a reversal (p' = 0) w_p = w''/p'' (l'Hôpital), and w_pp, which
+    needs the third analog, is set to 0: there the pin's own rate p'(φ) is zero, so it multiplies zero. Past
+    the ends the slot runs on along its end tangent (the pin never goes there; the walk along the slot
+    needs a crossing of the end circle, not a touch).
+    """
+    span = hi - lo
+
+    def evaluate(t):
+        t = np.asarray(t, dtype=float)
+        tc = np.clip(t, lo, hi)
+        phi = inverse(tc)
+        w = path(phi)
+        _, dp, ddp = p(phi)
+        turn = np.abs(dp) <= 1e-7 * span
+        safe = np.where(turn, 1.0, dp)[:, None]
+        at_turn = np.where(turn, ddp, 1.0)[:, None]   # p'' ≠ 0 where the pin reverses
+        wp = np.where(turn[:, None], w.dd / at_turn, w.d / safe)
+        wpp = np.where(turn[:, None], 0.0, (w.dd - wp * ddp[:, None]) / safe**2)
+        out = (t - tc)[:, None]
+        past = out[:, 0] != 0
+        return w.p + out * wp, wp, np.where(past[:, None], 0.0, wpp)
+
+    margin = 0.05 * span
+    return ParametricSlot(lambda t: evaluate(t)[0], lambda t: evaluate(t)[1], lambda t: evaluate(t)[2],
+                          lo - margin, hi + margin)
+
+
+def structural_twin(mech: Mechanism) -> tuple[Mechanism, float]:
+    """The curved-slot twin of any mechanism from its ``structure()`` (Zinchenko et al. (2013) §1).
+
+    The crank (input, revolute to the frame) carries the pin A, its revolute pair with the next link; the
+    output turns about its frame pivot E or slides on a guide at angle γ. A fixed in the output's frame
+    traces the relative path w = Rot(-ψ)(A - E), w' = Rot(-ψ)(A' - ψ'·(A - E)⊥),
+    w'' = Rot(-ψ)(A'' - 2ψ'·A'⊥ - ψ''·(A - E)⊥ - ψ'²·(A - E)) (or w = Rot(-γ)(A - O) - (s, 0), the analogs
+    likewise). The group leaves one freedom relative to the output, so w depends on the pin's distance
+    S = |A - E| (its height Rot(-γ)(A - O)_y) alone, and one half turn of the crank covers the slot. The
+    twin is a :class:`CurvedSlotLink` (a :class:`TranslatingCurvedSlot`) with that slot in Zinchenko et al.'s
+    frame; returned with the crank-angle shift to it.
+    """
+    name = type(mech).__name__
+    st = mech.structure()
+    crank = st.input
+    base_pair = next((p for p in st.pairs if FRAME in (p.a, p.b) and crank in (p.a, p.b)), None)
+    if base_pair is None or base_pair.kind != "revolute" or st.input_rate != 1.0:
+        how = "is not joined to the frame" if base_pair is None else f"is joined to the frame by a {base_pair.kind} pair"
+        raise DimensionError(f"{name} has no crank turning about a frame pivot (its input, the {crank}, {how}, "
+                             f"dθ/dφ = {st.input_rate:g}): a curved-slot twin is driven by a crank")
+    if st.output == crank:
+        raise DimensionError(f"the output of {name} is its crank: there is no output link to carry a slot")
+    if not mech.can_turn:
+        raise DimensionError(f"the default curved-slot twin needs a crank that turns fully; {name}: "
+                             f"{mech.rotation_failure()}")
+    pin = next((p for p in st.pairs if p.kind == "revolute" and crank in (p.a, p.b) and FRAME not in (p.a, p.b)),
+               None)
+    if pin is None:
+        raise DimensionError(f"the crank of {name} carries no revolute pair with a moving link: no pin to run "
+                             f"in a slot")
+    out = st.link(st.output)
+    guide = st.frame_pair(out.name)
+    probe = mech.motion(np.array([0.3]))
+    O = probe.points[base_pair.point].p[0]
+    a = float(np.hypot(*(probe.points[pin.point].p[0] - O)))
+
+    rel = probe.points[pin.point].p[0] - O
+    if abs(np.angle(np.exp(1j * (np.arctan2(rel[1], rel[0]) - 0.3)))) > 1e-9:
+        raise DimensionError(f"the crank angle φ of {name} is not the angle of its pin {pin.point} about "
+                             f"{base_pair.point}: the twin's crank could not be matched to it")
+
+    def pin_path(mo):
+        A = mo.points[pin.point]
+        return PointPath(A.p - O, A.d, A.dd)
+
+    def one_slot(path, mirror, what):
+        """The second half turn must retrace the first (one slot for the pin): w(mirror(φ)) = w(φ)."""
+        f = np.linspace(0.1, np.pi - 0.1, 17)
+        gap = np.max(np.hypot(*(path(f).p - path(mirror(f)).p).T))
+        if gap > 1e-9 * st.scale:
+            raise DimensionError(f"the pin's path relative to the output of {name} is not a function of {what} "
+                                 f"alone (the two half turns differ by {gap:.3g}): no one-slot twin")
+
+    if out.translates:
+        if guide.kind != "prismatic":
+            raise DimensionError(f"the output {out.name} of {name} translates but is not guided by the frame")
+        gamma = float(guide.angle)
+
+        def path(phi):
+            mo = mech.motion(phi + gamma)
+            A, z = pin_path(mo), np.zeros(len(phi))
+            turn = np.full(len(phi), -gamma)
+            return PointPath(*(_turned(turn, v) - np.stack([x, z], -1)
+                               for v, x in zip(A, (mo.s, mo.ds, mo.dds))))
+
+        def height(f):
+            return a * np.sin(f), a * np.cos(f), -a * np.sin(f)
+
+        one_slot(path, lambda f: np.pi - f, "the pin's height above the guide")
+        slot = _slot_in_parameter(path, height, lambda y: np.arcsin(np.clip(y / a, -1.0, 1.0)), -a, a)
+        return TranslatingCurvedSlot(a, slot, start=0.0), gamma
+    if guide.kind != "revolute":
+        raise DimensionError(f"the output {out.name} of {name} neither turns about a frame pivot nor slides on a "
+                             f"guide")
+    E = probe.points[guide.point].p[0]
+    d = float(np.hypot(*(E - O)))
+    phase = float(np.mod(np.arctan2(*(E - O)[::-1]) - np.pi, 2 * np.pi))
+
+    def path(phi):
+        mo = mech.motion(phi + phase)
+        A = pin_path(mo)
+        v = A.p - (E - O)
+        w1, w2 = mo.dpsi[:, None], mo.ddpsi[:, None]
+        return PointPath(_turned(-mo.psi, v), _turned(-mo.psi, A.d - w1 * perp(v)),
+                         _turned(-mo.psi, A.dd - 2 * w1 * perp(A.d) - w2 * perp(v) - w1**2 * v))
+
+    def distance(f):
+        S = np.sqrt(a * a + d * d + 2 * a * d * np.cos(f))
+        dS = -a * d * np.sin(f) / S
+        return S, dS, -(a * d * np.cos(f) + dS**2) / S
+
+    one_slot(path, lambda f: -f, "the pin's distance from the pivot")
+    slot = _slot_in_parameter(path, distance, lambda S: np.arccos(np.clip((S * S - a * a - d * d) / (2 * a * d),
+                                                                          -1.0, 1.0)), abs(a - d), a + d)
+    return CurvedSlotLink(a, d, slot, start=a + d), phase

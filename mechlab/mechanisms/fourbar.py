@@ -188,7 +188,8 @@ class FourBar(Mechanism):
     def curved_slot_twin(self):
         """Zinchenko et al. (2013) Fig. 2: a link pivoted at E whose slot is the circle of radius l_AB about B,
         on the arc
-        chosen by kc; in Zinchenko et al.'s (2013) frame (crank angle φ − π)."""
+        chosen by kc; in Zinchenko et al.'s (2013) frame (crank angle φ − π). Kept over the default (the same
+        slot, sampled from the motion) for its closed form and for a crank that only rocks."""
         slot = CircleSlot((self.rocker, 0.0), self.coupler)
         return CurvedSlotLink(self.crank, self.ground, slot, start=self.assembly * np.pi / 2), np.pi
 

@@ -28,7 +28,6 @@ from ..errors import AssemblyError, DimensionError, RotationError, SingularityEr
 from ..geometry import (AnglePath, PointPath, as_angles, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit,
                         vector_angle)
 from .base import FRAME, Link, Mechanism, Pair, Sketch, Structure, output_axis
-from .curved_slot import CurvedSlotLink, ParametricSlot
 from ..motion import AngularMotion
 from ..validate import Length, OptionalAngle, Point, Sign
 
@@ -245,20 +244,7 @@ class SixBarIV(Mechanism):
         turns = np.round((xs[-1] - xs[0]) / (2 * np.pi))
         return phis, xs, turns, t0
 
-    @property
-    def start_angle(self) -> float:
-        """The angle of R→Q in the output link's frame at φ = π (the chosen starting assembly)."""
-        return self._grid[3]
-
-    # -- motion --------------------------------------------------------------------------------------
-    def curved_slot_twin(self):
-        """Zinchenko et al. (2013) §1: a link pivoted at E whose slot is the coupler curve of the inner four-bar R-Q-P-T
-        (the relative path, parametrised by θ = angle of R→Q); in Zinchenko et al.'s (2013)
-        frame (crank angle φ − π)."""
-        slot = ParametricSlot(lambda t: self.relative_pin(t).p, lambda t: self.relative_pin(t).d,
-                              lambda t: self.relative_pin(t).dd, -np.pi, np.pi, periodic=True)
-        return CurvedSlotLink(self.crank, self.ground, slot, start=self.start_angle), np.pi
-
+    # -- structure and motion (the curved-slot twin comes from them: Mechanism.curved_slot_twin) ---------
     def structure(self) -> Structure:
         """Crank O→A and the class-IV group: coupler A-Q-P (axis Q→P), link 3 Q→R, link 5 P→T and the
         output R-T-E turning about E (axis at ψ); seven revolute pairs."""

@@ -87,7 +87,8 @@ class SliderCrank(Mechanism):
             (("rod", "slider"),), "slider", scale=self.crank + self.rod + abs(self.offset))
 
     def curved_slot_twin(self):
-        """Zinchenko et al. (2013) Fig. 4: a translating link whose slot is the circle of radius l_AB about (0, e)."""
+        """Zinchenko et al. (2013) Fig. 4: a translating link whose slot is the circle of radius l_AB about (0, e)
+        (kept over the default for its closed form and for a crank that only rocks)."""
         slot = CircleSlot((0.0, self.offset), self.rod)
         return TranslatingCurvedSlot(self.crank, slot, start=np.pi if self.assembly == 1 else 0.0), 0.0
 
