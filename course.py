@@ -116,15 +116,46 @@ def ensure_venv(venv: Path, part: str) -> Path:
         # an isolated environment (9 MB less); a part that needs it (the book's) brings it back at its pin
         subprocess.run([str(python), "-m", "pip", "uninstall", "--quiet", "--yes", "setuptools"], check=True)
     say(f"installing the {part!r} part of environment.txt")
+    with tempfile.TemporaryDirectory(prefix="mechlab-wheels-") as wheels:
+        pure = pure_wheels(python, Path(wheels))
+        subprocess.run(install_command(pip, part, pure), cwd=ROOT, check=True)
     if part == "all":
-        subprocess.run(pip + ["-r", "environment.txt"], cwd=ROOT, check=True)
         subprocess.run(pip + ["--no-deps", "-e", "."], cwd=ROOT, check=True)
-    else:
-        # --no-compile: bytecode is written on first import instead, only for the modules used
-        subprocess.run(pip + ["--no-compile", "-c", "environment.txt", f"-e.[{part}]"], cwd=ROOT, check=True)
     check_pinned(python)
     stamp.touch()
     return python
+
+
+# pip prefers a platform wheel; these run as pure Python at their pin. ezdxf's compiled accelerators
+# (ezdxf.acc) are 14 of its 18 MB, and the course only writes and reads back small DXF polylines
+PURE = ("ezdxf",)
+
+
+def pure_wheels(python: Path, into: Path) -> list[Path]:
+    """Download the pure-Python wheel (py3-none-any) of each `PURE` distribution at its pin into `into`."""
+    pinned = pins()
+    version = f"{sys.version_info.major}.{sys.version_info.minor}"  # the venv is made with this Python
+    files = []
+    for dist in PURE:
+        done = subprocess.run(
+            [str(python), "-m", "pip", "download", "--quiet", "--disable-pip-version-check", "--no-deps",
+             "--only-binary=:all:", "--platform", "any", "--implementation", "py", "--python-version", version,
+             "-d", str(into), f"{dist}=={pinned[dist]}"], check=False)
+        found = sorted(into.glob(f"{dist}-{pinned[dist]}-py3-none-any.whl"))
+        if done.returncode or not found:
+            sys.exit(f"course: could not download {dist}=={pinned[dist]} (its pure-Python wheel) from PyPI; "
+                     "check the network connection (or pip's proxy settings) and run the command again")
+        files.append(found[0])
+    return files
+
+
+def install_command(pip: list[str], part: str, pure: list[Path]) -> list[str]:
+    """pip's command for `part`; the wheel files in `pure` stand for their distributions' requirements."""
+    wheels = [str(path) for path in pure]
+    if part == "all":
+        return pip + ["-r", "environment.txt", *wheels]
+    # --no-compile: bytecode is written on first import instead, only for the modules used
+    return pip + ["--no-compile", "-c", "environment.txt", f"-e.[{part}]", *wheels]
 
 
 def installed(python: Path) -> dict[str, str]:
