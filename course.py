@@ -127,7 +127,7 @@ def ensure_venv(venv: Path, part: str) -> Path:
 
 
 # pip prefers a platform wheel; these run as pure Python at their pin. ezdxf's compiled accelerators
-# (ezdxf.acc) are 14 of its 18 MB, and the course only writes and reads back small DXF polylines
+# (ezdxf.acc) are 12 of its 18 MB, and the course only writes and reads back small DXF polylines
 PURE = ("ezdxf",)
 
 

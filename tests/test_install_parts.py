@@ -70,3 +70,38 @@ def test_repo2docker_renders_an_image_that_runs_the_post_build_on_the_runtime_py
     assert f"Building conda environment for python={python}" in out
     copy, post_build = out.index("src/ ${REPO_DIR}/"), out.index("RUN ./binder/postBuild")
     assert copy < post_build  # the post-build step installs from the copied repository
+
+
+def fake_download(calls, *, fails=False):
+    """subprocess.run standing in for `pip download`: records the command and writes the wheel it names."""
+    def run(command, **kwargs):
+        calls.append(command)
+        if not fails:
+            dist, version = command[-1].split("==")
+            (Path(command[command.index("-d") + 1]) / f"{dist}-{version}-py3-none-any.whl").touch()
+        return subprocess.CompletedProcess(command, 1 if fails else 0)
+    return run
+
+
+@pytest.mark.parametrize("part", sorted(course.PARTS))
+def test_every_part_installs_ezdxf_from_its_pure_wheel_at_its_pin(part, tmp_path, monkeypatch):
+    calls = []
+    monkeypatch.setattr(course.subprocess, "run", fake_download(calls))
+    wheels = course.pure_wheels(Path("venv/bin/python"), tmp_path)
+    pin = course.pins()["ezdxf"]
+    download = calls[0]
+    assert download[1:4] == ["-m", "pip", "download"] and download[-1] == f"ezdxf=={pin}"
+    for option, value in (("--platform", "any"), ("--implementation", "py"), ("--only-binary", None)):
+        assert any(arg == option or arg.startswith(f"{option}=") for arg in download), option
+        if value:
+            assert download[download.index(option) + 1] == value
+    assert wheels == [tmp_path / f"ezdxf-{pin}-py3-none-any.whl"]
+    command = course.install_command(["pip", "install"], part, wheels)
+    assert str(wheels[0]) in command  # pip takes this file for the ezdxf requirement
+    assert "environment.txt" in command and command[command.index("environment.txt") - 1] in ("-c", "-r")
+
+
+def test_a_failed_download_stops_with_a_clear_message(tmp_path, monkeypatch):
+    monkeypatch.setattr(course.subprocess, "run", fake_download([], fails=True))
+    with pytest.raises(SystemExit, match=r"could not download ezdxf==[\d.]+ .*network"):
+        course.pure_wheels(Path("venv/bin/python"), tmp_path)
