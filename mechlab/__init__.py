@@ -34,7 +34,7 @@ from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity
 from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
                                    DwellSlotMechanism, best_placement, compare_transitions, curved_slot_dwell,
                                    dwell_limit, two_branch_slot)
-from .synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison
+from .synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison, table1_review
 from .synthesis.lambda_guiding import (band_touches, circle_guiding, existence_map, existence_region,
                                        fifth_order_line, straight_guiding, thesis_iteration, transmission_lines,
                                        whole_turn_guiding, whole_turn_line)
@@ -79,7 +79,7 @@ __all__ = [
     "time_ratio_far_angle",
     "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError", "NoDesignError",
     # Geneva
-    "spherical_table", "table1_comparison", "TABLE1_PRINTED", "compare", "intermittency", "detect_impacts",
+    "spherical_table", "table1_comparison", "table1_review", "TABLE1_PRINTED", "compare", "intermittency", "detect_impacts",
     "SlotCountError", "OffsetError",
     # forces
     "forces", "motion_laws", "design", "Kinetostatics", "ForceModel", "Body", "Revolute", "Prismatic", "HigherPair",

@@ -364,7 +364,8 @@ class Table:
 
     Iterates over its rows, indexes like a tuple, looks rows up by a column
     (``table.by("z")[4]``), gives a column as an array (``table.column("eps_max")``) and
-    shows as an HTML table in a notebook.
+    shows as an HTML table in a notebook. A field's ``metadata={"label": ...}`` names its column
+    for the reader, with its unit (``"α0, °"``); ``columns`` keeps the field names.
     """
 
     rows: tuple
@@ -385,6 +386,13 @@ class Table:
     def columns(self) -> tuple[str, ...]:
         return tuple(f.name for f in fields(self.rows[0]) if f.repr) if self.rows else ()
 
+    @property
+    def headers(self) -> tuple[str, ...]:
+        """The columns as shown: each field's ``label`` metadata, else its name."""
+        if not self.rows:
+            return ()
+        return tuple(f.metadata.get("label", f.name) for f in fields(self.rows[0]) if f.repr)
+
     def column(self, name: str) -> np.ndarray:
         """One column over the rows, as an array."""
         return np.array([getattr(r, name) for r in self.rows])
@@ -397,7 +405,7 @@ class Table:
         return [[_cell(getattr(r, c)) for c in self.columns] for r in self.rows]
 
     def __repr__(self) -> str:
-        body = [list(self.columns), *self._text_rows()]
+        body = [list(self.headers), *self._text_rows()]
         widths = [max(len(line[i]) for line in body) for i in range(len(self.columns))]
         # numbers right-aligned, words left-aligned
         numeric = [all(isinstance(getattr(r, c), Real) for r in self.rows) for c in self.columns]
@@ -405,7 +413,7 @@ class Table:
                                    for s, w, num in zip(line, widths, numeric)).rstrip() for line in body)
 
     def _repr_html_(self) -> str:
-        head = "".join(f"<th>{html.escape(c)}</th>" for c in self.columns)
+        head = "".join(f"<th>{html.escape(c)}</th>" for c in self.headers)
         body = "".join("<tr>" + "".join(f"<td>{html.escape(s)}</td>" for s in line) + "</tr>"
                        for line in self._text_rows())
         return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"

@@ -199,6 +199,7 @@ CASES = {
     "zero_acceleration": lambda: (ml.zero_acceleration, (fb,), {"n": 361}),
     "crank_ranges_degrees": lambda: (ml.crank_ranges_degrees, (fb,), {}),
     "table1_comparison": lambda: (ml.table1_comparison, (), {"R": 40.0, "e": 15.0}),
+    "table1_review": lambda: (ml.table1_review, (), {}),
     "DwellSlotMechanism": lambda: (ml.DwellSlotMechanism, (0.5, 60 * DEG, 150 * DEG), {"transition": "sextic"}),
     "write_dxf": lambda: (ml.write_dxf, (ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"),
                                          scratch() / "slot.dxf"),

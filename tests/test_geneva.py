@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab.errors import DimensionError, MechanismError
-from mechlab.synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison
+from mechlab.synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison, table1_review
 from mechlab.kinetostatics.drive import DriveError
 from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, impact_kind
 from mechlab.mechanisms.spherical_geneva import SphericalGeneva
@@ -124,6 +124,14 @@ def test_geneva_design_names_its_unit():
     assert len(lengths) == 6 and all(n.endswith(" (mm)") for n in lengths), names
     with pytest.raises(DimensionError, match="unit"):
         ExternalGeneva(6, 100.0).design(unit="furlong")
+    # the spherical drive's table too: every row but z, the angles and the fraction is a length
+    sph = SphericalGeneva(40.0, 15.0, 4)
+    names = [q.name for q in sph.design()]
+    lengths = [n for n in names if n != "z" and not any(w in n for w in ("fraction", "deg"))]
+    assert len(lengths) == 7 and all(n.endswith(" (mm)") for n in lengths), names
+    assert sph.design(unit="cm").by("name")["R (cm)"].value == 40.0
+    with pytest.raises(DimensionError, match="unit"):
+        sph.design(unit="furlong")
 
 
 def test_geneva_turns_accumulate():
@@ -301,6 +309,19 @@ def test_table1_reproduces_and_documents_differences():
     # more slots, smaller accelerations (seed conclusion 4)
     eps = [r.eps_max for r in rows]
     assert all(a > b for a, b in zip(eps, eps[1:]))
+
+
+def test_table1_review_shows_printed_and_computed_with_units_and_marks():
+    review = table1_review()
+    assert list(review.column("z")) == [3, 4, 5, 6, 8] and review.headers[1] == "α0, °"
+    assert all(h.endswith(", °") for h in (review.headers[i] for i in (1, 2, 5, 6)))
+    row6 = review.by("z")[6]
+    assert row6.alpha0 == "53.15 / 53.13 ✗" and row6.alpha1 == "41.60 / 41.59 ·" and row6.beta0 == "30.00 / 30.00"
+    # every mark is the comparison's status, cell by cell
+    marks = {(r.z, col): getattr(r, col) for r in review for col in review.columns[1:]}
+    assert {k for k, m in marks.items() if m.endswith(" ✗")} == {(c.z, c.column) for c in table1_comparison()
+                                                          if c.status == "differs"}
+    assert "<th>|ε|max/ω1²</th>" in review._repr_html_()
 
 
 # -- drive --------------------------------------------------------------------------------------
@@ -590,7 +611,7 @@ def test_small_helpers():
     g = SphericalGeneva(40.0, 15.0, 4)
     d = g.pin_direction(np.linspace(-3, 3, 7))
     assert np.allclose(np.linalg.norm(d, axis=1), 1.0) and np.allclose(d[:, 0], np.cos(g.cone_angle))
-    assert set(g.design().by("name")) >= {"α0 (deg)", "ρ0", "r_H", "min slot length"}
+    assert set(g.design().by("name")) >= {"α0 (deg)", "ρ0 (mm)", "r_H (mm)", "min slot length (mm)"}
     from mechlab.mechanisms.geneva import PlanarGeneva
     with pytest.raises(TypeError, match="ExternalGeneva or InternalGeneva"):
         PlanarGeneva(4, 1.0)

@@ -361,9 +361,12 @@ def test_public_results_are_frozen_dataclasses_and_tables_show_as_tables():
     # ρ0 = 25 mm for z = 6 gives α0 = arccos(0.6) (Vainer & Shatokhina's Table 1: 53.13°)
     assert table.by("z")[6].alpha0 == pytest.approx(np.degrees(np.arccos(0.6)), abs=1e-9)
     html = table._repr_html_()
-    assert html.count("<tr>") == 3 and "<th>eps_max</th>" in html and "53.1301" in html
+    assert html.count("<tr>") == 3 and "<th>|ε|max/ω1²</th>" in html and "53.1301" in html
     text = repr(table).splitlines()
-    assert len(text) == 3 and text[0].split() == list(table.columns) and text[2].split()[0] == "6"
+    assert len(text) == 3 and text[0].split()[:3] == ["z", "α0,", "°"] and text[2].split()[0] == "6"
+    # the columns a reader sees carry their units; the field names stay the keys
+    assert table.headers == ("z", "α0, °", "β0, °", "ω_max/ω1", "|ε|max/ω1²", "α1, °", "β1, °")
+    assert ml.Table([ml.intermittency(ml.ExternalGeneva(4, 1.0), n=361)]).headers[0] == "name"
     rows = ml.compare({"external": ml.ExternalGeneva(4, 1.0), "whitworth": ml.SlottedLink(2.0, 1.0)}, n=1441)
     assert [r.name for r in rows] == ["external", "whitworth"] and rows.by("name")["whitworth"].dwell_fraction == 0
     assert "link" not in ml.Table([ml.two_branch_slot(0.5, 100 * DEG)]).columns   # a factory is no column

@@ -18,8 +18,9 @@ import numpy as np
 from ..errors import DimensionError, MechanismError
 from ..geometry import AnglePath, PointPath, as_angles, vector_angle
 from .base import Mechanism
+from .geneva import LENGTH_UNITS
 from ..motion import AngularMotion, Quantity, Table, scalar_law
-from ..validate import Length, length, number, validated
+from ..validate import Length, check, choice, length, number, validated
 from .geneva import Impact, OffsetError, Slots, TWO_PI, mid_motion_angle
 
 
@@ -308,13 +309,21 @@ class SphericalGeneva(Mechanism):
         return AngularMotion(phi, {"O": fixed3([0.0, 0.0, 0.0]), "O1": fixed3(o1), "A": m.A, "P": P, "B": B},
                              mu, psi, dpsi, ddpsi)
 
-    def design(self) -> Table:
-        """The design quantities of Vainer & Shatokhina (mm, degrees), a :class:`Table` of
-        :class:`Quantity` rows."""
+    def design(self, unit: str = "mm") -> Table:
+        """The design quantities of Vainer & Shatokhina, a :class:`Table` of :class:`Quantity` rows
+        whose names carry their unit (as :meth:`ExternalGeneva.design <mechlab.mechanisms.geneva.PlanarGeneva.design>`).
+
+        Parameters
+        ----------
+        unit : the unit of R, which every length shares: "mm" (the default), "cm", "m" or "in".
+            Angles are in degrees.
+        """
+        unit = check("unit", unit, choice(*LENGTH_UNITS))
+        mm = f" ({unit})"
         return Table(Quantity(k, v) for k, v in (
-            ("R", self.R), ("e", self.e), ("z", self.z), ("α0 (deg)", np.degrees(self.alpha0)),
-            ("β0 (deg)", np.degrees(self.beta0)), ("ρ0", self.rho0), ("ψ (deg)", np.degrees(self.cone_angle)),
-            ("γ0 (deg)", np.degrees(self.gamma0)), ("ρ_H", self.rho_H), ("r_H", self.r_H),
-            ("pin travel (ρ_H-ρ0)/sinψ", self.pin_travel), ("min slot length", self.min_slot_length),
+            ("R" + mm, self.R), ("e" + mm, self.e), ("z", self.z), ("α0 (deg)", np.degrees(self.alpha0)),
+            ("β0 (deg)", np.degrees(self.beta0)), ("ρ0" + mm, self.rho0), ("ψ (deg)", np.degrees(self.cone_angle)),
+            ("γ0 (deg)", np.degrees(self.gamma0)), ("ρ_H" + mm, self.rho_H), ("r_H" + mm, self.r_H),
+            ("pin travel (ρ_H-ρ0)/sinψ" + mm, self.pin_travel), ("min slot length" + mm, self.min_slot_length),
             ("dwell fraction", self.dwell_fraction)))
 

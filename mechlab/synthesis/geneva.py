@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Annotated
 
 import numpy as np
@@ -18,12 +18,12 @@ class SphericalRow:
     """One row of Table 1 (Vainer & Shatokhina): angles in degrees, ω_max/ω1 and |ε|max/ω1²."""
 
     z: int
-    alpha0: float
-    beta0: float
-    omega_max: float
-    eps_max: float
-    alpha1: float
-    beta1: float
+    alpha0: float = field(metadata={"label": "α0, °"})
+    beta0: float = field(metadata={"label": "β0, °"})
+    omega_max: float = field(metadata={"label": "ω_max/ω1"})
+    eps_max: float = field(metadata={"label": "|ε|max/ω1²"})
+    alpha1: float = field(metadata={"label": "α1, °"})
+    beta1: float = field(metadata={"label": "β1, °"})
 
 
 @validated
@@ -84,3 +84,29 @@ def table1_comparison(R: float = 40.0, e: float = 15.0) -> Table:
             out.append(Cell(z, col, p, c, status))
     return Table(out)
 
+
+
+_MARK = {"agrees": "", "last digit": " ·", "differs": " ✗"}
+
+
+@dataclass(frozen=True)
+class ReviewRow:
+    """One z of Table 1 (Vainer & Shatokhina), each cell "printed / computed" and marked
+    "·" (last digit) or "✗" (differs); the columns carry :class:`SphericalRow`'s units."""
+
+    z: int
+    alpha0: str = field(metadata={"label": "α0, °"})
+    beta0: str = field(metadata={"label": "β0, °"})
+    omega_max: str = field(metadata={"label": "ω_max/ω1"})
+    eps_max: str = field(metadata={"label": "|ε|max/ω1²"})
+    alpha1: str = field(metadata={"label": "α1, °"})
+    beta1: str = field(metadata={"label": "β1, °"})
+
+
+def table1_review(comparison: Table | None = None) -> Table:
+    """Table 1 as the reader checks it: per z, every cell of :func:`table1_comparison` (computed
+    for R = 40 mm, e = 15 mm unless ``comparison`` is given) as "printed / computed", marked."""
+    cells = {(c.z, c.column): c for c in (table1_comparison() if comparison is None else comparison)}
+    return Table(ReviewRow(z, *(f"{cells[z, col].printed:.2f} / {cells[z, col].computed:.2f}"
+                                f"{_MARK[cells[z, col].status]}" for col in TABLE1_COLUMNS))
+                 for z in sorted({z for z, _ in cells}))
