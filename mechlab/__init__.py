@@ -38,8 +38,9 @@ from .synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison
 from .synthesis.lambda_guiding import (band_touches, circle_guiding, existence_map, existence_region,
                                        fifth_order_line, straight_guiding, thesis_iteration, transmission_lines,
                                        whole_turn_guiding, whole_turn_line)
-from .synthesis.lambda_sixbars import (dwell_extent, mchv1, mchv3_full_turn, mchv3_full_turn_best, mchv3_half_turn,
-                                       mchv3_oscillating, rise_law, slot_residual_first_order, time_ratio_far_angle)
+from .synthesis.lambda_sixbars import (dwell_extent, mchv1, mchv3_best_table, mchv3_full_turn, mchv3_full_turn_best,
+                                       mchv3_half_turn, mchv3_oscillating, mchv3_pivot_table, rise_law,
+                                       slot_residual_first_order, time_ratio_far_angle)
 from .synthesis.lambda_sliders import mchv2, mchv2_far_position, mchv2_stroke, mchv5, slider_invariants, slider_report
 from .synthesis.cam_design import CamProgramme
 from .synthesis.slot_export import read_csv, slot_profile, write_cam_csv, write_cam_dxf, write_csv, write_dxf
@@ -75,7 +76,8 @@ __all__ = [
     "existence_region", "band_touches", "fifth_order_line", "thesis_iteration", "transmission_lines",
     "classic_lambda", "LambdaRockerSixBar", "LambdaSlottedSixBar", "LambdaSliderSixBar", "LambdaTranslatingSlot",
     "mchv1", "mchv2", "mchv2_far_position", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best",
-    "mchv3_half_turn", "mchv3_oscillating", "slot_residual_first_order", "mchv5", "dwell_extent", "rise_law",
+    "mchv3_half_turn", "mchv3_oscillating", "mchv3_pivot_table", "mchv3_best_table",
+    "slot_residual_first_order", "mchv5", "dwell_extent", "rise_law",
     "time_ratio_far_angle",
     "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError", "NoDesignError",
     # Geneva

@@ -264,3 +264,27 @@ def test_mchv3_full_turn_residual_is_first_order_h_over_s_and_inherent_for_180_d
     s140 = straight_guiding(np.pi, 0.8, 140 * DEG)
     b140, r140 = mchv3_full_turn_best(s140)
     assert r140 < np.radians(0.6) and dwell_extent(b140) > 140 * DEG
+
+
+def test_mchv3_tables_give_each_pivot_its_residual_and_name_their_units():
+    from mechlab.synthesis.lambda_sixbars import dwell_extent, mchv3_best_table, mchv3_full_turn_best, mchv3_pivot_table
+
+    s = straight_guiding(np.pi, 0.8, np.pi)
+    pivots = mchv3_pivot_table(s, beyonds=[0.0, 0.03, 0.06], n=2001)
+    dw = np.pi + np.linspace(-np.pi / 2, np.pi / 2, 2001) + 1e-5
+    for row in pivots:   # each row is its own mechanism, simulated here again
+        m = mchv3_full_turn(s, row.beyond, 0.05)
+        assert row.residual == pytest.approx(np.degrees(np.ptp(m.motion(dw).psi)), abs=1e-12)
+        assert row.dwell == pytest.approx(np.degrees(dwell_extent(m))) and abs(row.turns) == 1
+    res = pivots.column("residual")
+    assert res[0] > res[1] > res[2] and abs(res[2] - 2.15) < 0.01   # farther pivot, smaller residual
+    assert pivots.headers[2] == "residual over the dwell, °" and pivots.headers[0].endswith("(l)")
+    best = mchv3_best_table(np.radians([180, 140]))
+    assert best.columns == ("dwell", "past", "depth", "residual", "peak_dpsi")   # the mechanism is no column
+    row = best.by("dwell")[180]
+    m, r = mchv3_full_turn_best(s)
+    assert row.residual == pytest.approx(np.degrees(r)) and row.peak_dpsi <= 15.0 and row.mechanism.P == pytest.approx(m.P)
+    assert 0 < row.past < 0.07 and row.depth > 0 and best.by("dwell")[140].residual < 0.6
+    assert all(h.endswith("°") for h in best.headers if "dwell" in h or "residual" in h)
+    with pytest.raises(MechanismError):
+        mchv3_pivot_table(s, beyonds=[0.06], depth=-0.05)

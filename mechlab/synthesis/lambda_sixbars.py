@@ -17,7 +17,7 @@ counter-clockwise.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Annotated
 
 import numpy as np
@@ -25,10 +25,10 @@ from scipy.optimize import brentq
 from ..errors import MechanismError
 from ..geometry import cross
 from ..mechanisms.base import TWO_PI
-from .lambda_guiding import CircleGuide, StraightGuide
+from .lambda_guiding import CircleGuide, StraightGuide, straight_guiding
 from ..errors import InfeasibleDesignError
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
-from ..motion import scalar_law
+from ..motion import Table, scalar_law
 from ..validate import (MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check, count, mechanism, number,
                         validated)
 
@@ -42,7 +42,8 @@ Grid = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_GRID)]  # one axis of 
 DwellAngle = Annotated[float, angle(0.0, TWO_PI, open=True)]  # the crank angle 2α of a dwell
 SixBar = Annotated[LambdaSlottedSixBar, mechanism((LambdaRockerSixBar, LambdaSlottedSixBar))]
 
-__all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_turn", "time_ratio_far_angle", "rise_law", "mchv3_full_turn", "dwell_extent", "slot_residual_first_order", "mchv3_full_turn_best"]
+__all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_turn", "time_ratio_far_angle", "rise_law", "mchv3_full_turn", "dwell_extent", "slot_residual_first_order", "mchv3_full_turn_best",
+           "PivotRow", "mchv3_pivot_table", "BestPivotRow", "mchv3_best_table"]
 
 
 @validated
@@ -335,3 +336,61 @@ def mchv3_full_turn_best(guide: Straight, side: Sign = 1,
         f"no pivot inside the coupler curve gives a full-turn link with peak |ψ'| ≤ {max_speed} for the dwell "
         f"2α = {np.degrees(guide.dwell):.4g}°")
 
+
+
+@dataclass(frozen=True)
+class PivotRow:
+    """One pivot of :func:`mchv3_pivot_table`: lengths in units of the crank l, angles in degrees."""
+
+    beyond: float = field(metadata={"label": "pivot beyond the dwell part (l)"})
+    turns: float = field(metadata={"label": "turns per crank turn"})
+    residual: float = field(metadata={"label": "residual over the dwell, °"})
+    dwell: float = field(metadata={"label": "crank angle with |ψ′| < 2 % of its peak, °"})
+
+
+@validated
+def mchv3_pivot_table(guide: Straight, beyonds: Grid = np.array([0.0, 0.03, 0.06]), depth: Length = 0.05,
+                      n: Annotated[int, count(3)] = 1201) -> Table:
+    """МЧВ3-3М (:func:`mchv3_full_turn`) with its pivot moved along the line past the guide's dwell part:
+    per pivot the turns, the residual (range of ψ over the guide's dwell 2α, ``n`` samples) and the
+    usable dwell of :func:`dwell_extent`. The residual falls as the pivot moves away (to first order
+    h/s, :func:`slot_residual_first_order`; Kinitsky, 1994, МЧВ3-3М as reconstructed in chapter 8)."""
+    dw = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, n) + 1e-5  # off φ = π, where the slot turns over
+    rows = []
+    for beyond in beyonds:
+        full = mchv3_full_turn(guide, float(beyond), depth)
+        rows.append(PivotRow(float(beyond), float(full.turns), float(np.degrees(np.ptp(full.motion(dw).psi))),
+                             float(np.degrees(dwell_extent(full)))))
+    return Table(rows)
+
+
+@dataclass(frozen=True)
+class BestPivotRow:
+    """One guide of :func:`mchv3_best_table`: lengths in units of the crank l, angles in degrees; ``mechanism``
+    is the best МЧВ3-3М (not a column)."""
+
+    dwell: float = field(metadata={"label": "guide's dwell 2α, °"})
+    past: float = field(metadata={"label": "best pivot past the end (l)"})
+    depth: float = field(metadata={"label": "depth (l)"})
+    residual: float = field(metadata={"label": "residual over 2α, °"})
+    peak_dpsi: float = field(metadata={"label": "peak |ψ′|"})
+    mechanism: LambdaSlottedSixBar = field(repr=False, compare=False)
+
+
+@validated
+def mchv3_best_table(dwells: Angles, delta: DwellAngle = np.pi, a: Length = 0.8, beyonds: Grid = np.arange(0.0, 0.5001, 0.005),
+                     depths: Grid = np.arange(0.005, 0.2001, 0.005)) -> Table:
+    """The best МЧВ3-3М (:func:`mchv3_full_turn_best`) on the straight guide (:func:`straight_guiding`, δ, a)
+    of each dwell 2α in ``dwells`` (radians): where its pivot lies past the end of the dwell part and how
+    deep inside the curve, its residual over 2α and its peak |ψ'| over the turn."""
+    rows = []
+    for dwell in dwells:
+        guide = straight_guiding(delta, a, float(dwell))
+        best, residual = mchv3_full_turn_best(guide, beyonds=beyonds, depths=depths)
+        m = guide.mechanism
+        half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
+        past = abs((best.P - m.C) @ np.array([-m.axis[1], m.axis[0]])) - half
+        rows.append(BestPivotRow(float(np.degrees(dwell)), float(past), float(abs(best.offset)),
+                                 float(np.degrees(residual)), float(np.abs(best.motion(best.turn(4001)).dpsi).max()),
+                                 best))
+    return Table(rows)
