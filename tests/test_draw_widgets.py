@@ -419,3 +419,31 @@ def test_plot_cam_laws_draws_each_law_normalised():
         plot_cam_laws(["trapezoid?"])
     with pytest.raises(MechanismError, match="n"):
         plot_cam_laws(n=1)
+
+
+def test_plot_cam_undercut_shows_each_curvature_and_zooms_on_the_fold():
+    import mechlab as ml
+    from mechlab.draw import plot_cam_undercut
+    from mechlab.errors import MechanismError
+
+    deg = np.pi / 180
+    fine = ml.TranslatingRollerCam(ml.CamProgramme(stroke=20.0, rise=120 * deg, ret=100 * deg, outer_dwell=40 * deg),
+                                   base_radius=40.0, roller_radius=10.0)
+    sharp = ml.TranslatingRollerCam(ml.CamProgramme(stroke=30.0, rise=40 * deg, ret=40 * deg), base_radius=15.0,
+                                    roller_radius=11.0)
+    fig = plot_cam_undercut({"fine": fine, "sharp": sharp}, sharp, n=721)
+    left, right = fig.axes[:2]
+    assert len(left.lines) == 4 and left.get_ylim()[1] > 3 * 11 and "degrees" in left.get_xlabel()
+    zoom = right.child_axes[0]
+    cut = sharp.undercut()
+    surface = sharp.profile(721, check=False).surface
+    inside = ((surface[:, 0] >= zoom.get_xlim()[0]) & (surface[:, 0] <= zoom.get_xlim()[1])
+              & (surface[:, 1] >= zoom.get_ylim()[0]) & (surface[:, 1] <= zoom.get_ylim()[1]))
+    theta = np.linspace(0, 2 * np.pi, 721)
+    assert inside[(theta >= cut.where.min()) & (theta <= cut.where.max())].all()   # the whole fold is framed
+    assert inside.mean() < 0.2                                                       # and little else
+    plt.close(fig)
+    with pytest.raises(MechanismError, match="no fold"):
+        plot_cam_undercut({"fine": fine}, fine)
+    with pytest.raises(MechanismError, match="cams"):
+        plot_cam_undercut({}, sharp)

@@ -254,6 +254,7 @@ CASES = {
     # mechlab.motion_laws
     "motion_laws.RiseLaw": lambda: (ML.RiseLaw, tuple(fields_of(ML.LAWS["cycloidal (sine)"])), {}),
     "motion_laws.law_invariants": lambda: (ML.law_invariants, ("cycloidal (sine)",), {"n": 2001, "signed": True}),
+    "motion_laws.law_table": lambda: (ML.law_table, (["cosine", "cycloidal (sine)"],), {"n": 2001}),
     "motion_laws.invariants": lambda: (ML.invariants, (2.0, 0.5, np.sin(PHI), np.cos(PHI)), {"signed": True}),
     "motion_laws.rise_invariants": lambda: (ML.rise_invariants, ml.rise_law(designs()[0], 120 * DEG, n=101),
                                             {"signed": False}),
@@ -400,6 +401,7 @@ def test_every_parameter_replaced(name):
 # made by motion(), a Criteria by evaluate()); every other exported callable needs a case above.
 RESULTS = {"Mechanism", "Grashof", "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
            "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive", "motion_laws.Invariants", "motion_laws.PrintedInvariants",
+           "motion_laws.LawRow",
            "design.Comparison", "design.Candidate", "design.Refusal", "design.DesignReport", "design.Verdict",
            "design.Criteria", "design.Design"}
 def exported_callables() -> dict[str, object]:

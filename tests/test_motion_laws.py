@@ -62,3 +62,20 @@ def test_rise_invariants_of_a_sampled_law_are_scale_free():
     assert np.allclose(inv.values, law.closed, rtol=1e-6)
     with pytest.raises(MechanismError, match="no rise"):
         rise_invariants(phi, np.zeros_like(phi), phi * 0, phi * 0)
+
+
+def test_law_table_gives_each_law_its_invariants_and_end_accelerations():
+    from mechlab.analysis.motion_laws import law_table
+
+    table = law_table()
+    assert list(table.column("law")) == list(LAWS)
+    for row in table:
+        assert (row.B, row.C, row.D) == law_invariants(row.law).values
+        assert (row.start, row.end) == pytest.approx(LAWS[row.law](np.array([0.0, 1.0]))[2], abs=1e-8)
+    by = table.by("law")
+    # soft impacts where Y'' jumps from the dwell's 0; the cycloid starts and ends at zero acceleration
+    assert by["constant acceleration"].start == 4 and by["cycloidal (sine)"].start == 0 == by["cycloidal (sine)"].end
+    assert "-0" not in repr(table) and table.headers[1] == "B = max|Y′|"
+    assert len(law_table(["cosine"], n=2001)) == 1
+    with pytest.raises(MechanismError, match="names"):
+        law_table(["trapezoid"])

@@ -21,7 +21,7 @@ and cams go in one table.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Annotated
 
 import numpy as np
@@ -48,7 +48,7 @@ Sampled = Annotated[np.ndarray, Spec("samples", lo=2, hi=MAX_SAMPLES)]  # one va
 Analogs = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)]
 
 __all__ = ["RiseLaw", "LAWS", "Invariants", "law_invariants", "invariants", "rise_invariants", "PrintedInvariants",
-           "thesis_cam_rows", "thesis_mchv1_rows"]
+           "thesis_cam_rows", "thesis_mchv1_rows", "LawRow", "law_table"]
 
 
 @dataclass(frozen=True)
@@ -277,3 +277,31 @@ def thesis_mchv1_rows() -> list:
         (240, 100, 1.4, 1.52, 5.17, 4.13), (240, 125, 1.4, 1.30, 3.50, 2.43), (270, 25, 1.5, 2.16, 11.76, 12.52),
         (270, 50, 1.7, 1.92, 7.23, 7.89), (270, 100, 1.6, 1.45, 4.95, 3.51),
     ]
+
+
+@dataclass(frozen=True)
+class LawRow:
+    """One law of :func:`law_table`: its invariants (dimensionless) and Y″ at the rise's two ends."""
+
+    law: str
+    B: float = field(metadata={"label": "B = max|Y′|"})
+    C: float = field(metadata={"label": "C = max|Y″|"})
+    D: float = field(metadata={"label": "D = max|Y′Y″|"})
+    start: float = field(metadata={"label": "Y″ at x = 0"})
+    end: float = field(metadata={"label": "Y″ at x = 1"})
+
+
+def law_table(names=None, n: Annotated[int, count(3)] = 20001) -> Table:
+    """The cam laws side by side (Kinitsky, 1994, chapter 2): per law of :data:`LAWS` (all, or those
+    named), B, C, D of :func:`law_invariants` and the acceleration analog Y″ at both ends of the rise —
+    a jump there from the dwell's 0 is a soft impact."""
+    if names is not None and (not isinstance(names, list | tuple) or not names):
+        raise DimensionError(f"names must be a non-empty list of law names (or None: all), got {names!r}")
+    names = list(LAWS) if names is None else [check("names", name, choice(*LAWS)) for name in names]
+    n = check("n", n, count(3))
+    rows = []
+    for name in names:
+        inv = law_invariants(name, n)
+        ends = np.round(LAWS[name](np.array([0.0, 1.0]))[2], 9) + 0.0   # rounding noise and "-0" away
+        rows.append(LawRow(name, inv.B, inv.C, inv.D, float(ends[0]), float(ends[1])))
+    return Table(rows)

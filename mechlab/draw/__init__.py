@@ -606,3 +606,58 @@ def plot_cam_laws(names=None, n: int = 401):
     axes[2].legend(fontsize=7)
     fig.tight_layout()
     return fig
+
+
+def plot_cam_undercut(cams: dict, folded, n: int = 1441):
+    """Why a roller cam undercuts: left, the convex radius of curvature ρ of each named cam's pitch
+    curve against the cam angle, its roller radius r_r dotted (the roller fits where ρ > r_r); right,
+    the pitch curve of ``folded`` and its offset by r_r, which folds over where ρ < r_r, the fold zoomed
+    (the offset is the profile, ρ_profile = ρ − r_r; Kinitsky, 1994). Returns the Figure.
+
+    Parameters
+    ----------
+    cams : name → roller cam, each drawn on the left.
+    folded : the roller cam drawn on the right; it must undercut (its :meth:`undercut` is not None).
+    n : design angles over the turn, at least 3.
+    """
+    from ..errors import MechanismError
+    from ..mechanisms.cam import RollerCam
+    from ..validate import check, count, mechanism
+
+    n = check("n", n, count(3))
+    folded = check("folded", folded, mechanism(RollerCam))
+    if not isinstance(cams, dict) or not cams:
+        raise MechanismError(f"cams must be a non-empty dict of name → roller cam, got {cams!r}")
+    for name, cam in cams.items():
+        check(f"cams[{name!r}]", cam, mechanism(RollerCam))
+    cut = folded.undercut()
+    if cut is None:
+        raise MechanismError("folded: its roller fits the pitch curve everywhere, there is no fold to show")
+    phi = np.linspace(0.0, 2 * np.pi, n)
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6))
+    for name, cam in cams.items():
+        k = cam.curvature(phi)
+        axes[0].plot(np.degrees(phi), np.where(k > 0, 1 / np.maximum(k, 1e-9), np.nan), label=f"{name}: pitch ρ")
+        axes[0].axhline(cam.roller_radius, ls=":", color=axes[0].lines[-1].get_color(), label=f"{name}: roller r_r")
+    # from 0 to past every cam's sharpest convex part and its roller, leaving out the flat arcs
+    sharpest = max(1 / np.max(cam.curvature(phi)) for cam in cams.values())
+    top = max(1.5 * sharpest, 3 * max(cam.roller_radius for cam in cams.values()))
+    axes[0].set(ylim=(0, top), xticks=range(0, 361, 60), xlabel="cam angle φ (degrees)",
+                ylabel="radius of curvature, convex (length of the cam)")
+    axes[0].legend(fontsize=8)
+    axes[0].grid(alpha=0.3)
+    bad = folded.profile(n, check=False)
+    axes[1].plot(*bad.pitch.T, "--", color="#1f4e79", lw=1, label="pitch curve")
+    axes[1].plot(*bad.surface.T, color="#d62728", lw=1.5, label="its offset by r_r: folds over")
+    axes[1].set(aspect="equal", xlabel="x (length of the cam)", ylabel="y (length of the cam)")
+    axes[1].legend(fontsize=8)
+    # the zoom frames the profile over the fold's cam angles
+    near = (bad.theta >= cut.where.min()) & (bad.theta <= cut.where.max())
+    (x0, y0), (x1, y1) = bad.surface[near].min(axis=0), bad.surface[near].max(axis=0)
+    pad = 0.25 * max(x1 - x0, y1 - y0)
+    zoom = axes[1].inset_axes([0.62, 0.04, 0.36, 0.36])
+    zoom.plot(*bad.surface.T, color="#d62728", lw=1.5)
+    zoom.set(xlim=(x0 - pad, x1 + pad), ylim=(y0 - pad, y1 + pad), xticks=[], yticks=[], aspect="equal")
+    zoom.set_title("the fold, zoomed", fontsize=8)
+    fig.tight_layout()
+    return fig
