@@ -267,7 +267,8 @@ def test_mchv3_full_turn_residual_is_first_order_h_over_s_and_inherent_for_180_d
 
 
 def test_mchv3_tables_give_each_pivot_its_residual_and_name_their_units():
-    from mechlab.synthesis.lambda_sixbars import dwell_extent, mchv3_best_table, mchv3_full_turn_best, mchv3_pivot_table
+    from mechlab.synthesis.lambda_sixbars import (dwell_extent, mchv3_best_table, mchv3_full_turn_best,
+                                                  mchv3_pivot_table)
 
     s = straight_guiding(np.pi, 0.8, np.pi)
     pivots = mchv3_pivot_table(s, beyonds=[0.0, 0.03, 0.06], n=2001)

@@ -349,7 +349,7 @@ class PivotRow:
 
 
 @validated
-def mchv3_pivot_table(guide: Straight, beyonds: Grid = np.array([0.0, 0.03, 0.06]), depth: Length = 0.05,
+def mchv3_pivot_table(guide: Straight, beyonds: Grid = (0.0, 0.03, 0.06), depth: Length = 0.05,
                       n: Annotated[int, count(3)] = 1201) -> Table:
     """МЧВ3-3М (:func:`mchv3_full_turn`) with its pivot moved along the line past the guide's dwell part:
     per pivot the turns, the residual (range of ψ over the guide's dwell 2α, ``n`` samples) and the
@@ -378,15 +378,17 @@ class BestPivotRow:
 
 
 @validated
-def mchv3_best_table(dwells: Angles, delta: DwellAngle = np.pi, a: Length = 0.8, beyonds: Grid = np.arange(0.0, 0.5001, 0.005),
-                     depths: Grid = np.arange(0.005, 0.2001, 0.005)) -> Table:
+def mchv3_best_table(dwells: Angles, delta: DwellAngle = np.pi, a: Length = 0.8, beyonds: Grid | None = None,
+                     depths: Grid | None = None) -> Table:
     """The best МЧВ3-3М (:func:`mchv3_full_turn_best`) on the straight guide (:func:`straight_guiding`, δ, a)
     of each dwell 2α in ``dwells`` (radians): where its pivot lies past the end of the dwell part and how
-    deep inside the curve, its residual over 2α and its peak |ψ'| over the turn."""
+    deep inside the curve, its residual over 2α and its peak |ψ'| over the turn; ``beyonds``, ``depths``:
+    the scan's grids (None: those of :func:`mchv3_full_turn_best`)."""
+    grids = {k: v for k, v in (("beyonds", beyonds), ("depths", depths)) if v is not None}
     rows = []
     for dwell in dwells:
         guide = straight_guiding(delta, a, float(dwell))
-        best, residual = mchv3_full_turn_best(guide, beyonds=beyonds, depths=depths)
+        best, residual = mchv3_full_turn_best(guide, **grids)
         m = guide.mechanism
         half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
         past = abs((best.P - m.C) @ np.array([-m.axis[1], m.axis[0]])) - half
