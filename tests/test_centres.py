@@ -397,6 +397,29 @@ def test_centrode_animation_moves_the_same_artists():
     plt.close("all")
 
 
+def test_draw_centrodes_shows_one_frame_with_the_pole_on_both_curves():
+    import matplotlib.pyplot as plt
+
+    from mechlab.draw.centres import draw_centrodes
+
+    ap = Antiparallelogram(1.0, 2.0)
+    cd = centrodes(ap, "rocker", "crank", ap.cycle(181))
+    ax = draw_centrodes(cd, i=20, title="ellipses")
+    fixed, moving, pole = (next(l for l in ax.lines if l.get_label() == name) for name in
+                           ("fixed centrode (crank)", "moving centrode (rocker)", cd.centres.label("rocker", "crank")))
+    P = cd.centre[20].h[0, :2]
+    assert np.allclose(np.ravel(pole.get_data()), P) and ax.get_title() == "ellipses"
+    for line in (fixed, moving):   # the two curves touch at the pole
+        xy = np.ma.column_stack(line.get_data())
+        assert np.ma.min(np.hypot(xy[:, 0] - P[0], xy[:, 1] - P[1])) < 1e-9
+    assert {"O", "A", "B", "E"} <= {t.get_text() for t in ax.texts}   # the joint letters the text uses
+    with pytest.raises(MechanismError):
+        draw_centrodes(cd, i=181)
+    with pytest.raises(TypeError, match="Centrodes"):
+        draw_centrodes(ap)
+    plt.close("all")
+
+
 def test_explorers_follow_sliders_and_show_errors():
     from mechlab.widgets.centres import antiparallelogram_explorer, fourbar_centrode_explorer, trammel_explorer
 

@@ -115,6 +115,34 @@ def draw_centres(ic: InstantCentres, i: int = 0, ax=None, lines: bool = True):
     return ax
 
 
+def draw_centrodes(cd: Centrodes, i: int = 0, ax=None, clip: float | None = None, title: str | None = None):
+    """One frame of :func:`animate_centrodes`, still: the linkage at sample ``i`` of the centrodes' crank
+    angles, the fixed centrode (on the reference link), the moving one (carried by the link) touching it
+    at the pole ★, the curves cut ``clip`` from the reference's origin (default: 3 × the mechanism's size)
+    where they run off to infinity. Returns the axes."""
+    from ..validate import check, count
+
+    if not isinstance(cd, Centrodes):
+        raise TypeError(f"cd must be the Centrodes of mechlab.analysis.centres.centrodes, got {type(cd).__name__}")
+    i = check("i", i, count(0, len(cd.centres.phi) - 1))
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6, 5))
+    mechanism = cd.centres.mechanism
+    drawing = drawing_class(mechanism)(ax, mechanism, n=len(cd.centres.phi))
+    drawing.set_motion(mechanism, cd.centres.motion)
+    drawing.set_frame(i)
+    overlay = CentrodeOverlay(ax, cd, clip)
+    overlay.set_frame(i)
+    drawing.autoscale()
+    ax.relim()
+    ax.autoscale_view()
+    ax.set_aspect("equal")
+    ax.set_axis_off()   # a diagram, as draw_centres
+    ax.legend(loc="lower right", fontsize=8)
+    ax.set_title(title or f"{cd.link} about {cd.reference} at φ = {np.degrees(cd.centres.phi[i]):.1f}°", fontsize=10)
+    return ax
+
+
 def animate_centrodes(mechanism, link: str, reference: str = "frame", n: int = 36, interval: int = 80,
                       clip: float | None = None, figsize=(4.4, 4.0), dpi: int = 65) -> Animation:
     """An animation of the linkage with the two centrodes of ``link`` relative to
