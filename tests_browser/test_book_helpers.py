@@ -102,9 +102,9 @@ def test_errata_markdown(tmp_path):
     assert md.startswith(f"0 printed mistakes, 2 remarks and 0 unreadable passages in 2 of the {len(SOURCES)} "
                          f"source texts.")
     lines = md.splitlines()
-    # grouped by source in key order, each with its title and a link to the References page
-    head0 = lines.index(f'**Source <a href="references.html#seed-000">000</a>: {SOURCES["000"]}**')
-    head4 = lines.index(f'**Source <a href="references.html#seed-004">004</a>: {SOURCES["004"]}**')
+    # grouped by source in key order, each headed by its work (no key) linked to the References page
+    head0 = lines.index(f'**<a href="references.html#seed-000">{SOURCES["000"]}</a>**')
+    head4 = lines.index(f'**<a href="references.html#seed-004">{SOURCES["004"]}</a>**')
     assert head0 < lines.index("  - evidence: printed gives 1.25, correct gives 1.5") < head4
     assert ('- **formula (21)** — shown in <a href="notebooks/07_chapter.html#cell-3">7 · A chapter</a>'
             in lines)
