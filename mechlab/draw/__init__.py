@@ -661,3 +661,44 @@ def plot_cam_undercut(cams: dict, folded, n: int = 1441):
     zoom.set_title("the fold, zoomed", fontsize=8)
     fig.tight_layout()
     return fig
+
+
+OUTCOME_STYLE = {  # kind → (marker, colour, legend)
+    "design": ("o", "#2a7f62", "equal-ripple design"), "frame": ("s", "0.75", "outside the span of a"),
+    "resolution": ("v", "#8fb3d9", "ripple below resolution (< 10⁻⁹ l)"),
+    "rotation": ("^", "#d98f3f", "beyond the rotation limit"), "fold": ("D", "#a879c9", "shorter than the fold"),
+    "whole turn": ("P", "0.45", "2α = 360° off the whole-turn line"), "unresolved": ("x", "C3", "unresolved")}
+
+
+def plot_design_outcomes(maps):
+    """Where :func:`mechlab.synthesis.lambda_guiding.circle_guiding` designs, one panel per
+    :class:`~mechlab.synthesis.lambda_guiding.DesignOutcomes`: frame a against dwell 2α, a filled dot per design,
+    an open marker per refusal kind, the span's ends dashed; returns the Figure.
+    """
+    from ..errors import MechanismError
+    from ..synthesis.lambda_guiding import DesignOutcomes
+    from ..validate import check, mechanism
+
+    maps = list(maps) if isinstance(maps, list | tuple) else [maps]
+    if not maps:
+        raise MechanismError("maps must hold at least one DesignOutcomes")
+    for i, m in enumerate(maps):
+        check(f"maps[{i}]", m, mechanism(DesignOutcomes))
+    fig, axes = plt.subplots(1, len(maps), figsize=(4 * len(maps) + 2.5, 4.2), sharey=True, squeeze=False)
+    axes = axes[0]
+    for ax, m in zip(axes, maps):
+        for i, a in enumerate(m.a):
+            for j, dw in enumerate(np.degrees(m.dwell)):
+                marker, colour, _ = OUTCOME_STYLE[m.kind[i, j]]
+                ax.plot(a, dw, marker, color=colour, ms=5, mfc=colour if m.kind[i, j] == "design" else "none")
+        for edge in m.span:
+            ax.axvline(edge, color="C3", ls="--", lw=1)
+        ax.set_title(f"δ = {np.degrees(m.delta):.0f}°")
+        ax.set_xlabel("frame a (units of l)")
+    axes[0].set_ylabel("dwell 2α (degrees)")
+    for kind, (marker, colour, label) in OUTCOME_STYLE.items():
+        axes[-1].plot([], [], marker, color=colour, mfc=colour if kind == "design" else "none", label=label)
+    axes[-1].plot([], [], "C3--", label="ends of the span of a")
+    axes[-1].legend(fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5))
+    fig.tight_layout()
+    return fig

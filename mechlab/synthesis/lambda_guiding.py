@@ -32,7 +32,7 @@ from ..validate import Flag, Spec, angle, check, count, mechanism, number, valid
 __all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "ThesisIteration",
            "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches",
            "WholeTurnLine", "ExistenceMap", "TransmissionLines", "whole_turn_line", "whole_turn_guiding",
-           "existence_region"]
+           "existence_region", "DesignOutcomes", "design_outcomes"]
 
 MAX_SAMPLES = 100_000  # samples of a curve
 RIPPLE_FLOOR = 1e-12   # (in l) the equal-ripple equations are solved to about this; a finer band is not resolved
@@ -464,6 +464,57 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
             raise DimensionError(f"guess must be (r, k, t3, t2), got {guess!r:.60}")
         guess = tuple(check(f"guess[{i}]", v, number()) for i, v in enumerate(guess))
     return _circle(delta, a, dwell, guess, minimax)
+
+
+OUTCOMES = ("design", "frame", "resolution", "rotation", "fold", "whole turn", "unresolved")
+OUTCOME_FRACTIONS = (0.0, 0.001, 0.05, 0.1625, 0.275, 0.3875, 0.5, 0.6125, 0.725, 0.8375, 0.95, 0.999, 1.0)
+OUTCOME_DWELLS = tuple(np.radians((0.5, 5, 15, 30, 60, 90, 120, 150, 180, 210, 240, 270, 300, 330, 359.64, 360)))
+MAX_OUTCOMES = 1000  # requests per map: each is a synthesis (up to ~1 s near the span's ends)
+
+
+@dataclass(frozen=True)
+class DesignOutcomes:
+    """What :func:`circle_guiding` returns over a grid of frames ``a`` (the span ``span`` = (lo, hi) of the
+    existence region, ends included) and dwells ``dwell`` (rad) for break angle ``delta``: ``kind[i, j]``
+    is ``"design"``, the refusal's kind (:class:`NoDesignError`) or ``"unresolved"`` for frame i, dwell j."""
+
+    delta: float
+    span: tuple[float, float]
+    fraction: np.ndarray  # each frame's place in the span: 0 at its lower end, 1 at its upper end
+    a: np.ndarray
+    dwell: np.ndarray
+    kind: np.ndarray
+
+
+def design_outcomes(delta: float, fractions=OUTCOME_FRACTIONS, dwells=OUTCOME_DWELLS) -> DesignOutcomes:
+    """:func:`circle_guiding` (``minimax=False``) at every frame ``lo + f (hi − lo)`` for ``f`` in ``fractions``
+    of the existence region's span and every dwell 2α in ``dwells`` (rad): a map of where designs exist
+    and why the rest are refused (at most MAX_OUTCOMES requests)."""
+    delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
+    fractions = np.atleast_1d(check("fractions", fractions, Spec("reals")))
+    dwells = np.atleast_1d(check("dwells", dwells, Spec("reals")))
+    if fractions.size == 0 or dwells.size == 0:
+        raise DimensionError("design_outcomes: fractions and dwells must each hold at least one value")
+    if np.any((fractions < 0) | (fractions > 1)):
+        raise DimensionError(f"fractions of the span must lie in [0, 1], got {fractions.min():g} … {fractions.max():g}")
+    if np.any((dwells < 0) | (dwells > 2 * np.pi)):
+        raise DimensionError(f"dwells 2α must lie in [0, 2π] rad, got {dwells.min():g} … {dwells.max():g}")
+    if fractions.size * dwells.size > MAX_OUTCOMES:
+        raise DimensionError(f"design_outcomes: {fractions.size} frames × {dwells.size} dwells = "
+                             f"{fractions.size * dwells.size} requests > MAX_OUTCOMES = {MAX_OUTCOMES}")
+    lo, hi = _frame_span(delta)
+    a = lo + (hi - lo) * fractions
+    kind = np.empty((a.size, dwells.size), dtype=object)
+    for i, a_ in enumerate(a):
+        for j, dw in enumerate(dwells):
+            try:
+                circle_guiding(delta, a_, dw, minimax=False)
+                kind[i, j] = "design"
+            except NoDesignError as err:
+                kind[i, j] = err.kind
+            except MechanismError:  # a = 0 is no frame at all; anything else is a request left unresolved
+                kind[i, j] = "frame" if a_ == 0 else "unresolved"
+    return DesignOutcomes(float(delta), (float(lo), float(hi)), fractions, a, dwells, kind)
 
 
 def _circle(delta, a, dwell, guess, minimax, depth=0):
