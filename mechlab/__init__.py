@@ -35,7 +35,8 @@ from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, 
                                    DwellSlotMechanism, best_placement, compare_transitions, curved_slot_dwell,
                                    dwell_limit, two_branch_slot)
 from .synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison, table1_review
-from .synthesis.lambda_guiding import (band_touches, circle_guiding, existence_map, existence_region,
+from .synthesis.lambda_guiding import (DesignOutcomes, band_touches, circle_guiding, design_outcomes, existence_map,
+                                       existence_region,
                                        fifth_order_line, straight_guiding, thesis_iteration, transmission_lines,
                                        whole_turn_guiding, whole_turn_line)
 from .synthesis.lambda_sixbars import (dwell_extent, mchv1, mchv3_best_table, mchv3_full_turn, mchv3_full_turn_best,
@@ -73,7 +74,7 @@ __all__ = [
     "write_cam_dxf",
     # Chebyshev
     "circle_guiding", "straight_guiding", "whole_turn_line", "whole_turn_guiding", "existence_map",
-    "existence_region", "band_touches", "fifth_order_line", "thesis_iteration", "transmission_lines",
+    "existence_region", "design_outcomes", "DesignOutcomes", "band_touches", "fifth_order_line", "thesis_iteration", "transmission_lines",
     "classic_lambda", "LambdaRockerSixBar", "LambdaSlottedSixBar", "LambdaSliderSixBar", "LambdaTranslatingSlot",
     "mchv1", "mchv2", "mchv2_far_position", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best",
     "mchv3_half_turn", "mchv3_oscillating", "mchv3_pivot_table", "mchv3_best_table",

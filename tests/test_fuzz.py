@@ -238,6 +238,7 @@ CASES = {
     "whole_turn_guiding": lambda: (ml.whole_turn_guiding, (240 * DEG, 1.6), {"line": None}),
     "existence_map": lambda: (ml.existence_map, (150 * DEG,), {"dwells": (120 * DEG,), "n": 3}),
     "existence_region": lambda: (ml.existence_region, (240 * DEG,), {"line": None}),
+    "design_outcomes": lambda: (ml.design_outcomes, (150 * DEG,), {"fractions": (0.5,), "dwells": (120 * DEG,)}),
     # mechlab.forces
     "forces.solve": lambda: (F.solve, (ml.model_for(fb), fb.motion(PHI)),
                              {"loads": (ml.Torque("rocker", 5.0),), "omega1": 2.0, "eps1": 0.5,
@@ -281,7 +282,7 @@ CASES = {
 }
 
 # the slow ones get fewer examples
-BUDGET = {"whole_turn_guiding": 3, "existence_region": 3, "existence_map": 3, "whole_turn_line": 4,
+BUDGET = {"whole_turn_guiding": 3, "existence_region": 3, "design_outcomes": 3, "existence_map": 3, "whole_turn_line": 4,
           "design.candidates": 8, "design.check_design": 8, "design.evaluate": 10, "design.Comparison.ranked": 4,
           "design.Comparison.to_csv": 4, "rise_law": 8, "dwell_extent": 8, "mchv3_half_turn": 4,
           "dwell_limit": 4, "mchv3_full_turn_best": 6, "mchv3_best_table": 4, "mchv3_pivot_table": 6, "compare_transitions": 4, "mchv2_stroke": 6, "mchv1": 8,
@@ -399,7 +400,7 @@ def test_every_parameter_replaced(name):
 
 # Exported classes whose instances are results, built by the library and never from user input (a Motion is
 # made by motion(), a Criteria by evaluate()); every other exported callable needs a case above.
-RESULTS = {"Mechanism", "Grashof", "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
+RESULTS = {"DesignOutcomes", "Mechanism", "Grashof", "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
            "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive", "motion_laws.Invariants", "motion_laws.PrintedInvariants",
            "motion_laws.LawRow",
            "design.Comparison", "design.Candidate", "design.Refusal", "design.DesignReport", "design.Verdict",

@@ -500,7 +500,7 @@ def design_outcomes(delta: float, fractions=OUTCOME_FRACTIONS, dwells=OUTCOME_DW
     if np.any((dwells < 0) | (dwells > 2 * np.pi)):
         raise DimensionError(f"dwells 2α must lie in [0, 2π] rad, got {dwells.min():g} … {dwells.max():g}")
     if fractions.size * dwells.size > MAX_OUTCOMES:
-        raise DimensionError(f"design_outcomes: {fractions.size} frames × {dwells.size} dwells = "
+        raise DimensionError(f"fractions × dwells: {fractions.size} frames × {dwells.size} dwells = "
                              f"{fractions.size * dwells.size} requests > MAX_OUTCOMES = {MAX_OUTCOMES}")
     lo, hi = _frame_span(delta)
     a = lo + (hi - lo) * fractions
