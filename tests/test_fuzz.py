@@ -28,6 +28,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from examples import designs, guides
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -56,18 +57,6 @@ def scratch() -> Path:
     folder = Path(tempfile.mkdtemp(prefix="mechlab-fuzz-"))
     atexit.register(shutil.rmtree, folder, ignore_errors=True)
     return folder
-
-
-@functools.cache
-def guides():
-    return ml.circle_guiding(150 * DEG, 0.9, 120 * DEG), ml.straight_guiding(np.pi, 0.8, np.pi)
-
-
-@functools.cache
-def designs():
-    circle, straight = guides()
-    return (ml.mchv1(circle, 1.0, 20 * DEG), ml.mchv2(circle, 1.0), ml.mchv3_full_turn(straight),
-            ml.mchv5(straight))
 
 
 @functools.cache

@@ -15,6 +15,7 @@ from typing import Annotated
 
 import numpy as np
 import pytest
+from examples import designs, guides
 
 import mechlab as ml
 from mechlab import DimensionError, MechanismError
@@ -26,21 +27,14 @@ DEG = np.pi / 180
 
 
 @functools.cache
-def guides():
-    return ml.circle_guiding(150 * DEG, 0.9, 120 * DEG), ml.straight_guiding(np.pi, 0.8, np.pi)
-
-
-@functools.cache
 def mechanisms():
     """One of every mechanism class the package exports (18, with the four lambda six-bars)."""
-    circle, straight = guides()
     return [ml.FourBar(1, 3, 3, 4), ml.SliderCrank(1, 3, 0.2), ml.SlottedLink(0.5, 1), ml.SineMechanism(1),
             ml.CurvedSlotLink(1, 4, ml.CircleSlot((3, 0), 3), start=1.0),
             ml.TranslatingCurvedSlot(1, ml.CircleSlot((0, 0.2), 3)), sixbar_example(), ml.EllipticTrammel(1),
             ml.Antiparallelogram(1, 2), ml.LambdaMechanism(0.4, 0.8, np.pi), ml.ExternalGeneva(4, 1),
             ml.InternalGeneva(6, 1), ml.SphericalGeneva(40, 15, 4),
-            ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG), ml.mchv1(circle, 1.0, 20 * DEG), ml.mchv2(circle, 1.0),
-            ml.mchv3_full_turn(straight), ml.mchv5(straight)]
+            ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG), *designs()]
 
 
 def init_fields(obj) -> dict:
