@@ -1,5 +1,7 @@
 """Geneva drives: planar external/internal and the spherical offset Geneva of seed 004."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -7,7 +9,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab.errors import DimensionError, MechanismError
-from mechlab.synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison, table1_review
+from mechlab.synthesis.geneva import (TABLE1_COLUMNS, TABLE1_PRINTED, ReviewRow, SphericalRow, spherical_table,
+                                      table1_comparison, table1_review)
 from mechlab.kinetostatics.drive import DriveError
 from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, impact_kind
 from mechlab.mechanisms.spherical_geneva import SphericalGeneva
@@ -322,6 +325,13 @@ def test_table1_review_shows_printed_and_computed_with_units_and_marks():
     assert {k for k, m in marks.items() if m.endswith(" ✗")} == {(c.z, c.column) for c in table1_comparison()
                                                           if c.status == "differs"}
     assert "<th>|ε|max/ω1²</th>" in review._repr_html_()
+
+
+def test_the_review_columns_are_table1s_with_its_labels():
+    review = {f.name: f.metadata.get("label") for f in dataclasses.fields(ReviewRow)}
+    table1 = {f.name: f.metadata.get("label") for f in dataclasses.fields(SphericalRow)}
+    assert tuple(review) == tuple(table1) == ("z", *TABLE1_COLUMNS) and len(TABLE1_COLUMNS) == 6
+    assert all(review[c] == table1[c] is not None for c in TABLE1_COLUMNS)
 
 
 # -- drive --------------------------------------------------------------------------------------

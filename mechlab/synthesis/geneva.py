@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import Annotated
 
 import numpy as np
@@ -50,7 +50,7 @@ TABLE1_PRINTED = Table(SphericalRow(*row) for row in (
 ))
 
 
-TABLE1_COLUMNS = ("alpha0", "beta0", "omega_max", "eps_max", "alpha1", "beta1")
+TABLE1_COLUMNS = tuple(f.name for f in fields(SphericalRow) if f.name != "z")
 
 
 @dataclass(frozen=True)
@@ -89,18 +89,23 @@ def table1_comparison(R: float = 40.0, e: float = 15.0) -> Table:
 _MARK = {"agrees": "", "last digit": " ·", "differs": " ✗"}
 
 
+def _labelled_as_table1(name: str):
+    """A field with the label (and so the units) of :class:`SphericalRow`'s column ``name``."""
+    return field(metadata=SphericalRow.__dataclass_fields__[name].metadata)
+
+
 @dataclass(frozen=True)
 class ReviewRow:
     """One z of Table 1 (Vainer & Shatokhina), each cell "printed / computed" and marked
     "·" (last digit) or "✗" (differs); the columns carry :class:`SphericalRow`'s units."""
 
     z: int
-    alpha0: str = field(metadata={"label": "α0, °"})
-    beta0: str = field(metadata={"label": "β0, °"})
-    omega_max: str = field(metadata={"label": "ω_max/ω1"})
-    eps_max: str = field(metadata={"label": "|ε|max/ω1²"})
-    alpha1: str = field(metadata={"label": "α1, °"})
-    beta1: str = field(metadata={"label": "β1, °"})
+    alpha0: str = _labelled_as_table1("alpha0")
+    beta0: str = _labelled_as_table1("beta0")
+    omega_max: str = _labelled_as_table1("omega_max")
+    eps_max: str = _labelled_as_table1("eps_max")
+    alpha1: str = _labelled_as_table1("alpha1")
+    beta1: str = _labelled_as_table1("beta1")
 
 
 def table1_review(comparison: Table | None = None) -> Table:
