@@ -50,7 +50,8 @@ class Spec:
     "point" (a 2-vector), "points" (an (m, width) array, m ≥ lo), "mechanism" (an instance of ``expected``),
     "items" (a sequence of instances of ``expected``, made a tuple), "text" (a non-empty str), "function",
     "samples" (a 1-D array of at least ``lo`` finite numbers), "path" (a str or os.PathLike),
-    "angles" (crank angles: a scalar or a 1-D array of at least ``lo``, radians), "reals" (a number or an array).
+    "angles" (crank angles: a scalar or a 1-D array of at least ``lo``, radians), "reals" (a number or an array,
+    each value within [lo, hi]), "radians" (as "reals", angles: the bounds shown in degrees too).
     """
 
     kind: str
@@ -121,22 +122,52 @@ def _magnitude(spec: Spec, name: str, shown: str):
                      f"(use mm or lengths relative to one link)")
 
 
-def _reals(spec: Spec, name: str, value):
-    """A real number, or an array of them (one per crank angle)."""
+def _plain(v: float) -> str:
+    return f"{v:g}"
+
+
+def _in_radians(v: float) -> str:
+    return f"{v:.6g} rad ({np.degrees(v):.6g}°)"
+
+
+def _reals(spec: Spec, name: str, value, unit=_plain):
+    """A real number, or an array of them (one per crank angle), each within the declared bounds."""
     if not isinstance(value, np.ndarray | list | tuple):
-        return _number(spec, name, value)
+        x = _real(spec, name, value)
+        _bounds(spec, name, x, unit)
+        return x
     arr = np.asarray(value) if not isinstance(value, list | tuple) or value else np.zeros(0)
     if arr.dtype.kind not in "biuf":
         spec.fail(name, "a number or an array of real numbers", _Shown(f"an array of dtype {arr.dtype}"),
                   explain=False)
     arr = arr.astype(float)
-    if not np.all(np.abs(arr) <= MAGNITUDE[1]):  # NaN compares False
+    if not arr.size:
+        return arr
+    least, most = arr.min(), arr.max()  # two passes without temporaries; NaN propagates to both
+    if not -MAGNITUDE[1] <= least <= most <= MAGNITUDE[1]:  # NaN compares False
         spec.fail(name, f"finite, of magnitude ≤ {MAGNITUDE[1]:g}", arr[~(np.abs(arr) <= MAGNITUDE[1])][0],
                   explain=False)
+    if spec.lo is not None and (least < spec.lo or (spec.open_lo and least == spec.lo)):
+        _outside(spec, name, arr, arr <= spec.lo if spec.open_lo else arr < spec.lo,
+                 f"{'>' if spec.open_lo else '≥'} {unit(spec.lo)}")
+    if spec.hi is not None and (most > spec.hi or (spec.open_hi and most == spec.hi)):
+        _outside(spec, name, arr, arr >= spec.hi if spec.open_hi else arr > spec.hi,
+                 f"{'<' if spec.open_hi else '≤'} {unit(spec.hi)}")
     return arr
 
 
-def _bounds(spec: Spec, name: str, x: float, unit=lambda v: f"{v:g}") -> None:
+def _radians(spec: Spec, name: str, value):
+    return _reals(spec, name, value, _in_radians)
+
+
+def _outside(spec: Spec, name: str, arr: np.ndarray, bad: np.ndarray, condition: str):
+    """Refuse ``arr``, showing (the first four of) its values where ``bad``, which break ``condition``."""
+    values = arr[bad]
+    shown = ", ".join(f"{v:g}" for v in values[:4]) + (", …" if values.size > 4 else "")
+    spec.fail(name, condition, _Shown(f"{shown} ({values.size} of {arr.size} values)" if arr.size > 1 else shown))
+
+
+def _bounds(spec: Spec, name: str, x: float, unit=_plain) -> None:
     if spec.lo is not None and (x < spec.lo or (spec.open_lo and x == spec.lo)):
         spec.fail(name, f"{'>' if spec.open_lo else '≥'} {unit(spec.lo)}", x)
     if spec.hi is not None and (x > spec.hi or (spec.open_hi and x == spec.hi)):
@@ -159,7 +190,7 @@ def _length(spec, name, value):
 
 def _angle(spec, name, value):
     x = _real(spec, name, value)
-    _bounds(spec, name, x, unit=lambda v: f"{v:.6g} rad ({np.degrees(v):.6g}°)")
+    _bounds(spec, name, x, unit=_in_radians)
     return x
 
 
@@ -299,7 +330,7 @@ def _mechanism(spec, name, value):
 _CHECKERS = {"number": _number, "length": _length, "angle": _angle, "count": _count, "sign": _sign,
              "choice": _choice, "flag": _flag, "point": _point, "points": _points, "mechanism": _mechanism,
              "items": _items, "text": _text, "function": _function, "samples": _samples,
-             "path": _path, "angles": _angles, "reals": _reals}
+             "path": _path, "angles": _angles, "reals": _reals, "radians": _radians}
 
 
 # -- declarations ------------------------------------------------------------------------------------------

@@ -28,7 +28,7 @@ from ..errors import DimensionError, MechanismError
 from ..geometry import as_angles, wrap
 from ..mechanisms.base import Mechanism, Part, Sketch
 from ..motion import Table, scalar_law
-from ..validate import MAX_GRID, Checked, Distance, Length, angle, check, choice, count, number, validated
+from ..validate import MAX_GRID, Checked, Distance, Length, Spec, angle, check, choice, count, number, validated
 
 
 TRANSITIONS = ("cubic", "quintic", "sextic")
@@ -59,6 +59,8 @@ Ratio = Annotated[float, number(*LAMBDA_RANGE, error=DwellRatioError, why="λ = 
 # a crank angle of the dwell's design, radians
 DwellAngle = Annotated[float, angle(0.0, np.pi, error=DwellIntervalError, why="the dwell lies within [0°, 180°]")]
 Transition = Annotated[str, choice(*TRANSITIONS, error=DwellError)]
+# the crank angles of the designed half turn, which DwellLaw.half() takes
+_HALF_TURN = Spec("radians", 0.0, np.pi, error=DwellError, why="half() takes the designed half; use __call__ for any φ")
 
 
 def check_lambda(lam) -> float:
@@ -275,9 +277,7 @@ class DwellLaw(Checked):
     @scalar_law
     def half(self, phi) -> BaseLaw:
         """ψ, ψ', ψ'', ψ''' for φ in [0, π] (the designed half)."""
-        phi = as_angles(phi)
-        if np.any((phi < 0.0) | (phi > np.pi)):
-            raise DwellError("half() takes crank angles in [0, π]; use __call__ for any φ")
+        phi = check("phi", as_angles(phi), _HALF_TURN)
         L, R = self._pieces(phi)
         out = [np.zeros_like(phi) for _ in range(4)]
         out[0][:] = self.psi_dwell

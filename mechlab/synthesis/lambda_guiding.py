@@ -491,14 +491,10 @@ def design_outcomes(delta: float, fractions=OUTCOME_FRACTIONS, dwells=OUTCOME_DW
     of the existence region's span and every dwell 2α in ``dwells`` (rad): a map of where designs exist
     and why the rest are refused (at most MAX_OUTCOMES requests)."""
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
-    fractions = np.atleast_1d(check("fractions", fractions, Spec("reals")))
-    dwells = np.atleast_1d(check("dwells", dwells, Spec("reals")))
+    fractions = np.atleast_1d(check("fractions", fractions, Spec("reals", 0.0, 1.0, why="fractions of the span")))
+    dwells = np.atleast_1d(check("dwells", dwells, Spec("radians", 0.0, 2 * np.pi, why="dwells 2α, up to a turn")))
     if fractions.size == 0 or dwells.size == 0:
         raise DimensionError("design_outcomes: fractions and dwells must each hold at least one value")
-    if np.any((fractions < 0) | (fractions > 1)):
-        raise DimensionError(f"fractions of the span must lie in [0, 1], got {fractions.min():g} … {fractions.max():g}")
-    if np.any((dwells < 0) | (dwells > 2 * np.pi)):
-        raise DimensionError(f"dwells 2α must lie in [0, 2π] rad, got {dwells.min():g} … {dwells.max():g}")
     if fractions.size * dwells.size > MAX_OUTCOMES:
         raise DimensionError(f"fractions × dwells: {fractions.size} frames × {dwells.size} dwells = "
                              f"{fractions.size * dwells.size} requests > MAX_OUTCOMES = {MAX_OUTCOMES}")
