@@ -7,38 +7,59 @@ matplotlib.use("Agg")
 import numpy as np
 import pytest
 
-from mechlab.errors import DimensionError, MechanismError, NoDesignError
+from mechlab.errors import DimensionError, MechanismError, NoDesignError, SynthesisError
+from mechlab.synthesis import lambda_guiding
 from mechlab.synthesis.lambda_guiding import OUTCOMES, circle_guiding, design_outcomes
 
 DEG = np.pi / 180
-
-
-def _direct(delta, a, dwell):
-    try:
-        circle_guiding(delta, a, dwell, minimax=False)
-        return "design"
-    except NoDesignError as err:
-        return err.kind
-    except MechanismError:
-        return "frame" if a == 0 else "unresolved"
+REFUSALS = set(OUTCOMES) - {"design", "unresolved"}  # the kinds a NoDesignError names
 
 
 def test_each_cell_is_what_circle_guiding_says():
     m = design_outcomes(150 * DEG, fractions=(0.0, 0.5, 1.0), dwells=(60 * DEG, 180 * DEG, 2 * np.pi))
-    assert m.kind.shape == (3, 3) and set(m.kind.ravel()) <= set(OUTCOMES)
     lo, hi = m.span
     assert m.a[0] == lo and np.isclose(m.a[-1], hi) and 0 <= lo < hi
+    # a = 0 and the span's far end are no frames; mid-span designs exist up to 2α = 180°, but a whole turn
+    # needs a on the whole-turn line (Fig. 2a)
+    assert m.kind.tolist() == [["frame"] * 3, ["design", "design", "whole turn"], ["frame"] * 3]
+    # each cell against circle_guiding's own answer there: the design it returns or the error's evidence
     for i, a in enumerate(m.a):
         for j, dw in enumerate(m.dwell):
-            assert m.kind[i, j] == _direct(150 * DEG, a, dw), (a, dw)
-    assert m.kind[1, 0] == m.kind[1, 1] == "design"  # the middle of the span, ordinary dwells
-    assert m.kind[0, 0] == "frame"  # a = 0 is no frame
+            try:
+                g = circle_guiding(150 * DEG, a, dw, minimax=False)
+            except NoDesignError as err:
+                assert m.kind[i, j] == err.kind and err.kind in REFUSALS, (a, dw)
+                if "span" in err.evidence:  # a frame or whole-turn refusal: a lies outside what it names
+                    assert not err.evidence["span"][0] < a < err.evidence["span"][1], (a, dw, err.evidence)
+            except MechanismError as err:  # no refusal: "frame" only where the error is about a itself
+                assert m.kind[i, j] == ("frame" if str(err).startswith("a must be") else "unresolved"), (a, dw)
+            else:
+                assert m.kind[i, j] == "design" and np.isclose(g.a, a) and np.isclose(g.dwell, dw), (a, dw)
+
+
+def test_each_outcome_of_a_request_gets_its_kind(monkeypatch):
+    """The classification on requests whose outcomes are set here, one per dwell: a design, two refusals,
+    an error that is no refusal (at a = 0: no frame; elsewhere: unresolved), and a bug, which is not hidden."""
+    outcomes = {1.0: None, 2.0: NoDesignError("no design", "fold"), 3.0: NoDesignError("no design", "rotation"),
+                4.0: SynthesisError("the solve did not converge"), 5.0: ValueError("a bug")}
+
+    def request(delta, a, dwell, minimax=True):
+        if outcomes[dwell] is not None:
+            raise outcomes[dwell]
+        return "a design"
+
+    monkeypatch.setattr(lambda_guiding, "circle_guiding", request)
+    m = design_outcomes(150 * DEG, fractions=(0.0, 0.5), dwells=(1.0, 2.0, 3.0, 4.0))
+    assert m.a[0] == 0 < m.a[1]
+    assert m.kind.tolist() == [["design", "fold", "rotation", "frame"], ["design", "fold", "rotation", "unresolved"]]
+    with pytest.raises(ValueError, match="a bug"):
+        design_outcomes(150 * DEG, fractions=(0.5,), dwells=(5.0,))
 
 
 def test_bad_requests_are_named():
-    with pytest.raises(DimensionError, match="fractions"):
+    with pytest.raises(DimensionError, match="fractions must be ≤ 1, got 1.5"):
         design_outcomes(150 * DEG, fractions=(1.5,))
-    with pytest.raises(DimensionError, match="dwells"):
+    with pytest.raises(DimensionError, match="dwells must be ≥ 0 rad"):
         design_outcomes(150 * DEG, dwells=(-1.0,))
     with pytest.raises(DimensionError, match="MAX_OUTCOMES"):
         design_outcomes(150 * DEG, fractions=np.linspace(0, 1, 100), dwells=np.linspace(0.1, 1, 100))
