@@ -352,10 +352,10 @@ class Quantity:
     value: float
 
 
-def _cell(value) -> str:
+def _cell(value, fmt: str = ".6g") -> str:
     if isinstance(value, bool) or not isinstance(value, Real):
         return str(value)
-    return f"{float(value):.6g}"
+    return format(float(value), fmt)
 
 
 @dataclass(frozen=True)
@@ -365,7 +365,8 @@ class Table:
     Iterates over its rows, indexes like a tuple, looks rows up by a column
     (``table.by("z")[4]``), gives a column as an array (``table.column("eps_max")``) and
     shows as an HTML table in a notebook. A field's ``metadata={"label": ...}`` names its column
-    for the reader, with its unit (``"α0, °"``); ``columns`` keeps the field names.
+    for the reader, with its unit (``"α0, °"``), and ``metadata={"format": ".3f"}`` its numbers' format
+    (default ``.6g``); ``columns`` keeps the field names.
     """
 
     rows: tuple
@@ -402,7 +403,8 @@ class Table:
         return {getattr(r, name): r for r in self.rows}
 
     def _text_rows(self) -> list[list[str]]:
-        return [[_cell(getattr(r, c)) for c in self.columns] for r in self.rows]
+        shown = [f for f in fields(self.rows[0]) if f.repr] if self.rows else []
+        return [[_cell(getattr(r, f.name), f.metadata.get("format", ".6g")) for f in shown] for r in self.rows]
 
     def __repr__(self) -> str:
         body = [list(self.headers), *self._text_rows()]

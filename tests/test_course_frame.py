@@ -150,6 +150,16 @@ def test_the_intro_shows_the_path_drawn_from_the_chapters():
     assert learning_path.through_boxes(where, learning_path.arrows(path)) == 0, "an arrow runs through a box"
 
 
+def test_the_path_labels_are_readable_in_the_book_column():
+    """The book shows the picture 752 px wide (its column, the figure at 100 %): every label, the box titles
+    and times included, is at least 11 px high there (the SVG's unit is the point, 72 per inch)."""
+    fig = learning_path.draw(learning_path.chapters(ROOT))
+    px_per_pt = 752 / (fig.get_figwidth() * 72)
+    sizes = sorted((t.get_fontsize() * px_per_pt, t.get_text()) for ax in fig.axes for t in [*ax.texts, ax.title])
+    learning_path.plt.close(fig)
+    assert len(sizes) == 2 * len(learning_path.chapters(ROOT)) + 1 and sizes[0][0] >= 11, sizes[:3]
+
+
 def figure_problems(text: str, shown: str) -> list[str]:
     """'Fig. N' in ``text`` whose number is not in ``shown`` (the page's own drawings)."""
     return [m.group(0) for m in FIGURE.finditer(text)

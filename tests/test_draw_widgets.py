@@ -346,6 +346,22 @@ def test_explorer_mechanism_fills_its_axes():
     plt.close("all")
 
 
+
+def test_dwell_explorer_gives_the_mechanism_a_column_of_its_proportions():
+    """The curved-slot link swings through its law: the drawing over the turn is about as tall as wide, and
+    its column has those proportions, so that the view is filled in both directions (not a wide band)."""
+    from mechlab.widgets.dwell import dwell_explorer
+
+    ex = dwell_explorer(lam=0.5, phi1_deg=60, phi2_deg=150, roller_radius=0.05)
+    ex.fig.canvas.draw()
+    x0, x1, y0, y1 = ex.drawing.bounds(margin=0.0)
+    (vx0, vx1), (vy0, vy1) = ex.ax_mech.get_xlim(), ex.ax_mech.get_ylim()
+    across, up = (x1 - x0) / (vx1 - vx0), (y1 - y0) / (vy1 - vy0)
+    assert min(across, up) > 0.85 * max(across, up) and max(across, up) > 0.6, (across, up)
+    box = ex.ax_mech.get_window_extent()
+    assert box.width / (vx1 - vx0) > 135   # pixels per unit length at the explorer's 80 dpi (110 with the common layout)
+    plt.close("all")
+
 @pytest.mark.parametrize("law", [False, True])
 def test_blitted_frames_match_a_full_drawing_of_the_same_frame(law):
     """The static background is drawn once; each frame must still look as if drawn whole."""

@@ -8,7 +8,7 @@ import mechlab as ml
 from mechlab import DimensionError, FourBar, SineMechanism, SliderCrank, SlottedLink
 from mechlab.analysis.equivalence import EquivalentSlot, assembly_symmetry, base_law, base_mechanism, equivalence_error, equivalent_slot, law_difference, other_assembly, relative_path
 from mechlab.analysis.half_turn import formula_18
-from mechlab.geometry import PointPath, as_angles, crank_point, fixed_point
+from mechlab.geometry import PointPath, as_angles, crank_point, fixed_point, relative, vector_angle
 from mechlab.mechanisms.base import FRAME, Link, Mechanism, Pair, Structure
 from mechlab.mechanisms.sixbar_iv import example
 from mechlab.motion import AngularMotion
@@ -214,6 +214,68 @@ def test_default_twin_needs_a_turning_crank():
     with pytest.raises(DimensionError, match="needs a crank that turns fully"):
         default_twin(FourBar(3, 3, 3, 4, 1))
 
+
+
+class RockingSlot(Mechanism):
+    """A crank O-P (radius a) whose pin P slides in the straight slot of a link pivoted at Q = (-d, 0): the
+    slotted link with its joints named otherwise. Nothing in mechlab knows this class."""
+
+    links = (("O", "P"),)
+    pivots = ("O", "Q")
+
+    def __init__(self, a, d):
+        self.a, self.d = a, d
+
+    def motion(self, phi):
+        phi = as_angles(phi)
+        P, Q = crank_point(self.a, phi), fixed_point((-self.d, 0.0), len(phi))
+        psi = vector_angle(relative(P, Q))
+        return AngularMotion(phi, {"O": fixed_point((0, 0), len(phi)), "P": P, "Q": Q}, np.full(len(phi), np.pi / 2),
+                             psi.theta, psi.d, psi.dd)
+
+    def structure(self):
+        return Structure(
+            (Link("crank", "O", ("O", "P"), self.a), Link("block", "P", ("Q", "P"), block=True),
+             Link("link", "Q", ("Q", "P"), self.a + self.d)),
+            (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "P", "crank", "block", "P"),
+             Pair("prismatic", "slot", "link", "block", "P", 0.0), Pair("revolute", "Q", FRAME, "link", "Q")),
+            (("block", "link"),), "link", scale=self.a + self.d)
+
+
+@pytest.mark.parametrize("a, d", [(0.4, 1.0), (1.6, 1.0)], ids=["rocking", "turning"])
+def test_relative_path_reads_the_pin_from_the_structure(a, d):
+    """The pin P runs along the slot through Q, the link's x axis: seen from the link it is (S, 0) with
+    S = |P - Q| = sqrt(a² + d² + 2ad cos φ), S' = -ad sin φ / S, S'' = -(ad cos φ + S'²) / S."""
+    phi = np.linspace(0.05, 2 * np.pi - 0.05, 121)
+    rel = relative_path(RockingSlot(a, d), phi)
+    S = np.sqrt(a * a + d * d + 2 * a * d * np.cos(phi))
+    dS = -a * d * np.sin(phi) / S
+    ddS = -(a * d * np.cos(phi) + dS**2) / S
+    for w, x in zip(rel, (S, dS, ddS)):
+        assert np.allclose(w, np.stack([x, 0 * x], -1), rtol=0, atol=1e-12 * (a + d))
+
+
+def test_relative_path_on_a_slanted_guide_is_seen_along_the_guide():
+    """A slider on a guide at γ: the pin's displacement seen from the slider is its displacement relative to
+    the slider's joint E turned by -γ (the slider's x axis runs along the guide)."""
+    mech = ml.mchv5(ml.straight_guiding(np.pi, 0.8, np.pi), guide_angle=0.3)
+    guide = mech.structure().frame_pair(mech.structure().output)
+    assert guide.kind == "prismatic" and abs(guide.angle) > 0.3
+    phi = mech.cycle(61)
+    mo, w = mech.motion(phi), relative_path(mech, phi).p
+    v = mo.points["A"].p - mo.points[guide.point].p
+    c, s = np.cos(guide.angle), np.sin(guide.angle)
+    turned = np.stack([c * v[:, 0] + s * v[:, 1], -s * v[:, 0] + c * v[:, 1]], -1)
+    assert np.ptp(w - turned, axis=0).max() < 1e-12
+
+
+@pytest.mark.parametrize("mech, words", [
+    (ml.TranslatingRollerCam(ml.CamProgramme(20.0, 2.0, 1.8, 0.7), 40.0, 10.0), "carries no pin"),
+    (ml.EllipticTrammel(1.0, 2.0), "no crank turning about a frame pivot"),
+])
+def test_relative_path_without_a_crank_pin_says_why(mech, words):
+    with pytest.raises(DimensionError, match=words):
+        relative_path(mech, [0.3, 0.4])
 
 # -- drawings, animation, explorer, exercises and errata of chapters 02-04 -------------------------
 import matplotlib.pyplot as plt  # noqa: E402

@@ -483,6 +483,28 @@ def test_impact_detection_and_comparison():
     assert rows[1].max_ddpsi < rows[0].max_ddpsi
 
 
+def test_compare_takes_a_dwell_tolerance_per_mechanism():
+    """A per-name tolerance is the one intermittency uses for that row; a name it leaves out keeps 1e-9; one
+    number applies to every row; the table shows the chapter's columns at its precision."""
+    mechs = {"external": ExternalGeneva(4, 1.0), "whitworth": SlottedLink(2.0, 1.0), "internal": InternalGeneva(6, 1.0)}
+    loose = {"whitworth": 0.4, "internal": 0.02}   # Whitworth λ = 2: min ψ′ / max ψ′ = (λ - 1)/(λ + 1) = 1/3
+    rows = compare(mechs, n=1441, phase=1e-3, dwell_tol=loose)
+    for r, (name, m) in zip(rows, mechs.items()):
+        assert r == intermittency(m, n=1441, phase=1e-3, dwell_tol=loose.get(name, 1e-9), name=name)
+    assert rows.by("name")["whitworth"].dwell_fraction > 0
+    assert compare(mechs, n=1441).by("name")["whitworth"].dwell_fraction == 0
+    assert [r.dwell_fraction for r in compare(mechs, n=1441, dwell_tol=0.4)] == \
+        [intermittency(m, n=1441, dwell_tol=0.4).dwell_fraction for m in mechs.values()]
+    assert rows.headers[:3] == ("name", "dwell", "Δψ per turn, °") and "<td>0.750</td><td>90</td>" in rows._repr_html_()
+    with pytest.raises(DimensionError, match=r"dwell_tol names no mechanism compared: 'whitworh' \(the mechanisms: "
+                                             r"'external', 'whitworth', 'internal'\)"):
+        compare(mechs, dwell_tol={"whitworh": 0.1})
+    with pytest.raises(DimensionError, match=r"dwell_tol\['internal'\] must be < 1, got 1.5"):
+        compare(mechs, dwell_tol={"internal": 1.5})
+    with pytest.raises(DimensionError, match="dwell_tol must be finite, got nan"):
+        compare(mechs, dwell_tol=float("nan"))
+
+
 
 @pytest.mark.parametrize("cls", [ExternalGeneva, InternalGeneva])
 @pytest.mark.parametrize("z", [4, 6, 8])

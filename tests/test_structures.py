@@ -29,7 +29,8 @@ def families():
             sixbar_iv(), ml.CurvedSlotLink(0.4, 1.0, ml.CircleSlot((1.0, 0.0), 0.9), start=1.0),
             ml.TranslatingCurvedSlot(1.0, ml.CircleSlot((0.0, 0.3), 2.0), start=np.pi),
             ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"),
-            ml.ExternalGeneva(4, 100.0), ml.InternalGeneva(6, 100.0)]
+            ml.ExternalGeneva(4, 100.0), ml.InternalGeneva(6, 100.0), ml.equivalent_slot(ml.FourBar(1, 3, 3, 4)),
+            ml.equivalent_slot(ml.SliderCrank(1, 3, 0.4))]
 
 
 def _name(m):

@@ -5,13 +5,16 @@
 A chapter's needs are the chapters that its "Prerequisites" section links to; a link after
 "Looking ahead" points forward and is no need. Titles and times come from the path's table in
 book/intro.md. An arrow joins a chapter to the one that needs it, left out where a longer chain
-of arrows already leads there. tests/test_course_frame.py checks that every need comes earlier
-in the path and that the committed picture is the one this script draws.
+of arrows already leads there. At most LANES boxes stand side by side, so that the labels stay
+readable where the book shows the picture (its 752 px column). tests/test_course_frame.py checks that
+every need comes earlier in the path, that the committed picture is the one this script draws, that
+no arrow runs through a box and that every label is at least 11 px high in that column.
 """
 
 from __future__ import annotations
 
 import io
+import itertools
 import json
 import re
 import sys
@@ -73,7 +76,9 @@ def arrows(path: list[Chapter]) -> set[tuple[int, int]]:
 
 
 W, H = 0.92, 0.66  # a chapter's box, in lanes (one lane = one box width and its gap) and rows
-SLOTS = [i / 2 for i in range(-2, 13)]  # the x a box may take, in half lanes
+# at most this many lanes side by side, so that the labels stay ≥ 11 px in the book's 752 px column
+LANES = 5
+SLOTS = [i / 2 for i in range(2 * LANES - 1)]  # the x a box may take, in half lanes
 
 
 def segment(where, edge):
@@ -111,28 +116,43 @@ def cost(where, edges) -> float:
             + 4 * (max(xs) - min(xs)))
 
 
-def layout(path: list[Chapter], edges: set[tuple[int, int]]) -> dict[int, tuple[float, int]]:
-    """(x, row): the row is the longest chain of needs below a chapter; the x is found by moving a box
-    to a free slot of its row, or swapping two boxes of a row, while that lowers `cost`."""
-    row: dict[int, int] = {}
-    for c in path:  # in path order, so every need has its row already
-        row[c.number] = 1 + max((row[n] for n in c.needs), default=-1)
-    order = sorted(row, key=lambda m: (row[m], m))
-    where = {m: (float(sum(row[n] == row[m] for n in order[:order.index(m)])), row[m]) for m in order}
-    edges = sorted(edges)
+def improve(where, earliest, needed_by, edges):
+    """Move a box to a free slot of a row it may take (from its earliest row down to just above the first
+    chapter that needs it), or swap two boxes of a row, while that lowers `cost`; the layout and its cost."""
+    order = sorted(where, key=lambda m: (earliest[m], m))
+    last = max(earliest.values())
     best = cost(where, edges)
     improved = True
     while improved:
         improved = False
         for m in order:
-            taken = [x for n, (x, r) in where.items() if r == row[m] and n != m]
-            trials = [{**where, m: (x, row[m])} for x in SLOTS if all(abs(x - t) >= 1 for t in taken)]
-            trials += [{**where, m: where[n], n: where[m]} for n in order if row[n] == row[m] and n > m]
+            trials = []
+            for r in range(earliest[m], min((where[d][1] for d in needed_by[m]), default=last + 1)):
+                taken = [x for n, (x, rn) in where.items() if rn == r and n != m]
+                trials += [{**where, m: (x, r)} for x in SLOTS if all(abs(x - t) >= 1 for t in taken)]
+            trials += [{**where, m: where[n], n: where[m]} for n in order if where[n][1] == where[m][1] and n > m]
             for trial in trials:
                 c = cost(trial, edges)
                 if c < best - 1e-9:
                     where, best, improved = trial, c, True
-    return where
+    return where, best
+
+
+def layout(path: list[Chapter], edges: set[tuple[int, int]]) -> dict[int, tuple[float, int]]:
+    """(x, row): a chapter starts in the row after its latest need (the longest chain of needs below it),
+    side by side in path order, and :func:`improve` moves it; tried from every order of the widest row
+    (the branches), the lowest `cost` wins."""
+    earliest: dict[int, int] = {}
+    for c in path:  # in path order, so every need has its row already
+        earliest[c.number] = 1 + max((earliest[n] for n in c.needs), default=-1)
+    needed_by = {c.number: [d.number for d in path if c.number in d.needs] for c in path}
+    rows: dict[int, list[int]] = {}
+    for m in sorted(earliest, key=lambda m: (earliest[m], m)):
+        rows.setdefault(earliest[m], []).append(m)
+    widest = max(rows, key=lambda r: (len(rows[r]), -r))
+    starts = ({m: (float(i), r) for r, ms in {**rows, widest: list(order)}.items() for i, m in enumerate(ms)}
+              for order in itertools.permutations(rows[widest]))
+    return min((improve(start, earliest, needed_by, sorted(edges)) for start in starts), key=lambda wc: wc[1])[0]
 
 
 def draw(path: list[Chapter]):
@@ -151,7 +171,7 @@ def draw(path: list[Chapter]):
                                     facecolor="#e8f0fa", edgecolor="#1f4e8c", linewidth=1.2, zorder=2))
         title = textwrap.fill(f"{c.number} · {c.title}", 17)
         ax.text(x, r - 0.07, title, ha="center", va="center", fontsize=11, zorder=3)
-        ax.text(x, r + h / 2 - 0.1, f"{c.minutes} min", ha="center", va="center", fontsize=9.5,
+        ax.text(x, r + h / 2 - 0.1, f"{c.minutes} min", ha="center", va="center", fontsize=10,
                 color="#555555", zorder=3)
     for n, c in sorted(edges):
         (x0, r0), (x1, r1) = where[n], where[c]

@@ -20,9 +20,9 @@ from typing import Annotated
 import numpy as np
 
 from ..errors import DimensionError
-from ..geometry import AnglePath, PointPath, as_angles, perp, wrap
-from ..mechanisms.base import FULL_TURN, AnyMechanism, Mechanism
-from ..mechanisms.curved_slot import slot_sketch
+from ..geometry import AnglePath, PointPath, as_angles, wrap
+from ..mechanisms.base import FULL_TURN, AnyMechanism, Mechanism, Structure
+from ..mechanisms.curved_slot import pin_relative_path, slot_sketch
 from ..mechanisms.slotted import SineMechanism, SlottedLink
 from ..motion import AngularMotion, LinearMotion, Motion, scalar_law
 from ..validate import Angles, validated
@@ -57,24 +57,14 @@ def _rot(angle, v):
 @scalar_law
 @validated
 def relative_path(mechanism: AnyMechanism, phi: Angles) -> PointPath:
-    """The crank pin A seen from the output link, with its φ-analogs (Zinchenko et al. (2013) §1, Fig. 1-4).
+    """The crank pin seen from the output link, with its φ-analogs (Zinchenko et al. (2013) §1, Fig. 1-4).
 
-    Angular output about pivot P: w = Rot(-ψ)(A - P), w' = Rot(-ψ)(v' - ψ'·v⊥),
-    w'' = Rot(-ψ)(v'' - 2ψ'·v'⊥ - ψ''·v⊥ - ψ'²·v) with v = A - P.
-    Translating output: w = A - (s, 0), w' = A' - (s', 0), w'' = A'' - (s'', 0).
+    The pin, the output link and its pivot or guide are read from the mechanism's ``structure()``
+    (:func:`mechlab.mechanisms.curved_slot.pin_relative_path`). Angular output about pivot P:
+    w = Rot(-ψ)(A - P), w' = Rot(-ψ)(v' - ψ'·v⊥), w'' = Rot(-ψ)(v'' - 2ψ'·v'⊥ - ψ''·v⊥ - ψ'²·v) with v = A - P.
+    Output sliding on a guide at γ: w = Rot(-γ)(A - O) - (s, 0), the analogs likewise.
     """
-    phi = as_angles(phi)
-    mo = mechanism.motion(phi)
-    A = mo.points["A"]
-    if isinstance(mo, LinearMotion):
-        z = np.zeros_like(mo.s)
-        return PointPath(A.p - np.stack([mo.s, z], -1), A.d - np.stack([mo.ds, z], -1),
-                         A.dd - np.stack([mo.dds, z], -1))
-    piv = mo.points[_output_pivot(mechanism)]
-    v, dv, ddv = A.p - piv.p, A.d - piv.d, A.dd - piv.dd
-    w1, w2 = mo.dpsi[:, None], mo.ddpsi[:, None]
-    return PointPath(_rot(-mo.psi, v), _rot(-mo.psi, dv - w1 * perp(v)),
-                     _rot(-mo.psi, ddv - 2 * w1 * perp(dv) - w2 * perp(v) - w1**2 * v))
+    return pin_relative_path(mechanism, as_angles(phi))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -116,6 +106,25 @@ class EquivalentSlot(Mechanism):
 
     def rotation_failure(self) -> str:
         return self.slot_mechanism.rotation_failure()
+
+    def structure(self) -> Structure:
+        """The curved-slot link's structure in the linkage's frame: its pivot B named E, the slot's normal at the
+        pin turned by ``phase`` (a translating twin's is its curved-slot link's own)."""
+        st = self.slot_mechanism.structure()
+        if self.output == "position":
+            return st
+
+        def named(point):
+            return "E" if point == "B" else point
+
+        def turned(normal):
+            return lambda mo: _rot(self.phase, normal(self.slot_mechanism.motion(mo.phi - self.phase)))
+
+        links = tuple(replace(k, origin=named(k.origin)) for k in st.links)
+        # a normal given in the fixed frame turns with the frame; one given as an angle to a link's axis does not
+        pairs = tuple(replace(p, point=named(p.point), normal=turned(p.normal) if callable(p.normal) else p.normal)
+                      for p in st.pairs)
+        return replace(st, links=links, pairs=pairs)
 
     def slot_samples(self, n: int = 200) -> np.ndarray:
         """Points of the slot's working part in the output link's frame (the linkage's convention)."""

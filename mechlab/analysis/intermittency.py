@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Annotated
 
 import numpy as np
@@ -12,7 +12,7 @@ from ..errors import DimensionError
 from ..mechanisms.base import Mechanism
 from ..mechanisms.geneva import TWO_PI
 from ..motion import Table
-from ..validate import MAX_SAMPLES, Angle, count, number, validated
+from ..validate import MAX_SAMPLES, Angle, check, count, number, validated
 from ..validate import mechanism as mechanism_of
 from .motion_laws import invariants
 
@@ -49,20 +49,27 @@ class Intermittency:
     glossary's C_v, C_a, C_p) of the motion part of the turn."""
 
     name: str
-    dwell_fraction: float
-    index_deg: float
-    max_dpsi: float
-    max_ddpsi: float
-    B: float
-    C: float
-    D: float
-    impact: str
+    dwell_fraction: float = field(metadata={"label": "dwell", "format": ".3f"})
+    index_deg: float = field(metadata={"label": "Δψ per turn, °", "format": ".0f"})
+    max_dpsi: float = field(metadata={"label": "max ψ′", "format": ".3f"})
+    max_ddpsi: float = field(metadata={"label": "max ψ″, 1/rad", "format": ".3f"})
+    B: float = field(metadata={"label": "C_v", "format": ".3f"})
+    C: float = field(metadata={"label": "C_a", "format": ".3f"})
+    D: float = field(metadata={"label": "C_p", "format": ".3f"})
+    impact: str = field(metadata={"label": "impact"})
+
+
+# |ψ'| at most this share of its peak counts as dwell: an exact dwell's numerical zero
+DWELL_TOL = 1e-9
+# a dwell tolerance: a share of the peak |ψ'|, in (0, 1)
+DWELL_TOL_RANGE = number(0.0, 1.0, open=True)
+DwellTol = Annotated[float, DWELL_TOL_RANGE]
 
 
 @validated
 def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
                   n: Annotated[int, count(3, MAX_SAMPLES // 2)] = 7201,
-                  dwell_tol: Annotated[float, number(0.0, 1.0, open=True)] = 1e-9, phase: Angle = 0.0,
+                  dwell_tol: DwellTol = DWELL_TOL, phase: Angle = 0.0,
                   name: str | None = None) -> Intermittency:
     """Invariants of one crank turn: dwell fraction (share of φ with |ψ'| ≤ dwell_tol·max|ψ'|),
     output turn Δψ per crank turn, max |ψ'| and |ψ''|, and the motion-law invariants B, C, D
@@ -88,9 +95,35 @@ def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
                          detect_impacts(mechanism, phase=phase))
 
 
-def compare(mechanisms: dict, **kw) -> Table:
-    """:func:`intermittency` of each named mechanism, one row each."""
+def compare(mechanisms: dict, *, dwell_tol: float | dict = DWELL_TOL, **kw) -> Table:
+    """:func:`intermittency` of each named mechanism, one row each.
+
+    Parameters
+    ----------
+    mechanisms : dict
+        Name → mechanism; the name labels its row.
+    dwell_tol : float or dict, optional
+        The share of the peak |ψ'| below which the output counts as dwelling, in (0, 1): one for every
+        mechanism, or a dict name → tolerance (a mechanism it does not name keeps the default 1e-9). A
+        linkage's approximate dwell needs a larger one than a Geneva's exact dwell.
+    **kw
+        Passed on to :func:`intermittency` (``n``, ``phase``).
+
+    Returns
+    -------
+    Table
+        One :class:`Intermittency` per mechanism, in the dict's order.
+    """
     if not isinstance(mechanisms, dict):
         raise TypeError(f"mechanisms must be a dict of name → mechanism, got {type(mechanisms).__name__}")
-    return Table(intermittency(m, name=name, **kw) for name, m in mechanisms.items())
+    if isinstance(dwell_tol, dict):
+        unknown = [repr(k) for k in dwell_tol if k not in mechanisms]
+        if unknown:
+            raise DimensionError(f"dwell_tol names no mechanism compared: {', '.join(unknown)} "
+                                 f"(the mechanisms: {', '.join(map(repr, mechanisms))})")
+        tols = {name: check(f"dwell_tol[{name!r}]", dwell_tol.get(name, DWELL_TOL), DWELL_TOL_RANGE)
+                for name in mechanisms}
+    else:
+        tols = dict.fromkeys(mechanisms, check("dwell_tol", dwell_tol, DWELL_TOL_RANGE))
+    return Table(intermittency(m, name=name, dwell_tol=tols[name], **kw) for name, m in mechanisms.items())
 

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..mechanisms.geneva import wheel_outline  # noqa: F401 - where the course's readers look for it
 from ..mechanisms.spherical_geneva import SphericalGeneva
-from ..analysis.intermittency import intermittency
+from ..analysis.intermittency import DWELL_TOL, compare
 from . import JOINT_STYLE, LETTER_STYLE, LINK_STYLE, READOUT_STYLE, TRACE_STYLE
 
 # ----------------------------------------------------------------------------------
@@ -130,18 +130,22 @@ class SphericalGenevaDrawing:
         self.ax.set_axis_off()
 
 
-def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.0, dwell_tol: dict | None = None):
+def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.0,
+                    dwell_tol: float | dict | None = None):
     """ψ' and ψ'' over one crank turn (from ``phase``) for each named mechanism, in the
     sense of its index (the external Geneva's negative turn shown positive), with
-    :func:`mechlab.analysis.intermittency.intermittency` in the legend (``dwell_tol`` per name, for
-    approximate dwells)."""
+    :func:`mechlab.analysis.intermittency.compare` in the legend (``dwell_tol`` as there: one, or per name, for
+    approximate dwells; names it does not plot are left out)."""
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5))
     phi = phase + np.linspace(0, 2 * np.pi, n)
+    if isinstance(dwell_tol, dict):   # one dict serves a table of all and a plot of some
+        dwell_tol = {k: v for k, v in dwell_tol.items() if k in mechanisms}
+    rows = compare(mechanisms, n=2 * n, phase=phase, dwell_tol=DWELL_TOL if dwell_tol is None else dwell_tol).by("name")
     for name, m in mechanisms.items():
         mo = m.motion(phi)
         sense = np.sign(mo.psi[-1] - mo.psi[0])
-        inv = intermittency(m, n=2 * n, phase=phase, dwell_tol=(dwell_tol or {}).get(name, 1e-9))
+        inv = rows[name]
         label = f"{name}: dwell {inv.dwell_fraction:.2f}, impact: {inv.impact}"
         axes[0].plot(np.degrees(phi), sense * mo.dpsi, label=label)
         axes[1].plot(np.degrees(phi), sense * mo.ddpsi, label=name)

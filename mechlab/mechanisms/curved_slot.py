@@ -854,17 +854,12 @@ def _slot_in_parameter(path, p, inverse, lo: float, hi: float) -> ParametricSlot
                           lo - margin, hi + margin)
 
 
-def structural_twin(mech: Mechanism) -> tuple[Mechanism, float]:
-    """The curved-slot twin of any mechanism from its ``structure()`` (Zinchenko et al. (2013) §1).
+def crank_pin(mech: Mechanism) -> tuple[Structure, Pair, Pair]:
+    """The structure of ``mech``, its crank's revolute pair with the frame and its pin, read from ``structure()``.
 
-    The crank (input, revolute to the frame) carries the pin A, its revolute pair with the next link; the
-    output turns about its frame pivot E or slides on a guide at angle γ. A fixed in the output's frame
-    traces the relative path w = Rot(-ψ)(A - E), w' = Rot(-ψ)(A' - ψ'·(A - E)⊥),
-    w'' = Rot(-ψ)(A'' - 2ψ'·A'⊥ - ψ''·(A - E)⊥ - ψ'²·(A - E)) (or w = Rot(-γ)(A - O) - (s, 0), the analogs
-    likewise). The group leaves one freedom relative to the output, so w depends on the pin's distance
-    S = |A - E| (its height Rot(-γ)(A - O)_y) alone, and one half turn of the crank covers the slot. The
-    twin is a :class:`CurvedSlotLink` (a :class:`TranslatingCurvedSlot`) with that slot in Zinchenko et al.'s
-    frame; returned with the crank-angle shift to it.
+    The crank is the input link, turning about a frame pivot at the crank angle's rate; its pin is the pair
+    joining it to a moving link at a joint fixed on it (the end of its axis: a linkage's pin joint, or a pin in
+    a slot). DimensionError naming the family where there is none (a cam's contact point moves on the cam).
     """
     name = type(mech).__name__
     st = mech.structure()
@@ -873,17 +868,67 @@ def structural_twin(mech: Mechanism) -> tuple[Mechanism, float]:
     if base_pair is None or base_pair.kind != "revolute" or st.input_rate != 1.0:
         how = "is not joined to the frame" if base_pair is None else f"is joined to the frame by a {base_pair.kind} pair"
         raise DimensionError(f"{name} has no crank turning about a frame pivot (its input, the {crank}, {how}, "
-                             f"dθ/dφ = {st.input_rate:g}): a curved-slot twin is driven by a crank")
+                             f"dθ/dφ = {st.input_rate:g}): no crank pin to follow")
     if st.output == crank:
         raise DimensionError(f"the output of {name} is its crank: there is no output link to carry a slot")
+    link = st.link(crank)
+    fixed = {link.origin, *(link.axis if isinstance(link.axis, tuple) else ())}
+    pin = next((p for p in st.pairs if crank in (p.a, p.b) and FRAME not in (p.a, p.b) and p.point in fixed), None)
+    if pin is None:
+        raise DimensionError(f"the crank of {name} carries no pin: none of its joints fixed on it "
+                             f"({', '.join(sorted(fixed))}) is paired with a moving link")
+    return st, base_pair, pin
+
+
+def pin_relative_path(mech: Mechanism, phi: np.ndarray) -> PointPath:
+    """The crank pin (:func:`crank_pin`) seen from the output link at crank angles φ, with its φ-analogs.
+
+    Output turning about its frame pivot E: w = Rot(-ψ)(A - E), w' = Rot(-ψ)(A' - ψ'·(A - E)⊥),
+    w'' = Rot(-ψ)(A'' - 2ψ'·A'⊥ - ψ''·(A - E)⊥ - ψ'²·(A - E)). Output sliding on a guide at γ from the crank
+    pivot O: w = Rot(-γ)(A - O) - (s, 0), the analogs likewise (Zinchenko et al. (2013) §1).
+    """
+    st, base_pair, pin = crank_pin(mech)
+    out = st.link(st.output)
+    guide = st.frame_pair(out.name)
+    mo = mech.motion(phi)
+    A = mo.points[pin.point]
+    if out.translates:
+        if guide.kind != "prismatic":
+            raise DimensionError(f"the output {out.name} of {type(mech).__name__} translates but is not guided by "
+                                 f"the frame")
+        O, z = mo.points[base_pair.point], np.zeros(len(mo.phi))
+        turn = np.full(len(mo.phi), -float(guide.angle))
+        return PointPath(*(_turned(turn, a - o) - np.stack([x, z], -1)
+                           for a, o, x in zip(A, O, (mo.s, mo.ds, mo.dds))))
+    if guide.kind != "revolute":
+        raise DimensionError(f"the output {out.name} of {type(mech).__name__} neither turns about a frame pivot nor "
+                             f"slides on a guide")
+    E = mo.points[guide.point]
+    v, dv, ddv = A.p - E.p, A.d - E.d, A.dd - E.dd
+    w1, w2 = mo.dpsi[:, None], mo.ddpsi[:, None]
+    return PointPath(_turned(-mo.psi, v), _turned(-mo.psi, dv - w1 * perp(v)),
+                     _turned(-mo.psi, ddv - 2 * w1 * perp(dv) - w2 * perp(v) - w1**2 * v))
+
+
+def structural_twin(mech: Mechanism) -> tuple[Mechanism, float]:
+    """The curved-slot twin of any mechanism from its ``structure()`` (Zinchenko et al. (2013) §1).
+
+    The crank (input, revolute to the frame) carries the pin (:func:`crank_pin`), a revolute pair with the next
+    link; the output turns about its frame pivot E or slides on a guide at angle γ. The pin fixed in the
+    output's frame traces the relative path (:func:`pin_relative_path`). The group leaves one freedom relative
+    to the output, so w depends on the pin's distance S = |A - E| (its height Rot(-γ)(A - O)_y) alone, and one
+    half turn of the crank covers the slot. The twin is a :class:`CurvedSlotLink` (a
+    :class:`TranslatingCurvedSlot`) with that slot in Zinchenko et al.'s frame; returned with the crank-angle
+    shift to it.
+    """
+    name = type(mech).__name__
+    st, base_pair, pin = crank_pin(mech)
     if not mech.can_turn:
         raise DimensionError(f"the default curved-slot twin needs a crank that turns fully; {name}: "
                              f"{mech.rotation_failure()}")
-    pin = next((p for p in st.pairs if p.kind == "revolute" and crank in (p.a, p.b) and FRAME not in (p.a, p.b)),
-               None)
-    if pin is None:
-        raise DimensionError(f"the crank of {name} carries no revolute pair with a moving link: no pin to run "
-                             f"in a slot")
+    if pin.kind != "revolute":
+        raise DimensionError(f"the crank of {name} carries no pin jointed to a moving link: its {pin.point} runs "
+                             f"in a {pin.kind} pair already")
     out = st.link(st.output)
     guide = st.frame_pair(out.name)
     probe = mech.motion(np.array([0.3]))
@@ -895,10 +940,6 @@ def structural_twin(mech: Mechanism) -> tuple[Mechanism, float]:
         raise DimensionError(f"the crank angle φ of {name} is not the angle of its pin {pin.point} about "
                              f"{base_pair.point}: the twin's crank could not be matched to it")
 
-    def pin_path(mo):
-        A = mo.points[pin.point]
-        return PointPath(A.p - O, A.d, A.dd)
-
     def one_slot(path, mirror, what):
         """The second half turn must retrace the first (one slot for the pin): w(mirror(φ)) = w(φ)."""
         f = np.linspace(0.1, np.pi - 0.1, 17)
@@ -908,16 +949,10 @@ def structural_twin(mech: Mechanism) -> tuple[Mechanism, float]:
                                  f"alone (the two half turns differ by {gap:.3g}): no one-slot twin")
 
     if out.translates:
-        if guide.kind != "prismatic":
-            raise DimensionError(f"the output {out.name} of {name} translates but is not guided by the frame")
         gamma = float(guide.angle)
 
         def path(phi):
-            mo = mech.motion(phi + gamma)
-            A, z = pin_path(mo), np.zeros(len(phi))
-            turn = np.full(len(phi), -gamma)
-            return PointPath(*(_turned(turn, v) - np.stack([x, z], -1)
-                               for v, x in zip(A, (mo.s, mo.ds, mo.dds))))
+            return pin_relative_path(mech, phi + gamma)
 
         def height(f):
             return a * np.sin(f), a * np.cos(f), -a * np.sin(f)
@@ -925,20 +960,12 @@ def structural_twin(mech: Mechanism) -> tuple[Mechanism, float]:
         one_slot(path, lambda f: np.pi - f, "the pin's height above the guide")
         slot = _slot_in_parameter(path, height, lambda y: np.arcsin(np.clip(y / a, -1.0, 1.0)), -a, a)
         return TranslatingCurvedSlot(a, slot, start=0.0), gamma
-    if guide.kind != "revolute":
-        raise DimensionError(f"the output {out.name} of {name} neither turns about a frame pivot nor slides on a "
-                             f"guide")
     E = probe.points[guide.point].p[0]
     d = float(np.hypot(*(E - O)))
     phase = float(np.mod(np.arctan2(*(E - O)[::-1]) - np.pi, 2 * np.pi))
 
     def path(phi):
-        mo = mech.motion(phi + phase)
-        A = pin_path(mo)
-        v = A.p - (E - O)
-        w1, w2 = mo.dpsi[:, None], mo.ddpsi[:, None]
-        return PointPath(_turned(-mo.psi, v), _turned(-mo.psi, A.d - w1 * perp(v)),
-                         _turned(-mo.psi, A.dd - 2 * w1 * perp(A.d) - w2 * perp(v) - w1**2 * v))
+        return pin_relative_path(mech, phi + phase)
 
     def distance(f):
         S = np.sqrt(a * a + d * d + 2 * a * d * np.cos(f))

@@ -380,13 +380,16 @@ class MechanismExplorer(Explorer):
     :class:`Choice` (buttons or a drop-down); ``assembly=True`` adds a ±1 toggle; the
     crank angle slider (degrees) and a play button are added by the explorer. ``trace``
     names a joint whose path is drawn; ``length_unit`` names the lengths' unit on the axes
-    ("dimensionless" or "mm"). ``live``, ``question``: see :class:`Explorer`.
+    ("dimensionless" or "mm"). ``live``, ``question``: see :class:`Explorer`. ``figsize`` (inches) and
+    ``mechanism_width`` (the drawing's column over the plots' column) lay the figure out for the family's
+    proportions over its turn.
     """
 
     def __init__(self, factory: Callable, controls: dict, *, assembly: bool = False,
                  trace: str | None = None, n: int = 181, title: str = "", live: bool | None = None,
-                 question: str | None = None, length_unit: str = "dimensionless"):
-        super().__init__(factory, controls, n=n, title=title, live=live, question=question)
+                 question: str | None = None, length_unit: str = "dimensionless", figsize=(9.5, 4.4),
+                 mechanism_width: float = 1.25):
+        super().__init__(factory, controls, n=n, title=title, live=live, question=question, figsize=figsize)
         self.mechanism = None
         self.motion = None
         self.length_unit = length_unit
@@ -394,8 +397,9 @@ class MechanismExplorer(Explorer):
             self.sliders["assembly"] = W.ToggleButtons(options=[("kc = +1", 1), ("kc = -1", -1)], value=1,
                                                        description="assembly")
         self.play = self._play()
-        grid = self.fig.add_gridspec(2, 2, width_ratios=[1.25, 1], left=0.01, right=0.98, bottom=0.12,
-                                     top=0.9 if title else 0.97, wspace=0.28, hspace=0.12)
+        grid = self.fig.add_gridspec(2, 2, width_ratios=[mechanism_width, 1], left=0.01, right=0.98,
+                                     bottom=0.12 * 4.4 / figsize[1], top=1 - (0.1 if title else 0.03) * 4.4 / figsize[1],
+                                     wspace=0.28, hspace=0.12)
         self.ax_mech = self.fig.add_subplot(grid[:, 0])
         self.ax_law = self.fig.add_subplot(grid[0, 1])
         self.ax_rate = self.fig.add_subplot(grid[1, 1], sharex=self.ax_law)

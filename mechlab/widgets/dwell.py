@@ -25,8 +25,11 @@ class DwellExplorer(MechanismExplorer):
             "roller_radius": Control("roller radius ρ", 0.0, 0.5, 0.01, roller_radius),
             "transition": Choice("transition", TRANSITIONS, transition),
         }
+        # the slotted link swings through its whole law over the turn: a drawing about as tall as it is wide,
+        # given a column of its own proportions (and the figure the height for it)
         super().__init__(self._build, controls, n=n, live=live, question=question,
-                         title="Curved-slot dwell mechanism (Zinchenko et al., 2013, §3), lengths dimensionless")
+                         title="Curved-slot dwell mechanism (Zinchenko et al., 2013, §3), lengths dimensionless",
+                         figsize=(9.5, 5.4), mechanism_width=1.1)
 
     @staticmethod
     def _build(lam, pivot_distance, phi1, phi2, roller_radius, transition):
