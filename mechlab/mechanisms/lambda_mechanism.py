@@ -97,18 +97,18 @@ class LambdaMechanism(Mechanism):
     @scalar_law
     def mu(self, phi) -> np.ndarray:
         """Transmission angle μ = ∠ABC at crank angles φ: |CA| = 2 sin(μ/2)."""
-        phi = as_angles(phi)
-        d = np.sqrt(self.a**2 + self.r**2 - 2 * self.a * self.r * np.cos(phi))
-        return 2.0 * np.arcsin(np.clip(d / 2.0, -1.0, 1.0))
+        return 2.0 * np.arcsin(np.clip(np.hypot(*self._from_C(as_angles(phi)).T) / 2.0, -1.0, 1.0))
+
+    def _from_C(self, phi) -> np.ndarray:
+        """A − C, with r cos φ − a summed as −(a − r) − 2r sin²(φ/2): no cancellation where A passes C."""
+        return np.stack([-(self.a - self.r) - 2 * self.r * np.sin(phi / 2) ** 2, self.r * np.sin(phi)], axis=-1)
 
     @scalar_law
     def coupler_point(self, phi) -> np.ndarray:
         """Positions of D by the closed form (*) of :mod:`mechlab.synthesis.lambda_guiding` (no dyad solve)."""
-        phi = as_angles(phi)
-        A = np.stack([self.r * np.cos(phi), self.r * np.sin(phi)], axis=-1)
-        v = A - self.C
-        mu = self.mu(phi)
-        k = np.sin((self.delta - mu) / 2) / np.sin(mu / 2)
+        v = self._from_C(as_angles(phi))
+        d = np.hypot(*v.T)  # |CA| = 2 sin(μ/2)
+        k = np.sin((self.delta - 2 * np.arcsin(np.clip(d / 2, -1.0, 1.0))) / 2) / (d / 2)
         th = -self.assembly * (np.pi - self.delta / 2)
         c, s = np.cos(th), np.sin(th)
         return self.C + k[:, None] * np.stack([c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]], axis=-1)

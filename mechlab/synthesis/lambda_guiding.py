@@ -37,6 +37,7 @@ __all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding",
 MAX_SAMPLES = 100_000  # samples of a curve
 RIPPLE_FLOOR = 1e-12   # (in l) the equal-ripple equations are solved to about this; a finer band is not resolved
 RESOLUTION = 1e-9      # (in l) a band narrower than this may be refused as unresolved (with the band found)
+EQ_NOISE = 1e-15       # rounding level of the equal-ripple equations (of order 1): a residual below it is a solution
 MAX_STEPS = 400        # continuation steps in α per request (a whole turn takes about 40)
 MAX_ISO_POINTS = 400   # frames a per iso-dwell line: each is a synthesis (≈ 10 ms)
 MAX_ARC = 40.0         # arclength of a traced line in (r, a, k, t3, t2): the region is far smaller
@@ -46,9 +47,10 @@ MAX_ARC = 40.0         # arclength of a traced line in (r, a, k, t3, t2): the re
 # Circle-guiding synthesis
 # --------------------------------------------------------------------------------------------
 def _mu_at(r, a, t):
-    """Transmission angle μ at thesis angles t: |CA| = 2 sin(μ/2) = √(a² + r² + 2ar cos t) (formula (5))."""
+    """Transmission angle μ at thesis angles t: |CA| = 2 sin(μ/2) = √(a² + r² + 2ar cos t) (formula (5)),
+    summed as (a − r)² + 4ar cos²(t/2), which does not cancel where A passes C (r → a, t → π)."""
     t = np.asarray(t, dtype=float)
-    return 2 * np.arcsin(np.clip(0.5 * np.sqrt(a * a + r * r + 2 * a * r * np.cos(t)), 0, 1))
+    return 2 * np.arcsin(np.clip(0.5 * np.sqrt((a - r) ** 2 + 4 * a * r * np.cos(t / 2) ** 2), 0, 1))
 
 
 def _band_terms(r, a, delta, mu):
@@ -56,7 +58,7 @@ def _band_terms(r, a, delta, mu):
     angle β of D − C from e has cos β = (a² − r² + d²)/(2ad), d = |CA| = 2 sin(μ/2) (module docstring)."""
     d, dd = 2 * np.sin(mu / 2), np.cos(mu / 2)
     rc, drc = 2 * np.sin((delta - mu) / 2), -np.cos((delta - mu) / 2)
-    g = a * a - r * r
+    g = (a - r) * (a + r)
     with np.errstate(invalid="ignore", divide="ignore"):  # a solver's trial point may leave the curve
         cb, dcb = (g + d * d) / (2 * a * d), (d * d - g) * dd / (2 * a * d * d)
     return rc * rc, rc * cb, 2 * rc * drc, drc * cb + rc * dcb
@@ -199,12 +201,14 @@ def _check_inputs(delta, a, dwell, what):
 def _circle_eqs(delta, a, alpha):
     """Equal ripple in (r, k, t3, t2): ρ(0) = ρ(t2), ρ(t3) = ρ(α), ρ'(t3) = ρ'(t2) = 0 about Q = C + e/k.
     With ρ² = (P − 2X/k + 1/k²): ρ(u) = ρ(v) ⇔ k(P(u) − P(v)) − 2(X(u) − X(v)) = 0 and ρ' = 0 ⇔
-    kP' − 2X' = 0 (derivatives in μ; dμ/dt ≠ 0 inside the dwell): smooth through k = 0."""
+    kP' − 2X' = 0 (derivatives in μ; dμ/dt ≠ 0 inside the dwell): smooth through k = 0. Divided by 1 + |k|,
+    each equation is of the order of the differences of ρ it sets to 0, for a far centre (k → 0) as for one
+    next to C (|k| ≫ 1): residuals compare with the band E on one scale."""
     def eqs(y):
         r, k, t3, t2 = y
         P, X, dP, dX = _band_terms(r, a, delta, _mu_at(r, a, [0.0, t3, t2, alpha]))
         out = np.array([k * (P[0] - P[2]) - 2 * (X[0] - X[2]), k * (P[1] - P[3]) - 2 * (X[1] - X[3]),
-                        k * dP[1] - 2 * dX[1], k * dP[2] - 2 * dX[2]])
+                        k * dP[1] - 2 * dX[1], k * dP[2] - 2 * dX[2]]) / (1 + abs(k))
         return np.where(np.isfinite(out), out, 1e3)
     return eqs
 
@@ -213,6 +217,11 @@ def _fifth_point(delta: float, a: float):
     """(r, k) of the fifth-order-contact mechanism with frame a, solved for μ0 by brentq on the closed
     form of :func:`fifth_order_line` (a grows monotonically along it); None if the line misses a."""
     mu = np.linspace(1e-9, delta - 1e-9, 801)
+    r5 = _fifth_terms(delta, mu)[0]
+    # the line's end on r = 0 exactly: a frame just inside it lies between that end and the next sample
+    ends = [brentq(lambda m: _fifth_terms(delta, m)[0], mu[j], mu[j + 1], xtol=1e-15)
+            for j in np.nonzero(np.isfinite(r5[1:] * r5[:-1]) & (r5[1:] * r5[:-1] < 0))[0]]
+    mu = np.sort(np.r_[mu, ends])
     r5, a5, _, _ = _fifth_terms(delta, mu)
     ok = (r5 > -1e-12) & (r5 <= a5) & (r5 + a5 <= 2)  # the line's ends (r = 0) included, a sample may sit on one
     i = np.nonzero(ok[1:] & ok[:-1] & ((a5[1:] - a) * (a5[:-1] - a) <= 0))[0]
@@ -258,20 +267,31 @@ class _Reach:
     resolved: bool
 
 
+def _jacobian(eqs):
+    """Central-difference Jacobian of eqs with steps of 1e-5 of each unknown: near the span's ends the
+    equations balance terms of order r³ against terms of order r, and the forward differences of ``root``
+    (steps of 1.5e-8 of the unknown) drown in rounding there."""
+    def jac(x):
+        x = np.asarray(x, dtype=float)
+        h = 1e-5 * np.maximum(np.abs(x), 1e-3)
+        cols = [(eqs(x + np.eye(len(x))[j] * h[j]) - eqs(x - np.eye(len(x))[j] * h[j])) / (2 * h[j])
+                for j in range(len(x))]
+        return np.column_stack(cols)
+    return jac
+
+
 def _equal_ripple(eqs, x0, maxfev=400):
     """Solve the equal-ripple equations: scipy's hybr, then least_squares scaled by the Jacobian where hybr
     stalls (a band centre close to C, |k| ≫ 1, makes the system badly scaled)."""
-    sol = root(eqs, x0, method="hybr", options=dict(xtol=1e-13, maxfev=maxfev))
+    jac = _jacobian(eqs)
+    sol = root(eqs, x0, jac=jac, method="hybr", options=dict(xtol=1e-13, maxfev=maxfev))
     res = np.max(np.abs(eqs(sol.x)))
-    if res <= _noise(sol.x[1]) or res > 1e-6 or not np.all(np.isfinite(sol.x)):  # solved, or not close
+    if res <= EQ_NOISE or res > 1e-6 or not np.all(np.isfinite(sol.x)):  # solved, or not close
         return sol.x
-    ls = least_squares(eqs, sol.x, x_scale="jac", xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=60)
+    ls = least_squares(eqs, sol.x, jac=jac, x_scale="jac", xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=60)
     return ls.x if np.max(np.abs(eqs(ls.x))) < np.max(np.abs(eqs(sol.x))) else sol.x
 
 
-def _noise(k) -> float:
-    """Rounding level of the equations k·ΔP − 2ΔX (P, X of order 1): a residual below it is a solution."""
-    return 1e-15 * (1 + abs(k))
 
 
 def _step(delta, a, al, x0):
@@ -281,7 +301,11 @@ def _step(delta, a, al, x0):
     hi = min(a, 2 - a)
     eqs = _circle_eqs(delta, a, al)
     nodes = [0.5 * al, 0.5 * np.sqrt(3) * al]
-    sub = root(lambda y: eqs([*y, *nodes])[:2], x0[:2], method="hybr", options=dict(xtol=1e-13, maxfev=200))
+
+    def sub_eqs(y):
+        return eqs([*y, *nodes])[:2]
+
+    sub = root(sub_eqs, x0[:2], jac=_jacobian(sub_eqs), method="hybr", options=dict(xtol=1e-13, maxfev=200))
     # r must stay near the last one: r → 0 is a trivial narrow band (D stops moving), not the design followed
     near = np.all(np.isfinite(sub.x)) and 0 < sub.x[0] < hi and abs(sub.x[0] - x0[0]) < 0.1 * x0[0]
     spread = _band_spread(delta, a, al, *sub.x) if near else np.inf
@@ -289,10 +313,10 @@ def _step(delta, a, al, x0):
         return "unresolved", np.r_[sub.x, nodes]
     x = _equal_ripple(eqs, x0, maxfev=100)  # a continuation step converges in a few iterations or not at all
     r, k, t3, t2 = x
-    if np.all(np.isfinite(x)) and 0 < r < hi and 0 < t3 < t2 < al and not _merged(t3, t2, al):
+    if np.all(np.isfinite(x)) and 0.5 * x0[0] < r < hi and 0 < t3 < t2 < al and not _merged(t3, t2, al):
         u = _offset(k, *_band_terms(r, a, delta, _mu_at(r, a, [0.0, t3]))[:2])
         E = 0.5 * abs(u[0] - u[1])
-        if E >= 0.1 * RESOLUTION and np.max(np.abs(eqs(x))) <= 1e-4 * E + _noise(k):
+        if E >= 0.1 * RESOLUTION and np.max(np.abs(eqs(x))) <= 1e-4 * E + EQ_NOISE:
             return "resolved", x
     # a band up to 100 × RESOLUTION is passed through (the full solve may only succeed further on)
     if spread < 100 * RESOLUTION:
@@ -301,19 +325,25 @@ def _step(delta, a, al, x0):
 
 
 def _follow(delta, a, x, al, alpha) -> _Reach | None:
-    """Continue the solution x at half-dwell al (up or down) towards α: touches scaled with α, the step
-    halved where a solve fails (down to 0.005°), grown again after a success. Returns the last point reached."""
+    """Continue the solution x at half-dwell al (up or down) towards α: predicted along the secant of the last
+    two solutions (the first step scales the touches with α), the step halved where a solve fails (down to
+    0.005°), grown again after a success. Returns the last point reached."""
     sign = 1.0 if alpha >= al else -1.0
-    reached, step = None, np.radians(4.0)
+    reached, step, last = None, np.radians(4.0), None
     for _ in range(MAX_STEPS):
         nxt = alpha if abs(alpha - al) <= step else al + sign * step
-        x0 = np.r_[x[:2], x[2:] * nxt / al]
+        x0 = np.r_[x[:2], x[2:] * nxt / al] if last is None else x + (x - last[0]) * (nxt - al) / (al - last[1])
         kind, y = _step(delta, a, nxt, x0)
+        if kind == "failed" and last is not None:  # the secant can overshoot where the solution turns
+            kind, y = _step(delta, a, nxt, np.r_[x[:2], x[2:] * nxt / al])
+        if kind == "unresolved" and reached is not None and reached.resolved and step > np.radians(0.5):
+            kind = "failed"  # leave resolved designs in short steps: a long one can miss the solution
         if kind == "failed":
             if step < np.radians(0.005):
                 break
             step /= 2
             continue
+        last = (x, al) if kind == "resolved" and reached is not None and reached.resolved else None
         x, al, reached = y, nxt, _Reach(y, 2 * nxt, kind == "resolved")
         if al == alpha:
             break
@@ -330,7 +360,8 @@ def _rotation_limit_dwell(delta, a, reach: _Reach) -> float | None:
     def eqs(y):
         return _circle_eqs(delta, a, y[3])([rl, *y[:3]])
 
-    sol = root(eqs, [*reach.x[1:], reach.dwell / 2], method="hybr", options=dict(xtol=1e-13, maxfev=400))
+    sol = root(eqs, [*reach.x[1:], reach.dwell / 2], jac=_jacobian(eqs), method="hybr",
+               options=dict(xtol=1e-13, maxfev=400))
     _, t3, t2, al = sol.x
     if np.max(np.abs(eqs(sol.x))) > 1e-10 or not 0 < t3 < t2 < al <= np.pi or al < reach.dwell / 2 * (1 - 1e-9):
         return None
@@ -385,7 +416,7 @@ def _solve_circle(delta, a, dwell, x0):
     r, k, t3, t2 = (float(v) for v in x)
     if not np.max(np.abs(eqs(x))) <= 1e-10:
         return None, f"the equal-ripple equations did not converge (residual {np.max(np.abs(eqs(x))):.3g})"
-    if not 1e-4 < r < min(a, 2 - a):
+    if not 1e-4 * min(a, 2 - a) < r < min(a, 2 - a):  # r → 0 is the trivial band (D stands still)
         return None, f"the crank leaves (0, min(a, 2 − a)) = (0, {min(a, 2 - a):.4g}): r = {r:.4g}"
     if not 0.0 < t3 < t2 < alpha or _merged(t3, t2, alpha):
         return None, (f"the touch points are not four distinct ones (t3 = {np.degrees(t3):.6g}°, "
@@ -393,7 +424,7 @@ def _solve_circle(delta, a, dwell, x0):
     g = CircleGuide(delta, a, dwell, r, 0.0 if k == 0 else k, t3, t2)
     if g.E < 0.1 * RESOLUTION:
         return None, f"the band E = {g.E:.3g} is too narrow for its touches to be told from rounding"
-    if np.max(np.abs(eqs(x))) > 1e-4 * g.E + _noise(k):
+    if np.max(np.abs(eqs(x))) > 1e-4 * g.E + EQ_NOISE:
         return None, f"the equations are not solved finely enough to resolve the band E = {g.E:.3g}"
     dense = g.deviation(np.pi + np.linspace(-alpha, alpha, 4001))
     if np.max(np.abs(dense)) > g.E * (1 + 1e-6) + RIPPLE_FLOOR:
@@ -513,6 +544,19 @@ def design_outcomes(delta: float, fractions=OUTCOME_FRACTIONS, dwells=OUTCOME_DW
     return DesignOutcomes(float(delta), (float(lo), float(hi)), fractions, a, dwells, kind)
 
 
+def _below_resolution(where, delta, a, alpha, cranks) -> NoDesignError | None:
+    """The "resolution" refusal if one of the (r, k) in ``cranks``, narrowed by :func:`_narrowest_band`, holds D
+    within RESOLUTION over the dwell (the evidence: that r, k and the half-width measured); else None."""
+    for r0, k0 in cranks:
+        r, k, bound = _narrowest_band(delta, a, alpha, r0, k0)
+        if bound < RESOLUTION:
+            return NoDesignError(
+                f"{where}: the ripple is below what double precision resolves: the crank r = {r:.6g} with the "
+                f"band about Q = C + e/k, k = {k:.6g}, holds D within ± {bound:.2g} l over the dwell, so the best "
+                f"band is no wider", "resolution", r=float(r), k=float(k), bound=bound)
+    return None
+
+
 def _circle(delta, a, dwell, guess, minimax, depth=0):
     """circle_guiding after its input checks; ``depth`` counts the nested solves of :func:`_from_inside`."""
     alpha = dwell / 2
@@ -544,12 +588,10 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
         g, _ = _solve_circle(delta, a, dwell, reach.x)
         if g is not None:
             return g
-        if not reach.resolved and (best := _narrowest_band(delta, a, alpha, *reach.x[:2]))[2] < RESOLUTION:
-            r, k, bound = best
-            raise NoDesignError(
-                f"{where}: the ripple is below what double precision resolves: the crank r = {r:.6g} with the "
-                f"band about Q = C + e/k, k = {k:.6g}, holds D within ± {bound:.2g} l over the dwell, so the best "
-                f"band is narrower still", "resolution", r=float(r), k=float(k), bound=bound)
+        # a resolved solution can fail its dense check too where the band is below resolution: ρ is then a
+        # difference of terms of order |CD| that rounding leaves uncertain to a few 10⁻¹² l
+        if (err := _below_resolution(where, delta, a, alpha, [reach.x[:2]])) is not None:
+            raise err
     if reach is not None and start is not None:
         top = _rotation_limit_dwell(delta, a, reach)
         if top is not None and top < dwell:
@@ -557,6 +599,11 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
                 f"{where}: the longest dwell this frame allows is 2α = {np.degrees(top):.6g}°, where the crank "
                 f"reaches the rotation limit r = min(a, 2 − a) = {min(a, 2 - a):.6g} (a dead point)",
                 "rotation", dwell_max=top, r_limit=min(a, 2 - a))
+        if reach.resolved and reach.dwell < dwell and reach.x[0] > 0.97 * min(a, 2 - a):
+            raise NoDesignError(
+                f"{where}: the designs of this frame end at 2α = {np.degrees(reach.dwell):.6g}° (to 0.005°; the family "
+                f"folds back there), with the crank r = {reach.x[0]:.6g} next to the rotation limit r = min(a, 2 − a) "
+                f"= {min(a, 2 - a):.6g} (a dead point)", "rotation", dwell_max=reach.dwell, r_limit=min(a, 2 - a))
     if reach is not None and start is None and reach.dwell > dwell:
         why = ("its crank reaches the rotation limit r = a" if reach.x[0] > 0.98 * min(a, 2 - a) else
                "the family of designs from the whole-turn line folds back")
@@ -572,6 +619,10 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
             g, _ = _solve_circle(delta, a, dwell, x0)
             if g is not None:
                 return g
+    # the solve is lost, but near the span's ends (r → 0, or a → 0) the band may be below resolution
+    tried = [x[:2] for x in (start, None if reach is None else reach.x) if x is not None]
+    if (err := _below_resolution(where, delta, a, alpha, tried)) is not None:
+        raise err
     got = "no start" if reach is None else f"the continuation stops at 2α = {np.degrees(reach.dwell):.6g}°"
     raise SynthesisError(f"{where}: the equal-ripple solve fails ({got}); choose (δ, a, 2α) inside the existence map")
 
