@@ -64,11 +64,19 @@ def _band_terms(r, a, delta, mu):
     return rc * rc, rc * cb, 2 * rc * drc, drc * cb + rc * dcb
 
 
-def _offset(k, P, X):
-    """u = (kP − 2X)/(1 + s), s = √(1 − 2kX + k²P): for Q = C + e/k, |D − Q| − |1/k| = sign(k)·u.
-    Smooth through k = 0, where the band is straight and u = −X."""
-    s = np.sqrt(np.maximum((1 - k * X) ** 2 + k * k * (P - X * X), 0.0))
+def _offset(k, P, X, Y2):
+    """u = (kP − 2X)/(1 + s), s = √((1 − kX)² + k²Y²) = |k|·|D − Q| (Y: D's coordinate across e): for
+    Q = C + e/k, |D − Q| − |1/k| = sign(k)·u. Smooth through k = 0, where the band is straight and u = −X.
+    Y² is passed, not P − X²: where Q lies next to D that difference keeps only a few digits of ρ."""
+    s = np.sqrt(np.maximum((1 - k * X) ** 2 + k * k * Y2, 0.0))
     return (k * P - 2 * X) / (1 + s)
+
+
+def _u_at(r, a, delta, k, t):
+    """The offset u of D at thesis angles t (:func:`_offset`), with Y = |CD| sin β, sin β = r sin t / |CA|."""
+    mu = _mu_at(r, a, t)
+    P, X, _, _ = _band_terms(r, a, delta, mu)
+    return _offset(k, P, X, P * (r * np.sin(t) / (2 * np.sin(mu / 2))) ** 2)
 
 
 @dataclass(frozen=True)
@@ -104,7 +112,7 @@ class CircleGuide:
 
     def _u(self, t):
         x, y = self.mechanism.axis_coordinates(np.pi + np.asarray(t, dtype=float))
-        return _offset(self.k, x * x + y * y, x)
+        return _offset(self.k, x * x + y * y, x, y * y)
 
     @property
     def E(self) -> float:
@@ -153,7 +161,7 @@ class CircleGuide:
         """Signed distance of D from the mean circle, ρ(φ) − R (for a straight band: x − Y along e)."""
         x, y = self.mechanism.axis_coordinates(phi)
         sign = np.sign(self.k) if self.k else -1.0
-        return sign * (_offset(self.k, x * x + y * y, x) - self._u([0.0, self.t3]).mean())
+        return sign * (_offset(self.k, x * x + y * y, x, y * y) - self._u([0.0, self.t3]).mean())
 
 
 @dataclass(frozen=True)
@@ -198,18 +206,32 @@ def _check_inputs(delta, a, dwell, what):
     return delta, a, dwell
 
 
+def _ripple(delta, a, r, k, t3, t2, al):
+    """The equal-ripple equations of :func:`_circle_eqs` at m points: arrays (m,) of r, k, t3, t2, α → (m, 4)."""
+    t = np.empty((len(r), 4))
+    t[:, 0], t[:, 1], t[:, 2], t[:, 3] = 0.0, t3, t2, al
+    mu = _mu_at(r[:, None], a, t)
+    P, X, dP, dX = _band_terms(r[:, None], a, delta, mu)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        u = _offset(k[:, None], P, X, P * (r[:, None] * np.sin(t) / (2 * np.sin(mu / 2))) ** 2)
+    out = np.empty((len(r), 4))
+    out[:, 0] = u[:, 0] - u[:, 2]  # = ±(ρ(0) − ρ(t2))
+    out[:, 1] = u[:, 1] - u[:, 3]
+    out[:, 2] = (k * dP[:, 1] - 2 * dX[:, 1]) / (1 + np.abs(k))
+    out[:, 3] = (k * dP[:, 2] - 2 * dX[:, 2]) / (1 + np.abs(k))
+    return np.where(np.isfinite(out), out, 1e3)
+
+
 def _circle_eqs(delta, a, alpha):
     """Equal ripple in (r, k, t3, t2): ρ(0) = ρ(t2), ρ(t3) = ρ(α), ρ'(t3) = ρ'(t2) = 0 about Q = C + e/k.
     With ρ² = (P − 2X/k + 1/k²): ρ(u) = ρ(v) ⇔ k(P(u) − P(v)) − 2(X(u) − X(v)) = 0 and ρ' = 0 ⇔
     kP' − 2X' = 0 (derivatives in μ; dμ/dt ≠ 0 inside the dwell): smooth through k = 0. Divided by 1 + |k|,
     each equation is of the order of the differences of ρ it sets to 0, for a far centre (k → 0) as for one
-    next to C (|k| ≫ 1): residuals compare with the band E on one scale."""
+    next to C (|k| ≫ 1): residuals compare with the band E on one scale. ``eqs.rows`` takes a stack of points."""
     def eqs(y):
-        r, k, t3, t2 = y
-        P, X, dP, dX = _band_terms(r, a, delta, _mu_at(r, a, [0.0, t3, t2, alpha]))
-        out = np.array([k * (P[0] - P[2]) - 2 * (X[0] - X[2]), k * (P[1] - P[3]) - 2 * (X[1] - X[3]),
-                        k * dP[1] - 2 * dX[1], k * dP[2] - 2 * dX[2]]) / (1 + abs(k))
-        return np.where(np.isfinite(out), out, 1e3)
+        return _ripple(delta, a, *np.array([*y, alpha], dtype=float)[:, None])[0]
+
+    eqs.rows = lambda ys: _ripple(delta, a, *np.asarray(ys, dtype=float).T, np.full(len(ys), alpha))
     return eqs
 
 
@@ -240,8 +262,7 @@ def _merged(t3, t2, alpha) -> bool:
 def _band_spread(delta, a, alpha, r, k, n=401) -> float:
     """Half the spread of |D − Q| (Q = C + e/k; of x for k = 0) over t ∈ [0, α] sampled n times: the
     half-width of a band that holds D over the dwell, so an upper bound on the best band's E."""
-    P, X, _, _ = _band_terms(r, a, delta, _mu_at(r, a, np.linspace(0.0, alpha, n)))
-    return 0.5 * float(np.ptp(_offset(k, P, X)))
+    return 0.5 * float(np.ptp(_u_at(r, a, delta, k, np.linspace(0.0, alpha, n))))
 
 
 def _narrowest_band(delta, a, alpha, r, k):
@@ -268,15 +289,14 @@ class _Reach:
 
 
 def _jacobian(eqs):
-    """Central-difference Jacobian of eqs with steps of 1e-5 of each unknown: near the span's ends the
-    equations balance terms of order r³ against terms of order r, and the forward differences of ``root``
-    (steps of 1.5e-8 of the unknown) drown in rounding there."""
+    """Central-difference Jacobian of eqs with steps of 1e-5 of each unknown (all 2n points in one call of
+    ``eqs.rows``): near the span's ends the equations balance terms of order r³ against terms of order r,
+    and the forward differences of ``root`` (steps of 1.5e-8 of the unknown) drown in rounding there."""
     def jac(x):
         x = np.asarray(x, dtype=float)
         h = 1e-5 * np.maximum(np.abs(x), 1e-3)
-        cols = [(eqs(x + np.eye(len(x))[j] * h[j]) - eqs(x - np.eye(len(x))[j] * h[j])) / (2 * h[j])
-                for j in range(len(x))]
-        return np.column_stack(cols)
+        f = eqs.rows(np.r_[x + np.diag(h), x - np.diag(h)])
+        return ((f[:len(x)] - f[len(x):]) / (2 * h[:, None])).T
     return jac
 
 
@@ -305,22 +325,25 @@ def _step(delta, a, al, x0):
     def sub_eqs(y):
         return eqs([*y, *nodes])[:2]
 
+    sub_eqs.rows = lambda ys: eqs.rows(np.c_[ys, np.tile(nodes, (len(ys), 1))])[:, :2]
     sub = root(sub_eqs, x0[:2], jac=_jacobian(sub_eqs), method="hybr", options=dict(xtol=1e-13, maxfev=200))
     # r must stay near the last one: r → 0 is a trivial narrow band (D stops moving), not the design followed
     near = np.all(np.isfinite(sub.x)) and 0 < sub.x[0] < hi and abs(sub.x[0] - x0[0]) < 0.1 * x0[0]
-    spread = _band_spread(delta, a, al, *sub.x) if near else np.inf
+    # where a band far below resolution leaves the node equations to rounding, the last crank and centre serve
+    rk = sub.x if near else x0[:2]
+    spread = _band_spread(delta, a, al, *rk)
     if spread < 0.1 * RESOLUTION:  # too narrow for any design to be returned: no full solve
-        return "unresolved", np.r_[sub.x, nodes]
+        return "unresolved", np.r_[rk, nodes]
     x = _equal_ripple(eqs, x0, maxfev=100)  # a continuation step converges in a few iterations or not at all
     r, k, t3, t2 = x
     if np.all(np.isfinite(x)) and 0.5 * x0[0] < r < hi and 0 < t3 < t2 < al and not _merged(t3, t2, al):
-        u = _offset(k, *_band_terms(r, a, delta, _mu_at(r, a, [0.0, t3]))[:2])
+        u = _u_at(r, a, delta, k, np.array([0.0, t3]))
         E = 0.5 * abs(u[0] - u[1])
         if E >= 0.1 * RESOLUTION and np.max(np.abs(eqs(x))) <= 1e-4 * E + EQ_NOISE:
             return "resolved", x
     # a band up to 100 × RESOLUTION is passed through (the full solve may only succeed further on)
     if spread < 100 * RESOLUTION:
-        return "unresolved", np.r_[sub.x, nodes]
+        return "unresolved", np.r_[rk, nodes]
     return "failed", None
 
 
@@ -336,7 +359,7 @@ def _follow(delta, a, x, al, alpha) -> _Reach | None:
         kind, y = _step(delta, a, nxt, x0)
         if kind == "failed" and last is not None:  # the secant can overshoot where the solution turns
             kind, y = _step(delta, a, nxt, np.r_[x[:2], x[2:] * nxt / al])
-        if kind == "unresolved" and reached is not None and reached.resolved and step > np.radians(0.5):
+        if kind == "unresolved" and reached is not None and reached.resolved and step > np.radians(0.01):
             kind = "failed"  # leave resolved designs in short steps: a long one can miss the solution
         if kind == "failed":
             if step < np.radians(0.005):
@@ -358,7 +381,9 @@ def _rotation_limit_dwell(delta, a, reach: _Reach) -> float | None:
     rl = min(a, 2 - a) * (1 - 1e-9)
 
     def eqs(y):
-        return _circle_eqs(delta, a, y[3])([rl, *y[:3]])
+        return _ripple(delta, a, *np.array([rl, *y], dtype=float)[:, None])[0]
+
+    eqs.rows = lambda ys: _ripple(delta, a, np.full(len(ys), rl), *np.asarray(ys, dtype=float).T)
 
     sol = root(eqs, [*reach.x[1:], reach.dwell / 2], jac=_jacobian(eqs), method="hybr",
                options=dict(xtol=1e-13, maxfev=400))
@@ -390,8 +415,7 @@ def _minimax_guess(delta, a, alpha):
     ts = np.linspace(0.0, alpha, 121)
 
     def offsets(r, k):
-        P, X, _, _ = _band_terms(r, a, delta, _mu_at(r, a, ts))
-        return _offset(k, P, X)
+        return _u_at(r, a, delta, k, ts)
 
     def spread(x):
         if not 0 < x[0] < min(a, 2 - a):
@@ -436,7 +460,8 @@ def _solve_circle(delta, a, dwell, x0):
 def _from_inside(delta, a, dwell, depth):
     """Continuation in the frame for a near an end of the fifth-order line's span (r → 0 there, and the
     design's r changes too fast with α for the continuation in α): the design at a frame ten times
-    further from that end, followed to a in 24 steps uniform in log|a − end|. x = (r, k, t3, t2) or None."""
+    further from that end, followed to a in 24 steps uniform in log|a − end|, each predicted along the secant
+    of the last two (the first with r ∝ |a − end|, as on the fifth-order line). x = (r, k, t3, t2) or None."""
     lo5, hi5 = 2 * np.sin(max(delta - np.pi, 0.0) / 2), 2 * np.sin(delta / 4)
     end = lo5 if a - lo5 < hi5 - a else hi5
     if abs(a - end) > 0.1 * (hi5 - lo5):
@@ -446,10 +471,12 @@ def _from_inside(delta, a, dwell, depth):
         g = _circle(delta, a_in, dwell, None, False, depth + 1)
     except SynthesisError:
         return None
-    x = np.array([g.r, g.k, g.t3, g.t2])
-    for s in np.linspace(np.log(abs(a_in - end)), np.log(abs(a - end)), 25)[1:]:
+    x, last = np.array([g.r, g.k, g.t3, g.t2]), None
+    steps = np.linspace(np.log(abs(a_in - end)), np.log(abs(a - end)), 25)
+    for s in steps[1:]:
         ai = end + np.sign(a - end) * np.exp(s)
-        x = _equal_ripple(_circle_eqs(delta, ai, dwell / 2), x, maxfev=100)
+        guess = np.r_[x[0] * np.exp(steps[1] - steps[0]), x[1:]] if last is None else 2 * x - last
+        last, x = x, _equal_ripple(_circle_eqs(delta, ai, dwell / 2), guess, maxfev=100)
         if not (np.all(np.isfinite(x)) and 0 < x[0] < min(ai, 2 - ai) and 0 < x[2] < x[3] < dwell / 2):
             return None
     return x
