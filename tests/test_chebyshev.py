@@ -548,7 +548,7 @@ def test_circle_guiding_over_the_whole_region(delta, f, dwell):
     (135, 0.999, 90, "design"), (135, 0.999, 240, "design"), (225, 0.999, 180, "design"),
     (270, 0.997, 120, "design"), (180, 0.001, 359.64, "design"), (90, 0.001, 359, "design"),
     (270, 0.999, 90, "design"), (255, 5.960464477539063e-08, 1.0, "resolution"), (150, 0.9999, 180, "design"),
-    (180, 1e-4, 359.9, "design"),
+    (180, 1e-4, 359.9, "design"), (255, 0.9999, 270, "design"),
     (240, 0.01, 359.64, "rotation")])
 def test_circle_guiding_where_the_solve_was_lost(delta, f, dwell, kind):
     _warm([delta])

@@ -460,8 +460,9 @@ def _solve_circle(delta, a, dwell, x0):
 def _from_inside(delta, a, dwell, depth):
     """Continuation in the frame for a near an end of the fifth-order line's span (r → 0 there, and the
     design's r changes too fast with α for the continuation in α): the design at a frame ten times
-    further from that end, followed to a in 24 steps uniform in log|a − end|, each predicted along the secant
-    of the last two (the first with r ∝ |a − end|, as on the fifth-order line). x = (r, k, t3, t2) or None."""
+    further from that end, followed to a in steps uniform in s = log|a − end| (24, halved where a solve
+    fails or falls to the trivial r → 0), each predicted along the secant of the last two (the first with
+    r ∝ |a − end|, as on the fifth-order line). x = (r, k, t3, t2) or None."""
     lo5, hi5 = 2 * np.sin(max(delta - np.pi, 0.0) / 2), 2 * np.sin(delta / 4)
     end = lo5 if a - lo5 < hi5 - a else hi5
     if abs(a - end) > 0.1 * (hi5 - lo5):
@@ -471,13 +472,19 @@ def _from_inside(delta, a, dwell, depth):
         g = _circle(delta, a_in, dwell, None, False, depth + 1)
     except SynthesisError:
         return None
-    x, last = np.array([g.r, g.k, g.t3, g.t2]), None
-    steps = np.linspace(np.log(abs(a_in - end)), np.log(abs(a - end)), 25)
-    for s in steps[1:]:
-        ai = end + np.sign(a - end) * np.exp(s)
-        guess = np.r_[x[0] * np.exp(steps[1] - steps[0]), x[1:]] if last is None else 2 * x - last
-        last, x = x, _equal_ripple(_circle_eqs(delta, ai, dwell / 2), guess, maxfev=100)
-        if not (np.all(np.isfinite(x)) and 0 < x[0] < min(ai, 2 - ai) and 0 < x[2] < x[3] < dwell / 2):
+    s, goal = np.log(abs(a_in - end)), np.log(abs(a - end))
+    x, last, step = np.array([g.r, g.k, g.t3, g.t2]), None, (goal - s) / 24
+    first = step
+    while s != goal:
+        nxt = goal if abs(goal - s) <= abs(step) * 1.001 else s + step
+        ai = end + np.sign(a - end) * np.exp(nxt)
+        guess = np.r_[x[0] * np.exp(nxt - s), x[1:]] if last is None else x + (x - last[0]) * (nxt - s) / (s - last[1])
+        y = _equal_ripple(_circle_eqs(delta, ai, dwell / 2), guess, maxfev=100)
+        if np.all(np.isfinite(y)) and 0.5 * guess[0] < y[0] < min(ai, 2 - ai) and 0 < y[2] < y[3] < dwell / 2:
+            last, x, s, step = (x, s), y, nxt, first if abs(2 * step) > abs(first) else 2 * step
+        elif abs(step) > abs(first) / 64:
+            step /= 2
+        else:
             return None
     return x
 
