@@ -684,8 +684,13 @@ def plot_design_outcomes(maps):
         raise MechanismError("maps must hold at least one DesignOutcomes")
     for i, m in enumerate(maps):
         check(f"maps[{i}]", m, mechanism(DesignOutcomes))
-    fig, axes = plt.subplots(1, len(maps), figsize=(4 * len(maps) + 2.5, 4.2), sharey=True, squeeze=False)
-    axes = axes[0]
+    # two panels a row and the legend in the next free cell, so each panel keeps half the column's width
+    cols = 1 if len(maps) == 1 else 2
+    rows = -(-(len(maps) + (cols == 2)) // cols)
+    fig, grid = plt.subplots(rows, cols, figsize=(6.5 if cols == 1 else 9.5, 4.2 * rows), squeeze=False)
+    axes, spare = grid.ravel()[:len(maps)], grid.ravel()[len(maps):]
+    for ax in spare:
+        ax.axis("off")
     for ax, m in zip(axes, maps):
         for i, a in enumerate(m.a):
             for j, dw in enumerate(np.degrees(m.dwell)):
@@ -695,10 +700,15 @@ def plot_design_outcomes(maps):
             ax.axvline(edge, color="C3", ls="--", lw=1)
         ax.set_title(f"δ = {np.degrees(m.delta):.0f}°")
         ax.set_xlabel("frame a (units of l)")
-    axes[0].set_ylabel("dwell 2α (degrees)")
-    for kind, (marker, colour, label) in OUTCOME_STYLE.items():
-        axes[-1].plot([], [], marker, color=colour, mfc=colour if kind == "design" else "none", label=label)
-    axes[-1].plot([], [], "C3--", label="ends of the span of a")
-    axes[-1].legend(fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5))
+        ax.set_ylabel("dwell 2α (degrees)")
+        ax.set_ylim(-15, 375)
+        ax.set_yticks(range(0, 361, 60))
+    handles = [plt.Line2D([], [], marker=marker, ls="", color=colour, mfc=colour if kind == "design" else "none",
+                          label=label) for kind, (marker, colour, label) in OUTCOME_STYLE.items()]
+    handles.append(plt.Line2D([], [], color="C3", ls="--", label="ends of the span of a"))
+    if spare.size:
+        spare[0].legend(handles=handles, loc="center", fontsize=10, title="each marker: one request")
+    else:
+        axes[-1].legend(handles=handles, fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5))
     fig.tight_layout()
     return fig
