@@ -289,3 +289,16 @@ def test_mchv3_tables_give_each_pivot_its_residual_and_name_their_units():
     assert all(h.endswith("°") for h in best.headers if "dwell" in h or "residual" in h)
     with pytest.raises(MechanismError):
         mchv3_pivot_table(s, beyonds=[0.06], depth=-0.05)
+
+
+def test_mchv1_drive_loads_the_output_with_its_inertia_and_a_moment_against_its_motion(guide):
+    """Massless links: the crank torque is the output's power over ω1, M_b = (J ψ″ ω1² + M sgn ψ′) ψ′."""
+    from mechlab.kinetostatics.lambda_sixbars import mchv1_drive
+    six = mchv1(guide, 1.0, np.radians(20))
+    k = mchv1_drive(six, 2.0, resisting=0.5, omega1=3.0)
+    mo = k.motion(k.turn(181))
+    res = k.forces(motion=mo)
+    by_hand = (2.0 * mo.ddpsi * 3.0**2 + 0.5 * np.sign(mo.dpsi)) * mo.dpsi
+    assert np.allclose(res.torque, by_hand, rtol=0, atol=1e-9 * np.max(np.abs(by_hand)))
+    rough = mchv1_drive(six, 2.0, 0.5, 3.0, friction=0.1, radius=0.05).forces(motion=mo)
+    assert rough.power_gap <= 1e-9 and rough.model.pair("D").friction == 0.1

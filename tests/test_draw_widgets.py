@@ -463,3 +463,67 @@ def test_plot_cam_undercut_shows_each_curvature_and_zooms_on_the_fold():
         plot_cam_undercut({"fine": fine}, fine)
     with pytest.raises(MechanismError, match="cams"):
         plot_cam_undercut({}, sharp)
+
+
+def test_force_plots_draw_the_results_they_are_given():
+    from mechlab.draw.forces import (
+        plot_drive,
+        plot_efficiency,
+        plot_reaction_against_transmission,
+        plot_torque_and_reactions,
+    )
+    from mechlab.kinetostatics.drive import drive
+    from mechlab.kinetostatics.machines import press, rocker_drive
+    from mechlab.kinetostatics.solve import virtual_work_torque
+
+    k = press(f=0.1, radius=0.01)
+    mo = k.motion(k.cycle(121))
+    res = k.forces(motion=mo)
+    vw = virtual_work_torque(k.model, mo, k.loads, k.omega1)
+    fig = plot_torque_and_reactions(res, power_balance=vw)
+    torque, reactions = fig.axes
+    assert np.allclose(torque.lines[0].get_xydata(), np.column_stack([np.degrees(res.phi), res.torque]))
+    assert np.allclose(torque.lines[1].get_ydata(), vw) and "N·m" in torque.get_ylabel()
+    assert [line.get_label() for line in reactions.lines] == ["|R| in O", "|R| in A", "|R| in B", "|N| in the guide"]
+    assert np.allclose(reactions.lines[1].get_ydata(), res.reactions["A"].magnitude)
+    assert np.allclose(reactions.lines[3].get_ydata(), np.abs(res.reactions["guide"].normal))
+    assert ", N" in reactions.get_ylabel()
+
+    ax = plot_efficiency(res, levels={"mean η": 0.7, "energy ratio": 0.8})
+    levels = [line for line in ax.get_lines() if line.get_label().startswith(("mean", "energy"))]
+    assert [(line.get_label(), line.get_ydata()[0]) for line in levels] == [("mean η = 0.700", 0.7),
+                                                                           ("energy ratio = 0.800", 0.8)]
+
+    kf = rocker_drive()
+    mo4 = kf.motion(kf.turn(91))
+    r4 = kf.forces(motion=mo4)
+    ax = plot_reaction_against_transmission(mo4, {"with masses": r4}, "B")
+    assert np.allclose(ax.lines[0].get_xydata(),
+                       np.column_stack([np.degrees(mo4.transmission), r4.reactions["B"].magnitude]))
+    assert "μ, degrees" in ax.get_xlabel() and ax.get_ylabel() == "|R_B|, N"
+
+    d = drive(res.torque, res.phi, k.omega1, efficiency=0.9)
+    ax = plot_drive(d)
+    assert np.allclose(ax.lines[0].get_ydata(), d.torque) and np.allclose(ax.lines[1].get_ydata(), d.motor_torque)
+    assert not np.allclose(d.torque, d.motor_torque)        # η shows: the dashed line is the motor's
+    assert "N·m" in ax.get_ylabel() and "degrees" in ax.get_xlabel()
+    plt.close("all")
+
+
+def test_plot_existence_map_draws_the_map_and_the_transmission_lines():
+    from mechlab.draw import plot_existence_map
+    from mechlab.synthesis.lambda_guiding import existence_map
+
+    deg = np.pi / 180
+    em = existence_map(150 * deg, dwells=(60 * deg, 180 * deg), n=3)
+    fig = plot_existence_map(em, 150 * deg, course=(40 * deg, 140 * deg))
+    (ax,) = fig.axes
+    labels = [line.get_label() for line in ax.lines]
+    assert {"2α = 60°", "2α = 180°", "μ = 40°, 140° (course)"} <= set(labels)
+    assert np.allclose(ax.lines[labels.index("2α = 180°")].get_xydata(), np.column_stack(em.iso_dwell[180]))
+    r, a = ax.lines[labels.index("μ = 40°, 140° (course)")].get_data()
+    assert np.allclose(a - r, 2 * np.sin(20 * deg))              # μ_min = 40°: a − r = 2 sin(μ/2)
+    assert np.allclose(ax.patches[0].get_xy(), np.column_stack(em.region))    # the region is closed
+    assert "150°" in ax.get_title() and "l_OA" in ax.get_xlabel()
+    assert len(plot_existence_map(em, 150 * deg, course=None).axes[0].lines) == len(labels) - 2
+    plt.close("all")

@@ -803,3 +803,37 @@ def test_drive_rule_is_scale_free(scale):
     for name in ("mean_torque", "rms_torque", "peak_torque", "nominal_torque"):
         assert getattr(d, name) == pytest.approx(scale * getattr(ref, name), rel=1e-12, abs=0)
     assert d.governing == ref.governing
+
+
+def test_class_iv_drive_puts_the_masses_where_the_chapter_says_in_model_for_frames():
+    """The chapter's hand-built model (coupler from Q, output along E→R) and class_iv_drive's (model_for's
+    frames: coupler from A, output along ψ) carry the same masses at the same points: same torque and
+    reactions, to rounding; a centre of mass copied without the change of frame would not."""
+    from mechlab.kinetostatics.machines import class_iv_drive
+    from mechlab.mechanisms.sixbar_iv import example
+    sb = example()
+    hand = ForceModel(
+        (Body("crank", "O", ("O", "A")),
+         Body("link2", "Q", ("Q", "P"), mass=2.0, inertia=0.05, com=(0.3, -0.2)),
+         Body("link3", "R", ("R", "Q"), mass=0.5, inertia=0.003, com=(sb.link3 / 2, 0)),
+         Body("link5", "T", ("T", "P"), mass=1.0, inertia=0.06, com=(sb.link5 / 2, 0)),
+         Body("link4", "E", ("E", "R"), mass=3.0, inertia=0.2, com=(0.4, 0.1))),
+        (Revolute("O", FRAME, "crank", "O"), Revolute("A", "crank", "link2", "A"),
+         Revolute("Q", "link2", "link3", "Q"), Revolute("P", "link2", "link5", "P"),
+         Revolute("R", "link3", "link4", "R"), Revolute("T", "link5", "link4", "T"), Revolute("E", FRAME, "link4", "E")),
+        groups=(("link2", "link3", "link5", "link4"),), crank="crank", pivot="O")
+    k = class_iv_drive(omega1=7.0, T=15.0)
+    mo = k.motion(k.turn(73))
+    ref = solve(hand, mo, [Torque("link4", lambda m: -15.0 * np.sign(m.dpsi))], omega1=7.0)
+    res = k.forces(motion=mo)
+    scale = np.max(np.abs(ref.torque))
+    assert np.allclose(res.torque, ref.torque, rtol=0, atol=1e-10 * scale)
+    for name, r in ref.reactions.items():
+        assert np.allclose(res.reactions[name].force, r.force, rtol=0, atol=1e-10 * scale)
+    assert k.model.body("link 3").com == (sb.link3 / 2, 0.0)        # the bars' centres half-way
+    pasted = k.model.with_body("output", com=(0.4, 0.1))
+    assert np.max(np.abs(solve(pasted, mo, k.loads, omega1=7.0).torque - ref.torque)) > 1e-2 * scale
+    rough = class_iv_drive(omega1=7.0, T=15.0, f=0.1, radius=0.02).forces(motion=mo)
+    assert rough.power_gap <= 1e-9 and np.all(rough.losses >= 0) and np.any(rough.losses > 0)
+    with pytest.raises(MechanismError):
+        class_iv_drive(T=-1.0)

@@ -171,6 +171,7 @@ CASES = {
     "press": lambda: (ml.forces.press, (), {"crank": 0.1, "rod": 0.4, "rpm": 120.0, "P": 2000.0,
                                              "work_fraction": 0.3, "f": 0.1, "radius": 0.01}),
     "rocker_drive": lambda: (ml.forces.rocker_drive, (), {"crank": 0.1, "rpm": 120.0, "T": 40.0, "f": 0.05}),
+    "class_iv_drive": lambda: (ml.forces.class_iv_drive, (), {"omega1": 10.0, "T": 20.0, "f": 0.1, "radius": 0.02}),
     "drive": lambda: (force_drive, (np.cos(np.linspace(0, 2 * np.pi, 73)) + 2, np.linspace(0, 2 * np.pi, 73),
                                     10.0), {"overload": 2.0, "efficiency": 0.9}),
     "Body": lambda: (ml.Body, ("rod", "A"), {"axis": 0.0, "mass": 1.0, "inertia": 0.1, "com": (0.1, 0.0),

@@ -712,3 +712,35 @@ def plot_design_outcomes(maps):
         axes[-1].legend(handles=handles, fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5))
     fig.tight_layout()
     return fig
+
+
+ISO_DWELL_COLOURS = ("C0", "C2", "C4", "C5", "C6", "C8", "C9")
+COURSE_TRANSMISSION = (np.radians(40), np.radians(140))   # the course's limits of μ (chapter 0)
+
+
+def plot_existence_map(em, delta: float, course=COURSE_TRANSMISSION):
+    """Kinitsky's (1994) Fig. 2a redrawn from an :class:`~mechlab.synthesis.lambda_guiding.ExistenceMap`
+    for break angle δ (radians): the existence region shaded, the rotation limits, the whole-turn and
+    fifth-order lines, one curve per dwell, the thesis' transmission lines μ = 30°, 150° dotted and
+    ``course`` = (μ_min, μ_max) (radians; None: left out) dashed, in the (r, a) plane (units of l).
+    Returns the Figure."""
+    from ..synthesis.lambda_guiding import transmission_lines
+
+    fig, ax = plt.subplots(figsize=(9, 6.5))
+    ax.fill(*em.region, color="#2a7f62", alpha=0.12, label="existence region")
+    ax.plot(*em.rotation, "k", label="r = a, r + a = 2")
+    ax.plot(*em.whole, "C1", lw=2, label="2α = 360° (whole curve)")
+    ax.plot(*em.fifth, "C3", label="fifth-order contact")
+    for (key, curve), colour in zip(em.iso_dwell.items(), ISO_DWELL_COLOURS):
+        ax.plot(*curve, "o-", color=colour, ms=3, label=f"2α = {key}°")
+    ax.plot(*em.mu_min, "0.5", ls=":", label="μ = 30°, 150°")
+    ax.plot(*em.mu_max, "0.5", ls=":")
+    if course is not None:
+        lines = transmission_lines(*course)
+        label = f"μ = {np.degrees(course[0]):.0f}°, {np.degrees(course[1]):.0f}° (course)"
+        ax.plot(*lines.mu_min, "0.6", ls="--", lw=1, label=label)
+        ax.plot(*lines.mu_max, "0.6", ls="--", lw=1)
+    ax.set(xlim=(0, 1), ylim=(0, 2), xlabel="r = l_OA / l", ylabel="a = l_OC / l",
+           title=f"existence map, δ = {np.degrees(delta):.0f}° (after Kinitsky, 1994, Fig. 2a)")
+    ax.legend(fontsize=9)
+    return fig

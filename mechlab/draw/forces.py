@@ -111,8 +111,16 @@ def shade_undefined(ax, deg, undefined):
     return ax.fill_between(deg, 0.0, 1.05, where=undefined, step="mid", color="0.88", lw=0, label=UNDEFINED_LABEL)
 
 
-def plot_efficiency(result, ax=None, **style):
-    """The instantaneous efficiency η(φ) of a force result, its undefined spans grey; returns the axes."""
+LEVEL_STYLES = (("C1", "--"), ("C2", ":"), ("C4", "-."), ("C5", (0, (5, 1, 1, 1))))
+
+
+def plot_efficiency(result, ax=None, levels=None, **style):
+    """The instantaneous efficiency η(φ) of a force result, its undefined spans grey; returns the axes.
+
+    ``levels``: name → value of cycle efficiencies (e.g. the thesis' mean and the energy ratio of
+    :meth:`~mechlab.kinetostatics.solve.ForceResult.cycle_efficiency`), each drawn as a horizontal
+    line labelled "name = value" in a legend.
+    """
     if ax is None:
         ax = plt.subplots(figsize=(8, 3.2))[1]   # 8 in: at least 600 px in the book's column
     eta = result.efficiency()
@@ -122,4 +130,63 @@ def plot_efficiency(result, ax=None, **style):
     ax.set(xlabel="crank angle φ (degrees)", ylabel="efficiency η (–)", ylim=(0.0, 1.05))
     ax.set_xticks(np.arange(0, 361, 90))
     ax.grid(True, alpha=0.3)
+    if levels:
+        for (name, value), (colour, dash) in zip(levels.items(), LEVEL_STYLES):
+            ax.axhline(value, color=colour, ls=dash, label=f"{name} = {value:.3f}")
+        ax.legend(loc="lower left", fontsize=8)
+    return ax
+
+
+def _reaction_label(reaction) -> tuple[np.ndarray, str]:
+    """|R| of a turning pair, |N| (the normal force) of a sliding or higher pair, with its legend."""
+    if reaction.normal is None:
+        return reaction.magnitude, f"|R| in {reaction.pair}"
+    return np.abs(reaction.normal), f"|N| in the {reaction.pair}"
+
+
+def plot_torque_and_reactions(result, power_balance=None, unit: str = "N"):
+    """Left: the balancing torque M_b(φ) from the groups, with ``power_balance`` (the same from
+    :func:`mechlab.kinetostatics.solve.virtual_work_torque`) dashed over it; right: the size of the
+    reaction in every pair (|R| in a turning pair, |N| in a sliding or higher one). Forces in
+    ``unit``, torques in ``unit``·m; returns the Figure."""
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 3.2))
+    deg = np.degrees(result.phi)
+    ax1.plot(deg, result.torque, lw=2, label="groups")
+    if power_balance is not None:
+        ax1.plot(deg, power_balance, "k--", lw=1, label="power balance")
+    ax1.set(xlabel="φ, degrees", ylabel=f"M_b, {unit}·m", title="balancing torque")
+    ax1.legend()
+    for reaction in result.reactions.values():
+        size, label = _reaction_label(reaction)
+        ax2.plot(deg, size, label=label)
+    ax2.set(xlabel="φ, degrees", ylabel=f"reaction |R|, {unit}", title="reactions")
+    ax2.legend(fontsize=8)
+    for ax in (ax1, ax2):
+        ax.grid(alpha=0.3)
+    return fig
+
+
+def plot_reaction_against_transmission(motion, results: dict, pair: str, unit: str = "N"):
+    """|R| in ``pair`` against the transmission angle μ of ``motion`` (degrees), one dotted curve per
+    named force result on that motion: a reaction grows as μ leaves 90°. Returns the axes."""
+    ax = plt.subplots(figsize=(8, 3.6))[1]
+    mu = np.degrees(motion.transmission)
+    for label, result in results.items():
+        ax.plot(mu, result.reactions[pair].magnitude, ".", ms=2, label=label)
+    ax.set(xlabel="transmission angle μ, degrees", ylabel=f"|R_{pair}|, {unit}")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    return ax
+
+
+def plot_drive(drive, unit: str = "N·m"):
+    """A :class:`mechlab.kinetostatics.drive.Drive`'s crank torque M_1(φ) and, dashed, the motor's
+    torque referred to the crank (M_1/η where it drives, M_1·η where the crank drives it back). Returns the axes."""
+    ax = plt.subplots(figsize=(8, 3))[1]
+    deg = np.degrees(drive.phi)
+    ax.plot(deg, drive.torque, label="crank torque $M_1$")
+    ax.plot(deg, drive.motor_torque, "--", label="motor ($M_1/\\eta$ or $M_1\\eta$)")
+    ax.set(xlabel="φ, degrees", ylabel=f"torque, {unit}")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
     return ax

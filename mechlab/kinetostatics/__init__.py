@@ -8,7 +8,7 @@
 """
 
 from .drive import Drive, DriveError, cycle_mean, drive, motor_torque
-from .machines import Kinetostatics, press, press_load, rocker_drive, rpm_to_rad
+from .machines import Kinetostatics, class_iv_drive, press, press_load, rocker_drive, rpm_to_rad
 from .model import (FRAME, G, Body, Force, ForceModel, FrictionError, HigherPair, LoadError, MassError, Prismatic,
                     Revolute, SelfLockingError, StructureError, Torque, model_for, slender_bar)
 from .solve import ForceResult, Reaction, output_axis, solve, virtual_work_torque
@@ -18,6 +18,6 @@ __all__ = [
     "Reaction", "ForceResult", "Drive", "DriveError", "Kinetostatics",
     "solve", "virtual_work_torque", "model_for", "slender_bar", "drive", "motor_torque", "cycle_mean",
     "output_axis",
-    "rpm_to_rad", "press_load", "press", "rocker_drive",
+    "rpm_to_rad", "press_load", "press", "rocker_drive", "class_iv_drive",
     "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError",
 ]

@@ -18,11 +18,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .machines import Kinetostatics
 from .model import ForceModel, Torque, model_for
-from .solve import solve
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar
 
-__all__ = ["mchv1_model", "mchv1_forces", "ForceInvariants"]
+__all__ = ["mchv1_model", "mchv1_drive", "mchv1_forces", "ForceInvariants"]
 
 
 def mchv1_model(six: LambdaRockerSixBar, inertia: float, friction: float = 0.0, radius: float = 0.0) -> ForceModel:
@@ -30,6 +30,18 @@ def mchv1_model(six: LambdaRockerSixBar, inertia: float, friction: float = 0.0, 
     inertia J (massless, so J acts about F as about any point)."""
     model = model_for(six).with_body("output", inertia=inertia)
     return model.with_friction(friction, radius) if friction else model
+
+
+def mchv1_drive(six: LambdaRockerSixBar, inertia: float, resisting: float = 0.0, omega1: float = 1.0,
+                friction: float = 0.0, radius: float = 0.0) -> Kinetostatics:
+    """МЧВ1 with the thesis' loads (Kinitsky (1994), ch. 3): :func:`mchv1_model` and a constant moment
+    of size ``resisting`` against the output's motion, M = −resisting·sgn ψ′; crank speed ω1
+    constant, no gravity (massless links)."""
+    def resist(mo):
+        return -resisting * np.sign(mo.dpsi)
+
+    return Kinetostatics(six, mchv1_model(six, inertia, friction, radius), (Torque("output", resist),),
+                         omega1=omega1, eps1=0.0, gravity=(0.0, 0.0))
 
 
 @dataclass(frozen=True)
@@ -55,11 +67,7 @@ def mchv1_forces(six: LambdaRockerSixBar, *, inertia: float = 1.0, resisting: fl
     motion = six.motion(phi)
     moving = np.abs(motion.dpsi) > 1e-9
 
-    def resist(mo):
-        return -resisting * np.sign(mo.dpsi)
-
-    model = mchv1_model(six, inertia, friction, radius)
-    res = solve(model, motion, (Torque("output", resist),), omega1=omega1, eps1=0.0, gravity=(0.0, 0.0))
+    res = mchv1_drive(six, inertia, resisting, omega1, friction, radius).forces(motion=motion)
     unit_force = inertia * omega1**2  # / l, l = 1
     reactions = {k: float(r.magnitude.max() / unit_force) for k, r in res.reactions.items()}
     if dwell is not None:

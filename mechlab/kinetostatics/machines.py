@@ -1,4 +1,4 @@
-"""The chapter's machines with loads: a slider-crank press and a four-bar rocker drive.
+"""The chapter's machines with loads: a slider-crank press, a four-bar rocker drive and the class-IV six-bar.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from ..validate import mechanism as mechanism_of
 from .model import MAX_OMEGA, Eps, Force, ForceModel, G, LoadError, Omega, Torque, _nonneg, model_for, slender_bar
 from .solve import ForceResult, solve
 
-__all__ = ["Kinetostatics", "rpm_to_rad", "press_load", "press", "rocker_drive"]
+__all__ = ["Kinetostatics", "rpm_to_rad", "press_load", "press", "rocker_drive", "class_iv_drive"]
 
 Rpm = Annotated[float, number(0.0, MAX_OMEGA * 60 / (2 * np.pi), why="rev/min")]
 Size = Annotated[float, number(0.0)]  # a mass, a load, a friction coefficient: ≥ 0
@@ -142,6 +142,31 @@ def rocker_drive(crank: Length = 0.10, coupler: Length = 0.30, rocker: Length = 
              .with_friction(f, radius))
     T = _nonneg("resisting torque T", T, LoadError)
     return Kinetostatics(fb, model, (Torque("rocker", lambda m: -T * np.sign(m.dpsi)),), rpm_to_rad(rpm))
+
+
+@validated
+def class_iv_drive(*, omega1: Omega = 10.0, T: Size = 20.0, f: Size = 0.0, radius: Distance = 0.0) -> Kinetostatics:
+    """The chapter's class-IV six-bar (:func:`mechlab.mechanisms.sixbar_iv.example`) with masses: its
+    output link 4 meets a torque of size T against its motion, crank speed ω1 (rad/s), friction f in every
+    journal of radius ``radius`` (lengths in the example's unit, about 1 m).
+
+    The model is :func:`model_for`'s (links, pairs and the one group of four links, Zinchenko et al. (2013)
+    §1) with the masses of the course's example: coupler 2 kg, J_S = 0.05, S at (0.3, −0.2) from Q
+    along Q→P; links 3 and 5 uniform bars of 0.5 and 1 kg (J_S = 0.003, 0.06); output 3 kg,
+    J_S = 0.2, S at (0.4, 0.1) from E along E→R. ``model_for`` puts the coupler's origin at A and
+    the output's axis at ψ, so those two points are given here in its frames.
+    """
+    from ..mechanisms.sixbar_iv import example
+    sb = example()
+    u, v = sb.coupler_point                       # A − Q in the frame Q→P
+    beta = np.arctan2(sb.r_joint[1], sb.r_joint[0])   # E→R from the output's axis ψ
+    c, s = np.cos(beta), np.sin(beta)
+    model = (model_for(sb).with_body("coupler", mass=2.0, inertia=0.05, com=(0.3 - u, -0.2 - v))
+             .with_body("link 3", mass=0.5, inertia=0.003).with_body("link 5", mass=1.0, inertia=0.06)
+             .with_body("output", mass=3.0, inertia=0.2, com=(0.4 * c - 0.1 * s, 0.4 * s + 0.1 * c))
+             .with_friction(f, radius))
+    T = _nonneg("resisting torque T", T, LoadError)
+    return Kinetostatics(sb, model, (Torque("output", lambda m: -T * np.sign(m.dpsi)),), omega1)
 
 
 def _slider_crank(crank, rod):
