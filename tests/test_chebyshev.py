@@ -514,11 +514,11 @@ GRID_DELTAS = (90, 120, 150, 180, 210, 240, 270)
 
 @pytest.mark.parametrize("delta", GRID_DELTAS)
 def test_circle_guiding_on_the_region_boundary(delta):
-    """Span ends (on them and 0.1 % inside), 2α from 0.36° to 360°: a verified design or a verified refusal."""
+    """Span ends (on them, 0.01 % and 0.1 % inside), 2α from 0.36° to 360°: a verified design or a verified refusal."""
     _warm([delta])
     lo, hi = _frames(delta)
     kinds = {}
-    for f in (0.0, 0.001, 0.01, 0.3, 0.7, 0.99, 0.999, 1.0):
+    for f in (0.0, 1e-4, 0.001, 0.01, 0.3, 0.7, 0.99, 0.999, 0.9999, 1.0):
         a = lo + f * (hi - lo)
         for dwell in (0.36, 1.0, 30.0, 120.0, 240.0, 359.64, 360.0):
             if a == 0:
