@@ -622,8 +622,7 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
         g, _ = _solve_circle(delta, a, dwell, reach.x)
         if g is not None:
             return g
-        # a resolved solution can fail its dense check too where the band is below resolution: ρ is then a
-        # difference of terms of order |CD| that rounding leaves uncertain to a few 10⁻¹² l
+        # a band near resolution can fail the dense check by rounding: then it must be held below RESOLUTION
         if (err := _below_resolution(where, delta, a, alpha, [reach.x[:2]])) is not None:
             raise err
     if reach is not None and start is not None:
@@ -635,8 +634,8 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
                 "rotation", dwell_max=top, r_limit=min(a, 2 - a))
         if reach.resolved and reach.dwell < dwell and reach.x[0] > 0.97 * min(a, 2 - a):
             raise NoDesignError(
-                f"{where}: the designs of this frame end at 2α = {np.degrees(reach.dwell):.6g}° (to 0.005°; the family "
-                f"folds back there), with the crank r = {reach.x[0]:.6g} next to the rotation limit r = min(a, 2 − a) "
+                f"{where}: the designs of this frame end at 2α = {np.degrees(reach.dwell):.6g}° (the continuation stops "
+                f"there, to 0.005°), with the crank r = {reach.x[0]:.6g} next to the rotation limit r = min(a, 2 − a) "
                 f"= {min(a, 2 - a):.6g} (a dead point)", "rotation", dwell_max=reach.dwell, r_limit=min(a, 2 - a))
     if reach is not None and start is None and reach.dwell > dwell:
         why = ("its crank reaches the rotation limit r = a" if reach.x[0] > 0.98 * min(a, 2 - a) else
