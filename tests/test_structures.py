@@ -10,7 +10,7 @@ from mechlab.analysis.centres import instant_centres
 from mechlab.geometry import perp
 from mechlab.kinetostatics.model import Force, Torque, model_for
 from mechlab.kinetostatics.solve import solve
-from mechlab.mechanisms.base import FRAME
+from mechlab.mechanisms.base import FRAME, Link, Pair, Structure
 from mechlab.mechanisms.sixbar_iv import example as sixbar_iv
 from mechlab.mechanisms.spherical_geneva import SpatialMechanismError
 from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
@@ -121,3 +121,28 @@ def test_the_spherical_geneva_has_no_planar_structure_and_says_so():
     for ask in (g.structure, lambda: instant_centres(g, [0.1, 0.2]), lambda: model_for(g)):
         with pytest.raises(SpatialMechanismError, match="spatial mechanism .* no planar structure"):
             ask()
+
+
+@pytest.mark.parametrize("mech", families(), ids=_name)
+def test_mobility_is_one_and_each_group_zero(mech):
+    # W = 3n - 2p₅ - p₄ (Artobolevsky, 1965): one crank drives the mechanism, each Assur group adds none
+    st = mech.structure()
+    assert st.mobility() == 1
+    assert [st.mobility(g) for g in st.groups] == [0] * len(st.groups)
+
+
+def test_mobility_counts_lower_pairs_twice_and_higher_pairs_once():
+    def bar(name, a, b):
+        return Link(name, a, (a, b))
+
+    # a five-bar: four moving links, five revolute pairs, W = 12 - 10 = 2 (two inputs needed)
+    five = Structure((bar("1", "O", "A"), bar("2", "A", "B"), bar("3", "B", "C"), bar("4", "E", "C")),
+                     (Pair("revolute", "O", FRAME, "1", "O"), Pair("revolute", "A", "1", "2", "A"),
+                      Pair("revolute", "B", "2", "3", "B"), Pair("revolute", "C", "3", "4", "C"),
+                      Pair("revolute", "E", FRAME, "4", "E")), (("2", "3", "4"),), "4", 1.0)
+    assert five.mobility() == 2 and five.mobility(("2", "3", "4")) == 1
+    # a Geneva wheel: crank and wheel on the frame, the pin in the slot a higher pair: W = 6 - 4 - 1 = 1
+    geneva = ml.ExternalGeneva(4, 100.0).structure()
+    assert [p.kind for p in geneva.pairs].count("higher") == 1 and geneva.mobility() == 1
+    with pytest.raises(ml.MechanismError, match="no link"):
+        five.mobility(("2", "rocker"))

@@ -136,6 +136,24 @@ class Structure:
                 return link
         raise MechanismError(f"no link {name!r}; links: {', '.join(k.name for k in self.links)}")
 
+    def mobility(self, group: tuple[str, ...] | None = None) -> int:
+        """Mobility W = 3n - 2p₅ - p₄ (Chebyshev-Grübler; Artobolevsky, 1965).
+
+        n moving links (those of ``group`` when given, else all), p₅ the lower pairs (revolute,
+        prismatic) and p₄ the higher pairs that join them to the rest; a group of ``groups`` leaves
+        out the pairs to the groups listed before it, which are detached first (from the output
+        back). A structural (Assur) group has W = 0, a mechanism driven by one crank W = 1.
+        """
+        names = {k.name for k in self.links} if group is None else set(group)
+        unknown = sorted(names - {k.name for k in self.links})
+        if unknown:
+            raise MechanismError(f"group names no link {unknown}; links: {', '.join(k.name for k in self.links)}")
+        group = tuple(group or ())
+        detached = {k for g in self.groups[:self.groups.index(group)] for k in g} if group in self.groups else set()
+        joining = [p for p in self.pairs if (p.a in names or p.b in names) and not {p.a, p.b} & detached]
+        higher = sum(p.kind == "higher" for p in joining)
+        return 3 * len(names) - 2 * (len(joining) - higher) - higher
+
     def frame_pair(self, link: str) -> Pair:
         """The pair joining ``link`` to the frame."""
         for p in self.pairs:
