@@ -323,6 +323,25 @@ def test_animate_equivalence_and_plot_against_base():
     plt.close("all")
 
 
+def test_plot_assembly_arcs_draws_two_mirror_arcs_of_the_circle_about_B():
+    from mechlab.draw.curved_slot import ARC_NAMES, plot_assembly_arcs
+
+    fb = FourBar(0.6, 1.6, 2.0, 2.0, -1)    # in units of the frame OE = 2: the chapter's four-bar
+    fig = plot_assembly_arcs(fb, n=181)
+    ax = fig.axes[0]
+    circle, plus, minus = (np.stack(line.get_data(), -1) for line in ax.lines[:3])
+    assert [line.get_label() for line in ax.lines[1:3]] == list(ARC_NAMES.values())
+    phi = fb.cycle(181)
+    assert np.allclose(plus * 2.0, relative_path(FourBar(0.6, 1.6, 2.0, 2.0, 1), phi).p)
+    assert np.allclose(minus[:, 0], plus[:, 0]) and np.allclose(minus[:, 1], -plus[:, 1])   # mirror images
+    assert (plus[:, 1] > 0).all()
+    B = np.array([1.0, 0.0])   # l_BE / l_OE
+    for curve in (circle, plus, minus):
+        assert np.allclose(np.hypot(*(curve - B).T), 0.8)   # l_AB / l_OE
+    assert "units of the frame OE" in ax.get_xlabel() and "OE" in ax.get_ylabel()
+    plt.close(fig)
+
+
 def test_equivalence_explorer_reports_errors_and_recovers():
     from mechlab.widgets.equivalence import fourbar_equivalence, slider_crank_equivalence
     ex = fourbar_equivalence()

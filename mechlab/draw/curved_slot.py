@@ -1,7 +1,10 @@
-"""A side-by-side animation of a linkage, its curved-slot twin and the relative path, and a law
-plotted against its base mechanism's (each mechanism drawn from its own ``sketch()``)."""
+"""A side-by-side animation of a linkage, its curved-slot twin and the relative path, a law
+plotted against its base mechanism's (each mechanism drawn from its own ``sketch()``), and the
+four-bar's two assemblies as the pin's two arcs in the rocker's frame."""
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -78,3 +81,32 @@ def plot_against_base(mechanism, phi=None, axes=None):
         ax.grid(True, alpha=0.3)
     axes[0].legend(fontsize=8)
     return axes
+
+
+# Zinchenko et al. (2013) name the two arcs of the circle about B by their end points
+ARC_NAMES = {1: "kc = +1 (α1–α1)", -1: "kc = −1 (α2–α2)"}
+
+
+def plot_assembly_arcs(fourbar, n: int = 721, ax=None):
+    """The pin A of a four-bar in the rocker's frame (E at the origin, B on the x axis), for both assemblies
+    k_c = ±1: two arcs of the circle of radius l_AB about B (dashed), mirror images in the rocker's axis E→B
+    (after Zinchenko et al., 2013, Fig. 2). Lengths in units of the frame OE; returns the Figure."""
+    from ..mechanisms.fourbar import FourBar
+    from ..validate import check, count, mechanism
+
+    fourbar = check("fourbar", fourbar, mechanism(FourBar))
+    n = check("n", n, count(2))
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7, 5))
+    phi = fourbar.cycle(n)
+    g, b, r = fourbar.ground, fourbar.rocker, fourbar.coupler
+    t = np.linspace(0, 2 * np.pi, 200)
+    ax.plot((b + r * np.cos(t)) / g, r * np.sin(t) / g, "--", color="0.6", lw=0.8)
+    for k, name in ARC_NAMES.items():
+        ax.plot(*relative_path(replace(fourbar, assembly=k), phi).p.T / g, lw=3, label=name)
+    ax.plot([0, b / g], [0, 0], "k-", lw=1)
+    ax.plot([0], [0], "k^", ms=9)
+    ax.set(xlabel="x along E→B (units of the frame OE)", ylabel="y (units of OE)", aspect="equal")
+    ax.set_title("pin A in the rocker's frame (after Zinchenko et al., 2013, Fig. 2)", fontsize=10)
+    ax.legend(fontsize=8)
+    return ax.figure
