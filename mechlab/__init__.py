@@ -32,8 +32,8 @@ from .mechanisms.geneva import OffsetError, SlotCountError
 from .mechanisms.lambda_mechanism import classic_lambda
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
 from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
-                                   DwellSlotMechanism, best_placement, compare_transitions, curved_slot_dwell,
-                                   dwell_limit, two_branch_slot)
+                                   DwellSlotMechanism, best_placement, compare_transitions, cubic_dwell_window,
+                                   curved_slot_dwell, dwell_limit, two_branch_slot)
 from .synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison, table1_review
 from .synthesis.lambda_guiding import (DesignOutcomes, band_touches, circle_guiding, design_outcomes, existence_map,
                                        existence_region,
@@ -44,7 +44,8 @@ from .synthesis.lambda_sixbars import (dwell_extent, mchv1, mchv3_best_table, mc
                                        slot_residual_first_order, time_ratio_far_angle)
 from .synthesis.lambda_sliders import mchv2, mchv2_far_position, mchv2_stroke, mchv5, slider_invariants, slider_report
 from .synthesis.cam_design import CamProgramme
-from .synthesis.slot_export import read_csv, slot_profile, write_cam_csv, write_cam_dxf, write_csv, write_dxf
+from .synthesis.slot_export import (read_csv, read_dxf, slot_profile, write_cam_csv, write_cam_dxf, write_csv,
+                                    write_dxf)
 
 __version__ = "0.1.0"
 
@@ -67,8 +68,9 @@ __all__ = [
     "rolling_speeds", "five_link_higher_pair",
     # dwell synthesis
     "curved_slot_dwell", "DwellSlotMechanism", "DwellLaw", "TRANSITIONS", "compare_transitions", "dwell_limit",
+    "cubic_dwell_window",
     "two_branch_slot", "best_placement", "DwellError", "DwellIntervalError", "DwellRatioError",
-    "slot_profile", "write_csv", "write_dxf", "read_csv",
+    "slot_profile", "write_csv", "write_dxf", "read_csv", "read_dxf",
     # cams
     "CamProgramme", "TranslatingRollerCam", "OscillatingRollerCam", "CamUndercutError", "write_cam_csv",
     "write_cam_dxf",

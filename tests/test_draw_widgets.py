@@ -527,3 +527,39 @@ def test_plot_existence_map_draws_the_map_and_the_transmission_lines():
     assert "150°" in ax.get_title() and "l_OA" in ax.get_xlabel()
     assert len(plot_existence_map(em, 150 * deg, course=None).axes[0].lines) == len(labels) - 2
     plt.close("all")
+
+
+def test_plot_pressure_angles_draws_each_transition_over_the_turn_and_shades_the_dwell():
+    from mechlab.draw import plot_pressure_angles
+    from mechlab.synthesis.dwell_slot import TRANSITIONS, curved_slot_dwell
+
+    deg = np.pi / 180
+    fig = plot_pressure_angles(0.4, 50 * deg, 140 * deg, pivot_distance=2.0, n=181)
+    (ax,) = fig.axes
+    assert [line.get_label() for line in ax.lines] == list(TRANSITIONS)
+    phi = np.linspace(0.0, 2 * np.pi, 181)
+    for line, tr in zip(ax.lines, TRANSITIONS):
+        theta = curved_slot_dwell(0.4, 50 * deg, 140 * deg, 2.0, tr).motion(phi).pressure_angle
+        assert np.allclose(line.get_xdata(), np.degrees(phi)) and np.allclose(line.get_ydata(), np.degrees(theta))
+    spans = sorted(p.get_x() for p in ax.patches), sorted(p.get_x() + p.get_width() for p in ax.patches)
+    assert np.allclose(spans, [[50, 220], [140, 310]])   # the dwell and its mirror 360° - φ
+    assert "degrees" in ax.get_xlabel() and "degrees" in ax.get_ylabel()
+    plt.close(fig)
+
+
+def test_plot_slot_draws_the_profile_in_units_of_the_pivot_distance():
+    from mechlab.draw import plot_slot
+    from mechlab.synthesis.dwell_slot import curved_slot_dwell
+    from mechlab.synthesis.slot_export import slot_profile
+
+    deg = np.pi / 180
+    cut = curved_slot_dwell(0.5, 60 * deg, 150 * deg, pivot_distance=120.0, transition="quintic", roller_radius=8.0)
+    fig = plot_slot(cut)
+    centre, arc, left, right = (np.stack(line.get_data(), -1) for line in fig.axes[0].lines[:4])
+    prof = slot_profile(cut)
+    assert np.allclose(centre * 120.0, prof.centre) and np.allclose(left * 120.0, prof.left)
+    assert np.allclose(right * 120.0, prof.right)
+    # the dwell arc: radius l_OA about O, in units of l_OB that is λ
+    assert np.allclose(np.hypot(*(arc - cut.law.centre_in_link() / 120.0).T), 0.5)
+    assert "l_{OB}" in fig.axes[0].get_xlabel() and "l_{OB}" in fig.axes[0].get_ylabel()
+    plt.close(fig)

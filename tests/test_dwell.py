@@ -5,7 +5,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.synthesis.dwell_slot import TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError, base_law, compare_transitions, curved_slot_dwell, dwell_limit, two_branch_slot
+from mechlab.synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError, base_law,
+                                          compare_transitions, cubic_dwell_window, curved_slot_dwell, dwell_limit,
+                                          two_branch_slot)
 from mechlab.errors import DimensionError, MechanismError, SingularityError
 from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
 from mechlab.mechanisms.slotted import SlottedLink
@@ -201,6 +203,25 @@ def test_dwell_limit_is_set_by_the_slot_end_not_by_120_degrees():
     assert res.max_dwell_deg < 120.0 and "slot end" in res.where
     m = curved_slot_dwell(lam, res.phi1, res.phi2)
     assert m.max_pressure_angle()[0] <= limit + 1e-5
+
+
+@pytest.mark.parametrize("lam, limit_deg", [(0.5, 60.0), (0.3, 70.0), (1.5, 70.0)])
+def test_cubic_dwell_window_puts_the_limit_at_both_slot_ends(lam, limit_deg):
+    limit = np.radians(limit_deg)
+    p1, p2 = cubic_dwell_window(lam, limit)
+    m = curved_slot_dwell(lam, p1, p2)
+    # θ reaches the bound at both ends (1e-7: the cubic slot's end term) and nowhere exceeds it
+    assert m.motion(np.array([0.0, np.pi])).pressure_angle == pytest.approx([limit, limit], abs=1e-7)
+    assert m.max_pressure_angle()[0] == pytest.approx(limit, abs=1e-7)
+    # the bisection of dwell_limit finds the same longest dwell (to its 2e-4 rad tolerance)
+    assert dwell_limit(lam, limit, "cubic").max_dwell_deg == pytest.approx(np.degrees(p2 - p1), abs=0.02)
+
+
+def test_cubic_dwell_window_refuses_when_no_dwell_is_left():
+    with pytest.raises(DwellIntervalError, match="no dwell is left for λ = 2.5"):
+        cubic_dwell_window(2.5, np.radians(70.0))
+    with pytest.raises(DwellRatioError):
+        cubic_dwell_window(1.0, np.radians(60.0))
 
 
 # -- the two-branch slot and λ > 1 ---------------------------------------------------------

@@ -73,6 +73,13 @@ def slot_csv() -> str:
 
 
 @functools.cache
+def slot_dxf() -> Path:
+    path = scratch() / "read.dxf"
+    ml.write_dxf(ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"), path, roller_radius=0.01, n=41)
+    return path
+
+
+@functools.cache
 def specs():
     """An index and a swing specification (the fast families: a call of candidates() takes 0.02 s)."""
     return (D.Specification("index", 0.75, stations=4, inertia=1.0),
@@ -138,6 +145,7 @@ CASES = {
     "DwellLaw.curvature": lambda: (ml.DwellLaw(0.5, 60 * DEG, 150 * DEG).curvature, (PHI,), {}),
     "two_branch_slot": lambda: (ml.two_branch_slot, (0.5, 60 * DEG), {"pivot_distance": 1.0}),
     "dwell_limit": lambda: (ml.dwell_limit, (0.5, 75 * DEG), {"transition": "cubic", "pivot_distance": 1.0}),
+    "cubic_dwell_window": lambda: (ml.cubic_dwell_window, (0.5, 60 * DEG), {}),
     "compare_transitions": lambda: (ml.compare_transitions, (0.5, 60 * DEG, 150 * DEG), {"n": 73}),
     "slot_profile": lambda: (ml.slot_profile, (ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"),),
                              {"roller_radius": 0.01, "n": 41}),
@@ -199,6 +207,7 @@ CASES = {
                                          scratch() / "slot.dxf"),
                           {"roller_radius": 0.01, "n": 41}),
     "read_csv": lambda: (ml.read_csv, (slot_csv(),), {}),
+    "read_dxf": lambda: (ml.read_dxf, (slot_dxf(),), {}),
     "nearest_assembly": lambda: (ml.nearest_assembly, (fb, 1.0), {"B": (2.8, 2.7)}),
     "law_difference": lambda: (ml.law_difference, (fb.motion(PHI), ml.FourBar(1.0, 3.0, 3.0, 4.0, -1).motion(PHI)),
                                {}),

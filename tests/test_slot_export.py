@@ -9,7 +9,9 @@ import pytest
 
 from mechlab.synthesis.dwell_slot import curved_slot_dwell
 from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
-from mechlab.synthesis.slot_export import SlotUndercutError, check_roller, min_radius_of_curvature, read_csv, slot_profile, write_csv, write_dxf
+from mechlab.errors import DimensionError
+from mechlab.synthesis.slot_export import (SlotUndercutError, check_roller, min_radius_of_curvature, read_csv, read_dxf,
+                                             slot_profile, write_csv, write_dxf)
 
 DEG = np.pi / 180
 
@@ -71,6 +73,36 @@ def test_dxf_round_trip(mech):
             assert {tuple(np.round(p, 9)) for p in pts_cap} == {tuple(np.round(prof.left[i], 9)),
                                                                tuple(np.round(prof.right[i], 9))}
         assert doc.header["$INSUNITS"] == 4
+
+
+def test_read_dxf_gives_back_what_write_dxf_wrote(mech, tmp_path):
+    write_dxf(mech, tmp_path / "slot.dxf")
+    got = read_dxf(tmp_path / "slot.dxf")
+    prof = slot_profile(mech)
+    assert np.abs(got.centre - prof.centre).max() < 1e-12
+    assert np.allclose(got.dwell_centre, mech.law.centre_in_link(), atol=1e-12)
+    assert got.dwell_radius == pytest.approx(mech.crank, abs=1e-12)
+    flanks = sorted(got.flanks, key=lambda f: np.abs(f - prof.left).max())
+    assert np.abs(flanks[0] - prof.left).max() < 1e-12 and np.abs(flanks[1] - prof.right).max() < 1e-12
+    # a slot written without a roller has a centre line and a dwell arc but no flanks
+    bare = curved_slot_dwell(0.4, 50 * DEG, 140 * DEG, pivot_distance=80.0, transition="quintic")
+    write_dxf(bare, tmp_path / "bare.dxf")
+    plain = read_dxf(tmp_path / "bare.dxf")
+    assert plain.flanks == () and plain.dwell_radius == pytest.approx(32.0, abs=1e-12)
+
+
+def test_read_dxf_names_a_file_that_is_no_slot(tmp_path):
+    from mechlab import CamProgramme, TranslatingRollerCam, write_cam_dxf
+
+    with pytest.raises(DimensionError, match="path = .*missing.dxf.* not a file"):
+        read_dxf(tmp_path / "missing.dxf")
+    (tmp_path / "text.dxf").write_text("not a drawing")
+    with pytest.raises(DimensionError, match="not a readable DXF"):
+        read_dxf(tmp_path / "text.dxf")
+    cam = TranslatingRollerCam(CamProgramme(10.0, 100 * DEG, 100 * DEG, 40 * DEG), 40.0, 8.0, samples=720)
+    write_cam_dxf(cam, tmp_path / "cam.dxf")
+    with pytest.raises(DimensionError, match="0 polylines on layer CENTRE and 0 arcs"):
+        read_dxf(tmp_path / "cam.dxf")
 
 
 def test_csv_round_trip_and_spline_through_it_reproduces_motion(mech):

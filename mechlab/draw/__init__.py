@@ -577,6 +577,48 @@ def plot_law(motion: Motion, axes=None, label: str | None = None, **style):
     return lines
 
 
+def plot_pressure_angles(lam, phi1, phi2, pivot_distance=1.0, n: int = 721, ax=None):
+    """The pressure angle θ (degrees) of the curved-slot dwell mechanism (Zinchenko et al., 2013, §3) over
+    a turn of the crank (φ in degrees), one line per transition law of
+    :data:`~mechlab.synthesis.dwell_slot.TRANSITIONS`; the dwell [φ1, φ2] (radians) shaded, and lighter its
+    mirror [360° - φ2, 360° - φ1], where the pin passes the same slot points. Returns the Figure."""
+    from ..synthesis.dwell_slot import TRANSITIONS, curved_slot_dwell
+
+    designs = [curved_slot_dwell(lam, phi1, phi2, pivot_distance, tr) for tr in TRANSITIONS]
+    phi = designs[0].turn(n)
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7, 2.8))
+    for tr, m in zip(TRANSITIONS, designs):
+        ax.plot(np.degrees(phi), np.degrees(m.motion(phi).pressure_angle), label=tr)
+    a, b = np.degrees(designs[0].phi1), np.degrees(designs[0].phi2)
+    ax.axvspan(a, b, color="#e08214", alpha=0.12)
+    ax.axvspan(360 - b, 360 - a, color="0.5", alpha=0.08)
+    ax.set(xlabel="φ, degrees", ylabel="θ, degrees")
+    ax.legend(fontsize=8)
+    return ax.figure
+
+
+def plot_slot(mechanism, ax=None):
+    """The slot of a curved-slot dwell mechanism to cut, in the link's frame (B at the origin, lengths in
+    units of l_OB): its centre line, the dwell arc (radius l_OA about O) and the flanks at ± the roller
+    radius (:func:`mechlab.synthesis.slot_export.slot_profile`). Returns the Figure."""
+    from ..synthesis.slot_export import slot_profile
+
+    prof = slot_profile(mechanism)
+    unit = mechanism.pivot_distance
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8, 4.2))
+    ax.plot(*prof.centre.T / unit, color="#2a7f62", lw=1)
+    ax.plot(*mechanism.dwell_points().T / unit, color="#e08214", lw=3)
+    for flank in (prof.left, prof.right):
+        ax.plot(*flank.T / unit, "0.4", lw=0.8)
+    ax.plot([0], [0], "^", color="0.3")
+    ax.set_aspect("equal")
+    ax.set_title("slot in the link's frame (B at the origin)", fontsize=10)
+    ax.set(xlabel="x (units of $l_{OB}$)", ylabel="y (units of $l_{OB}$)")
+    return ax.figure
+
+
 def plot_cam_laws(names=None, n: int = 401):
     """Plot cam motion laws side by side, normalised (rise h = 1 over the interval Φ = 1):
     lift Y(x), velocity analog Y′(x) and acceleration analog Y″(x), x = φ/Φ; returns the Figure.

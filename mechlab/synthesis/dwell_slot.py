@@ -788,6 +788,23 @@ def dwell_limit(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2)], 
 
 
 @validated
+def cubic_dwell_window(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2, open=True)]) -> tuple[float, float]:
+    """The longest dwell [φ1, φ2] (radians) of the cubic transition whose pressure angle stays ≤ ``theta_max``
+    at both slot ends, where the cubic's is largest (chapter 5, from Zinchenko et al. (2013) (21), (23)):
+    tan θ(0) = 2(1 + λ)/φ1 and tan θ(π) = 2|1 - λ|/(π - φ2), so φ1 = 2(1 + λ)/tan θ_max and
+    φ2 = π - 2|1 - λ|/tan θ_max. :func:`dwell_limit` finds the same window numerically.
+    DwellIntervalError when the two transitions leave no dwell."""
+    lam = check_lambda(lam)
+    phi1 = 2.0 * (1.0 + lam) / np.tan(theta_max)
+    phi2 = np.pi - 2.0 * abs(1.0 - lam) / np.tan(theta_max)
+    if phi2 - phi1 <= 0.0:
+        raise DwellIntervalError(
+            f"θ ≤ {np.degrees(theta_max):.2f}° at both slot ends needs φ1 ≥ {np.degrees(phi1):.2f}° and "
+            f"φ2 ≤ {np.degrees(phi2):.2f}°: no dwell is left for λ = {lam:g} with the cubic transition")
+    return float(phi1), float(phi2)
+
+
+@validated
 def two_branch_slot(lam: Ratio, phi2: Annotated[float, angle(0.0, np.pi, open=True, error=DwellIntervalError)],
                     pivot_distance: Length = 1.0) -> TwoBranchSlot:
     """The two-branch slot of Zinchenko et al. (2013) Fig. 10: the dwell starts at φ1 = 0, so the dwell arc

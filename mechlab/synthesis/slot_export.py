@@ -209,6 +209,44 @@ def write_dxf(mechanism: Designed, path: FilePath, roller_radius: Roller = None,
     return doc
 
 
+@dataclass(frozen=True, eq=False)
+class SlotDrawing:
+    """A slot's DXF read back (:func:`read_dxf`): the centre line (n, 2), the dwell arc's centre and
+    radius, and the flanks' polylines (none for a slot written without a roller)."""
+
+    centre: np.ndarray
+    dwell_centre: np.ndarray
+    dwell_radius: float
+    flanks: tuple[np.ndarray, ...]
+
+
+@validated
+def read_dxf(path: FilePath) -> SlotDrawing:
+    """The layers of a slot DXF written by :func:`write_dxf`, read with ezdxf: ``CENTRE`` (one polyline),
+    ``DWELL`` (one arc) and the ``FLANKS`` polylines. A missing or unreadable file, or one without
+    those layers, raises DimensionError naming it."""
+    import ezdxf
+
+    where = repr(str(path))
+    if not Path(str(path)).is_file():
+        raise DimensionError(f"path = {where} is not a file: write it with write_dxf")
+    try:
+        msp = ezdxf.readfile(str(path)).modelspace()
+    except (OSError, ezdxf.DXFError) as err:
+        raise DimensionError(f"path = {where} is not a readable DXF: {err}") from None
+
+    def polylines(layer):
+        return [np.array([p[:2] for p in e.get_points()]) for e in msp.query(f'LWPOLYLINE[layer=="{layer}"]')]
+
+    centre, arcs = polylines("CENTRE"), msp.query('ARC[layer=="DWELL"]')
+    if len(centre) != 1 or len(arcs) != 1:
+        raise DimensionError(f"path = {where} holds {len(centre)} polylines on layer CENTRE and {len(arcs)} arcs "
+                             f"on layer DWELL, not one of each: not a slot written by write_dxf")
+    (arc,) = arcs
+    return SlotDrawing(centre[0], np.array([arc.dxf.center.x, arc.dxf.center.y]), float(arc.dxf.radius),
+                       tuple(polylines("FLANKS")))
+
+
 @validated
 def write_cam_csv(cam: DiscCam, path: Annotated[Any, Spec("path", optional=True)] = None,
                   n: HalfTurnSamples = 721) -> str:
