@@ -83,6 +83,41 @@ def test_teaching_cells_carry_no_assert(path):
     assert any(is_check(c) and asserts_in(source(c)) for c in code), f"{path.name}: no check cell asserts anything"
 
 
+# -- thin teaching cells ------------------------------------------------------------------------------------------
+TEACHING_LINES = 12   # non-blank lines: a few calls into mechlab a student reads; longer logic goes into mechlab
+# the teaching cells that stay longer, (chapter, cell index) → why
+LONG_TEACHING_CELLS = {
+    ("08_chebyshev_dwell_sixbars", 3): "the set-up cell: one import line for each of 13 modules, and DEG",
+}
+
+
+def long_teaching_cells(cs) -> dict[int, int]:
+    """Index → non-blank lines of each code cell not tagged ``check`` with more than TEACHING_LINES of them."""
+    counts = {i: sum(1 for line in source(c).splitlines() if line.strip()) for i, c in enumerate(cs)
+              if c["cell_type"] == "code" and not is_check(c)}
+    return {i: n for i, n in counts.items() if n > TEACHING_LINES}
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_teaching_cells_are_short(path):
+    long = long_teaching_cells(cells(path))
+    allowed = {i for chapter, i in LONG_TEACHING_CELLS if chapter == path.stem}
+    assert set(long) <= allowed, (
+        f"{path.name}: teaching cells {({i: n for i, n in long.items() if i not in allowed})} (index: non-blank lines) "
+        f"exceed {TEACHING_LINES} lines: move figure-composing or computation into mechlab with a test, or "
+        f"allow-list the cell in LONG_TEACHING_CELLS with its reason")
+    assert allowed <= set(long), f"{path.name}: cells {sorted(allowed - set(long))} are short now: drop their entries"
+
+
+def test_the_scan_would_see_a_long_teaching_cell():
+    def code(n_lines, tags=()):
+        return {"cell_type": "code", "metadata": {"tags": list(tags)}, "source": "x = 1\n\n" * n_lines}
+
+    cs = [code(TEACHING_LINES), code(TEACHING_LINES + 1), code(40, tags=["check"]),
+          {"cell_type": "markdown", "metadata": {}, "source": "text\n" * 40}]
+    assert long_teaching_cells(cs) == {1: TEACHING_LINES + 1}   # blank lines, check cells and prose do not count
+
+
 @pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
 def test_chapter_ends_with_its_assignment(path):
     last = cells(path)[-1]
