@@ -147,12 +147,9 @@ def _reals(spec: Spec, name: str, value, unit=_plain):
     if not -MAGNITUDE[1] <= least <= most <= MAGNITUDE[1]:  # NaN compares False
         spec.fail(name, f"finite, of magnitude ≤ {MAGNITUDE[1]:g}", arr[~(np.abs(arr) <= MAGNITUDE[1])][0],
                   explain=False)
-    if spec.lo is not None and (least < spec.lo or (spec.open_lo and least == spec.lo)):
-        _outside(spec, name, arr, arr <= spec.lo if spec.open_lo else arr < spec.lo,
-                 f"{'>' if spec.open_lo else '≥'} {unit(spec.lo)}")
-    if spec.hi is not None and (most > spec.hi or (spec.open_hi and most == spec.hi)):
-        _outside(spec, name, arr, arr >= spec.hi if spec.open_hi else arr > spec.hi,
-                 f"{'<' if spec.open_hi else '≤'} {unit(spec.hi)}")
+    for limit in _limits(spec):
+        if _breaks(least, *limit) or _breaks(most, *limit):
+            _outside(spec, name, arr, _breaks(arr, *limit), _condition(*limit, unit))
     return arr
 
 
@@ -167,11 +164,27 @@ def _outside(spec: Spec, name: str, arr: np.ndarray, bad: np.ndarray, condition:
     spec.fail(name, condition, _Shown(f"{shown} ({values.size} of {arr.size} values)" if arr.size > 1 else shown))
 
 
+def _limits(spec: Spec) -> tuple:
+    """The declared bounds as (bound, strict, lower)."""
+    return (((spec.lo, spec.open_lo, True),) if spec.lo is not None else ()) + \
+        (((spec.hi, spec.open_hi, False),) if spec.hi is not None else ())
+
+
+def _breaks(x, bound, strict, lower):
+    """Where x (a value or an array) breaks the bound."""
+    if lower:
+        return x <= bound if strict else x < bound
+    return x >= bound if strict else x > bound
+
+
+def _condition(bound, strict, lower, unit) -> str:
+    return f"{('>' if strict else '≥') if lower else ('<' if strict else '≤')} {unit(bound)}"
+
+
 def _bounds(spec: Spec, name: str, x: float, unit=_plain) -> None:
-    if spec.lo is not None and (x < spec.lo or (spec.open_lo and x == spec.lo)):
-        spec.fail(name, f"{'>' if spec.open_lo else '≥'} {unit(spec.lo)}", x)
-    if spec.hi is not None and (x > spec.hi or (spec.open_hi and x == spec.hi)):
-        spec.fail(name, f"{'<' if spec.open_hi else '≤'} {unit(spec.hi)}", x)
+    for limit in _limits(spec):
+        if _breaks(x, *limit):
+            spec.fail(name, _condition(*limit, unit), x)
 
 
 def _number(spec, name, value):
