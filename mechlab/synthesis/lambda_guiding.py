@@ -72,11 +72,16 @@ def _offset(k, P, X, Y2):
     return (k * P - 2 * X) / (1 + s)
 
 
+def _across2(r, t, mu, P):
+    """Y² of D across the axis: Y = |CD| sin β with sin β = r sin t / |CA|, |CA| = 2 sin(μ/2), |CD|² = P."""
+    return P * (r * np.sin(t) / (2 * np.sin(mu / 2))) ** 2
+
+
 def _u_at(r, a, delta, k, t):
-    """The offset u of D at thesis angles t (:func:`_offset`), with Y = |CD| sin β, sin β = r sin t / |CA|."""
+    """The offset u of D at thesis angles t (:func:`_offset`)."""
     mu = _mu_at(r, a, t)
     P, X, _, _ = _band_terms(r, a, delta, mu)
-    return _offset(k, P, X, P * (r * np.sin(t) / (2 * np.sin(mu / 2))) ** 2)
+    return _offset(k, P, X, _across2(r, t, mu, P))
 
 
 @dataclass(frozen=True)
@@ -213,7 +218,7 @@ def _ripple(delta, a, r, k, t3, t2, al):
     mu = _mu_at(r[:, None], a, t)
     P, X, dP, dX = _band_terms(r[:, None], a, delta, mu)
     with np.errstate(invalid="ignore", divide="ignore"):
-        u = _offset(k[:, None], P, X, P * (r[:, None] * np.sin(t) / (2 * np.sin(mu / 2))) ** 2)
+        u = _offset(k[:, None], P, X, _across2(r[:, None], t, mu, P))
     out = np.empty((len(r), 4))
     out[:, 0] = u[:, 0] - u[:, 2]  # = ±(ρ(0) − ρ(t2))
     out[:, 1] = u[:, 1] - u[:, 3]
@@ -652,9 +657,11 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
             g, _ = _solve_circle(delta, a, dwell, x0)
             if g is not None:
                 return g
-    # the solve is lost, but near the span's ends (r → 0, or a → 0) the band may be below resolution
-    tried = [x[:2] for x in (start, None if reach is None else reach.x) if x is not None]
-    if (err := _below_resolution(where, delta, a, alpha, tried)) is not None:
+    # the solve is lost, but near the span's ends (r → 0, or a → 0) the band may be below resolution (the crank
+    # of a continuation that reached the dwell was tried above)
+    last = None if reach is None or reach.dwell == dwell else reach.x
+    cranks = [x[:2] for x in (start, last) if x is not None]
+    if (err := _below_resolution(where, delta, a, alpha, cranks)) is not None:
         raise err
     got = "no start" if reach is None else f"the continuation stops at 2α = {np.degrees(reach.dwell):.6g}°"
     raise SynthesisError(f"{where}: the equal-ripple solve fails ({got}); choose (δ, a, 2α) inside the existence map")
