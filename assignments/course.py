@@ -28,6 +28,7 @@ import sys
 import tempfile
 import time
 import uuid
+import warnings
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -52,8 +53,11 @@ def _api(work: Path, **settings):
     from nbgrader.coursedir import CourseDirectory
     from traitlets.config.loader import PyFileConfigLoader
 
+    warnings.filterwarnings("ignore", module="nbgrader")  # SQLAlchemy's notes on nbgrader's own session use
     config = PyFileConfigLoader("nbgrader_config.py", path=str(work)).load_config()
     config.CourseDirectory.root = str(work)
+    # the kernel's note that it talks over TCP on loopback is for servers, not for a grading run
+    config.Execute.extra_arguments = [*config.Execute.get("extra_arguments", []), "--IPKernelApp.log_level=ERROR"]
     for key, value in settings.items():
         section, name = key.split(".")
         setattr(config[section], name, value)
@@ -150,10 +154,30 @@ def _grade_one(student: str, aid: str, nb: Path, timeout: int) -> tuple[list[dic
             api = _api(work, **{"Execute.timeout": timeout})
             _release(api, [aid])
             if _done(api.autograde(aid, student, force=True, create=True), f"autograde {student}/{aid}"):
+                _plain_timeouts(work / "autograded" / student / aid / f"{aid}.ipynb", timeout)
                 _done(api.generate_feedback(aid, student, force=True), f"feedback {student}/{aid}")
         rows = _export(work)
         page = work / "feedback" / student / aid / f"{aid}.html"
         return rows, page.read_text(encoding="utf-8") if page.is_file() else None
+
+
+STOPPED = {"KeyboardInterrupt", "CellTimeoutError"}  # what nbclient leaves in a cell it interrupted
+
+
+def _plain_timeouts(nb_path: Path, timeout: int) -> None:
+    """Say in plain words, in the feedback, that a cell was stopped, in place of the interrupt's traceback."""
+    nb = nbformat.read(nb_path, as_version=4)
+    changed = False
+    for cell in nb.cells:
+        outputs = cell.get("outputs", [])
+        if any(o.get("output_type") == "error" and o.get("ename") in STOPPED for o in outputs):
+            cell.outputs = [o for o in outputs if o.get("ename") not in STOPPED] + [nbformat.v4.new_output(
+                "stream", name="stderr",
+                text=f"This cell ran for more than {timeout} s and was stopped (an endless loop?). "
+                     "Cells below that use what it defines fail too.\n")]
+            changed = True
+    if changed:
+        nbformat.write(nb, nb_path)
 
 
 def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: bool = False) -> None:
