@@ -92,7 +92,7 @@ clean:
 # to HTML in assignments/instructor (all three folders git-ignored).
 NBGRADER_DEPS := assignments/.nbgrader-deps
 NBGRADER_PINS := nbgrader==0.9.6 alembic==1.20.1 Mako==1.4.3 RapidFuzz==3.14.6
-NBGRADER_ENV  := PATH="$(CURDIR)/$(NBGRADER_DEPS)/bin:$$PATH" PYTHONPATH="$(CURDIR)/$(NBGRADER_DEPS):$(CURDIR)"
+NBGRADER_ENV  := PATH="$(CURDIR)/$(NBGRADER_DEPS)/bin:$$PATH" PYTHONPATH="$(CURDIR)/$(NBGRADER_DEPS):$(CURDIR):$(CURDIR)/tools"
 .PHONY: nbgrader student grade book-instructor
 nbgrader: venv
 	test -d $(NBGRADER_DEPS)/nbgrader || $(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps \
@@ -107,6 +107,5 @@ grade: nbgrader
 
 book-instructor: venv
 	rm -rf assignments/instructor
-	PYTHONPATH="$(CURDIR)" $(BIN)/jupyter nbconvert --to html --execute --output-dir assignments/instructor \
-	    --ExecutePreprocessor.timeout=120 assignments/source/*/*.ipynb
+	PYTHONPATH="$(CURDIR)" $(COURSE) execute --to html --output-dir assignments/instructor assignments/source/*/*.ipynb
 	@echo "worked solutions: assignments/instructor/<id>.html"
