@@ -39,6 +39,9 @@ UNPINNED_OK = {"mechlab"}
 WORKDIR = "my-notebooks"
 MANIFEST = ".course-manifest.json"
 PDF = "book/_build/pdf/mechlab.pdf"
+# JupyterLab's defaults for students (the hub's image gets the same file, binder/postBuild): no
+# "Would you like to get notified about official Jupyter news?" prompt, no update check
+LAB_SETTINGS = ROOT / "binder" / "lab-settings"
 # Every executed notebook's kernel over unique Unix sockets, its waits in slices (tools/ipc_kernels.py:
 # no TCP port race, no missed reply), and a cell stopped with its source and the reason after 60 s
 CELL_TIMEOUT = 60
@@ -362,6 +365,7 @@ def lab_argv(python: Path, workdir: Path, port: int) -> list[str]:
     flags = ["--allow-root"] if hasattr(os, "geteuid") and os.geteuid() == 0 else []  # a container's usual user
     return [str(python), "-m", "jupyter", "lab", "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={port}",
             "--no-browser", *flags, f"--ServerApp.root_dir={workdir.resolve()}", "--LabApp.news_url=None",
+            f"--LabApp.app_settings_dir={LAB_SETTINGS}",
             "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate", "--LabApp.extension_manager=readonly"]
 
 
