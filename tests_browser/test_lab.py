@@ -233,7 +233,8 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         widget.scroll_into_view_if_needed()
         page.wait_for_timeout(1000)   # the first full drawing of a live canvas arrives
         # no slider's label or readout is cut off, in any widget of the notebook
-        clipped = page.evaluate(CLIPPED_JS, "#" + page.evaluate("() => window.jupyterapp.shell.currentWidget.id"))
+        notebook = page.evaluate("() => '#' + CSS.escape(window.jupyterapp.shell.currentWidget.id)")
+        clipped = page.evaluate(CLIPPED_JS, notebook)
         assert not clipped, f"{path.name}: slider labels or readouts clipped: {clipped}"
         before = page.evaluate(_PLOT_JS)
         page.evaluate(_INSTRUMENT_JS)
@@ -298,40 +299,43 @@ def test_news_prompt_off_by_shipped_settings(lab):
 CLIPPING_PAGE = """<style>
   .widget-label { width: 150px; padding: 0 8px; box-sizing: border-box; overflow: hidden; display: inline-block;
                   white-space: nowrap; text-overflow: ellipsis; font: 13px sans-serif; }
+  .widget-label span { display: inline-block; max-width: 100%; overflow: hidden; text-overflow: ellipsis; }
 </style>
 <div id="root">
   <div class="widget-slider"><label class="widget-label">pressure angle ≤ (deg) at the dwell's end</label></div>
+  <div class="widget-slider"><label class="widget-label" id="inner"><span>pressure angle ≤ (deg) at the end</span></label></div>
   <div class="widget-slider"><label class="widget-label" id="inpad">pressure angle ≤ (deg)</label></div>
   <div class="widget-slider"><label class="widget-label" id="fits">crank angle φ (deg)</label></div>
 </div>"""
-# sizes the two labels around their text: 4 px short of it (the text runs 4 px into the 8 px padding, so
-# scrollWidth stays equal to clientWidth while the ellipsis cuts it), and 4 px more than it needs
+# sizes two labels around their text: "inpad" 4 px short of it (the text runs into the 8 px padding and
+# the ellipsis cuts it), "fits" 4 px more than it needs; returns scrollWidth and clientWidth of each label
 _SIZE_AROUND_TEXT_JS = """() => {
-  const sized = {};
   for (const [id, spare] of [['inpad', -4], ['fits', 4]]) {
     const e = document.getElementById(id);
     const range = document.createRange();
     e.style.width = 'auto';
     range.selectNodeContents(e);
     e.style.width = (range.getBoundingClientRect().width + 16 + spare) + 'px';
-    sized[id] = [e.scrollWidth, e.clientWidth];
   }
-  return sized;
+  return Object.fromEntries(Array.from(document.querySelectorAll('.widget-label'))
+    .map(e => [e.textContent, [e.scrollWidth, e.clientWidth]]));
 }"""
 
 
-def test_clipping_check_sees_a_label_cut_inside_its_padding(browser):
-    """A planted label cut by an ellipsis inside its padding (where scrollWidth equals clientWidth: the
-    check before missed it) is reported, as is one far too long; a label with room to spare is not."""
+def test_clipping_check_sees_labels_cut_inside_their_box(browser):
+    """Planted labels: one far too long, one cut by an element inside it (scrollWidth equals clientWidth:
+    the check before, scrollWidth > clientWidth, missed it), one whose text runs 4 px into its padding and is
+    cut by the ellipsis; all three are reported, and a label with 4 px to spare is not."""
     page = browser.new_page()
     try:
         page.set_content(CLIPPING_PAGE)
-        sized = page.evaluate(_SIZE_AROUND_TEXT_JS)
+        widths = page.evaluate(_SIZE_AROUND_TEXT_JS)
         clipped = page.evaluate(CLIPPED_JS, "#root")
     finally:
         page.close()
-    assert sized["inpad"][0] == sized["inpad"][1], "the planted cut must be invisible to scrollWidth"
-    assert clipped == ["pressure angle ≤ (deg) at the dwell's end", "pressure angle ≤ (deg)"]
+    inner = "pressure angle ≤ (deg) at the end"
+    assert widths[inner][0] == widths[inner][1], f"the planted cut must be invisible to scrollWidth: {widths}"
+    assert clipped == ["pressure angle ≤ (deg) at the dwell's end", inner, "pressure angle ≤ (deg)"], widths
 
 
 def test_slider_latency():
