@@ -43,8 +43,9 @@ PDF = "book/_build/pdf/mechlab.pdf"
 # "Would you like to get notified about official Jupyter news?" prompt, no update check
 LAB_SETTINGS = ROOT / "binder" / "lab-settings"
 # Every executed notebook's kernel over unique Unix sockets, its waits in slices (tools/ipc_kernels.py:
-# no TCP port race, no missed reply), and a cell stopped with its source and the reason after 60 s
-CELL_TIMEOUT = 60
+# no TCP port race, no missed reply), and a cell stopped with its source and the reason after
+# MECHLAB_CELL_TIMEOUT seconds (60; book/conf.py reads the same variable)
+CELL_TIMEOUT = int(os.environ.get("MECHLAB_CELL_TIMEOUT", "60"))
 NBVAL_ARGS = ["-p", "ipc_kernels", "--nbval-lax", "--nbval-current-env", f"--nbval-cell-timeout={CELL_TIMEOUT}",
               "-p", "no:cacheprovider"]
 NBCONVERT_ARGS = ["--NotebookClient.kernel_manager_class=ipc_kernels.IPCKernelManager",
@@ -399,7 +400,7 @@ def cmd_pdf(args) -> None:
     # the notebooks' outputs come from the HTML build's execution cache when it is current
     run(python, "-m", "sphinx", *opts, "-b", "singlehtml", "-d", "book/_build/doctrees-single", "book",
         "book/_build/singlehtml")
-    run(python, "tools/print_pdf.py", "book/_build/singlehtml/intro.html", PDF)
+    run(python, "tools/print_pdf.py", "book/_build/singlehtml/intro.html", PDF, "--quote-pages")
 
 
 def cmd_execute(args) -> None:

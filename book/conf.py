@@ -77,8 +77,8 @@ myst_dmath_double_inline = True
 nb_execution_mode = "cache"  # executed at build time; the cache lives in the git-ignored _build
 nb_execution_cache_path = str(BUILD / ".jupyter_cache")
 # a cell running longer (an endless loop, a stall) is stopped: the build's warning names the notebook,
-# shows the cell's source and says "A cell timed out ... after 60 seconds"
-nb_execution_timeout = 60
+# shows the cell's source and says "A cell timed out ... after 60 seconds" (course.py reads the same variable)
+nb_execution_timeout = int(os.environ.get("MECHLAB_CELL_TIMEOUT", "60"))
 # a failing cell (an assertion of a chapter) is a warning, so `-W --keep-going` reports every
 # failing notebook of the build and then fails it
 nb_execution_raise_on_error = False
