@@ -42,6 +42,7 @@ import secrets
 from queue import Empty
 from time import monotonic
 
+import zmq
 from jupyter_client import AsyncKernelManager, KernelManager
 from jupyter_client.asynchronous import AsyncKernelClient
 from jupyter_client.channels import AsyncZMQSocketChannel
@@ -57,7 +58,7 @@ def _runtime_dir() -> str:
     """Jupyter's runtime folder (private to the user), or a short one when its path is too long."""
     folder = jupyter_runtime_dir()
     if len(folder) + len("/kernel-0123456789ab-ipc-5") > SOCKET_PATH_MAX:
-        folder = os.path.join("/tmp", f"jupyter-runtime-{os.getuid()}")
+        folder = os.path.join("/tmp", f"jupyter-runtime-{os.getuid()}")  # POSIX: where ipc is used
     os.makedirs(folder, mode=0o700, exist_ok=True)
     return folder
 
@@ -85,9 +86,10 @@ class SlicedAsyncKernelClient(AsyncKernelClient):
 
 
 class _UniqueIPC(HasTraits):
-    """IPC transport by default; the connection file, hence the sockets, named before the start."""
+    """IPC transport by default (where zmq has it: not every Windows build does); the connection file,
+    hence the sockets, named before the start."""
 
-    transport = CaselessStrEnum(["tcp", "ipc"], default_value="ipc", config=True)
+    transport = CaselessStrEnum(["tcp", "ipc"], default_value="ipc" if zmq.has("ipc") else "tcp", config=True)
 
     @default("connection_file")
     def _unique_connection_file(self) -> str:
