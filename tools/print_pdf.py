@@ -48,7 +48,7 @@ pre, .highlight pre, .output pre { white-space: pre-wrap !important; overflow-wr
   text-indent: calc(-1 * (var(--indent) + var(--hang))); }
 .mechbook-code-line:empty::before { content: " "; }
 /* the contents: a chapter's page number at the right of its line */
-.toctree-wrapper a[data-page]::after { content: attr(data-page); float: right; }
+#jb-print-toc a[data-page]::after { content: attr(data-page); float: right; }
 /* a long cell may break across pages rather than leave its frame empty at the foot of one */
 .cell, .cell_input, .cell_output, div.highlight { display: block !important; }
 .cell, .cell_input, .highlight, pre { break-inside: auto !important; }
@@ -134,11 +134,11 @@ CODE_LINES_JS = """(hang) => {
   return count;
 }"""
 
-# the contents' entries (links into this page) as [index, text]; then their page numbers, set as data-page
-TOC_JS = """() => Array.from(document.querySelectorAll('.toctree-wrapper a.reference.internal'))
+# the printed contents' entries (sphinx-book-theme's #jb-print-toc) as [index, text]; then their pages, as data-page
+TOC_JS = """() => Array.from(document.querySelectorAll('#jb-print-toc a.reference.internal'))
   .map((a, i) => [i, a.textContent.trim()])"""
 SET_PAGES_JS = """(pages) => {
-  const links = document.querySelectorAll('.toctree-wrapper a.reference.internal');
+  const links = document.querySelectorAll('#jb-print-toc a.reference.internal');
   for (const [i, page] of pages) links[i].setAttribute('data-page', String(page));
 }"""
 
@@ -153,14 +153,18 @@ def page_texts(pdf: Path) -> list[str]:
 
 
 def first_pages(titles: list[str], pages: list[str]) -> dict[str, int]:
-    """The page (from 1) that each title opens (its first 300 characters start with it), for the titles found."""
+    """The page (from 1) that each title opens (its first 300 characters start with it), for the titles found.
+
+    The titles are in the book's order: each is looked for from the page of the one before, so that a
+    back-matter title ("Errata") is not taken for a chapter's section of the same name.
+    """
     tops = [" ".join(page.split())[:300].replace("\u2019", "'") for page in pages]
-    found = {}
+    found, start = {}, 0
     for title in titles:
         wanted = " ".join(title.split()).replace("\u2019", "'")
-        number = next((n for n, top in enumerate(tops, 1) if top.startswith(wanted)), None)
+        number = next((n for n in range(start + 1, len(tops) + 1) if tops[n - 1].startswith(wanted)), None)
         if number:
-            found[title] = number
+            found[title], start = number, number - 1
     return found
 
 
