@@ -82,7 +82,7 @@ bench-hub: hub-deps
 	$(HUB_PATH) $(BIN)/python tests_hub/hub_load.py --students $(STUDENTS)
 
 clean:
-	rm -rf $(VENV) book/_build
+	rm -rf $(VENV) $(LECTURER_VENV) book/_build
 
 # -- assignments (nbgrader) -------------------------------------------------------------------
 # nbgrader lives in a folder of its own, not in the course's venv, so its JupyterLab extensions stay
@@ -93,21 +93,29 @@ clean:
 # to HTML in assignments/instructor (all three folders git-ignored).
 NBGRADER_DEPS := assignments/.nbgrader-deps
 NBGRADER_PINS := nbgrader==0.9.6 alembic==1.20.1 Mako==1.4.3 RapidFuzz==3.14.6
-NBGRADER_ENV  := PATH="$(CURDIR)/$(NBGRADER_DEPS)/bin:$$PATH" PYTHONPATH="$(CURDIR)/$(NBGRADER_DEPS):$(CURDIR)"
-.PHONY: nbgrader student grade book-instructor
+NBGRADER_ENV  := PATH="$(CURDIR)/$(NBGRADER_DEPS)/bin:$$PATH" PYTHONPATH="$(CURDIR)/$(NBGRADER_DEPS):$(CURDIR):$(CURDIR)/tools"
+# nbgrader needs the whole pinned set (SQLAlchemy, ...). The lecturer's commands (student, grade,
+# book-instructor) run it in a venv of their own, never in .venv, which may be a student's lab-only venv
+# (475 MB; the whole set makes it 908 MB). `make test` keeps using .venv (it needs the whole set anyway).
+LECTURER_VENV ?= .venv-lecturer
+LECTURER      := $(PYTHON) course.py --venv $(LECTURER_VENV)
+nbgrader_into  = test -d $(NBGRADER_DEPS)/nbgrader || $(1)/bin/python -m pip install --quiet --disable-pip-version-check \
+	    --no-deps --target $(NBGRADER_DEPS) $(NBGRADER_PINS)
+.PHONY: nbgrader lecturer student grade book-instructor
 nbgrader: venv
-	test -d $(NBGRADER_DEPS)/nbgrader || $(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps \
-	    --target $(NBGRADER_DEPS) $(NBGRADER_PINS)
+	$(call nbgrader_into,$(VENV))
+lecturer:
+	$(LECTURER) venv all
+	$(call nbgrader_into,$(LECTURER_VENV))
 
-student: nbgrader
-	$(NBGRADER_ENV) $(BIN)/python assignments/course.py student
+student: lecturer
+	$(NBGRADER_ENV) $(LECTURER_VENV)/bin/python assignments/course.py student
 
-grade: nbgrader
+grade: lecturer
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade SUBMISSIONS=<folder of <student>/<id>.ipynb>"; exit 1; }
-	$(NBGRADER_ENV) $(BIN)/python assignments/course.py grade "$(SUBMISSIONS)" $(if $(FRESH),--fresh)
+	$(NBGRADER_ENV) $(LECTURER_VENV)/bin/python assignments/course.py grade "$(SUBMISSIONS)" $(if $(FRESH),--fresh)
 
-book-instructor: venv
+book-instructor: lecturer
 	rm -rf assignments/instructor
-	PYTHONPATH="$(CURDIR)" $(BIN)/jupyter nbconvert --to html --execute --output-dir assignments/instructor \
-	    --ExecutePreprocessor.timeout=120 assignments/source/*/*.ipynb
+	PYTHONPATH="$(CURDIR)" $(LECTURER) execute --to html --output-dir assignments/instructor assignments/source/*/*.ipynb
 	@echo "worked solutions: assignments/instructor/<id>.html"

@@ -5,6 +5,7 @@
     python course.py test                the library's tests, then every notebook and assignment (nbval)
     python course.py book                the static HTML book in book/_build/html
     python course.py pdf                 the whole book as one PDF (printed by Chromium)
+    python course.py execute NB... --output-dir DIR   notebooks executed by nbconvert (as the book's kernels)
     python course.py venv PART           only install a part: lab, test, book, browser, hub, hubtest, all
 
 Each part installs the extra of the same name from pyproject.toml with environment.txt as
@@ -38,6 +39,17 @@ UNPINNED_OK = {"mechlab"}
 WORKDIR = "my-notebooks"
 MANIFEST = ".course-manifest.json"
 PDF = "book/_build/pdf/mechlab.pdf"
+# JupyterLab's defaults for students (the hub's image gets the same file, binder/postBuild): no
+# "Would you like to get notified about official Jupyter news?" prompt, no update check
+LAB_SETTINGS = ROOT / "binder" / "lab-settings"
+# Every executed notebook's kernel over unique Unix sockets, its waits in slices (tools/ipc_kernels.py:
+# no TCP port race, no missed reply), and a cell stopped with its source and the reason after
+# MECHLAB_CELL_TIMEOUT seconds (60; book/conf.py reads the same variable)
+CELL_TIMEOUT = int(os.environ.get("MECHLAB_CELL_TIMEOUT", "60"))
+NBVAL_ARGS = ["-p", "ipc_kernels", "--nbval-lax", "--nbval-current-env", f"--nbval-cell-timeout={CELL_TIMEOUT}",
+              "-p", "no:cacheprovider"]
+NBCONVERT_ARGS = ["--NotebookClient.kernel_manager_class=ipc_kernels.IPCKernelManager",
+                  f"--ExecutePreprocessor.timeout={CELL_TIMEOUT}"]
 
 
 def say(message: str) -> None:
@@ -333,8 +345,14 @@ def run_sync(args) -> None:
 
 # ---------------------------------------------------------------- commands
 
+def tools_env() -> dict:
+    """The environment with tools/ (ipc_kernels, print_pdf) importable."""
+    path = os.pathsep.join(filter(None, [str(ROOT / "tools"), os.environ.get("PYTHONPATH")]))
+    return {**os.environ, "PYTHONPATH": path}
+
+
 def run(python: Path, *args: str, env: dict | None = None) -> None:
-    code = subprocess.run([str(python), *args], cwd=ROOT, env=env).returncode
+    code = subprocess.run([str(python), *args], cwd=ROOT, env=env or tools_env()).returncode
     if code:
         sys.exit(code)
 
@@ -348,6 +366,7 @@ def lab_argv(python: Path, workdir: Path, port: int) -> list[str]:
     flags = ["--allow-root"] if hasattr(os, "geteuid") and os.geteuid() == 0 else []  # a container's usual user
     return [str(python), "-m", "jupyter", "lab", "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={port}",
             "--no-browser", *flags, f"--ServerApp.root_dir={workdir.resolve()}", "--LabApp.news_url=None",
+            f"--LabApp.app_settings_dir={LAB_SETTINGS}",
             "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate", "--LabApp.extension_manager=readonly"]
 
 
@@ -365,8 +384,7 @@ def cmd_lab(args) -> None:
 def cmd_test(args) -> None:
     python = ensure_venv(Path(args.venv), "test")
     run(python, "-m", "pytest", "tests", "-q")
-    run(python, "-m", "pytest", "--nbval-lax", "--nbval-current-env", "-q", "-p", "no:cacheprovider", "notebooks",
-        "assignments/source")
+    run(python, "-m", "pytest", *NBVAL_ARGS, "-q", "notebooks", "assignments/source")
 
 
 def cmd_book(args) -> None:
@@ -382,8 +400,13 @@ def cmd_pdf(args) -> None:
     # the notebooks' outputs come from the HTML build's execution cache when it is current
     run(python, "-m", "sphinx", *opts, "-b", "singlehtml", "-d", "book/_build/doctrees-single", "book",
         "book/_build/singlehtml")
-    run(python, "tools/print_pdf.py", "book/_build/singlehtml/intro.html", PDF,
-        env={**os.environ, "PYTHONPATH": str(ROOT / "tools")})
+    run(python, "tools/print_pdf.py", "book/_build/singlehtml/intro.html", PDF, "--quote-pages")
+
+
+def cmd_execute(args) -> None:
+    python = ensure_venv(Path(args.venv), "lab")
+    run(python, "-m", "jupyter", "nbconvert", "--execute", "--to", args.to, *NBCONVERT_ARGS,
+        "--output-dir", str(Path(args.output_dir).resolve()), *(str(Path(nb).resolve()) for nb in args.notebooks))
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -401,6 +424,11 @@ def main(argv: list[str] | None = None) -> None:
     sub.add_parser("test", help="library tests, then every notebook").set_defaults(func=cmd_test)
     sub.add_parser("book", help="the HTML book").set_defaults(func=cmd_book)
     sub.add_parser("pdf", help=f"the whole book as one PDF, {PDF} (needs Chromium)").set_defaults(func=cmd_pdf)
+    p = sub.add_parser("execute", help="execute notebooks with nbconvert (IPC kernels, 60 s per cell)")
+    p.add_argument("notebooks", nargs="+")
+    p.add_argument("--output-dir", required=True)
+    p.add_argument("--to", default="notebook", help="nbconvert's format (default: notebook)")
+    p.set_defaults(func=cmd_execute)
     args = parser.parse_args(argv)
     args.func(args)
 

@@ -21,6 +21,11 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 BUILD = HERE / "_build"
 sys.path.insert(0, str(HERE / "_ext"))
+sys.path.insert(0, str(HERE.parent / "tools"))
+import ipc_kernels  # noqa: E402
+
+# myst-nb's kernels over unique Unix sockets with sliced waits: no TCP port race, no missed reply
+ipc_kernels.install()
 
 # Every kernel that executes a page starts with _ext/kernel_startup.py (static widgets,
 # inline figures): point IPython at a profile inside the git-ignored build folder.
@@ -71,7 +76,9 @@ myst_dmath_double_inline = True
 
 nb_execution_mode = "cache"  # executed at build time; the cache lives in the git-ignored _build
 nb_execution_cache_path = str(BUILD / ".jupyter_cache")
-nb_execution_timeout = 300
+# a cell running longer (an endless loop, a stall) is stopped: the build's warning names the notebook,
+# shows the cell's source and says "A cell timed out ... after 60 seconds" (course.py reads the same variable)
+nb_execution_timeout = int(os.environ.get("MECHLAB_CELL_TIMEOUT", "60"))
 # a failing cell (an assertion of a chapter) is a warning, so `-W --keep-going` reports every
 # failing notebook of the build and then fails it
 nb_execution_raise_on_error = False

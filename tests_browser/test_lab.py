@@ -37,13 +37,12 @@ import course  # noqa: E402  (the script at the repository's root, which `make l
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 SHOTS = ROOT / "book" / "_build" / "screenshots"
 
-# settings a student would otherwise be asked about (the news prompt wants the internet);
-# windowing off so every cell is in the DOM
+# windowing off so every cell is in the DOM (the test's own setting; the news prompt and the update check
+# are off by the settings `make lab` ships, binder/lab-settings, as students get them)
 SETTINGS = {
-    "@jupyterlab/apputils-extension/notification.jupyterlab-settings": {"fetchNews": "false",
-                                                                       "checkForUpdates": False},
     "@jupyterlab/notebook-extension/tracker.jupyterlab-settings": {"windowingMode": "none"},
 }
+NEWS_PROMPT = "official Jupyter news"
 
 
 @pytest.fixture(scope="module")
@@ -176,6 +175,30 @@ _PLOT_JS = """() => {
   return Array.from(w.querySelectorAll('canvas')).map(c => c.toDataURL()).join('|');
 }"""
 
+# The slider labels and readouts under `root` (a CSS selector) whose text does not fit its content box
+# (the box less its padding and border): the text is measured twice, as laid out (a Range's bounding box:
+# it covers glyphs past the box, even under an ellipsis) and as drawn in the element's font (canvas
+# measureText). scrollWidth misses a cut inside the padding (it equals clientWidth there).
+CLIPPED_JS = """root => {
+  const ctx = document.createElement('canvas').getContext('2d');
+  const els = document.querySelector(root).querySelectorAll(
+    '.widget-slider .widget-readout, .widget-slider .widget-label');
+  return Array.from(els).filter(e => {
+    const text = e.textContent.trim();
+    if (!text || e.offsetParent === null) return false;
+    const s = getComputedStyle(e);
+    const box = e.getBoundingClientRect();
+    const left = box.left + parseFloat(s.borderLeftWidth) + parseFloat(s.paddingLeft);
+    const right = box.right - parseFloat(s.borderRightWidth) - parseFloat(s.paddingRight);
+    const range = document.createRange();
+    range.selectNodeContents(e);
+    const laid = range.getBoundingClientRect();
+    ctx.font = s.font;
+    const drawn = ctx.measureText(text).width;
+    return laid.left < left - 1 || laid.right > right + 1 || drawn > right - left + 1;
+  }).map(e => e.textContent.trim());
+}"""
+
 PRESSES = 12
 # the speed goal (100 ms median) is measured here and recorded in benchmarks/README.md; a timed test on a
 # shared 2-core machine asserts only that the explorer answers, well within a second
@@ -199,6 +222,7 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         # ?reset: a fresh workspace, so the notebooks of earlier tests are not reopened
         page.goto(f"{base}/lab/tree/{path.name}?reset&token={token}", wait_until="domcontentloaded")
         page.wait_for_function(_READY_JS, timeout=90_000)
+        assert NEWS_PROMPT not in page.inner_text("body"), f"{path.name}: the news prompt is shown"
         page.evaluate("() => window.jupyterapp.commands.execute('notebook:run-all-cells')")
         state = page.wait_for_function(_STATE_JS, timeout=240_000, polling=500).json_value()
         assert not state["errors"], f"{path.name}: error output: {state['errors']}"
@@ -209,9 +233,8 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         widget.scroll_into_view_if_needed()
         page.wait_for_timeout(1000)   # the first full drawing of a live canvas arrives
         # no slider's label or readout is cut off, in any widget of the notebook
-        clipped = page.evaluate("() => Array.from(window.jupyterapp.shell.currentWidget.node.querySelectorAll("
-                                "'.widget-slider .widget-readout, .widget-slider .widget-label'))"
-                                ".filter(e => e.scrollWidth > e.clientWidth + 1).map(e => e.textContent)")
+        notebook = page.evaluate("() => '#' + CSS.escape(window.jupyterapp.shell.currentWidget.id)")
+        clipped = page.evaluate(CLIPPED_JS, notebook)
         assert not clipped, f"{path.name}: slider labels or readouts clipped: {clipped}"
         before = page.evaluate(_PLOT_JS)
         page.evaluate(_INSTRUMENT_JS)
@@ -259,6 +282,60 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         page.close()
     # the copy was used, never the tracked notebook
     assert json.loads(path.read_text())["cells"][0].get("outputs", []) == []
+
+
+def test_news_prompt_off_by_shipped_settings(lab):
+    """The lab `make lab` starts (and the hub's image, binder/postBuild) has the news prompt and the
+    update check off by its shipped settings (binder/lab-settings/overrides.json), not by the test's."""
+    base, token, _ = lab
+    url = f"{base}/lab/api/settings/@jupyterlab/apputils-extension:notification?token={token}"
+    with urllib.request.urlopen(url, timeout=30) as r:
+        plugin = json.load(r)
+    assert plugin["schema"]["properties"]["fetchNews"]["default"] == "false"
+    assert plugin["schema"]["properties"]["checkForUpdates"]["default"] is False
+    assert plugin["settings"] == {}, "the test set it itself"
+
+
+CLIPPING_PAGE = """<style>
+  .widget-label { width: 150px; padding: 0 8px; box-sizing: border-box; overflow: hidden; display: inline-block;
+                  white-space: nowrap; text-overflow: ellipsis; font: 13px sans-serif; }
+  .widget-label span { display: inline-block; max-width: 100%; overflow: hidden; text-overflow: ellipsis; }
+</style>
+<div id="root">
+  <div class="widget-slider"><label class="widget-label">pressure angle ≤ (deg) at the dwell's end</label></div>
+  <div class="widget-slider"><label class="widget-label" id="inner"><span>pressure angle ≤ (deg) at the end</span></label></div>
+  <div class="widget-slider"><label class="widget-label" id="inpad">pressure angle ≤ (deg)</label></div>
+  <div class="widget-slider"><label class="widget-label" id="fits">crank angle φ (deg)</label></div>
+</div>"""
+# sizes two labels around their text: "inpad" 4 px short of it (the text runs into the 8 px padding and
+# the ellipsis cuts it), "fits" 4 px more than it needs; returns scrollWidth and clientWidth of each label
+_SIZE_AROUND_TEXT_JS = """() => {
+  for (const [id, spare] of [['inpad', -4], ['fits', 4]]) {
+    const e = document.getElementById(id);
+    const range = document.createRange();
+    e.style.width = 'auto';
+    range.selectNodeContents(e);
+    e.style.width = (range.getBoundingClientRect().width + 16 + spare) + 'px';
+  }
+  return Object.fromEntries(Array.from(document.querySelectorAll('.widget-label'))
+    .map(e => [e.textContent, [e.scrollWidth, e.clientWidth]]));
+}"""
+
+
+def test_clipping_check_sees_labels_cut_inside_their_box(browser):
+    """Planted labels: one far too long, one cut by an element inside it (scrollWidth equals clientWidth:
+    the check before, scrollWidth > clientWidth, missed it), one whose text runs 4 px into its padding and is
+    cut by the ellipsis; all three are reported, and a label with 4 px to spare is not."""
+    page = browser.new_page()
+    try:
+        page.set_content(CLIPPING_PAGE)
+        widths = page.evaluate(_SIZE_AROUND_TEXT_JS)
+        clipped = page.evaluate(CLIPPED_JS, "#root")
+    finally:
+        page.close()
+    inner = "pressure angle ≤ (deg) at the end"
+    assert widths[inner][0] == widths[inner][1], f"the planted cut must be invisible to scrollWidth: {widths}"
+    assert clipped == ["pressure angle ≤ (deg) at the dwell's end", inner, "pressure angle ≤ (deg)"], widths
 
 
 def test_slider_latency():

@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import re
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 from functools import cache
 
@@ -98,3 +99,73 @@ def test_no_line_past_the_margin():
             if not stretched and (x0 < MARGIN_PT - 1 or x1 > width - MARGIN_PT + 1):
                 outside.append(f"p. {number}: {x0:.0f}–{x1:.0f} of {width:.0f} pt: {words[:60]}")
     assert not outside, "\n".join(outside[:20])
+
+
+def test_no_interactive_toggles():
+    """A printed page cannot unfold anything: no "Show code cell source" (or "Hide …") toggle is printed."""
+    toggles = [n for n, page in enumerate(pages(), 1) if re.search(r"(Show|Hide) code cell", page)]
+    assert not toggles, f"toggles printed on pages {toggles}"
+
+
+def test_page_count_quoted_in_teaching():
+    """book/teaching.md quotes the page count of the PDF as printed (tools/print_pdf.py --quote-pages)."""
+    quoted = re.search(r"\((\d+) A4\s+pages\)", (ROOT / "book" / "teaching.md").read_text())
+    assert quoted and int(quoted[1]) == len(pages())
+
+
+def test_contents_give_each_chapter_its_page():
+    """The contents (at the front) end each chapter's and back-matter page's line with the page it opens."""
+    sys.path.insert(0, str(ROOT / "tools"))
+    from print_pdf import first_pages
+
+    titles = chapter_titles() + ["Errata", "Glossary", "References"]
+    starts = first_pages(titles, pages())
+    assert len(starts) == len(titles), f"chapters not found: {set(titles) - set(starts)}"
+    def plain(text):
+        return " ".join(text.split()).replace("\u2019", "'")
+
+    front = plain(" ".join(pages()[: min(starts.values()) - 1]))
+    wrong = [t for t in titles if not re.search(re.escape(plain(t)) + rf" {starts[t]}\b", front)]
+    assert not wrong, f"no page number (or the wrong one) in the contents for {wrong}"
+
+
+CODE_PAGE = """<div class="highlight"><pre><span class="k">def</span> <span class="nf">f</span>(x):
+    <span class="k">return</span> <span class="n">some_function_with_a_long_name</span>(x, <span class="s2">"a string that is long enough
+to run past the edge"</span>, another_argument, and_one_more_argument, and_the_last_one)
+</pre></div>"""
+
+
+def test_code_wraps_under_its_indent(browser):
+    """A code line too long for the column wraps under its own indent plus CODE_HANG_CH, not at the left edge;
+    the text and the highlighting are unchanged."""
+    sys.path.insert(0, str(ROOT / "tools"))
+    import print_pdf
+
+    page = browser.new_page(viewport={"width": 420, "height": 600})
+    try:
+        page.set_content(CODE_PAGE)
+        before = page.inner_text("pre")
+        page.evaluate(print_pdf.CODE_LINES_JS, print_pdf.CODE_HANG_CH)
+        page.add_style_tag(content=print_pdf.PRINT_CSS)
+        rows = page.evaluate("""() => Array.from(document.querySelectorAll('.mechbook-code-line')).map(line => {
+            const r = document.createRange(); r.selectNodeContents(line);
+            const left = line.parentElement.getBoundingClientRect().left;
+            const ch = (() => { const s = document.createElement('span'); s.textContent = '0'.repeat(10);
+                                line.parentElement.appendChild(s); const w = s.getBoundingClientRect().width / 10;
+                                s.remove(); return w; })();
+            const tops = new Map();
+            for (const rect of r.getClientRects()) if (rect.width > 0 && !tops.has(Math.round(rect.top)))
+                tops.set(Math.round(rect.top), (rect.left - left) / ch);
+            return Array.from(tops.values());
+        })""")
+        after = page.inner_text("pre")
+        keywords = page.locator("pre .k").count()
+    finally:
+        page.close()
+    assert after.replace("\n", "") == before.replace("\n", "") and keywords == 2
+    assert len(rows) == 3 and len(rows[0]) == 1, rows  # def f(x): fits
+    first, *wrapped = rows[1]
+    assert wrapped, "the long line did not wrap: widen CODE_PAGE's line"
+    # its text starts at its indent (4 spaces), its continuations at 4 + CODE_HANG_CH characters
+    assert round(first) == 0 and [round(x) for x in wrapped] == [4 + print_pdf.CODE_HANG_CH] * len(wrapped), rows
+    assert len(rows[2]) > 1 and [round(x) for x in rows[2][1:]] == [print_pdf.CODE_HANG_CH] * (len(rows[2]) - 1)
