@@ -51,12 +51,20 @@ def _api(work: Path, **settings):
     configured by nbgrader_config.py and then ``settings`` ({"Execute.timeout": 10, ...})."""
     from nbgrader.apps import NbGraderAPI
     from nbgrader.coursedir import CourseDirectory
+    from nbgrader.preprocessors import execute as nbgrader_execute
     from traitlets.config.loader import PyFileConfigLoader
+
+    if str(HERE.parent / "tools") not in sys.path:
+        sys.path.insert(0, str(HERE.parent / "tools"))
+    import ipc_kernels
 
     warnings.filterwarnings("ignore", module="nbgrader")  # SQLAlchemy's notes on nbgrader's own session use
     config = PyFileConfigLoader("nbgrader_config.py", path=str(work)).load_config()
     config.CourseDirectory.root = str(work)
-    # the kernel's note that it talks over TCP on loopback is for servers, not for a grading run
+    # the kernel's start-up notes (e.g. on TCP without encryption where IPC is missing) are not for a grading run
+    # graded kernels over unique Unix sockets, as on every other route (tools/ipc_kernels.py): no port race.
+    # nbgrader's Execute passes its own AsyncKernelManager over any configured class, so its name is rebound.
+    nbgrader_execute.AsyncKernelManager = ipc_kernels.IPCKernelManager
     config.Execute.extra_arguments = [*config.Execute.get("extra_arguments", []), "--IPKernelApp.log_level=ERROR"]
     for key, value in settings.items():
         section, name = key.split(".")
