@@ -172,3 +172,21 @@ def test_writing_a_time_changes_only_that_line(path):
     diff = [(a, b) for a, b in zip(old.splitlines(), new.splitlines()) if a != b]
     assert len(old.splitlines()) == len(new.splitlines()) and len(diff) == 1, diff
     assert lesson_time.stated(nbformat.reads(new, as_version=4)) == said + 5
+
+
+def test_the_book_shows_the_companion_as_its_own_part_after_the_chapters():
+    """The companion is no chapter for the model, nor for the book: its glob is a part of its own, and the
+    chapters' glob does not reach into notebooks/companion/ (Sphinx's `*` stops at a `/`)."""
+    parsing = pytest.importorskip("sphinx_external_toc.parsing")
+    from sphinx.util.matching import patfilter
+
+    site = parsing.parse_toc_yaml(ROOT / "book" / "_toc.yml")
+    parts = {subtree.caption: [str(item) for item in subtree.items] for subtree in site.root.subtrees}
+    captions = list(parts)
+    assert captions.index("Chapters") + 1 == captions.index("Lecturer's companion")
+    assert parts["Chapters"] == ["notebooks/*"] and parts["Lecturer's companion"] == ["notebooks/companion/*"]
+    docs = [f"notebooks/{p.stem}" for p in CHAPTERS] + ["notebooks/companion/06_x_companion"]
+    assert patfilter(docs, "notebooks/*") == [f"notebooks/{p.stem}" for p in CHAPTERS]
+    assert patfilter(docs, "notebooks/companion/*") == ["notebooks/companion/06_x_companion"]
+    assert {"notation", "install", "glossary", "errata"} <= set(parts["Back matter"])
+    assert all((ROOT / "book" / f"{name}.md").exists() for name in parts["Back matter"])
