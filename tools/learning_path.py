@@ -6,7 +6,8 @@ A chapter's needs are the chapters that its "Prerequisites" section links to; a 
 "Looking ahead" points forward and is no need. Titles and times come from the path's table in
 book/intro.md. An arrow joins a chapter to the one that needs it, left out where a longer chain
 of arrows already leads there. At most LANES boxes stand side by side, so that the labels stay
-readable where the book shows the picture (its 752 px column). tests/test_course_frame.py checks that
+readable where the book shows the picture (its 752 px column). The times in that table are the time
+model's (tools/lesson_time.py, whose ``--write`` rewrites the table and redraws this picture). tests/test_course_frame.py checks that
 every need comes earlier in the path, that the committed picture is the one this script draws, that
 no arrow runs through a box and that every label is at least 11 px high in that column.
 """
@@ -32,7 +33,9 @@ ROOT = Path(__file__).resolve().parent.parent
 FIGURE = ROOT / "book" / "figures" / "learning_path.svg"
 AHEAD = "Looking ahead"
 LINK = re.compile(r"\]\((\d+)_\w+\.ipynb[)#]")
-ROW = re.compile(r"^\| \[(\d+) · ([^\]]+)\]\(notebooks/(\w+)\.ipynb\) \|[^|\n]*\| (\d+) min \| ([^|\n]*) \|$", re.M)
+# chapter, "you learn to", time, the exercises' time (optional), needs
+ROW = re.compile(r"^\| \[(\d+) · ([^\]]+)\]\(notebooks/(\w+)\.ipynb\) \|[^|\n]*\| (\d+) min \|(?: (?:\d+ min|—) \|)?"
+                 r" ([^|\n]*) \|$", re.M)
 
 
 @dataclass(frozen=True)
