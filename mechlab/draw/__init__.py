@@ -350,8 +350,9 @@ class LinkageDrawing:
             return
         frame = self.numbers[len(parts)]
         frame.set_text(self.sketch.frame_number or str(len(parts) + 1))
-        if len(piv):   # beside the first fixed pivot's hatching
-            frame.xy = piv[0] + np.array([-1.9, -1.7]) * self._ground_size
+        if len(piv):   # beside the hatching of the fixed pivot farthest out: clear of the crank's numbers at O
+            far = piv[np.argmax(np.hypot(*(piv - centre).T))]
+            frame.xy = far + np.array([-1.9, -1.7]) * self._ground_size
             frame.set_position((0.0, 0.0))
         frame.set_visible(bool(len(piv)))
 

@@ -72,11 +72,14 @@ def draw_centres(ic: InstantCentres, i: int = 0, ax=None, lines: bool = True):
     """All instantaneous centres at frame i with their labels P_ij; centres at infinity are
     listed with their directions. With ``lines``, the Kennedy lines of the construction."""
     if ax is None:
-        _, ax = plt.subplots(figsize=(6, 5))
+        _, ax = plt.subplots(figsize=(9, 6.5))
     drawing = drawing_class(ic.mechanism)(ax, ic.mechanism, n=len(ic.phi))
     drawing.set_motion(ic.mechanism, ic.motion)
     drawing.set_frame(i)
     drawing.autoscale()
+    # a centre at a joint takes the side opposite the joint's letter, so that the two never overlap
+    letters = [(np.asarray(t.xy, float), np.asarray(t.get_position(), float))
+               for t in drawing.letters.values() if t.get_visible()]
     x0, x1 = ax.get_xlim()
     y0, y1 = ax.get_ylim()
     at_inf = []
@@ -87,7 +90,10 @@ def draw_centres(ic: InstantCentres, i: int = 0, ax=None, lines: bool = True):
             p = c.h[i, :2]
             finite_pts.append(p)
             ax.plot(*p, **CENTRE_STYLE)
-            ax.annotate(name, p, textcoords="offset points", xytext=(4, 4), fontsize=9, color="#d62728")
+            away = next((-off / max(np.hypot(*off), 1e-12) for q, off in letters
+                         if np.hypot(*(q - p)) < 1e-9 * (1 + np.hypot(*q))), np.array([0.7, 0.7]))
+            ax.annotate(name, p, textcoords="offset points", xytext=tuple(15 * away), fontsize=11,
+                        color="#d62728", ha="center", va="center")
         else:
             at_inf.append(f"{name} → ∞ along ({c.h[i, 0]:.2f}, {c.h[i, 1]:.2f})")
     if lines:
@@ -109,8 +115,8 @@ def draw_centres(ic: InstantCentres, i: int = 0, ax=None, lines: bool = True):
         ax.set_xlim(lo[0] - pad, hi[0] + pad)
         ax.set_ylim(lo[1] - pad, hi[1] + pad)
     if at_inf:
-        ax.text(0.02, 0.02, "\n".join(at_inf), transform=ax.transAxes, fontsize=8, color="#d62728")
-    ax.set_title(f"instantaneous centres at φ = {np.degrees(ic.phi[i]):.1f}°", fontsize=10)
+        ax.text(0.02, 0.02, "\n".join(at_inf), transform=ax.transAxes, fontsize=10, color="#d62728")
+    ax.set_title(f"instantaneous centres at φ = {np.degrees(ic.phi[i]):.1f}°", fontsize=12)
     ax.set_axis_off()   # a diagram: the links carry Kozhevnikov's numbers, the centres P_ij use them
     return ax
 
