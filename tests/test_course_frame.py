@@ -87,7 +87,6 @@ def test_teaching_cells_carry_no_assert(path):
 TEACHING_LINES = 12   # non-blank lines: a few calls into mechlab a student reads; longer logic goes into mechlab
 # the teaching cells that stay longer, (chapter, cell index) → why
 LONG_TEACHING_CELLS = {
-    ("08_chebyshev_dwell_sixbars", 3): "the set-up cell: one import line for each of 13 modules, and DEG",
 }
 
 
