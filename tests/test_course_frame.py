@@ -499,3 +499,25 @@ def test_a_glossary_symbol_pattern_tells_symbols_apart():
     assert symbol_pattern(r"\mu").search("μ_min") and not symbol_pattern(r"\mu").search(r"\mult")
     assert symbol_pattern("P_{ij}").search("$P_{13}$") and not symbol_pattern("P_{ij}").search("P_b")
     assert not symbol_pattern("k_a").search("k_c")
+
+
+# -- the lecturer's companion: notebooks/companion/NN_<topic>_companion.ipynb ---------------------------------------
+COMPANIONS = sorted((ROOT / "notebooks" / "companion").glob("[0-9][0-9]_*_companion.ipynb"))
+
+
+@pytest.mark.parametrize("path", COMPANIONS, ids=lambda p: p.name)
+def test_companion_names_its_chapter_and_folds_its_checks(path):
+    """A smaller frame than a chapter's: a header naming its chapter (linked) and citing works, asserts only in
+    hidden check cells, and at least one check (the checks of the computations that moved here)."""
+    cs = cells(path)
+    header = source(cs[0])
+    number = int(path.name[:2])
+    assert cs[0]["cell_type"] == "markdown" and header.startswith(f"# Companion to chapter {number} · "), path.name
+    assert re.search(rf"\]\(\.\./{number:02d}_\w+\.ipynb\)", header), f"{path.name}: no link to its chapter"
+    assert re.search(r"\(\d{4}\)|, \d{4}\)", header), f"{path.name}: its header cites no work"
+    code = [c for c in cs if c["cell_type"] == "code"]
+    assert not [c["id"] for c in code if not is_check(c) and asserts_in(source(c))], f"{path.name}: asserts in teaching cells"
+    assert all(c["metadata"].get("jupyter", {}).get("source_hidden") for c in code if is_check(c)), path.name
+    assert any(is_check(c) and asserts_in(source(c)) for c in code), f"{path.name}: no check"
+    for c in cs:
+        assert not SEED.search(source(c)), f"{path.name}: 'seed' in cell {c['id']}"
