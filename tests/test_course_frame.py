@@ -56,7 +56,7 @@ def test_there_are_chapters():
 
 # -- the lecturer's companions: notebooks/companion/NN_*.ipynb, one per chapter with material moved out ----------
 COMPANIONS = sorted((ROOT / "notebooks" / "companion").glob("[0-9][0-9]_*.ipynb"))
-GOING_FURTHER = re.compile(r"Going further:\*?\*? .*\]\((companion/[0-9][0-9]_\w+\.ipynb)\)")
+GOING_FURTHER = re.compile(r"Going further:\*{0,2}\s(?:(?!\n\n).)*?\]\((companion/[0-9][0-9]_\w+\.ipynb)\)", re.S)
 
 
 @pytest.mark.parametrize("path", COMPANIONS, ids=lambda p: p.name)
@@ -68,7 +68,9 @@ def test_companion_names_its_chapter_and_keeps_its_checks(path):
     header = source(cs[0])
     assert chapter and cs[0]["cell_type"] == "markdown", f"{path.name}: no chapter {path.name[:2]} or no header"
     assert header.startswith(f"# Companion to chapter {int(path.name[:2])} · ") and f"](../{chapter.name})" in header
-    assert re.search(r"Sources?:\s+[A-Z]\w+", header) and not SEED.search(header), f"{path.name}: sources as works"
+    # "Kinitsky (1994)", "(Zinchenko et al., 2013)", or "Source: Kozhevnikov, *Theory …*" (the excerpt gives no year)
+    cites = re.search(r"[A-Z][a-z]+(?: et al\.)?(?: \(\d{4}\)|, \d{4}\))|Sources?:\s+[A-Z]\w+", header)
+    assert cites and not SEED.search(header), f"{path.name}: sources as works"
     code = [c for c in cs if c["cell_type"] == "code"]
     assert not [c["id"] for c in code if not is_check(c) and asserts_in(source(c))], f"{path.name}: untagged assert"
     assert all(c["metadata"].get("jupyter", {}).get("source_hidden") is True for c in code if is_check(c))
@@ -76,6 +78,7 @@ def test_companion_names_its_chapter_and_keeps_its_checks(path):
     links = [m.group(1) for c in cells(chapter) if c["cell_type"] == "markdown"
              for m in GOING_FURTHER.finditer(source(c))]
     assert links == [f"companion/{path.name}"], f"{chapter.name}: one 'Going further' line to {path.name}, got {links}"
+    assert not [c["id"] for c in cs if SEED.search(source(c))], f"{path.name}: 'seed' in a cell"
 
 
 def test_a_chapter_links_only_to_companions_that_exist():
@@ -117,7 +120,6 @@ def test_teaching_cells_carry_no_assert(path):
 TEACHING_LINES = 12   # non-blank lines: a few calls into mechlab a student reads; longer logic goes into mechlab
 # the teaching cells that stay longer, (chapter, cell index) → why
 LONG_TEACHING_CELLS = {
-    ("08_chebyshev_dwell_sixbars", 3): "the set-up cell: one import line for each of 13 modules, and DEG",
 }
 
 

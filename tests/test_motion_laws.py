@@ -75,7 +75,7 @@ def test_law_table_gives_each_law_its_invariants_and_end_accelerations():
     by = table.by("law")
     # soft impacts where Y'' jumps from the dwell's 0; the cycloid starts and ends at zero acceleration
     assert by["constant acceleration"].start == 4 and by["cycloidal (sine)"].start == 0 == by["cycloidal (sine)"].end
-    assert "-0" not in repr(table) and table.headers[1] == "B = max|Y′|"
+    assert "-0" not in repr(table) and table.headers[1] == "C_v = max|Y′|"
     assert len(law_table(["cosine"], n=2001)) == 1
     with pytest.raises(MechanismError, match="names"):
         law_table(["trapezoid"])

@@ -284,9 +284,9 @@ class LawRow:
     """One law of :func:`law_table`: its invariants (dimensionless) and Y″ at the rise's two ends."""
 
     law: str
-    B: float = field(metadata={"label": "B = max|Y′|"})
-    C: float = field(metadata={"label": "C = max|Y″|"})
-    D: float = field(metadata={"label": "D = max|Y′Y″|"})
+    B: float = field(metadata={"label": "C_v = max|Y′|"})
+    C: float = field(metadata={"label": "C_a = max|Y″|"})
+    D: float = field(metadata={"label": "C_p = max|Y′Y″|"})
     start: float = field(metadata={"label": "Y″ at x = 0"})
     end: float = field(metadata={"label": "Y″ at x = 1"})
 

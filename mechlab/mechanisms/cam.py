@@ -201,10 +201,14 @@ class RollerCam(Mechanism):
             n = n / (np.hypot(*n) or 1.0)
             return np.array([K[i] - reach * n, K[i] + reach * n])
 
+        # the course's link numbers: the driving cam 1 (its number on the disc, turning with it), the follower next,
+        # the frame last
+        mark = 0.55 * self.base_radius * np.array([[np.cos(-3 * np.pi / 4), np.sin(-3 * np.pi / 4)]])
+        number = (Part("anchor", lambda i: _turned(mark, phi[i]), True),)
         parts = (Part("fill", lambda i: _turned(profile, phi[i])), Part("profile", lambda i: _turned(profile, phi[i])),
                  Part("base circle", lambda i: _turned(base, phi[i])), Part("roller", lambda i: C[i] + r * _CIRCLE),
                  Part("normal", normal), Part("note", lambda i: "dwell" if dwell[i] else ""))
-        return Sketch(bars(self) + parts, self.pivots)
+        return Sketch(number + bars(self) + parts, self.pivots)
 
     def structure(self) -> Structure:
         """The cam turns about O and drives the follower through the roller's contact K, a higher pair
@@ -443,7 +447,7 @@ class TranslatingRollerCam(RollerCam):
         w = 0.35 * max(self.roller_radius, 0.1 * self.base_radius)
         y0, x = self.s0 + self.programme.stroke + 0.3 * self.prime_radius, self.offset
         bushing = np.array([[x - w, y0], [x - w, top], [np.nan, np.nan], [x + w, y0], [x + w, top]])
-        stem = (Part("link", lambda i: np.array([C[i], [x, top]])), Part("guide", lambda i: bushing))
+        stem = (Part("link", lambda i: np.array([C[i], [x, top]]), True), Part("guide", lambda i: bushing))
         return replace(sk, parts=sk.parts + stem)
 
     def _track(self, x, y):

@@ -43,17 +43,14 @@ class CamExplorer(MechanismExplorer):
         programme = CamProgramme(stroke, rise, ret, outer_dwell, law=law)
         return TranslatingRollerCam(programme, base_radius, roller_radius, offset=offset)
 
-    def rebuild(self):
-        super().rebuild()
-        if self.mechanism is not None:
-            cam, phi = self.mechanism, self.motion.phi
-            alpha = np.degrees(cam.pressure_angle(phi))
-            k = cam.curvature(phi)
-            rho = 1 / k.max() - cam.roller_radius
-            self.status.value += (f"<br>pressure angle: largest {alpha.max():.1f}° (rise), "
-                                  f"{alpha.min():.1f}° (return)"
-                                  f"<br>smallest radius of curvature of the profile: {rho:.1f} mm "
-                                  f"at φ = {np.degrees(phi[np.argmax(k)]):.0f}°")
+    def _status(self) -> str:
+        """The pressure angles and the profile's sharpest curvature only: a cam has no transmission angle."""
+        cam, phi = self.mechanism, self.motion.phi
+        alpha = np.degrees(cam.pressure_angle(phi))
+        k = cam.curvature(phi)
+        rho = 1 / k.max() - cam.roller_radius
+        return (f"pressure angle: largest {alpha.max():.1f}° (rise), {alpha.min():.1f}° (return)"
+                f"<br>smallest radius of curvature of the profile: {rho:.1f} mm at φ = {np.degrees(phi[np.argmax(k)]):.0f}°")
 
 
 def cam_explorer(**kwargs) -> CamExplorer:

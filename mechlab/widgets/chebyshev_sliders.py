@@ -26,7 +26,7 @@ def mchv2_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.0, mu_min=30.0, n=121, *
         "K": Control("time ratio K", 0.5, 2.0, 0.05, K),
         "mu_min": Control("least μ2′, 0 = any", 0.0, 45.0, 1.0, mu_min, "deg"),
     }
-    return MechanismExplorer(_mchv2, controls, trace="D", n=n, title="МЧВ2: lambda mechanism + rod + slider",
+    return MechanismExplorer(_mchv2, controls, trace="D", n=n, title="Lambda six-bar with slider output (type 2)",
                              live=live, question=question)
 
 
@@ -43,7 +43,7 @@ def mchv5_explorer(delta=180.0, a=0.8, dwell=180.0, gamma=0.0, n=121, *, live: b
         "dwell": Control("dwell 2α", 20.0, 200.0, 2.0, dwell, "deg"),
         "gamma": Control("guide angle γ", -60.0, 60.0, 1.0, gamma, "deg"),
     }
-    return MechanismExplorer(_mchv5, controls, trace="D", n=n, title="МЧВ5: lambda mechanism + translating slot",
+    return MechanismExplorer(_mchv5, controls, trace="D", n=n, title="Lambda six-bar with translating slotted output (type 5)",
                              live=live, question=question)
 
 

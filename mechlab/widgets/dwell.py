@@ -35,14 +35,12 @@ class DwellExplorer(MechanismExplorer):
     def _build(lam, pivot_distance, phi1, phi2, roller_radius, transition):
         return curved_slot_dwell(lam, phi1, phi2, pivot_distance, transition, roller_radius=roller_radius)
 
-    def rebuild(self):
-        super().rebuild()
-        if self.mechanism is not None:
-            th = np.degrees(self.motion.pressure_angle)
-            i = int(np.argmax(th))
-            self.status.value += (f"<br>dwell ψ_B = {np.degrees(self.mechanism.law.psi_dwell):.2f}°, "
-                                  f"largest pressure angle {th[i]:.1f}° "
-                                  f"at φ = {np.degrees(self.motion.phi[i]):.0f}°")
+    def _status(self) -> str:
+        """The dwell and the largest pressure angle only: a roller in a curved slot has no transmission angle."""
+        th = np.degrees(self.motion.pressure_angle)
+        i = int(np.argmax(th))
+        return (f"dwell ψ_B = {np.degrees(self.mechanism.law.psi_dwell):.2f}°, largest pressure angle {th[i]:.1f}° "
+                f"at φ = {np.degrees(self.motion.phi[i]):.0f}°")
 
 
 def dwell_explorer(**kwargs) -> DwellExplorer:
