@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 from dataclasses import replace
 
 import ipywidgets as W
@@ -25,16 +26,21 @@ class ChoosingExplorer:
     """Sliders for the specification's dwell, speed, pressure-angle limit and stations (or amplitude);
     a table of the candidates ranked by a chosen criterion, the refusals with their reasons, and the
     trade-off figure moved in place. An impossible specification shows why, and the explorer stays
-    usable."""
+    usable.
+
+    It opens on exactly ``spec``: a slider still at its opening reading (the value rounded to its step)
+    stands for the specification's own value (2/3, not 0.67). A release of a slider re-runs the
+    comparison once; the figure keeps the layout of its first drawing and is sent as one PNG, so a
+    change costs one drawing."""
 
     def __init__(self, spec: Specification, *, question: str | None = None, live: bool | None = None):
         self.base = spec
         self.live = _uses_ipympl() if live is None else live
         s = {}
-        s["dwell_fraction"] = W.FloatSlider(value=spec.dwell_fraction, min=0.05, max=0.9, step=0.01,
+        s["dwell_fraction"] = W.FloatSlider(value=round(spec.dwell_fraction, 2), min=0.05, max=0.9, step=0.01,
                                             description="dwell (of the turn)", style=_STYLE, layout=_LAYOUT,
                                             continuous_update=False)
-        s["rpm"] = W.FloatSlider(value=spec.rpm, min=5.0, max=200.0, step=5.0, description="crank speed (rpm)",
+        s["rpm"] = W.FloatSlider(value=round(spec.rpm / 5.0) * 5.0, min=5.0, max=200.0, step=5.0, description="crank speed (rpm)",
                                  style=_STYLE, layout=_LAYOUT, continuous_update=False)
         s["max_pressure_angle"] = W.FloatSlider(value=round(np.degrees(spec.max_pressure_angle)), min=20.0,
                                                 max=85.0, step=1.0, description="pressure angle ≤ (deg)",
@@ -47,10 +53,11 @@ class ChoosingExplorer:
                                            description="swing (deg)", style=_STYLE, layout=_LAYOUT,
                                            continuous_update=False)
         else:
-            s["amplitude"] = W.FloatSlider(value=spec.amplitude, min=5.0, max=300.0, step=5.0,
+            s["amplitude"] = W.FloatSlider(value=round(spec.amplitude / 5.0) * 5.0, min=5.0, max=300.0, step=5.0,
                                            description="stroke (mm)", style=_STYLE, layout=_LAYOUT,
                                            continuous_update=False)
         self.sliders = s
+        self._opening = {k: w.value for k, w in s.items()}
         keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure", "J")]
         self.rank = W.Dropdown(options=keys, value="motor_power", description="rank by", style=_STYLE,
                                layout=_LAYOUT)
@@ -64,7 +71,7 @@ class ChoosingExplorer:
         self.comparison = None
         self.message = ""
         self.figure = ComparisonFigure(candidates(spec), fig)
-        self.output = None if self.live else W.Output()
+        self.output = None if self.live else W.Image(format="png", layout=W.Layout(width="880px"))
         canvas = fig.canvas if self.live else self.output
         ask = [W.HTML(f"<b>Investigate:</b> {question}")] if question else []
         self.widget = W.VBox(ask + [W.HBox([W.VBox(list(s.values())), W.VBox([self.rank])]), canvas, self.table])
@@ -73,10 +80,12 @@ class ChoosingExplorer:
         self.rebuild()
 
     def spec(self) -> Specification:
-        """The specification the sliders describe (radians inside)."""
-        v = {k: w.value for k, w in self.sliders.items()}
-        v["max_pressure_angle"] = np.radians(v["max_pressure_angle"])
-        if self.base.motion == "swing":
+        """The specification the sliders describe (radians inside); a slider not moved from its opening
+        reading keeps the starting specification's exact value."""
+        v = {k: w.value for k, w in self.sliders.items() if w.value != self._opening[k]}
+        if "max_pressure_angle" in v:
+            v["max_pressure_angle"] = np.radians(v["max_pressure_angle"])
+        if "amplitude" in v and self.base.motion == "swing":
             v["amplitude"] = np.radians(v["amplitude"])
         return replace(self.base, **v)
 
@@ -102,9 +111,12 @@ class ChoosingExplorer:
         if self.live:
             self.figure.fig.canvas.draw_idle()
         else:
-            self.output.clear_output(wait=True)
-            with self.output:
-                display(self.figure.fig)
+            png = io.BytesIO()
+            self.figure.fig.savefig(png, format="png", pil_kwargs={"compress_level": 1})   # fast over small
+            self.output.value = png.getvalue()
+            # the constrained layout of the first drawing holds for every later one (the axes and their tick
+            # labels do not change): laying it out again would double the cost of each slider release
+            self.figure.fig.set_layout_engine("none")
 
     def _ipython_display_(self):
         display(self.widget)
