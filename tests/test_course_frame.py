@@ -83,6 +83,30 @@ def test_teaching_cells_carry_no_assert(path):
     assert any(is_check(c) and asserts_in(source(c)) for c in code), f"{path.name}: no check cell asserts anything"
 
 
+# -- the lecturer's companion: notebooks/companion/NN_<topic>_companion.ipynb, a smaller frame ------------------
+COMPANIONS = sorted((ROOT / "notebooks" / "companion").glob("*.ipynb"))
+
+
+@pytest.mark.parametrize("path", COMPANIONS, ids=lambda p: p.name)
+def test_companion_names_its_chapter_hides_its_checks_and_is_linked(path):
+    name = re.fullmatch(r"(\d\d)_(\w+)_companion\.ipynb", path.name)
+    assert name, f"{path.name}: not NN_<topic>_companion.ipynb"
+    chapter = [p for p in CHAPTERS if p.name.startswith(name.group(1) + "_")]
+    assert len(chapter) == 1, f"{path.name}: no chapter {name.group(1)}"
+    cs = cells(path)
+    head = source(cs[0])
+    assert cs[0]["cell_type"] == "markdown" and head.startswith(f"# Companion to chapter {int(name.group(1))} · ")
+    assert f"(../{chapter[0].name})" in head, f"{path.name}: the header does not link its chapter"
+    assert not any(SEED.search(source(c)) for c in cs), f"{path.name}: 'seed' in a cell"
+    code = [c for c in cs if c["cell_type"] == "code"]
+    assert not [c["id"] for c in code if not is_check(c) and asserts_in(source(c))], f"{path.name}: asserts in teaching cells"
+    assert all(c["metadata"].get("jupyter", {}).get("source_hidden") is True for c in code if is_check(c))
+    assert any(is_check(c) and asserts_in(source(c)) for c in code), f"{path.name}: no check cell asserts anything"
+    links = [c for c in cells(chapter[0]) if c["cell_type"] == "markdown" and "**Going further:**" in source(c)
+             and f"(companion/{path.name})" in source(c)]
+    assert len(links) == 1, f"{chapter[0].name}: no one 'Going further' line linking companion/{path.name}"
+
+
 # -- thin teaching cells ------------------------------------------------------------------------------------------
 TEACHING_LINES = 12   # non-blank lines: a few calls into mechlab a student reads; longer logic goes into mechlab
 # the teaching cells that stay longer, (chapter, cell index) → why
