@@ -11,6 +11,7 @@ import numpy as np
 from IPython.display import display
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from PIL import Image
 
 from ..design import Specification, candidates
 from ..design.candidates import COLUMNS
@@ -30,8 +31,8 @@ class ChoosingExplorer:
 
     It opens on exactly ``spec``: a slider still at its opening reading (the value rounded to its step)
     stands for the specification's own value (2/3, not 0.67). A release of a slider re-runs the
-    comparison once; the figure keeps the layout of its first drawing and is sent as one PNG, so a
-    change costs one drawing."""
+    comparison once; the figure's axes, ticks and titles are drawn once, and a change draws only the data
+    lines and the legend over them and sends the picture as one PNG."""
 
     def __init__(self, spec: Specification, *, question: str | None = None, live: bool | None = None):
         self.base = spec
@@ -69,6 +70,7 @@ class ChoosingExplorer:
             fig = Figure(figsize=(11.0, 4.8), dpi=80, layout="constrained")
             FigureCanvasAgg(fig)
         self.comparison = None
+        self._background = None   # (the laws' y-limits, the pixels of everything but the data) once drawn
         self.message = ""
         self.figure = ComparisonFigure(candidates(spec), fig)
         self.output = None if self.live else W.Image(format="png", layout=W.Layout(width="880px"))
@@ -111,12 +113,34 @@ class ChoosingExplorer:
         if self.live:
             self.figure.fig.canvas.draw_idle()
         else:
-            png = io.BytesIO()
-            self.figure.fig.savefig(png, format="png", pil_kwargs={"compress_level": 1})   # fast over small
-            self.output.value = png.getvalue()
-            # the constrained layout of the first drawing holds for every later one (the axes and their tick
-            # labels do not change): laying it out again would double the cost of each slider release
-            self.figure.fig.set_layout_engine("none")
+            self.output.value = self._png()
+
+    def _png(self) -> bytes:
+        """The figure as PNG: the axes, ticks and titles drawn once (their layout frozen), then only the data
+        lines and the legend drawn over them, so that a slider release costs no text layout."""
+        fig, laws = self.figure.fig, self.figure.laws
+        canvas = fig.canvas
+        data = [*self.figure.spokes.values(), *self.figure.curves.values()]
+        if self._background is None or self._background[0] != laws.get_ylim():
+            legend = laws.get_legend()
+            shown = [a for a in data + [legend] if a is not None and a.get_visible()]
+            for a in shown:
+                a.set_visible(False)
+            canvas.draw()
+            fig.set_layout_engine("none")   # the first drawing's layout holds: the axes and their labels stay
+            self._background = (laws.get_ylim(), canvas.copy_from_bbox(fig.bbox))
+            for a in shown:
+                a.set_visible(True)
+        canvas.restore_region(self._background[1])
+        for a in data:
+            if a.get_visible():
+                a.axes.draw_artist(a)
+        if laws.get_legend() is not None:
+            laws.draw_artist(laws.get_legend())
+        png = io.BytesIO()
+        Image.frombuffer("RGBA", canvas.get_width_height(), canvas.buffer_rgba()).save(png, format="png",
+                                                                                        compress_level=1)
+        return png.getvalue()
 
     def _ipython_display_(self):
         display(self.widget)
