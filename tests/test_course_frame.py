@@ -54,6 +54,36 @@ def test_there_are_chapters():
     assert len(CHAPTERS) >= 11
 
 
+# -- the lecturer's companions: notebooks/companion/NN_*.ipynb, one per chapter with material moved out ----------
+COMPANIONS = sorted((ROOT / "notebooks" / "companion").glob("[0-9][0-9]_*.ipynb"))
+GOING_FURTHER = re.compile(r"Going further:\*?\*? .*\]\((companion/[0-9][0-9]_\w+\.ipynb)\)")
+
+
+@pytest.mark.parametrize("path", COMPANIONS, ids=lambda p: p.name)
+def test_companion_names_its_chapter_and_keeps_its_checks(path):
+    """A companion's smaller frame: a header naming its chapter (a link to it) and its sources as works; every
+    assert in a hidden check cell, and at least one; the chapter links back to it in one "Going further" line."""
+    cs = cells(path)
+    chapter = next(ROOT.glob(f"notebooks/{path.name[:2]}_*.ipynb"), None)
+    header = source(cs[0])
+    assert chapter and cs[0]["cell_type"] == "markdown", f"{path.name}: no chapter {path.name[:2]} or no header"
+    assert header.startswith(f"# Companion to chapter {int(path.name[:2])} · ") and f"](../{chapter.name})" in header
+    assert re.search(r"Sources?:\s+[A-Z]\w+", header) and not SEED.search(header), f"{path.name}: sources as works"
+    code = [c for c in cs if c["cell_type"] == "code"]
+    assert not [c["id"] for c in code if not is_check(c) and asserts_in(source(c))], f"{path.name}: untagged assert"
+    assert all(c["metadata"].get("jupyter", {}).get("source_hidden") is True for c in code if is_check(c))
+    assert any(is_check(c) and asserts_in(source(c)) for c in code), f"{path.name}: no check cell asserts anything"
+    links = [m.group(1) for c in cells(chapter) if c["cell_type"] == "markdown"
+             for m in GOING_FURTHER.finditer(source(c))]
+    assert links == [f"companion/{path.name}"], f"{chapter.name}: one 'Going further' line to {path.name}, got {links}"
+
+
+def test_a_chapter_links_only_to_companions_that_exist():
+    for path in CHAPTERS:
+        for link in GOING_FURTHER.findall("\n".join(source(c) for c in cells(path) if c["cell_type"] == "markdown")):
+            assert (ROOT / "notebooks" / link).is_file(), f"{path.name}: {link} does not exist"
+
+
 @pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
 def test_chapter_opens_with_its_frame(path):
     first, second = cells(path)[:2]
@@ -81,30 +111,6 @@ def test_teaching_cells_carry_no_assert(path):
         if is_check(c):
             assert c["metadata"].get("jupyter", {}).get("source_hidden") is True, f"{path.name}: {c['id']} not hidden"
     assert any(is_check(c) and asserts_in(source(c)) for c in code), f"{path.name}: no check cell asserts anything"
-
-
-# -- the lecturer's companion: notebooks/companion/NN_<topic>_companion.ipynb, a smaller frame ------------------
-COMPANIONS = sorted((ROOT / "notebooks" / "companion").glob("*.ipynb"))
-
-
-@pytest.mark.parametrize("path", COMPANIONS, ids=lambda p: p.name)
-def test_companion_names_its_chapter_hides_its_checks_and_is_linked(path):
-    name = re.fullmatch(r"(\d\d)_(\w+)_companion\.ipynb", path.name)
-    assert name, f"{path.name}: not NN_<topic>_companion.ipynb"
-    chapter = [p for p in CHAPTERS if p.name.startswith(name.group(1) + "_")]
-    assert len(chapter) == 1, f"{path.name}: no chapter {name.group(1)}"
-    cs = cells(path)
-    head = source(cs[0])
-    assert cs[0]["cell_type"] == "markdown" and head.startswith(f"# Companion to chapter {int(name.group(1))} · ")
-    assert f"(../{chapter[0].name})" in head, f"{path.name}: the header does not link its chapter"
-    assert not any(SEED.search(source(c)) for c in cs), f"{path.name}: 'seed' in a cell"
-    code = [c for c in cs if c["cell_type"] == "code"]
-    assert not [c["id"] for c in code if not is_check(c) and asserts_in(source(c))], f"{path.name}: asserts in teaching cells"
-    assert all(c["metadata"].get("jupyter", {}).get("source_hidden") is True for c in code if is_check(c))
-    assert any(is_check(c) and asserts_in(source(c)) for c in code), f"{path.name}: no check cell asserts anything"
-    links = [c for c in cells(chapter[0]) if c["cell_type"] == "markdown" and "**Going further:**" in source(c)
-             and f"(companion/{path.name})" in source(c)]
-    assert len(links) == 1, f"{chapter[0].name}: no one 'Going further' line linking companion/{path.name}"
 
 
 # -- thin teaching cells ------------------------------------------------------------------------------------------
