@@ -93,7 +93,8 @@ def test_every_candidate_meets_its_specification_when_simulated_anew(spec):
 
 def test_the_property_test_saw_candidates_of_several_families():
     # runs after the property test (file order): it must not have passed on refusals alone
-    assert {"external Geneva", "spherical Geneva", "curved slot", "МЧВ1 six-bar", "МЧВ2 six-bar", "disc cam"} <= SEEN
+    assert {"external Geneva", "spherical Geneva", "curved slot", "lambda six-bar, type 1 (rocker dwell)",
+            "lambda six-bar, type 2 (slider dwell)", "disc cam"} <= SEEN
 
 
 def test_refusals_name_their_reason_with_numbers():
@@ -104,7 +105,8 @@ def test_refusals_name_their_reason_with_numbers():
     assert "0.250" in refused["internal Geneva"]
     assert refused["curved slot"].startswith("rocks its output")
     assert refused["disc cam"].startswith("lifts or rocks its follower")
-    assert "180°" in refused["МЧВ3-2М six-bar"] and "4 stations" in refused["МЧВ3-2М six-bar"]
+    assert "180°" in refused["lambda six-bar, type 3 (half-turn index)"]
+    assert "4 stations" in refused["lambda six-bar, type 3 (half-turn index)"]
     tight = D.candidates(D.Specification("swing", 50 / 360, amplitude=np.radians(40),
                                          max_pressure_angle=np.radians(55)), ["curved slot"])
     assert not tight.candidates and "> 55.0°" in tight.refusals[0].reason

@@ -563,3 +563,36 @@ def test_plot_slot_draws_the_profile_in_units_of_the_pivot_distance():
     assert np.allclose(np.hypot(*(arc - cut.law.centre_in_link() / 120.0).T), 0.5)
     assert "l_{OB}" in fig.axes[0].get_xlabel() and "l_{OB}" in fig.axes[0].get_ylabel()
     plt.close(fig)
+
+
+def test_comparison_cuts_an_axis_that_one_spike_would_squash_and_says_so():
+    from mechlab import ExternalGeneva, InternalGeneva
+    import mechlab.draw.geneva as G
+
+    class Scaled:
+        """The external Geneva with its analogs ``k`` times larger."""
+        def __init__(self, k):
+            self.g, self.k = ExternalGeneva(4, 1.0), k
+
+        def motion(self, phi):
+            from dataclasses import replace
+            mo = self.g.motion(phi)
+            return replace(mo, dpsi=self.k * mo.dpsi, ddpsi=self.k * mo.ddpsi)
+
+    rows = G.compare   # the legend's rows: the external Geneva's for every curve (the scaled ones' are moot)
+    G.compare = lambda ms, **kw: rows({k: ExternalGeneva(4, 1.0) for k in ms}, **kw)
+    peak = ExternalGeneva(4, 1.0).max_acceleration()
+    try:
+        _, axes = plt.subplots(2, 1)
+        G.plot_comparison({"a": Scaled(1.0), "b": Scaled(0.8), "c": InternalGeneva(4, 1.0)}, axes=axes)
+        assert axes[1].get_ylim()[1] >= peak and not axes[1].texts     # nothing dwarfs the others: no cut
+        _, axes = plt.subplots(2, 1)
+        G.plot_comparison({"spike": Scaled(10.0), "a": Scaled(1.0), "c": InternalGeneva(4, 1.0)}, axes=axes)
+    finally:
+        G.compare = rows
+        plt.close("all")
+    top = axes[1].get_ylim()[1]
+    assert peak <= top < 2 * peak                                   # cut near the others' peak, not the spike's
+    texts = [t.get_text() for t in axes[1].texts]
+    assert any(t.startswith("spike: +") and t.endswith("(cut)") for t in texts)
+    assert f"{10 * peak:+.1f}" in " ".join(texts)

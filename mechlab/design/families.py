@@ -171,25 +171,26 @@ def _lambda_designs(spec: Specification, build, what: str) -> list:
 
 
 def mchv1_rocker(spec: Specification) -> Design:
-    """Kinitsky's МЧВ1: circle-guiding lambda mechanism and a rocker dyad, time ratio 1."""
+    """Kinitsky's lambda six-bar, type 1 (МЧВ1): circle-guiding lambda mechanism and a rocker dyad, time ratio 1."""
     _needs(spec, "swing", what="rocks its output")
     mu_min = np.pi / 2 - spec.max_pressure_angle
     designs = _lambda_designs(
         spec, lambda d, a: mchv1(circle_guiding(d, a, spec.dwell_angle), 1.0, spec.amplitude, mu_min=mu_min),
-        "МЧВ1")
+        "lambda six-bar, type 1")
     six = min(designs, key=lambda m: m.r)  # the smallest crank for a given coupler: the slowest coupler
-    return Design("МЧВ1 six-bar", six, spec.crank_radius / six.r,
+    return Design("lambda six-bar, type 1 (rocker dwell)", six, spec.crank_radius / six.r,
                   Structure(parts=5, lower_pairs=7, higher_pairs=0))
 
 
 def mchv3_half(spec: Specification) -> Design:
-    """Kinitsky's МЧВ3-2М: a straight-line lambda mechanism drives a slotted link through 180°."""
+    """Kinitsky's lambda six-bar, type 3, half turn (МЧВ3-2М): a straight-line lambda mechanism drives a slotted
+    link through 180°."""
     _needs(spec, "index", what="indexes 180° (2 stations)")
     if spec.stations != 2:
         raise Unsuitable(f"indexes 180° per crank turn (2 stations); {spec.stations} stations were asked")
     six = _lambda_designs(spec, lambda d, a: mchv3_half_turn(straight_guiding(d, a, spec.dwell_angle)),
                           "straight-line lambda mechanism")[0]
-    return Design("МЧВ3-2М six-bar", six, spec.crank_radius / six.r,
+    return Design("lambda six-bar, type 3 (half-turn index)", six, spec.crank_radius / six.r,
                   Structure(parts=5, lower_pairs=7, higher_pairs=0), phase=1e-3)
 
 
@@ -200,19 +201,21 @@ def _stroke_design(spec, six, family):
 
 
 def mchv2_slider(spec: Specification) -> Design:
-    """Kinitsky's МЧВ2: circle-guiding lambda mechanism, rod and slider, scaled to the stroke."""
+    """Kinitsky's lambda six-bar, type 2 (МЧВ2): circle-guiding lambda mechanism, rod and slider, scaled to the
+    stroke."""
     _needs(spec, "stroke", what="translates its output")
     six = _lambda_designs(spec, lambda d, a: mchv2(circle_guiding(d, a, spec.dwell_angle), 1.0,
-                                                   mu_min=np.pi / 2 - spec.max_pressure_angle), "МЧВ2")[0]
-    return _stroke_design(spec, six, "МЧВ2 six-bar")
+                                                   mu_min=np.pi / 2 - spec.max_pressure_angle), "lambda six-bar, type 2")[0]
+    return _stroke_design(spec, six, "lambda six-bar, type 2 (slider dwell)")
 
 
 def mchv5_slotted(spec: Specification) -> Design:
-    """Kinitsky's МЧВ5: straight-line lambda mechanism and a translating slotted link, scaled to the stroke."""
+    """Kinitsky's lambda six-bar, type 5 (МЧВ5): straight-line lambda mechanism and a translating slotted link,
+    scaled to the stroke."""
     _needs(spec, "stroke", what="translates its output")
     six = _lambda_designs(spec, lambda d, a: mchv5(straight_guiding(d, a, spec.dwell_angle)),
                           "straight-line lambda mechanism")[0]
-    return _stroke_design(spec, six, "МЧВ5 six-bar")
+    return _stroke_design(spec, six, "lambda six-bar, type 5 (translating-slot dwell)")
 
 
 CAM_LAW = "cycloidal (sine)"  # continuous acceleration: no impact
@@ -275,9 +278,9 @@ FAMILIES: dict[str, Callable[[Specification], Design]] = {
     "internal Geneva": internal_geneva,
     "spherical Geneva": spherical_geneva,
     "curved slot": curved_slot,
-    "МЧВ1 six-bar": mchv1_rocker,
-    "МЧВ3-2М six-bar": mchv3_half,
-    "МЧВ2 six-bar": mchv2_slider,
-    "МЧВ5 six-bar": mchv5_slotted,
+    "lambda six-bar, type 1 (rocker dwell)": mchv1_rocker,
+    "lambda six-bar, type 3 (half-turn index)": mchv3_half,
+    "lambda six-bar, type 2 (slider dwell)": mchv2_slider,
+    "lambda six-bar, type 5 (translating-slot dwell)": mchv5_slotted,
     "disc cam": disc_cam,
 }

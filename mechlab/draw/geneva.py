@@ -131,28 +131,54 @@ class SphericalGenevaDrawing:
 
 
 def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.0,
-                    dwell_tol: float | dict | None = None):
+                    dwell_tol: float | dict | None = None, clip: float | None = 2.0):
     """ψ' and ψ'' over one crank turn (from ``phase``) for each named mechanism, in the
     sense of its index (the external Geneva's negative turn shown positive), with
     :func:`mechlab.analysis.intermittency.compare` in the legend (``dwell_tol`` as there: one, or per name, for
-    approximate dwells; names it does not plot are left out)."""
+    approximate dwells; names it does not plot are left out).
+
+    A curve whose peak is more than ``clip`` times the largest peak of the (at least two) others would squash
+    them: its axis is cut at 1.2 times the others' peak and the curve's own peak is written at the cut (``None``:
+    never cut)."""
     if axes is None:
         _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 5))
     phi = phase + np.linspace(0, 2 * np.pi, n)
     if isinstance(dwell_tol, dict):   # one dict serves a table of all and a plot of some
         dwell_tol = {k: v for k, v in dwell_tol.items() if k in mechanisms}
     rows = compare(mechanisms, n=2 * n, phase=phase, dwell_tol=DWELL_TOL if dwell_tol is None else dwell_tol).by("name")
+    curves = ([], [])
     for name, m in mechanisms.items():
         mo = m.motion(phi)
         sense = np.sign(mo.psi[-1] - mo.psi[0])
         inv = rows[name]
         label = f"{name}: dwell {inv.dwell_fraction:.2f}, impact: {inv.impact}"
-        axes[0].plot(np.degrees(phi), sense * mo.dpsi, label=label)
-        axes[1].plot(np.degrees(phi), sense * mo.ddpsi, label=name)
+        for ax, y, lab, kept in zip(axes, (sense * mo.dpsi, sense * mo.ddpsi), (label, name), curves):
+            kept.append((ax.plot(np.degrees(phi), y, label=lab)[0], name, y))
     axes[0].set_ylabel("ψ′ = dψ/dφ (–)")
     axes[1].set_ylabel("ψ″ = d²ψ/dφ² (1/rad)")
     axes[1].set_xlabel("crank angle φ (degrees)")
-    for ax in axes:
+    for ax, kept in zip(axes, curves):
         ax.grid(True, alpha=0.3)
+        if clip is not None and len(kept) > 2:   # with two curves neither is the odd one out
+            _clip_outlier(ax, kept, clip)
     axes[0].legend(fontsize=7, loc="upper left")
     return axes
+
+
+def _clip_outlier(ax, kept, clip: float) -> None:
+    """Cut ``ax`` at 1.2 × the others' peak when one curve's peak exceeds ``clip`` × theirs; label its peak."""
+    peaks = [float(np.max(np.abs(y))) for _, _, y in kept]
+    worst = int(np.argmax(peaks))
+    others = max(p for i, p in enumerate(peaks) if i != worst)
+    if peaks[worst] <= clip * others:
+        return
+    line, name, y = kept[worst]
+    top = 1.2 * others
+    lo = -top if np.min(y) < -others else min(ax.get_ylim()[0], -0.1 * top)
+    ax.set_ylim(lo, top)
+    for k in {int(np.argmax(y)), int(np.argmin(y))}:
+        if abs(y[k]) > top:
+            x = line.get_xdata()[k]
+            ax.annotate(f"{name}: {y[k]:+.1f} (cut)", (x, np.sign(y[k]) * top), xytext=(0, -4 if y[k] > 0 else 4),
+                        textcoords="offset points", ha="right" if x > 180 else "left",
+                        va="top" if y[k] > 0 else "bottom", fontsize=7, color=line.get_color())

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 from dataclasses import replace
 
 import ipywidgets as W
@@ -10,6 +11,7 @@ import numpy as np
 from IPython.display import display
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from PIL import Image
 
 from ..design import Specification, candidates
 from ..design.candidates import COLUMNS
@@ -25,16 +27,21 @@ class ChoosingExplorer:
     """Sliders for the specification's dwell, speed, pressure-angle limit and stations (or amplitude);
     a table of the candidates ranked by a chosen criterion, the refusals with their reasons, and the
     trade-off figure moved in place. An impossible specification shows why, and the explorer stays
-    usable."""
+    usable.
+
+    It opens on exactly ``spec``: a slider still at its opening reading (the value rounded to its step)
+    stands for the specification's own value (2/3, not 0.67). A release of a slider re-runs the
+    comparison once; the figure's axes, ticks and titles are drawn once, and a change draws only the data
+    lines and the legend over them and sends the picture as one PNG."""
 
     def __init__(self, spec: Specification, *, question: str | None = None, live: bool | None = None):
         self.base = spec
         self.live = _uses_ipympl() if live is None else live
         s = {}
-        s["dwell_fraction"] = W.FloatSlider(value=spec.dwell_fraction, min=0.05, max=0.9, step=0.01,
+        s["dwell_fraction"] = W.FloatSlider(value=round(spec.dwell_fraction, 2), min=0.05, max=0.9, step=0.01,
                                             description="dwell (of the turn)", style=_STYLE, layout=_LAYOUT,
                                             continuous_update=False)
-        s["rpm"] = W.FloatSlider(value=spec.rpm, min=5.0, max=200.0, step=5.0, description="crank speed (rpm)",
+        s["rpm"] = W.FloatSlider(value=round(spec.rpm / 5.0) * 5.0, min=5.0, max=200.0, step=5.0, description="crank speed (rpm)",
                                  style=_STYLE, layout=_LAYOUT, continuous_update=False)
         s["max_pressure_angle"] = W.FloatSlider(value=round(np.degrees(spec.max_pressure_angle)), min=20.0,
                                                 max=85.0, step=1.0, description="pressure angle ≤ (deg)",
@@ -47,10 +54,11 @@ class ChoosingExplorer:
                                            description="swing (deg)", style=_STYLE, layout=_LAYOUT,
                                            continuous_update=False)
         else:
-            s["amplitude"] = W.FloatSlider(value=spec.amplitude, min=5.0, max=300.0, step=5.0,
+            s["amplitude"] = W.FloatSlider(value=round(spec.amplitude / 5.0) * 5.0, min=5.0, max=300.0, step=5.0,
                                            description="stroke (mm)", style=_STYLE, layout=_LAYOUT,
                                            continuous_update=False)
         self.sliders = s
+        self._opening = {k: w.value for k, w in s.items()}
         keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure", "J")]
         self.rank = W.Dropdown(options=keys, value="motor_power", description="rank by", style=_STYLE,
                                layout=_LAYOUT)
@@ -62,9 +70,10 @@ class ChoosingExplorer:
             fig = Figure(figsize=(11.0, 4.8), dpi=80, layout="constrained")
             FigureCanvasAgg(fig)
         self.comparison = None
+        self._background = None   # (the laws' y-limits, the pixels of everything but the data) once drawn
         self.message = ""
         self.figure = ComparisonFigure(candidates(spec), fig)
-        self.output = None if self.live else W.Output()
+        self.output = None if self.live else W.Image(format="png", layout=W.Layout(width="880px"))
         canvas = fig.canvas if self.live else self.output
         ask = [W.HTML(f"<b>Investigate:</b> {question}")] if question else []
         self.widget = W.VBox(ask + [W.HBox([W.VBox(list(s.values())), W.VBox([self.rank])]), canvas, self.table])
@@ -73,10 +82,12 @@ class ChoosingExplorer:
         self.rebuild()
 
     def spec(self) -> Specification:
-        """The specification the sliders describe (radians inside)."""
-        v = {k: w.value for k, w in self.sliders.items()}
-        v["max_pressure_angle"] = np.radians(v["max_pressure_angle"])
-        if self.base.motion == "swing":
+        """The specification the sliders describe (radians inside); a slider not moved from its opening
+        reading keeps the starting specification's exact value."""
+        v = {k: w.value for k, w in self.sliders.items() if w.value != self._opening[k]}
+        if "max_pressure_angle" in v:
+            v["max_pressure_angle"] = np.radians(v["max_pressure_angle"])
+        if "amplitude" in v and self.base.motion == "swing":
             v["amplitude"] = np.radians(v["amplitude"])
         return replace(self.base, **v)
 
@@ -102,9 +113,34 @@ class ChoosingExplorer:
         if self.live:
             self.figure.fig.canvas.draw_idle()
         else:
-            self.output.clear_output(wait=True)
-            with self.output:
-                display(self.figure.fig)
+            self.output.value = self._png()
+
+    def _png(self) -> bytes:
+        """The figure as PNG: the axes, ticks and titles drawn once (their layout frozen), then only the data
+        lines and the legend drawn over them, so that a slider release costs no text layout."""
+        fig, laws = self.figure.fig, self.figure.laws
+        canvas = fig.canvas
+        data = [*self.figure.spokes.values(), *self.figure.curves.values()]
+        if self._background is None or self._background[0] != laws.get_ylim():
+            legend = laws.get_legend()
+            shown = [a for a in data + [legend] if a is not None and a.get_visible()]
+            for a in shown:
+                a.set_visible(False)
+            canvas.draw()
+            fig.set_layout_engine("none")   # the first drawing's layout holds: the axes and their labels stay
+            self._background = (laws.get_ylim(), canvas.copy_from_bbox(fig.bbox))
+            for a in shown:
+                a.set_visible(True)
+        canvas.restore_region(self._background[1])
+        for a in data:
+            if a.get_visible():
+                a.axes.draw_artist(a)
+        if laws.get_legend() is not None:
+            laws.draw_artist(laws.get_legend())
+        png = io.BytesIO()
+        Image.frombuffer("RGBA", canvas.get_width_height(), canvas.buffer_rgba()).save(png, format="png",
+                                                                                        compress_level=1)
+        return png.getvalue()
 
     def _ipython_display_(self):
         display(self.widget)
