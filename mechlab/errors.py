@@ -43,3 +43,16 @@ class NoDesignError(SynthesisError):
 class InfeasibleDesignError(SynthesisError):
     """A six-bar requested by K, β_m (or a pivot position) cannot be built."""
 
+
+class StructureError(MechanismError):
+    """A mechanism's links, pairs and groups do not make a well-formed structure (statically solvable groups,
+    joints defined once, one degree of freedom)."""
+
+
+class JointError(StructureError):
+    """A joint is defined twice, or a group attaches to a joint (or a link) not defined before it."""
+
+
+class MobilityError(StructureError):
+    """The structure's mobility W = 3n - 2p₅ - p₄ is not 1: it is not driven by exactly one crank."""
+

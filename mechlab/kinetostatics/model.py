@@ -20,7 +20,7 @@ from dataclasses import dataclass, replace
 from typing import Annotated, Any, Sequence
 
 import numpy as np
-from ..errors import DimensionError, MechanismError
+from ..errors import DimensionError, MechanismError, StructureError
 from ..mechanisms.base import FRAME
 from ..validate import (Angle, Checked, Distance, Name, Point, Spec, angle, check, number, or_function)
 
@@ -43,10 +43,6 @@ class FrictionError(DimensionError):
 
 class LoadError(DimensionError):
     """A load's value has the wrong shape or is not finite."""
-
-
-class StructureError(MechanismError):
-    """The force model's links, pairs and groups do not make statically solvable groups."""
 
 
 class SelfLockingError(MechanismError):
