@@ -28,14 +28,14 @@ _POINT = Spec("point")
 
 
 def _guide(value, name: str = "guide") -> Guide:
-    """A Guide from a Guide, a joint name (angle 0) or (joint, angle)."""
+    """A Guide from a Guide, a joint name (angle 0), (joint, angle) or (joint, angle, link)."""
     if isinstance(value, Guide):
         return value
     if isinstance(value, str):
         return Guide(value)
-    if isinstance(value, tuple | list) and len(value) == 2:
+    if isinstance(value, tuple | list) and len(value) in (2, 3):
         return Guide(*value)
-    raise TypeError(f"{name} must be a Guide, a joint name or (joint, angle), got {value!r:.60}")
+    raise TypeError(f"{name} must be a Guide, a joint name, (joint, angle) or (joint, angle, link), got {value!r:.60}")
 
 
 @dataclass(frozen=True)
@@ -173,8 +173,9 @@ class Linkage(Mechanism):
             The new joint, the slider's pin.
         length : float
             The rod's length.
-        guide : Guide, str or (str, float)
-            The guide: a :class:`Guide`, a joint on the guide's link (angle 0 to its axis) or (joint, angle).
+        guide : Guide, str, (str, float) or (str, float, str)
+            The guide: a :class:`Guide`, a joint on the guide's link (angle 0 to its axis), (joint, angle) or
+            (joint, angle, link) for a guide on another link through that joint.
         assembly : +1 or -1
             The slider ahead of (+1) or behind the pin's foot along the guide.
         links : (str, str), optional
@@ -241,7 +242,7 @@ class Linkage(Mechanism):
         --------
         >>> import mechlab as ml
         >>> tangent = (ml.Linkage({"O": (0, 0), "P": (0, -2), "G": (0, 1)}, ml.Crank("O", "A", 1.0))
-        ...            .rpr("A", "P", 4.0).prp(("G", 0.0), ("P", 0.0), "B"))
+        ...            .rpr("A", "P", 4.0).prp(("G", 0.0), ("P", 0.0, "PA"), "B"))
         >>> round(float(tangent.motion(0.0).points["B"].p[0]), 12)
         1.5
         """
@@ -317,6 +318,10 @@ class Linkage(Mechanism):
             if isinstance(g, Point) and g.on not in links:
                 raise JointError(f"the point {g.name} is fixed on the link {g.on!r}, which is not defined before it; "
                                  f"links so far: {', '.join(sorted(links - {FRAME}))}")
+            for guide in () if isinstance(g, Point) else g.guides():
+                if guide.on is not None and guide.on not in links:
+                    raise JointError(f"{_what(g)} slides on a guide fixed on the link {guide.on!r}, which is not "
+                                     f"defined before it; links so far: {', '.join(sorted(links))}")
             if isinstance(g, Crank) and carrier[g.pivot] != FRAME:
                 raise JointError(f"the crank {g.name} must turn about a frame point; {g.pivot} is on {carrier[g.pivot]}")
             names = () if isinstance(g, Point) else g.link_names()
@@ -453,8 +458,9 @@ class Linkage(Mechanism):
     def _place(self, phi: np.ndarray, strict: bool) -> State:
         state = State(phi, self._fixed, strict)
         carrier = self._carriers.__getitem__
-        for g in self._elements:
-            g.place(state, carrier)
+        with np.errstate(invalid="ignore", divide="ignore"):   # rows that do not close hold NaN until refused
+            for g in self._elements:
+                g.place(state, carrier)
         return state
 
     @cached_property
@@ -481,6 +487,8 @@ class Linkage(Mechanism):
         for s in starts:
             later = ends[ends > s]
             e = later.min() if len(later) else ends.min() + TWO_PI
+            if e > TWO_PI:   # a range across φ = 0 is shown from a negative angle, as FourBar's
+                s, e = s - TWO_PI, e - TWO_PI
             ranges.append((float(s), float(e)))
         return tuple(sorted(ranges))
 
@@ -586,11 +594,12 @@ class Linkage(Mechanism):
                                   str(number)))
             elif len(joints) >= 2:
                 parts.append(Part("link", joints + joints[:1] if len(joints) > 2 else joints, str(number)))
-            for p in slots:   # the slot (or guide) on this link along the block's track
+            for k, p in enumerate(slots):   # the slot (or guide) on this link along the block's track
                 track = pts[p.point].p
                 o = pts[link.origin].p
+                shown = len(joints) < 2 and k == 0   # a link drawn by its slot alone carries its number there
                 parts.append(Part("slot", lambda i, o=o, t=track, a=axis + p.angle: _along(o[i], t[i], a[i], size),
-                                  None if len(joints) >= 2 else str(number)))
+                                  str(number) if shown else None))
         for link in st.links:
             slide = next((p for p in st.pairs if p.kind == "prismatic" and p.b == link.name), None)
             if slide is not None and slide.a == FRAME and link.translates:   # the rail under a slider

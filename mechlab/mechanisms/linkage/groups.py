@@ -76,21 +76,27 @@ def _broadcast(z, n):
 
 @dataclass(frozen=True)
 class Guide(Checked):
-    """A straight guide (or slot) fixed on a link: the line through joint ``through`` at ``angle`` (radians)
-    to that link's axis; the link is the one ``through`` was made on (the frame for a frame point).
+    """A straight guide (or slot) fixed on the link ``on``: the line through joint ``through`` at ``angle``
+    (radians) to that link's axis. ``on`` defaults to the link ``through`` was made on (the frame for a frame
+    point); name it for a guide on another link through that joint (a slotted lever through its pivot).
 
     Examples
     --------
     >>> Guide("G", 0.0)
-    Guide(through='G', angle=0.0)
+    Guide(through='G', angle=0.0, on=None)
     """
 
     through: Name
     angle: Angle = 0.0
+    on: Annotated[str | None, Spec("text", optional=True)] = None
 
-    def line(self, state: State, carrier: str):
+    def link(self, carrier) -> str:
+        """The link the guide is fixed on."""
+        return self.on if self.on is not None else carrier(self.through)
+
+    def line(self, state: State, carrier):
         """The line's point Q (complex: position, analogs) and its angle θ + angle with analogs."""
-        th = state.angles[carrier]
+        th = state.angles[self.link(carrier)]
         return state.z(self.through), AnglePath(th.theta + self.angle, th.d, th.dd)
 
 
@@ -134,6 +140,10 @@ class Group:
 
     def makes(self) -> tuple[str, ...]:
         """The joints this element defines."""
+        return ()
+
+    def guides(self) -> tuple[Guide, ...]:
+        """The guides this element slides on."""
         return ()
 
     def link_names(self) -> tuple[str, ...]:
@@ -299,6 +309,14 @@ def _guide_check(name, guide):
         raise TypeError(f"{name} must be a Guide(through, angle), got {type(guide).__name__} {guide!r:.60}")
 
 
+def _turning_with(link: Link, angle: float):
+    """The axis of a link that turns with ``link`` at a fixed ``angle`` to its axis: (θ + angle, θ', θ'')."""
+    def axis(motion):
+        th = link.angle(motion)
+        return th.theta + angle, th.d, th.dd
+    return axis
+
+
 def _guide_axis(guide: Guide, on: str, links):
     """The axis of a link sliding on ``guide``: its constant angle on the frame, else turning with the guide's link."""
     return guide.angle if on == FRAME else _turning_with(links[on], guide.angle)
@@ -333,6 +351,9 @@ class RRP(Group, Checked):
     def needs(self):
         return (self.pin, self.guide.through)
 
+    def guides(self):
+        return (self.guide,)
+
     def makes(self):
         return (self.joint,)
 
@@ -341,7 +362,7 @@ class RRP(Group, Checked):
 
     def structure(self, carrier, links):
         rod, slider = self.link_names()
-        on = carrier(self.guide.through)
+        on = self.guide.link(carrier)
         return ((Link(rod, self.pin, (self.pin, self.joint), self.length),
                  Link(slider, self.joint, _guide_axis(self.guide, on, links), block=on != FRAME)),
                 (Pair("revolute", self.pin, carrier(self.pin), rod, self.pin),
@@ -351,7 +372,7 @@ class RRP(Group, Checked):
     def place(self, state, carrier):
         r = self.length
         P = state.z(self.pin)
-        Q, th = self.guide.line(state, carrier(self.guide.through))
+        Q, th = self.guide.line(state, carrier)
         u = np.exp(1j * th.theta)
         w = _broadcast(P[0] - Q[0], state.n)
         off = _im_conj(u, w)
@@ -365,7 +386,7 @@ class RRP(Group, Checked):
     def links_placed(self, state, carrier):
         rod, slider = self.link_names()
         state.link(rod, self.pin, _bar_angle(state, self.pin, self.joint))
-        state.link(slider, self.joint, self.guide.line(state, carrier(self.guide.through))[1])
+        state.link(slider, self.joint, self.guide.line(state, carrier)[1])
 
     def transmission(self, state):
         """μ between the rod and the guide's normal (as :class:`~mechlab.SliderCrank`): π/2 with the rod along
@@ -420,7 +441,7 @@ class RPR(Group, Checked):
         state.closes(rho2 > (DEAD_POINT_TOL * scale) ** 2, self, lambda i: (
             f"the pin {self.pin} passes through the pivot {self.pivot}, where the slot's direction is undefined"))
         with np.errstate(invalid="ignore", divide="ignore"):
-            angle = vector_angle(PointPath(*(np.broadcast_to(a, (state.n, 2)) for a in v)))
+            angle = vector_angle(PointPath(*(np.broadcast_to(a, (state.n, 2)).copy() for a in v)))
         block, lever = self.link_names()
         state.link(block, self.pin, angle)
         state.link(lever, self.pivot, angle)
@@ -458,6 +479,9 @@ class PRP(Group, Checked):
     def needs(self):
         return (self.first.through, self.second.through)
 
+    def guides(self):
+        return (self.first, self.second)
+
     def makes(self):
         return (self.joint,)
 
@@ -466,7 +490,7 @@ class PRP(Group, Checked):
 
     def structure(self, carrier, links):
         one, two = self.link_names()
-        on1, on2 = carrier(self.first.through), carrier(self.second.through)
+        on1, on2 = self.first.link(carrier), self.second.link(carrier)
         return ((Link(one, self.joint, _guide_axis(self.first, on1, links)),
                  Link(two, self.joint, _guide_axis(self.second, on2, links), block=True)),
                 (Pair("prismatic", f"{one} on {on1}", on1, one, self.joint, self.first.angle),
@@ -474,7 +498,7 @@ class PRP(Group, Checked):
                  Pair("prismatic", f"{two} on {on2}", on2, two, self.joint, self.second.angle)))
 
     def place(self, state, carrier):
-        (Q1, th1), (Q2, th2) = (g.line(state, carrier(g.through)) for g in (self.first, self.second))
+        (Q1, th1), (Q2, th2) = (g.line(state, carrier) for g in (self.first, self.second))
         u1, u2 = np.exp(1j * th1.theta), np.exp(1j * th2.theta)
         sin = _im_conj(u1, u2)
         state.closes(np.abs(sin) > DEAD_POINT_TOL, self, lambda i: "its two guides are parallel")
@@ -484,8 +508,8 @@ class PRP(Group, Checked):
 
     def links_placed(self, state, carrier):
         one, two = self.link_names()
-        state.link(one, self.joint, self.first.line(state, carrier(self.first.through))[1])
-        state.link(two, self.joint, self.second.line(state, carrier(self.second.through))[1])
+        state.link(one, self.joint, self.first.line(state, carrier)[1])
+        state.link(two, self.joint, self.second.line(state, carrier)[1])
 
     def transmission(self, state):
         """μ = the angle between the two guides: π/2 when the first block pushes along the second guide."""
