@@ -264,7 +264,7 @@ def test_a_group_that_cannot_close_is_named_with_the_crank_angle():
 def test_bad_pieces_are_refused_by_name():
     with pytest.raises(ml.DimensionError, match="first_length must be > 0"):
         ml.RRR("A", "E", "B", -1.0, 3.0)
-    with pytest.raises(TypeError, match="guide must be a Guide"):
+    with pytest.raises(TypeError, match="guide must be a Guide, got float 3"):
         ml.RRP("A", "B", 1.0, 3.0)
     with pytest.raises(TypeError, match="driver must be a Crank"):
         ml.Linkage({"O": (0, 0)}, ml.RRR("A", "E", "B", 1.0, 3.0))

@@ -12,7 +12,7 @@ from typing import Callable
 import numpy as np
 from scipy.optimize import brentq
 
-from ..errors import MechanismError
+from ..errors import MechanismError, Unsuitable
 from ..mechanisms import ExternalGeneva, InternalGeneva, SphericalGeneva
 from ..mechanisms.cam import OscillatingRollerCam, TranslatingRollerCam
 from ..synthesis.cam_design import CamProgramme
@@ -26,10 +26,6 @@ from .spec import Specification
 
 # lambda mechanisms tried, (δ, a): inside the existence region of Kinitsky (1994), Fig. 2a
 LAMBDA_FRAMES = ((np.radians(150.0), 0.9), (np.radians(180.0), 0.8), (np.radians(120.0), 0.75))
-
-
-class Unsuitable(Exception):
-    """The family cannot meet the specification; the message says why, with the numbers."""
 
 
 @dataclass(frozen=True)

@@ -10,14 +10,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from functools import cached_property
-from typing import Any
+from typing import Annotated, Any
 
 import numpy as np
 
-from ...errors import AssemblyError, JointError, MobilityError, SingularityError
+from ...errors import AssemblyError, DimensionError, JointError, MobilityError, SingularityError
 from ...geometry import AnglePath, as_angles
 from ...motion import AngularMotion, LinearMotion, Motion
-from ...validate import Spec, check
+from ...validate import Spec, check, mechanism
 from ..base import (FRAME, FULL_TURN, TWO_PI, Mechanism, Part, Sketch, Structure, block_outline,
                     branch_references, fmt_ranges, lift_on_ranges)
 from .groups import PRP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
@@ -25,6 +25,16 @@ from .groups import PRP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
 # Crank angles sampled to find where a linkage assembles; each boundary is then bisected to 1e-13 rad.
 SAMPLES = 3600
 _POINT = Spec("point")
+
+
+def _frame(value) -> tuple:
+    """The frame points as ((name, (x, y)), …) from a dict or such pairs; DimensionError naming a bad one."""
+    pairs = value.items() if isinstance(value, dict) else value
+    if not isinstance(pairs, tuple | list | type({}.items())) or \
+            not all(isinstance(p, tuple | list) and len(p) == 2 for p in pairs):
+        raise DimensionError(f"frame must be a dict of fixed points {{name: (x, y)}}, got {value!r:.60}")
+    return tuple((check("frame point name", k, Spec("text")), check(f"frame point {k}", xy, _POINT))
+                 for k, xy in pairs)
 
 
 def _guide(value, name: str = "guide") -> Guide:
@@ -80,21 +90,13 @@ class Linkage(Mechanism):
     """
 
     frame: Any
-    driver: Any
-    groups: tuple = ()
-    output_link: str | None = None
+    driver: Annotated[Any, mechanism(Crank)]
+    groups: Annotated[tuple, Spec("items", expected=(Group, Point))] = ()
+    output_link: Annotated[str | None, Spec("text", optional=True)] = None
 
     def __post_init__(self):
         super().__post_init__()
-        frame = self.frame.items() if isinstance(self.frame, dict) else self.frame
-        object.__setattr__(self, "frame", tuple((check("frame point name", k, Spec("text")),
-                                                 check(f"frame point {k}", xy, _POINT)) for k, xy in frame))
-        if not isinstance(self.driver, Crank):
-            raise TypeError(f"driver must be a Crank(pivot, joint, radius), got {type(self.driver).__name__}")
-        object.__setattr__(self, "groups", tuple(self.groups))
-        for g in self.groups:
-            if not isinstance(g, Group | Point):
-                raise TypeError(f"groups must hold RRR, RRP, RPR, PRP, Crank or Point, got {type(g).__name__}")
+        object.__setattr__(self, "frame", _frame(self.frame))
         self._carriers  # noqa: B018 - every joint defined once, before it is used (JointError)
         st = self.structure()
         w = st.mobility()
@@ -103,8 +105,9 @@ class Linkage(Mechanism):
             raise MobilityError(f"mobility W = 3n - 2p₅ - p₄ = 3·{len(st.links)} - 2·{len(st.pairs)} = {w} ≠ 1: "
                                 f"{len(cranks)} cranks ({', '.join(cranks)}) drive it; a linkage has one driver "
                                 f"and Assur groups (W = 0 each)")
-        if self.output_link is not None:
-            st.link(self.output_link)   # MechanismError naming the links
+        if self.output_link is not None and self.output_link not in {k.name for k in st.links}:
+            raise JointError(f"output_link = {self.output_link!r} names no link; links: "
+                             f"{', '.join(k.name for k in st.links)}")
         if not self.crank_ranges():
             self._place(np.array([0.0]), strict=True)   # raises, naming the group that fails at φ = 0
             raise AssemblyError("the linkage closes at no crank angle")   # pragma: no cover - closed at 0 only

@@ -19,7 +19,7 @@ import numpy as np
 from ...errors import AssemblyError, SingularityError, StructureError
 from ...geometry import (DEAD_POINT_TOL, AnglePath, PointPath, _abs2, _im_conj, _re_conj, as_complex, as_xy,
                          crank_point, fixed_point, relative, vector_angle)
-from ...validate import Angle, Checked, Distance, Length, Name, Sign, Spec
+from ...validate import Angle, Checked, Distance, Length, Name, Sign, Spec, mechanism
 from ..base import FRAME, Link, Pair
 
 LinkNames = Annotated[Any, Spec("items", expected=str, optional=True)]
@@ -98,6 +98,10 @@ class Guide(Checked):
         """The line's point Q (complex: position, analogs) and its angle θ + angle with analogs."""
         th = state.angles[self.link(carrier)]
         return state.z(self.through), AnglePath(th.theta + self.angle, th.d, th.dd)
+
+
+# a parameter that takes a Guide (TypeError naming it otherwise)
+GuideSpec = Annotated[Any, mechanism(Guide)]
 
 
 def _circle_rows(state, P, B, dB=None):
@@ -304,11 +308,6 @@ class RRR(Group, Checked):
         return np.arccos(np.clip(cos, -1.0, 1.0))
 
 
-def _guide_check(name, guide):
-    if not isinstance(guide, Guide):
-        raise TypeError(f"{name} must be a Guide(through, angle), got {type(guide).__name__} {guide!r:.60}")
-
-
 def _turning_with(link: Link, angle: float):
     """The axis of a link that turns with ``link`` at a fixed ``angle`` to its axis: (θ + angle, θ', θ'')."""
     def axis(motion):
@@ -337,7 +336,7 @@ class RRP(Group, Checked):
     pin: Name
     joint: Name
     length: Length
-    guide: Any
+    guide: GuideSpec
     assembly: Sign = 1
     links: LinkNames = None
 
@@ -346,7 +345,6 @@ class RRP(Group, Checked):
     def __post_init__(self):
         super().__post_init__()
         _two(self.links, self.kind)
-        _guide_check("guide", self.guide)
 
     def needs(self):
         return (self.pin, self.guide.through)
@@ -463,8 +461,8 @@ class PRP(Group, Checked):
     ('slider B', 'block B')
     """
 
-    first: Any
-    second: Any
+    first: GuideSpec
+    second: GuideSpec
     joint: Name
     links: LinkNames = None
 
@@ -473,8 +471,6 @@ class PRP(Group, Checked):
     def __post_init__(self):
         super().__post_init__()
         _two(self.links, self.kind)
-        _guide_check("first", self.first)
-        _guide_check("second", self.second)
 
     def needs(self):
         return (self.first.through, self.second.through)
