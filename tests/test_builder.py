@@ -15,9 +15,11 @@ from strategies import fourbars, revolving_fourbars
 
 import mechlab as ml
 from mechlab.draw import draw
-from mechlab.errors import AssemblyError, JointError, MobilityError, RotationError, StructureError
+from mechlab.errors import (AssemblyError, JointError, MobilityError, RotationError, SingularityError,
+                            StructureError)
 from mechlab.kinetostatics.model import Force, Torque, model_for
 from mechlab.kinetostatics.solve import solve
+from mechlab.design import criteria
 from mechlab.mechanisms.linkage import built, groups
 
 DEG = np.pi / 180
@@ -246,8 +248,9 @@ def test_mobility_other_than_one_is_named():
 
 
 def test_a_group_that_cannot_close_is_named_with_the_crank_angle():
-    with pytest.raises(AssemblyError, match=r"the RRR group \(AB, EB\) cannot close at φ = 0.00°: \|AE\| = 3 lies "
-                                            r"outside \(0, 2\)"):
+    with pytest.raises(AssemblyError, match=r"the RRR group \(AB, EB\) cannot close at φ = 0.00°: \|AE\| = 3 must lie "
+                                            r"strictly between the difference and the sum of the lengths 1 and 1, "
+                                            r"\(0, 2\)"):
         base().rrr("A", "E", "B", 1.0, 1.0)
     rocking = base().rrr("A", "E", "B", 2.0, 1.5)   # |AE|² = 17 - 8 cos φ < 3.5²: cos φ > 0.59375, a rocking crank
     assert not rocking.can_turn
@@ -259,6 +262,17 @@ def test_a_group_that_cannot_close_is_named_with_the_crank_angle():
     with pytest.raises(AssemblyError, match=r"the RRP group \(CD, slider D\) cannot close at φ = 90.00°: the pin C "
                                             r"is 1 from the guide, not less than the rod's length 0.5"):
         base().point("C", "crank", (1, 0)).rrp("C", "D", 0.5, ("E", 0.0)).motion(np.pi / 2)
+
+
+def test_a_dead_point_is_named():
+    # |AE| = 5 = 3 + 2 at φ = 180°: the dyad lies flat there, its analogs unbounded; the crank reaches up to it
+    flat = base().rrr("A", "E", "B", 3.0, 2.0)
+    (start, end), = flat.crank_ranges()
+    assert abs(end - start - 2 * np.pi) < 1e-4 and not flat.can_turn   # all but a sliver about 180°
+    with pytest.raises(SingularityError, match=r"dead point of the RRR group \(AB, EB\) at φ = 180.00°: \|AE\| = 5 "
+                                               r"must lie strictly .*; the analogs are unbounded there"):
+        flat.motion(np.pi)
+    assert np.all(np.isfinite(flat.motion(flat.cycle(9)).ddpsi))
 
 
 def test_bad_pieces_are_refused_by_name():
@@ -330,6 +344,6 @@ def test_torque_on_a_built_six_bar_is_its_virtual_work():
 
 
 def test_examples_in_the_docstrings_run():
-    for module in (built, groups):
+    for module in (built, groups, criteria):
         result = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
         assert result.attempted > 0 and result.failed == 0, module.__name__

@@ -46,12 +46,16 @@ class State:
         p = self.points[joint]
         return as_complex(p.p), as_complex(p.d), as_complex(p.dd)
 
-    def closes(self, good: np.ndarray, group, why) -> None:
-        """Record where ``group`` closes; strict: raise AssemblyError at the first crank angle where it does not,
-        ``why(i)`` naming the violated condition there."""
+    def closes(self, good: np.ndarray, group, why, flat=None) -> None:
+        """Record where ``group`` closes; strict: raise at the first crank angle where it does not, ``why(i)``
+        naming the violated condition there: SingularityError where ``flat`` (the group just reaches, at a dead
+        point), AssemblyError otherwise."""
         good = np.broadcast_to(good, (self.n,)) & self.ok
         if self.strict and not good.all():
             i = int(np.argmin(good))
+            at = f"{group.describe()} at φ = {np.degrees(self.phi[i]):.2f}°: {why(i)}"
+            if flat is not None and np.broadcast_to(flat, (self.n,))[i]:
+                raise SingularityError(f"dead point of {at}; the analogs are unbounded there")
             raise AssemblyError(f"{group.describe()} cannot close at φ = {np.degrees(self.phi[i]):.2f}°: {why(i)}")
         self.ok = good
 
@@ -286,9 +290,10 @@ class RRR(Group, Checked):
         d2 = _abs2(v)
         tol = DEAD_POINT_TOL * (l1 + l2)
         lo, hi = abs(l1 - l2), l1 + l2
+        flat = ((d2 <= (hi + tol) ** 2) & (d2 >= (hi - tol) ** 2)) | (d2 <= (lo + tol) ** 2) & (d2 >= (lo - tol) ** 2)
         state.closes((d2 > (lo + tol) ** 2) & (d2 < (hi - tol) ** 2), self, lambda i: (
-            f"|{self.first}{self.second}| = {np.sqrt(d2[i]):.6g} lies outside ({lo:.6g}, {hi:.6g}), between the "
-            f"difference and the sum of the lengths {l1:g} and {l2:g}"))
+            f"|{self.first}{self.second}| = {np.sqrt(d2[i]):.6g} must lie strictly between the difference and the "
+            f"sum of the lengths {l1:g} and {l2:g}, ({lo:.6g}, {hi:.6g})"), flat)
         with np.errstate(invalid="ignore", divide="ignore"):
             d = np.sqrt(d2)
             a = (d2 + l1 * l1 - l2 * l2) / (2 * d)
@@ -376,7 +381,8 @@ class RRP(Group, Checked):
         off = _im_conj(u, w)
         disc = r * r - off * off
         state.closes(disc > DEAD_POINT_TOL * r * r, self, lambda i: (
-            f"the pin {self.pin} is {abs(off[i]):.6g} from the guide, not less than the rod's length {r:g}"))
+            f"the pin {self.pin} is {abs(off[i]):.6g} from the guide, not less than the rod's length {r:g}"),
+            np.abs(disc) <= DEAD_POINT_TOL * r * r)
         with np.errstate(invalid="ignore"):
             t = _re_conj(w, u) + self.assembly * np.sqrt(disc)
         _place_inner(self, state, carrier, Q[0] + t * u, (P,), ((Q, th),))
