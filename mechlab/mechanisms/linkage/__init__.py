@@ -4,4 +4,4 @@ groups RRR, RRP, RPR, PRP with their solvers, guides and points fixed on links."
 from .built import Linkage
 from .groups import PRP, RPR, RRP, RRR, Crank, Guide, Point
 
-__all__ = ["Linkage", "Crank", "RRR", "RRP", "RPR", "PRP", "Guide", "Point"]
+__all__ = ["PRP", "RPR", "RRP", "RRR", "Crank", "Guide", "Linkage", "Point"]

@@ -326,7 +326,8 @@ class Linkage(Mechanism):
                     raise JointError(f"{_what(g)} slides on a guide fixed on the link {guide.on!r}, which is not "
                                      f"defined before it; links so far: {', '.join(sorted(links))}")
             if isinstance(g, Crank) and carrier[g.pivot] != FRAME:
-                raise JointError(f"the crank {g.name} must turn about a frame point; {g.pivot} is on {carrier[g.pivot]}")
+                raise JointError(f"the crank {g.name} must turn about a frame point; {g.pivot} is on "
+                                 f"{carrier[g.pivot]}")
             names = () if isinstance(g, Point) else g.link_names()
             for name in names:
                 if name in links:
