@@ -4,7 +4,8 @@ widget update (compute + redraw with Agg).
 Run with `make bench` (it installs pylinkage and numba into the venv for this script
 only; they are not part of environment.txt). Goals (benchmarks/README.md):
 ≥ 200× faster than pylinkage's Linkage.step() and ≥ 3× faster than its numba
-step_fast() at 360,000 crank positions; one widget update ≤ 16 ms.
+step_fast() at 360,000 crank positions; one widget update ≤ 16 ms. The same four-bar built from its
+structure (ml.Linkage: a crank and an RRR dyad) is timed beside the closed form, with the ratio.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ import matplotlib
 matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 
-from mechlab import FourBar
+from mechlab import Crank, FourBar, Linkage
 from mechlab import geometry
 
 CRANK, COUPLER, ROCKER, GROUND = 1.0, 3.0, 3.0, 4.0
@@ -63,6 +64,7 @@ def pylinkage_fourbar(n):
 
 def main():
     fb = FourBar(CRANK, COUPLER, ROCKER, GROUND)
+    built = Linkage({"O": (0.0, 0.0), "E": (GROUND, 0.0)}, Crank("O", "A", CRANK)).rrr("A", "E", "B", COUPLER, ROCKER)
     rows = []
     try:
         import pylinkage  # noqa: F401
@@ -81,7 +83,10 @@ def main():
             m = fb.motion(phi)
             return [(m.points[k].d, m.points[k].dd) for k in "AB"]
         t_all, _ = best_of(with_point_analogs)
-        row = {"n": n, "mechlab": t_ml, "one_thread": t_one, "with_point_analogs": t_all}
+        t_built, mo_built = best_of(lambda: built.motion(phi))
+        err_built = max(np.abs(mo_built.psi - mo.psi).max(), np.abs(mo_built.ddpsi - mo.ddpsi).max())
+        row = {"n": n, "mechlab": t_ml, "one_thread": t_one, "with_point_analogs": t_all, "built": t_built,
+               "err_built": err_built}
         if have_pylinkage:
             link, crank, B = pylinkage_fourbar(n)
             link.compile()
@@ -103,9 +108,11 @@ def main():
     print(f"mechlab with {geometry.THREADS} thread(s); [one thread; with A', A'', B', B'' read as well]")
     for r in rows:
         line = (f"n = {r['n']:>7,d}: mechlab {1e3 * r['mechlab']:6.2f} ms [{1e3 * r['one_thread']:6.2f}; "
-                f"{1e3 * r['with_point_analogs']:6.2f}]")
+                f"{1e3 * r['with_point_analogs']:6.2f}] | built from its structure {1e3 * r['built']:6.2f} ms "
+                f"({r['built'] / r['mechlab']:.1f}× the closed form; max |Δψ|, |Δψ''| {r['err_built']:.1e})")
         if "step" in r:
-            line += (f" | pylinkage step() {1e3 * r['step']:9.1f} ms ({r['step'] / r['mechlab']:6.0f}×)"
+            line += (f" | pylinkage step() {1e3 * r['step']:9.1f} ms ({r['step'] / r['mechlab']:6.0f}×; "
+                     f"built: {r['step'] / r['built']:6.0f}×)"
                      f" | step_fast() {1e3 * r['step_fast']:7.2f} ms ({r['step_fast'] / r['mechlab']:5.1f}×)"
                      f" | max |ΔB| {max(r['err_step'], r['err_fast']):.1e}")
         print(line)

@@ -29,6 +29,7 @@ from .mechanisms import (Antiparallelogram, CamUndercutError, CircleSlot, Curved
                          SineMechanism, SixBarIV, SliderCrank, SlottedLink, SphericalGeneva, TranslatingCurvedSlot,
                          OscillatingRollerCam, TranslatingRollerCam)
 from .mechanisms.geneva import OffsetError, SlotCountError
+from .mechanisms.linkage import PRP, RPR, RRP, RRR, Crank, Guide, Linkage, Point
 from .mechanisms.lambda_mechanism import classic_lambda
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
 from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
@@ -57,6 +58,7 @@ __all__ = [
     "CurvedSlotLink", "TranslatingCurvedSlot", "CircleSlot", "ParametricSlot", "SampledSlot", "SixBarIV",
     "EllipticTrammel", "Antiparallelogram", "LambdaMechanism",
     "ExternalGeneva", "InternalGeneva", "SphericalGeneva",
+    "Linkage", "Crank", "RRR", "RRP", "RPR", "PRP", "Guide", "Point",
     "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
     # textbook helpers
     "nearest_assembly", "transmission_extremes", "TransmissionExtremes", "zero_acceleration", "crank_ranges_degrees",

@@ -43,3 +43,89 @@ class NoDesignError(SynthesisError):
 class InfeasibleDesignError(SynthesisError):
     """A six-bar requested by K, β_m (or a pivot position) cannot be built."""
 
+
+class StructureError(MechanismError):
+    """A mechanism's links, pairs and groups do not make a well-formed structure (statically solvable groups,
+    joints defined once, one degree of freedom)."""
+
+
+class JointError(StructureError):
+    """A joint is defined twice, or a group attaches to a joint (or a link) not defined before it."""
+
+
+class MobilityError(StructureError):
+    """The structure's mobility W = 3n - 2p₅ - p₄ is not 1: it is not driven by exactly one crank."""
+
+
+# -- raised by design.spec
+class SpecificationError(DimensionError):
+    """A specification that no mechanism can be asked for (its message names the field)."""
+
+
+# -- raised by kinetostatics.model
+class MassError(DimensionError):
+    """A mass or moment of inertia is negative or not finite."""
+
+
+class FrictionError(DimensionError):
+    """A friction coefficient or journal radius is out of range."""
+
+
+class LoadError(DimensionError):
+    """A load's value has the wrong shape or is not finite."""
+
+
+class SelfLockingError(MechanismError):
+    """Friction admits no consistent solution (or makes a group singular): the mechanism locks."""
+
+
+# -- raised by kinetostatics.drive
+class DriveError(DimensionError):
+    """Inadmissible drive data: efficiency outside (0, 1], overload factor < 1, torque samples
+    that are not finite or do not match the crank angles, ω1 = 0."""
+
+
+# -- raised by mechanisms.spherical_geneva
+class SpatialMechanismError(MechanismError):
+    """A planar method (instantaneous centres, planar kinetostatics) asked of a spatial mechanism."""
+
+
+# -- raised by mechanisms.geneva
+class SlotCountError(DimensionError):
+    """The number of slots z is not an integer ≥ 3."""
+
+
+class OffsetError(DimensionError):
+    """The spherical Geneva's offset e does not satisfy 0 ≤ e < R."""
+
+
+# -- raised by synthesis.slot_export
+class SlotUndercutError(MechanismError):
+    """The roller is too large for the slot's curvature (a flank would fold over)."""
+
+
+# -- raised by synthesis.dwell_slot
+class DwellError(MechanismError):
+    """A dwell design that cannot be built."""
+
+
+class DwellIntervalError(DwellError, DimensionError):
+    """The dwell interval [φ1, φ2] is empty, reversed, or not strictly inside (0, π)."""
+
+
+class DwellRatioError(DwellError, DimensionError):
+    """λ = l_OA / l_OB is not a positive number different from 1."""
+
+
+# -- raised by analysis.centres.homogeneous
+class CentreAtInfinity(SingularityError):
+    """A finite position was asked of an instantaneous centre that lies at infinity."""
+
+
+class IndeterminateCentre(SingularityError):
+    """Kennedy's construction is undefined: its two lines (or two points) coincide."""
+
+
+# -- raised by design.families
+class Unsuitable(MechanismError):
+    """The family cannot meet the specification; the message says why, with the numbers."""

@@ -56,6 +56,36 @@ class Structure(Checked):
         return f"{self.parts} parts, {self.lower_pairs} lower{higher} pairs"
 
 
+def counted(mechanism, *, rollers: int = 0, locks: int = 0) -> Structure:
+    """The parts and pairs of a design, counted from ``mechanism.structure()``.
+
+    The kinematic structure leaves out what does not change the motion: a roller (a part on its own
+    pin, replaced by a higher pair at its centre) and a Geneva drive's locking arcs (a second, passive
+    higher pair). Each of ``rollers`` adds a part and a lower pair; each of ``locks`` a higher pair.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A mechanism with a planar ``structure()``.
+    rollers, locks : int
+        Rollers and locking pairs the structure leaves out.
+
+    Returns
+    -------
+    Structure
+        Moving parts, lower pairs (revolute, prismatic) and higher pairs.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> str(counted(ml.FourBar(1, 3, 3, 4)))
+    '3 parts, 4 lower pairs'
+    """
+    st = mechanism.structure()
+    higher = sum(p.kind == "higher" for p in st.pairs)
+    return Structure(len(st.links) + rollers, len(st.pairs) - higher + rollers, higher + locks)
+
+
 @dataclass(frozen=True)
 class Criteria:
     """One design judged on the criteria every family shares (see the module's docstring).

@@ -12,7 +12,7 @@ from typing import Callable
 import numpy as np
 from scipy.optimize import brentq
 
-from ..errors import MechanismError
+from ..errors import MechanismError, Unsuitable
 from ..mechanisms import ExternalGeneva, InternalGeneva, SphericalGeneva
 from ..mechanisms.cam import OscillatingRollerCam, TranslatingRollerCam
 from ..synthesis.cam_design import CamProgramme
@@ -21,15 +21,11 @@ from ..synthesis.lambda_guiding import circle_guiding, straight_guiding
 from ..synthesis.lambda_sixbars import mchv1, mchv3_half_turn
 from ..synthesis.lambda_sliders import mchv2, mchv5
 from ..synthesis.slot_export import write_cam_csv, write_cam_dxf, write_csv, write_dxf
-from .criteria import SAMPLES, Structure
+from .criteria import SAMPLES, Structure, counted
 from .spec import Specification
 
 # lambda mechanisms tried, (δ, a): inside the existence region of Kinitsky (1994), Fig. 2a
 LAMBDA_FRAMES = ((np.radians(150.0), 0.9), (np.radians(180.0), 0.8), (np.radians(120.0), 0.75))
-
-
-class Unsuitable(Exception):
-    """The family cannot meet the specification; the message says why, with the numbers."""
 
 
 @dataclass(frozen=True)
@@ -73,9 +69,8 @@ def _geneva(cls, family: str, spec: Specification) -> Design:
     _dwell_matches(spec, g.dwell_fraction, f"{z} stations")
     wheel = ((g.centre_distance, 0.0), g.outer_radius)
     crank = ((0.0, 0.0), g.crank_radius + g.roller_radius)
-    # parts: crank with pin and locking disc, wheel; pairs: two pivots, pin in slot, locking arcs
-    return Design(family, g, spec.crank_radius / g.crank_radius,
-                  Structure(parts=2, lower_pairs=2, higher_pairs=2), circles=(wheel, crank),
+    # parts: crank with pin and locking disc, wheel; pairs: two pivots, pin in slot, and the locking arcs
+    return Design(family, g, spec.crank_radius / g.crank_radius, counted(g, locks=1), circles=(wheel, crank),
                   pressure_angle=0.0, note="radial slot: the pin pushes along the wheel's tangent")
 
 
@@ -110,6 +105,8 @@ def spherical_geneva(spec: Specification) -> Design:
     e = brentq(lambda e: SphericalGeneva(R, e, z).dwell_fraction - np.clip(want, d_min, d_max), 0.0, e_max,
                xtol=1e-9) if d_min < want < d_max else (0.0 if want <= d_min else e_max)
     g = SphericalGeneva(R, e, z)
+    # spatial: no planar structure to count from (crank with pin and locking disc, wheel; two pivots, pin in
+    # slot, locking arcs)
     return Design("spherical Geneva", g, 1.0, Structure(parts=2, lower_pairs=2, higher_pairs=2),
                   circles=(((0.0, 0.0), R),), note=f"offset e = {e:.4g} mm sets the dwell (sphere R = {R:g} mm)")
 
@@ -153,7 +150,7 @@ def curved_slot(spec: Specification) -> Design:
         write_csv(mm, str(path).rsplit(".", 1)[0] + ".csv")
         return path
 
-    return Design("curved slot", m, scale, Structure(parts=3, lower_pairs=3, higher_pairs=1),
+    return Design("curved slot", m, scale, counted(m, rollers=1),
                   pressure_angle=theta, export=export, note=f"λ = {lam:.4f}, dwell from φ = {np.degrees(phi1):.1f}°")
 
 
@@ -178,8 +175,7 @@ def mchv1_rocker(spec: Specification) -> Design:
         spec, lambda d, a: mchv1(circle_guiding(d, a, spec.dwell_angle), 1.0, spec.amplitude, mu_min=mu_min),
         "lambda six-bar, type 1")
     six = min(designs, key=lambda m: m.r)  # the smallest crank for a given coupler: the slowest coupler
-    return Design("lambda six-bar, type 1 (rocker dwell)", six, spec.crank_radius / six.r,
-                  Structure(parts=5, lower_pairs=7, higher_pairs=0))
+    return Design("lambda six-bar, type 1 (rocker dwell)", six, spec.crank_radius / six.r, counted(six))
 
 
 def mchv3_half(spec: Specification) -> Design:
@@ -190,14 +186,14 @@ def mchv3_half(spec: Specification) -> Design:
         raise Unsuitable(f"indexes 180° per crank turn (2 stations); {spec.stations} stations were asked")
     six = _lambda_designs(spec, lambda d, a: mchv3_half_turn(straight_guiding(d, a, spec.dwell_angle)),
                           "straight-line lambda mechanism")[0]
-    return Design("lambda six-bar, type 3 (half-turn index)", six, spec.crank_radius / six.r,
-                  Structure(parts=5, lower_pairs=7, higher_pairs=0), phase=1e-3)
+    return Design("lambda six-bar, type 3 (half-turn index)", six, spec.crank_radius / six.r, counted(six),
+                  phase=1e-3)
 
 
 def _stroke_design(spec, six, family):
     phi = np.linspace(0.0, 2 * np.pi, 721)
     stroke = float(np.ptp(six.motion(phi).s))
-    return Design(family, six, spec.amplitude / stroke, Structure(parts=5, lower_pairs=7, higher_pairs=0))
+    return Design(family, six, spec.amplitude / stroke, counted(six))
 
 
 def mchv2_slider(spec: Specification) -> Design:
@@ -266,7 +262,7 @@ def disc_cam(spec: Specification) -> Design:
             return path
 
         follower = "translating" if spec.motion == "stroke" else "oscillating"
-        return Design("disc cam", cam, 1.0, Structure(parts=3, lower_pairs=3, higher_pairs=1),
+        return Design("disc cam", cam, 1.0, counted(cam, rollers=1),
                       circles=(((0.0, 0.0), float(np.max(np.hypot(*cam.profile().surface.T)))),), export=export,
                       note=f"{follower} roller follower, base radius {rb:.4g} mm, roller {roller * rb:.3g} mm, "
                            f"{CAM_LAW} law")

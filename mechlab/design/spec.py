@@ -7,15 +7,11 @@ from typing import Annotated
 
 import numpy as np
 
-from ..errors import DimensionError
+from ..errors import DimensionError, SpecificationError
 from ..validate import Checked, Spec, choice, count, mechanism
 
 MOTIONS = ("index", "swing", "stroke")
 IMPACTS = ("none", "soft", "hard")  # in order of severity
-
-
-class SpecificationError(DimensionError):
-    """A specification that no mechanism can be asked for (its message names the field)."""
 
 
 def _within(lo: float, hi: float, *, open_lo: bool = False, optional: bool = False) -> Spec:

@@ -8,18 +8,13 @@ from typing import Annotated, Sequence
 
 import numpy as np
 
-from ..errors import DimensionError, MechanismError
+from ..errors import DimensionError, DriveError, MechanismError
 from ..validate import MAX_SAMPLES, Real, Spec, number, validated
 
 __all__ = ["Drive", "DriveError", "drive", "motor_torque", "cycle_mean"]
 
 
 # --------------------------------------------------------------------------- drive
-class DriveError(DimensionError):
-    """Inadmissible drive data: efficiency outside (0, 1], overload factor < 1, torque samples
-    that are not finite or do not match the crank angles, ω1 = 0."""
-
-
 Efficiency = Annotated[float, Spec("number", 0.0, 1.0, open_lo=True, error=DriveError, why="the efficiency 0 < η ≤ 1")]
 Sampled = Annotated[np.ndarray, Spec("samples", lo=2, hi=MAX_SAMPLES)]
 

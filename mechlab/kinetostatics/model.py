@@ -20,7 +20,8 @@ from dataclasses import dataclass, replace
 from typing import Annotated, Any, Sequence
 
 import numpy as np
-from ..errors import DimensionError, MechanismError
+from ..errors import (DimensionError, FrictionError, LoadError, MassError, MechanismError, SelfLockingError,
+                      StructureError)
 from ..mechanisms.base import FRAME
 from ..validate import (Angle, Checked, Distance, Name, Point, Spec, angle, check, number, or_function)
 
@@ -30,27 +31,6 @@ __all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceMo
 
 
 G = 9.81
-
-
-# --------------------------------------------------------------------------- errors
-class MassError(DimensionError):
-    """A mass or moment of inertia is negative or not finite."""
-
-
-class FrictionError(DimensionError):
-    """A friction coefficient or journal radius is out of range."""
-
-
-class LoadError(DimensionError):
-    """A load's value has the wrong shape or is not finite."""
-
-
-class StructureError(MechanismError):
-    """The force model's links, pairs and groups do not make statically solvable groups."""
-
-
-class SelfLockingError(MechanismError):
-    """Friction admits no consistent solution (or makes a group singular): the mechanism locks."""
 
 
 def _nonneg(name: str, value, exc) -> float:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 from typing import Annotated
 
 import numpy as np
-from ..errors import DimensionError
+from ..errors import DimensionError, OffsetError, SlotCountError
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
 from ..motion import AngularMotion, Quantity, Table, scalar_law
@@ -25,14 +25,6 @@ LENGTH_UNITS = ("mm", "cm", "m", "in")   # the units a design table may name
 
 
 TWO_PI = 2.0 * np.pi
-
-
-class SlotCountError(DimensionError):
-    """The number of slots z is not an integer ≥ 3."""
-
-
-class OffsetError(DimensionError):
-    """The spherical Geneva's offset e does not satisfy 0 ≤ e < R."""
 
 
 # z: a whole number of slots

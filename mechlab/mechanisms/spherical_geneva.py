@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import Annotated
 
 import numpy as np
-from ..errors import DimensionError, MechanismError
+from ..errors import DimensionError, MechanismError, SpatialMechanismError
 from ..geometry import AnglePath, PointPath, as_angles, vector_angle
 from .base import Mechanism
 from .geneva import LENGTH_UNITS
@@ -44,10 +44,6 @@ class SphericalModel:
 
 # the pin's allowance beyond the slot wall, mm (seed formula (9))
 Allowance = Annotated[float, number(5.0, 8.0, why="within [5, 8] mm, seed formula (9)")]
-
-
-class SpatialMechanismError(MechanismError):
-    """A planar method (instantaneous centres, planar kinetostatics) asked of a spatial mechanism."""
 
 
 @dataclass(frozen=True)

@@ -24,7 +24,7 @@ from typing import Annotated, Callable
 
 import numpy as np
 from numpy.polynomial import Polynomial
-from ..errors import DimensionError, MechanismError
+from ..errors import DimensionError, DwellError, DwellIntervalError, DwellRatioError, MechanismError
 from ..geometry import as_angles, wrap
 from ..mechanisms.base import Mechanism, Part, Sketch
 from ..motion import Table, scalar_law
@@ -40,18 +40,6 @@ LAMBDA_TOL = 1e-4
 LAMBDA_RANGE = (1e-6, 1e6)
 # The shortest transition (radians) from φ = 0 to φ1 and from φ2 to π (best_placement keeps 1e-3).
 MIN_TRANSITION = 5e-4
-
-
-class DwellError(MechanismError):
-    """A dwell design that cannot be built."""
-
-
-class DwellIntervalError(DwellError, DimensionError):
-    """The dwell interval [φ1, φ2] is empty, reversed, or not strictly inside (0, π)."""
-
-
-class DwellRatioError(DwellError, DimensionError):
-    """λ = l_OA / l_OB is not a positive number different from 1."""
 
 
 # λ = l_OA / l_OB

@@ -30,15 +30,11 @@ from typing import Annotated, Any
 
 import numpy as np
 
-from ..errors import DimensionError, MechanismError
+from ..errors import DimensionError, MechanismError, SlotUndercutError
 from ..mechanisms.cam import OscillatingRollerCam, TranslatingRollerCam
 from ..validate import FilePath, Spec, count, length, validated
 from ..validate import mechanism as mechanism_of
 from .dwell_slot import DwellSlotMechanism
-
-
-class SlotUndercutError(MechanismError):
-    """The roller is too large for the slot's curvature (a flank would fold over)."""
 
 
 @dataclass(frozen=True)

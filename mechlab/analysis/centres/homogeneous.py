@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...errors import DimensionError, SingularityError
+from ...errors import CentreAtInfinity, DimensionError, IndeterminateCentre, SingularityError
 from ...validate import Checked, Name, Spec, check
 
 ROWS = Spec("points", lo=0, width=3)  # homogeneous rows (x, y, w)
@@ -28,14 +28,6 @@ ROWS = Spec("points", lo=0, width=3)  # homogeneous rows (x, y, w)
 INFINITY_TOL = 1e-12
 # Two lines whose meet is smaller than this (relative) in every component coincide.
 COINCIDENT_TOL = 1e-10
-
-
-class CentreAtInfinity(SingularityError):
-    """A finite position was asked of an instantaneous centre that lies at infinity."""
-
-
-class IndeterminateCentre(SingularityError):
-    """Kennedy's construction is undefined: its two lines (or two points) coincide."""
 
 
 def _fmt_phi(phi, i) -> str:

@@ -1,0 +1,7 @@
+"""Build your own linkage: a crank and Assur groups attached to named joints (:class:`Linkage`), the
+groups RRR, RRP, RPR, PRP with their solvers, guides and points fixed on links."""
+
+from .built import Linkage
+from .groups import PRP, RPR, RRP, RRR, Crank, Guide, Point
+
+__all__ = ["PRP", "RPR", "RRP", "RRR", "Crank", "Guide", "Linkage", "Point"]

@@ -1,0 +1,655 @@
+"""A planar linkage built from its structure: frame points, a driving crank and Assur groups attached to
+named joints (:class:`Linkage`); its motion, structure, mobility, classification and drawing all follow.
+
+Structural formula (Artobolevsky, 1965): the mechanism of class I (the crank on the frame) with groups
+attached one by one; each dyad has class II and order 2, and the mechanism's class is the highest
+group class. Mobility by Chebyshev-Grübler, W = 3n - 2p₅ - p₄.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from functools import cached_property
+from typing import Annotated, Any
+
+import numpy as np
+
+from ...errors import AssemblyError, DimensionError, JointError, MobilityError, SingularityError
+from ...geometry import AnglePath, as_angles
+from ...motion import AngularMotion, LinearMotion, Motion
+from ...validate import Spec, check, mechanism
+from ..base import (FRAME, FULL_TURN, TWO_PI, Mechanism, Part, Sketch, Structure, block_outline,
+                    branch_references, fmt_ranges, lift_on_ranges)
+from .groups import PRP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
+
+# Crank angles sampled to find where a linkage assembles; each boundary is then bisected to 1e-13 rad.
+SAMPLES = 3600
+_POINT = Spec("point")
+
+
+def _frame(value) -> tuple:
+    """The frame points as ((name, (x, y)), …) from a dict or such pairs; DimensionError naming a bad one."""
+    pairs = value.items() if isinstance(value, dict) else value
+    if not isinstance(pairs, tuple | list | type({}.items())) or \
+            not all(isinstance(p, tuple | list) and len(p) == 2 for p in pairs):
+        raise DimensionError(f"frame must be a dict of fixed points {{name: (x, y)}}, got {value!r:.60}")
+    return tuple((check("frame point name", k, Spec("text")), check(f"frame point {k}", xy, _POINT))
+                 for k, xy in pairs)
+
+
+def _guide(value, name: str = "guide") -> Guide:
+    """A Guide from a Guide, a joint name (angle 0), (joint, angle) or (joint, angle, link)."""
+    if isinstance(value, Guide):
+        return value
+    if isinstance(value, str):
+        return Guide(value)
+    if isinstance(value, tuple | list) and len(value) in (2, 3):
+        return Guide(*value)
+    raise TypeError(f"{name} must be a Guide, a joint name, (joint, angle) or (joint, angle, link), got {value!r:.60}")
+
+
+@dataclass(frozen=True)
+class Linkage(Mechanism):
+    """A linkage built from its structure: the ``frame`` points {name: (x, y)}, the ``driver``
+    (a :class:`Crank` on a frame point) and the ``groups`` (:class:`RRR`, :class:`RRP`, :class:`RPR`,
+    :class:`PRP`, and :class:`Point` s fixed on links), each attached to joints defined before it.
+    ``output_link`` names the link whose law the motion reports (default: the last group's last link):
+    its angle ψ, or its displacement s along a frame guide.
+
+    Build it in steps: every method returns a new linkage with one more group.
+
+    Parameters
+    ----------
+    frame : dict
+        The fixed points (pivots and guides' points), name → (x, y).
+    driver : Crank
+        The driving crank; φ is its angle from the x axis.
+    groups : tuple
+        The groups and points in the order they attach.
+    output_link : str, optional
+        The output link.
+
+    Raises
+    ------
+    JointError
+        A joint defined twice, a group attached to a joint or a link not defined before it.
+    MobilityError
+        The mobility W = 3n - 2p₅ - p₄ is not 1 (e.g. a second crank).
+    AssemblyError
+        A group that closes at no crank angle (named, with the crank angle and the numbers).
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> fb = (ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0))
+    ...       .rrr("A", "E", "B", 3.0, 3.0, links=("coupler", "rocker")))
+    >>> round(float(fb.motion(0.5).psi), 6) == round(float(ml.FourBar(1, 3, 3, 4).motion(0.5).psi), 6)
+    True
+    >>> fb.mobility(), fb.formula()
+    (1, 'I(crank) → II₂(coupler, rocker)')
+    """
+
+    frame: Any
+    driver: Annotated[Any, mechanism(Crank)]
+    groups: Annotated[tuple, Spec("items", expected=(Group, Point))] = ()
+    output_link: Annotated[str | None, Spec("text", optional=True)] = None
+
+    def __post_init__(self):
+        super().__post_init__()
+        object.__setattr__(self, "frame", _frame(self.frame))
+        self._carriers  # noqa: B018 - every joint defined once, before it is used (JointError)
+        st = self.structure()
+        w = st.mobility()
+        if w != 1:
+            cranks = [g.name for g in self._elements if isinstance(g, Crank)]
+            raise MobilityError(f"mobility W = 3n - 2p₅ - p₄ = 3·{len(st.links)} - 2·{len(st.pairs)} = {w} ≠ 1: "
+                                f"{len(cranks)} cranks ({', '.join(cranks)}) drive it; a linkage has one driver "
+                                f"and Assur groups (W = 0 each)")
+        if self.output_link is not None and self.output_link not in {k.name for k in st.links}:
+            raise JointError(f"output_link = {self.output_link!r} names no link; links: "
+                             f"{', '.join(k.name for k in st.links)}")
+        if not self.crank_ranges():
+            self._place(np.array([0.0]), strict=True)   # raises, naming the group that fails at φ = 0
+            raise AssemblyError("the linkage closes at no crank angle")   # pragma: no cover - closed at 0 only
+
+    # -- building -----------------------------------------------------------------------------------------
+    def then(self, group) -> Linkage:
+        """This linkage with ``group`` (an RRR, RRP, RPR, PRP or Point) attached.
+
+        Parameters
+        ----------
+        group : RRR, RRP, RPR, PRP or Point
+            The next group, attached to joints already defined.
+
+        Returns
+        -------
+        Linkage
+            A new linkage; its output link becomes the group's last link unless one was named.
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0)).then(ml.RRR("A", "E", "B", 3, 3))
+        >>> [link.name for link in lk.structure().links]
+        ['crank', 'AB', 'EB']
+        """
+        return replace(self, groups=(*self.groups, group))
+
+    def rrr(self, first: str, second: str, joint: str, first_length: float, second_length: float,
+            assembly=1, links=None) -> Linkage:
+        """Attach an :class:`RRR` dyad: two links pinned at the new ``joint`` and at ``first``, ``second``.
+
+        Parameters
+        ----------
+        first, second : str
+            The outer joints.
+        joint : str
+            The new inner joint.
+        first_length, second_length : float
+            |joint - first| and |joint - second|.
+        assembly : +1 or -1
+            The joint on the left (+1) or right of the line first → second.
+        links : (str, str), optional
+            The two links' names.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0)).rrr("A", "E", "B", 3, 3)
+        >>> lk.output
+        'angle'
+        """
+        return self.then(RRR(first, second, joint, first_length, second_length, assembly, links))
+
+    def rrp(self, pin: str, joint: str, length: float, guide, assembly=1, links=None) -> Linkage:
+        """Attach an :class:`RRP` dyad: a rod ``pin``-``joint`` and a slider at ``joint`` on ``guide``.
+
+        Parameters
+        ----------
+        pin : str
+            The rod's outer joint.
+        joint : str
+            The new joint, the slider's pin.
+        length : float
+            The rod's length.
+        guide : Guide, str, (str, float) or (str, float, str)
+            The guide: a :class:`Guide`, a joint on the guide's link (angle 0 to its axis), (joint, angle) or
+            (joint, angle, link) for a guide on another link through that joint.
+        assembly : +1 or -1
+            The slider ahead of (+1) or behind the pin's foot along the guide.
+        links : (str, str), optional
+            The rod's and the slider's names.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> sc = ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).rrp("A", "B", 3.0, "O")
+        >>> round(float(sc.motion(0.0).s), 12)
+        4.0
+        """
+        return self.then(RRP(pin, joint, length, _guide(guide), assembly, links))
+
+    def rpr(self, pin: str, pivot: str, length: float = 0.0, links=None) -> Linkage:
+        """Attach an :class:`RPR` dyad: a block at ``pin`` sliding in the slot of a link pivoted at ``pivot``.
+
+        Parameters
+        ----------
+        pin : str
+            The joint carrying the block.
+        pivot : str
+            The slotted link's pivot (the slot passes through it).
+        length : float
+            The slotted link's length (for its drawing and its default mass properties).
+        links : (str, str), optional
+            The block's and the slotted link's names.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> sl = ml.Linkage({"O": (0, 0), "B": (-2, 0)}, ml.Crank("O", "A", 1.0)).rpr("A", "B", 3.5)
+        >>> round(float(sl.motion(np.pi / 2).psi), 12) == round(float(np.arctan2(1, 2)), 12)
+        True
+        """
+        return self.then(RPR(pin, pivot, length, links))
+
+    def prp(self, first, second, joint: str, links=None) -> Linkage:
+        """Attach a :class:`PRP` dyad: two blocks pinned at ``joint``, sliding on the guides ``first`` and
+        ``second``.
+
+        Parameters
+        ----------
+        first, second : Guide, str or (str, float)
+            The two guides (see :meth:`rrp`).
+        joint : str
+            The new joint where the guides cross.
+        links : (str, str), optional
+            The two blocks' names.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> tangent = (ml.Linkage({"O": (0, 0), "P": (0, -2), "G": (0, 1)}, ml.Crank("O", "A", 1.0))
+        ...            .rpr("A", "P", 4.0).prp(("G", 0.0), ("P", 0.0, "PA"), "B"))
+        >>> round(float(tangent.motion(0.0).points["B"].p[0]), 12)
+        1.5
+        """
+        return self.then(PRP(_guide(first, "first"), _guide(second, "second"), joint, links))
+
+    def point(self, name: str, on: str, at=(0.0, 0.0)) -> Linkage:
+        """Fix the point ``name`` on the link ``on`` at (ξ, η) in the link's coordinates (a coupler point).
+
+        Parameters
+        ----------
+        name : str
+            The new point.
+        on : str
+            The link it is fixed on.
+        at : (float, float)
+            ξ along the link's axis from its origin joint, η to the axis' left.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).point("M", "crank", (0.5, 0.0))
+        >>> lk.motion(0.0).points["M"].p.tolist()
+        [0.5, 0.0]
+        """
+        return self.then(Point(name, on, at))
+
+    def with_output(self, link: str) -> Linkage:
+        """The same linkage reporting ``link``'s law.
+
+        Parameters
+        ----------
+        link : str
+            A link's name.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0)).rrr("A", "E", "B", 3, 3)
+        >>> lk.with_output("AB").structure().output
+        'AB'
+        """
+        return replace(self, output_link=link)
+
+    # -- the structure ------------------------------------------------------------------------------------
+    @property
+    def _elements(self) -> tuple:
+        return (self.driver, *self.groups)
+
+    @property
+    def _fixed(self) -> dict:
+        return dict(self.frame)
+
+    @cached_property
+    def _carriers(self) -> dict[str, str]:
+        """Each joint's carrier: the link it was made on (the frame for a frame point); JointError for a
+        joint defined twice or used before it is defined, a link named twice or unknown."""
+        carrier = {name: FRAME for name in self._fixed}
+        made_by = {name: "the frame" for name in self._fixed}
+        links = {FRAME}
+        for g in self._elements:
+            for j in g.needs():
+                if j not in carrier:
+                    raise JointError(f"{_what(g)} attaches to the joint {j!r}, which is not defined before it; "
+                                     f"joints so far: {', '.join(carrier)}")
+            if isinstance(g, Point) and g.on not in links:
+                raise JointError(f"the point {g.name} is fixed on the link {g.on!r}, which is not defined before it; "
+                                 f"links so far: {', '.join(sorted(links - {FRAME}))}")
+            for guide in () if isinstance(g, Point) else g.guides():
+                if guide.on is not None and guide.on not in links:
+                    raise JointError(f"{_what(g)} slides on a guide fixed on the link {guide.on!r}, which is not "
+                                     f"defined before it; links so far: {', '.join(sorted(links))}")
+            if isinstance(g, Crank) and carrier[g.pivot] != FRAME:
+                raise JointError(f"the crank {g.name} must turn about a frame point; {g.pivot} is on "
+                                 f"{carrier[g.pivot]}")
+            names = () if isinstance(g, Point) else g.link_names()
+            for name in names:
+                if name in links:
+                    raise JointError(f"{_what(g)} names a link {name!r} that already exists; name its links "
+                                     f"with links=(…, …)")
+            links.update(names)
+            for j in g.makes():
+                if j in carrier:
+                    raise JointError(f"the joint {j!r} is attached twice: {made_by[j]} defines it, and {_what(g)} "
+                                     f"again; give the new joint another name")
+                carrier[j] = g.on if isinstance(g, Point) else names[0]
+                made_by[j] = _what(g)
+        return carrier
+
+    def structure(self) -> Structure:
+        """The links (in the order the groups made them), pairs and Assur groups (output first) of the linkage.
+
+        Returns
+        -------
+        Structure
+            Read by the instantaneous centres, the kinetostatics and the drawing.
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0)).rrr("A", "E", "B", 3, 3)
+        >>> [p.name for p in lk.structure().pairs]
+        ['O', 'A', 'B', 'E']
+        """
+        return self._structure
+
+    @cached_property
+    def _structure(self) -> Structure:
+        carrier = self._carriers.__getitem__
+        links, pairs, groups = {}, [], []
+        for g in self._elements:
+            if isinstance(g, Point):
+                continue
+            new_links, new_pairs = g.structure(carrier, links)
+            links.update((k.name, k) for k in new_links)
+            pairs += new_pairs
+            if not isinstance(g, Crank) or g is not self.driver:
+                groups.append(tuple(k.name for k in new_links))
+        pairs = _unique_names(pairs)
+        last = next(g for g in reversed(self._elements) if not isinstance(g, Point))
+        output = self.output_link or last.link_names()[-1]
+        extent = [abs(c) for _, xy in self.frame for c in xy]
+        extent += [getattr(g, a) for g in self._elements for a in ("radius", "first_length", "second_length",
+                                                                    "length") if hasattr(g, a)]
+        return Structure(tuple(links.values()), tuple(pairs), tuple(reversed(groups)), output,
+                         scale=max(extent) or 1.0)
+
+    def mobility(self) -> int:
+        """W = 3n - 2p₅ - p₄ (Chebyshev-Grübler) of the whole linkage: 1 for a crank and Assur groups.
+
+        Returns
+        -------
+        int
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).mobility()
+        1
+        """
+        return self.structure().mobility()
+
+    def classification(self) -> tuple[tuple[str, int, int, tuple[str, ...]], ...]:
+        """Artobolevsky's classification: (kind, class, order, links) of the driver and of each group in turn.
+
+        Returns
+        -------
+        tuple
+            One (kind, class, order, links) per element; the mechanism's class is the highest class.
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0)).rrr("A", "E", "B", 3, 3)
+        >>> lk.classification()
+        (('crank', 1, 1, ('crank',)), ('RRR', 2, 2, ('AB', 'EB')))
+        """
+        return tuple((g.kind, g.assur_class, g.order, g.link_names()) for g in self._elements
+                     if not isinstance(g, Point))
+
+    @property
+    def assur_class(self) -> int:
+        """The mechanism's class: the highest class of its groups (I for a crank alone, II with dyads)."""
+        return max(c for _, c, _, _ in self.classification())
+
+    def formula(self) -> str:
+        """The structural formula, e.g. ``I(crank) → II₂(AB, EB)``: each group's class (Roman) and order.
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).rrp("A", "B", 3.0, "O").formula()
+        'I(crank) → II₂(AB, slider B)'
+        """
+        roman, sub = {1: "I", 2: "II", 3: "III", 4: "IV"}, str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+        return " → ".join(f"{roman[c]}{'' if c == 1 else str(o).translate(sub)}({', '.join(names)})"
+                          for _, c, o, names in self.classification())
+
+    # -- what the drawing and the forces read ----------------------------------------------------------------
+    @property
+    def links(self) -> tuple[tuple[str, ...], ...]:
+        """The joints of each numbered link (the drawing's bars)."""
+        return tuple(self._joints_of(k.name) for k in self.structure().links if not k.block)
+
+    @property
+    def pivots(self) -> tuple[str, ...]:
+        """The frame points where a link turns on the frame."""
+        return tuple(dict.fromkeys(p.point for p in self.structure().pairs
+                                   if p.kind == "revolute" and FRAME in (p.a, p.b)))
+
+    @property
+    def output(self) -> str:
+        """``"position"`` when the output link slides on a frame guide, else ``"angle"``."""
+        return "position" if self.structure().link(self.structure().output).translates else "angle"
+
+    def _joints_of(self, link: str) -> tuple[str, ...]:
+        st = self.structure()
+        on = [p.point for p in st.pairs if link in (p.a, p.b) and p.kind == "revolute"]
+        on += [j for j, c in self._carriers.items() if c == link]
+        return tuple(dict.fromkeys([st.link(link).origin, *on]))
+
+    # -- motion -----------------------------------------------------------------------------------------------
+    def _place(self, phi: np.ndarray, strict: bool) -> State:
+        state = State(phi, self._fixed, strict)
+        carrier = self._carriers.__getitem__
+        with np.errstate(invalid="ignore", divide="ignore"):   # rows that do not close hold NaN until refused
+            for g in self._elements:
+                g.place(state, carrier)
+        return state
+
+    @cached_property
+    def _ranges(self):
+        phi = np.arange(SAMPLES) * (TWO_PI / SAMPLES)
+        ok = self._place(phi, strict=False).ok
+        if ok.all():
+            return FULL_TURN
+        if not ok.any():
+            return ()
+        # bracket every change between neighbouring samples and bisect them together
+        k = np.flatnonzero(ok != np.roll(ok, -1))
+        lo, hi = phi[k], phi[k] + TWO_PI / SAMPLES
+        inside_lo = ok[k]
+        for _ in range(45):
+            mid = 0.5 * (lo + hi)
+            good = self._place(mid, strict=False).ok
+            same = good == inside_lo
+            lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
+        edges = 0.5 * (lo + hi)
+        # a range starts where the samples enter it (inside_lo False) and ends where they leave it
+        starts, ends = edges[~inside_lo], edges[inside_lo]
+        ranges = []
+        for s in starts:
+            later = ends[ends > s]
+            e = later.min() if len(later) else ends.min() + TWO_PI
+            if e > TWO_PI:   # a range across φ = 0 is shown from a negative angle, as FourBar's
+                s, e = s - TWO_PI, e - TWO_PI
+            ranges.append((float(s), float(e)))
+        return tuple(sorted(ranges))
+
+    def crank_ranges(self):
+        """The open intervals of crank angles where every group closes (found on 3600 samples, each end
+        bisected to 1e-13 rad)."""
+        return self._ranges
+
+    def assembly_failure(self, phi: float) -> str:
+        try:
+            self._place(np.array([phi]), strict=True)
+        except (AssemblyError, SingularityError) as err:
+            return str(err)
+        return "the loop does not close"   # pragma: no cover - only asked where it fails
+
+    @cached_property
+    def _output_reference(self):
+        name = self.structure().output
+        return branch_references(self.crank_ranges(), lambda phi: self._place(phi, strict=False).angles[name].theta)
+
+    def motion(self, phi) -> Motion:
+        """Every joint's path (positions and first and second analogs) and the output law at crank angles φ.
+
+        Parameters
+        ----------
+        phi : float or array
+            Crank angles (radians).
+
+        Returns
+        -------
+        AngularMotion or LinearMotion
+            ψ of the output link (continuous over the crank angles), or s along its frame guide.
+
+        Raises
+        ------
+        AssemblyError
+            Where a group cannot close: the group, the crank angle and the reachable range.
+        SingularityError
+            At a dead point of a group (its analogs unbounded).
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0)).rrr("A", "E", "B", 3, 3)
+        >>> mo = lk.motion(lk.turn(5))
+        >>> mo.points["B"].d.shape
+        (5, 2)
+        """
+        phi = as_angles(phi)
+        try:
+            state = self._place(phi, strict=True)
+        except AssemblyError as err:
+            ranges = self.crank_ranges()
+            raise AssemblyError(f"{err}; the crank reaches only φ ∈ {fmt_ranges(ranges)}"
+                                if ranges != FULL_TURN else str(err)) from None
+        st = self.structure()
+        out = st.link(st.output)
+        group = next(g for g in self._elements if not isinstance(g, Point) and out.name in g.link_names())
+        mu = group.transmission(state) if not isinstance(group, Crank) else np.full(len(phi), np.pi / 2)
+        if out.translates:
+            pair = st.frame_pair(out.name)
+            u = np.array([np.cos(pair.angle), np.sin(pair.angle)])
+            B = state.points[out.origin]
+            s = AnglePath((B.p - state.points[_guide_point(self, out.name)].p) @ u, B.d @ u, B.dd @ u)
+            return LinearMotion(phi, state.points, mu, *s)
+        th = state.angles[out.name]
+        psi = lift_on_ranges(th.theta, phi, self._output_reference) if len(phi) else th.theta
+        return AngularMotion(phi, state.points, mu, psi, th.d, th.dd)
+
+    # -- drawing ----------------------------------------------------------------------------------------------
+    def sketch(self, motion: Motion) -> Sketch:
+        """The kinematic diagram: each link numbered as the instantaneous centres number it (the structure's
+        links without blocks, then the frame): a bar (or a plate) through its joints, a slider with its rail,
+        a slotted link with its slot, blocks outlined.
+
+        Parameters
+        ----------
+        motion : Motion
+            The motion to draw.
+
+        Returns
+        -------
+        Sketch
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0)).rrr("A", "E", "B", 3, 3)
+        >>> [p.number for p in lk.sketch(lk.motion(lk.turn(3))).parts]
+        ['1', '2', '3']
+        """
+        st, pts = self.structure(), motion.points
+        size = 0.08 * st.scale
+        numbered = [k for k in st.links if not k.block]
+        parts = []
+        for number, link in enumerate(numbered, start=1):
+            joints = self._joints_of(link.name)
+            axis = link.angle(motion).theta
+            slots = [p for p in st.pairs if p.kind == "prismatic" and p.a == link.name]
+            if link.translates or (not isinstance(link.axis, tuple) and len(joints) < 2):
+                at = pts[link.origin].p
+                parts.append(Part("extra", lambda i, p=at, a=axis: block_outline(p[i], _dir(a[i]), 2 * size, size),
+                                  str(number)))
+            elif len(joints) >= 2:
+                parts.append(Part("link", joints + joints[:1] if len(joints) > 2 else joints, str(number)))
+            for k, p in enumerate(slots):   # the slot (or guide) on this link along the block's track
+                track = pts[p.point].p
+                o = pts[link.origin].p
+                shown = len(joints) < 2 and k == 0   # a link drawn by its slot alone carries its number there
+                parts.append(Part("slot", lambda i, o=o, t=track, a=axis + p.angle: _along(o[i], t[i], a[i], size),
+                                  str(number) if shown else None))
+        for link in st.links:
+            slide = next((p for p in st.pairs if p.kind == "prismatic" and p.b == link.name), None)
+            if slide is not None and slide.a == FRAME and link.translates:   # the rail under a slider
+                track = pts[slide.point].p
+                u = _dir(slide.angle)
+                along = track @ u
+                foot = track[0] - along[0] * u
+                rail = np.array([foot + (along.min() - 2 * size) * u, foot + (along.max() + 2 * size) * u])
+                parts.append(Part("guide", lambda i, r=rail: r))
+            if link.block:
+                at, axis = pts[link.origin].p, link.angle(motion).theta
+                parts.append(Part("extra", lambda i, p=at, a=axis: block_outline(p[i], _dir(a[i]), 2 * size, size)))
+        return Sketch(tuple(parts), self.pivots, str(len(numbered) + 1))
+
+
+def _dir(angle):
+    return np.array([np.cos(angle), np.sin(angle)])
+
+
+def _along(origin, point, angle, size):
+    """A slot through ``origin`` at ``angle`` reaching past ``point`` by 2·size."""
+    u = _dir(angle)
+    reach = float((point - origin) @ u)
+    ends = sorted((0.0, reach + np.copysign(2 * size, reach)))
+    return np.array([origin + ends[0] * u, origin + ends[1] * u])
+
+
+def _guide_point(linkage: Linkage, link: str) -> str:
+    """The frame point a frame guide of ``link`` passes through (the zero of its displacement s)."""
+    for g in linkage.groups:
+        if isinstance(g, RRP) and g.link_names()[1] == link:
+            return g.guide.through
+        if isinstance(g, PRP) and link in g.link_names():
+            return (g.first if g.link_names()[0] == link else g.second).through
+    raise JointError(f"the link {link} slides on no frame guide")   # pragma: no cover - only asked of sliders
+
+
+def _what(g) -> str:
+    return f"the point {g.name}" if isinstance(g, Point) else g.describe()
+
+
+def _unique_names(pairs):
+    """Pairs named by their joint, a second pair at one joint (a compound hinge) with a suffix: B, B2, …"""
+    seen: dict[str, int] = {}
+    out = []
+    for p in pairs:
+        seen[p.name] = seen.get(p.name, 0) + 1
+        out.append(p if seen[p.name] == 1 else replace(p, name=f"{p.name}{seen[p.name]}"))
+    return out
