@@ -399,6 +399,22 @@ def test_errata_name_their_places_in_words():
     assert figure_problems(visible_html('<a href="x.html#fig-2">§3, Fig. 2a</a>'), "") == ["Fig. 2"]
 
 
+def test_every_erratum_links_to_the_cell_that_shows_it():
+    """Errata moved out of the lessons into the companions: each row's link reaches a cell that shows errata."""
+    import sys
+    sys.path.insert(0, str(ROOT / "book" / "_ext"))
+    from errata_page import chapter_link, demo_cell
+
+    from mechlab.course.errata import collect
+
+    for notebook in sorted({e.notebook for e in collect()}):
+        href = re.search(r'href="notebooks/([^"#]+)\.html#cell-(\d+)"', chapter_link(notebook))
+        assert href, f"{notebook}: no cell anchor in {chapter_link(notebook)}"
+        shown = ROOT / "notebooks" / f"{href.group(1)}.ipynb"
+        assert demo_cell(shown) == int(href.group(2)), notebook
+        assert "errata" in source(cells(shown)[int(href.group(2))]), notebook
+
+
 # -- numbers in the prose come from the computation -----------------------------------------------------------
 PROSE_NUMBER = re.compile(r"(?<![\w.§^_{\-–])(\d+\.\d+|\d+(?=\s*°))(?![\d–])")
 DEFINITIONS = {0.0, 90.0, 180.0, 360.0}     # a right angle, half and whole turns: definitions, not results

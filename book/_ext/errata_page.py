@@ -1,7 +1,7 @@
 """The book's Errata page: every :class:`mechlab.course.errata.Erratum`, its evidence recomputed now.
 
 Executed by ``book/errata.md`` at build time. Each row links to the code cell of the
-chapter notebook that demonstrates the mistake: the first code cell of that notebook
+chapter's companion (or, where it has none, of the chapter) that demonstrates the mistake: the first code cell of that notebook
 that uses ``errata`` (its ``table``/``check``), addressed by the ``cell-<index>`` anchor
 that ``_ext/mechbook.py`` puts on every code cell.
 """
@@ -60,10 +60,13 @@ def chapter_link(notebook_name: str, notebooks_dir: Path = NOTEBOOKS, prefix: st
     path = Path(notebooks_dir) / notebook_name
     if not notebook_name or not path.is_file():
         raise ValueError(f"erratum names notebook {notebook_name!r}, which is not in {notebooks_dir}")
-    cell = demo_cell(path)
+    # errata are reference, not lesson: they stand in the chapter's companion where it has one
+    companion = Path(notebooks_dir) / "companion" / f"{path.stem}_companion.ipynb"
+    shown, folder = (companion, "companion/") if companion.is_file() and demo_cell(companion) is not None else (path, "")
+    cell = demo_cell(shown)
     anchor = f"#cell-{cell}" if cell is not None else ""
-    href = f"{prefix}{path.stem}.html{anchor}"
-    return f'<a href="{html.escape(href)}">{html.escape(notebook_title(path))}</a>'
+    href = f"{prefix}{folder}{shown.stem}.html{anchor}"
+    return f'<a href="{html.escape(href)}">{html.escape(notebook_title(shown))}</a>'
 
 
 def _inline(text: str) -> str:
