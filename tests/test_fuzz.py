@@ -255,6 +255,8 @@ CASES = {
     "motion_laws.RiseLaw": lambda: (ML.RiseLaw, tuple(fields_of(ML.LAWS["cycloidal (sine)"])), {}),
     "motion_laws.law_invariants": lambda: (ML.law_invariants, ("cycloidal (sine)",), {"n": 2001, "signed": True}),
     "motion_laws.law_table": lambda: (ML.law_table, (["cosine", "cycloidal (sine)"],), {"n": 2001}),
+    "motion_laws.law_jerk": lambda: (ML.law_jerk, ("modified sine",), {"n": 2001}),
+    "motion_laws.named_law": lambda: (ML.named_law, ("simple harmonic",), {}),
     "motion_laws.invariants": lambda: (ML.invariants, (2.0, 0.5, np.sin(PHI), np.cos(PHI)), {"signed": True}),
     "motion_laws.rise_invariants": lambda: (ML.rise_invariants, ml.rise_law(designs()[0], 120 * DEG, n=101),
                                             {"signed": False}),

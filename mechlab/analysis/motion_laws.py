@@ -439,13 +439,14 @@ def thesis_mchv1_rows() -> list:
 @dataclass(frozen=True)
 class LawRow:
     """One law of :func:`law_table`: its invariants (dimensionless: B, C, D are the textbooks' C_v, C_a
-    and the kinetic-power factor C_p), its jerk factor C_j (inf where Y″ jumps) and Y″ at the rise's two ends."""
+    and the kinetic-power factor C_p), its jerk factor C_j (None where Y″ jumps: the jerk is an impulse, the
+    textbooks' "infinite") and Y″ at the rise's two ends."""
 
     law: str
     B: float = field(metadata={"label": "B = max|Y′|"})
     C: float = field(metadata={"label": "C = max|Y″|"})
     D: float = field(metadata={"label": "D = max|Y′Y″|"})
-    J: float = field(metadata={"label": "C_j = max|Y‴|"})
+    J: float | None = field(metadata={"label": "C_j = max|Y‴| (None: Y″ jumps)"})
     start: float = field(metadata={"label": "Y″ at x = 0"})
     end: float = field(metadata={"label": "Y″ at x = 1"})
 
@@ -463,5 +464,7 @@ def law_table(names=None, n: Annotated[int, count(3)] = 20001) -> Table:
     for name in names:
         inv = law_invariants(name, n)
         ends = np.round(LAWS[name](np.array([0.0, 1.0]))[2], 9) + 0.0   # rounding noise and "-0" away
-        rows.append(LawRow(name, inv.B, inv.C, inv.D, law_jerk(name, n), float(ends[0]), float(ends[1])))
+        jerk = law_jerk(name, n)
+        rows.append(LawRow(name, inv.B, inv.C, inv.D, jerk if np.isfinite(jerk) else None, float(ends[0]),
+                           float(ends[1])))
     return Table(rows)
