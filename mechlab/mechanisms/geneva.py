@@ -192,6 +192,18 @@ class PlanarGeneva(Mechanism):
         """Distance from W of the slot bottom's centre: the pin centre's extreme C ∓ a."""
         return self.centre_distance + self.kappa * self.crank_radius
 
+    @property
+    def slot_centre_length(self) -> float:
+        """The pin centre's travel along a slot, entry to deepest point: |C·cos(π/z) − (C ∓ a)| =
+        C(sin(π/z) + cos(π/z) − 1) external, C(1 + sin(π/z) − cos(π/z)) internal — the length between the
+        centres of the slot's end arcs on a drawing (the slot is this plus the roller's diameter long)."""
+        return abs(self.entry_radius - self.slot_bottom)
+
+    @property
+    def slot_width(self) -> float:
+        """The slot's width, the roller's diameter 2r (add the running clearance on a drawing)."""
+        return 2.0 * self.roller_radius
+
     def _check_roller(self):
         a, r, b = self.crank_radius, self.roller_radius, self.entry_radius
         gap = b * np.sin(np.pi / self.z)  # half the chord between neighbouring slot mouths
@@ -246,11 +258,16 @@ class PlanarGeneva(Mechanism):
         unit = check("unit", unit, choice(*LENGTH_UNITS))
         lengths = (("C", self.centre_distance), ("crank radius a", self.crank_radius),
                    ("pin radius at entry |WA|", self.entry_radius), ("roller radius", self.roller_radius),
-                   ("slot bottom from W", self.slot_bottom), ("slot length", self.slot_length))
+                   ("slot bottom from W", self.slot_bottom), ("slot centre length", self.slot_centre_length),
+                   ("slot width", self.slot_width), ("slot length", self.slot_length),
+                   *self._drawing_radii())
         return Table(Quantity(k, v) for k, v in (
             ("z", self.z), *((f"{k} ({unit})", v) for k, v in lengths),
             ("dwell fraction", self.dwell_fraction), ("index angle (deg)", np.degrees(abs(self.index_angle))),
             ("max |ψ'| = |dψ/dφ|", self.max_velocity()), ("max |ψ''| = |d²ψ/dφ²|", self.max_acceleration())))
+
+    def _drawing_radii(self) -> tuple:  # pragma: no cover - each drive names its rims
+        raise NotImplementedError
 
     def structure(self) -> Structure:
         """Crank O→A and the wheel turning about W (axis at ψ), joined by one higher pair at the pin A: while
@@ -317,6 +334,9 @@ class ExternalGeneva(PlanarGeneva):
         radius, centred at distance C from W on the bisectors between slots."""
         return self.crank_radius - 1.5 * self.roller_radius
 
+    def _drawing_radii(self) -> tuple:
+        return ("wheel outer radius", self.outer_radius), ("locking disc radius", self.locking_radius)
+
     def sketch(self, motion) -> Sketch:
         """The wheel, and the crank's locking disc whose relief lets the wheel turn."""
         sk = super().sketch(motion)
@@ -354,6 +374,9 @@ class InternalGeneva(PlanarGeneva):
     def slot_length(self) -> float:
         """From the inner rim to the slot's bottom: C + a + r - inner radius."""
         return self.slot_bottom + self.roller_radius - self.inner_radius
+
+    def _drawing_radii(self) -> tuple:
+        return ("ring inner radius", self.inner_radius), ("ring outer radius", self.outer_radius)
 
 
 def _arc(centre, radius, a0, a1, n=40):
