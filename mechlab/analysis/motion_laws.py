@@ -446,9 +446,10 @@ class LawRow:
     B: float = field(metadata={"label": "B = max|Y′|"})
     C: float = field(metadata={"label": "C = max|Y″|"})
     D: float = field(metadata={"label": "D = max|Y′Y″|"})
-    J: float | None = field(metadata={"label": "C_j = max|Y‴| (None: Y″ jumps)"})
     start: float = field(metadata={"label": "Y″ at x = 0"})
     end: float = field(metadata={"label": "Y″ at x = 1"})
+    # last, with a default: a positional LawRow(law, B, C, D, start, end) keeps working
+    J: float | None = field(default=None, metadata={"label": "C_j = max|Y‴| (None: Y″ jumps)"})
 
 
 def law_table(names=None, n: Annotated[int, count(3)] = 20001) -> Table:
@@ -465,6 +466,6 @@ def law_table(names=None, n: Annotated[int, count(3)] = 20001) -> Table:
         inv = law_invariants(name, n)
         ends = np.round(LAWS[name](np.array([0.0, 1.0]))[2], 9) + 0.0   # rounding noise and "-0" away
         jerk = law_jerk(name, n)
-        rows.append(LawRow(name, inv.B, inv.C, inv.D, jerk if np.isfinite(jerk) else None, float(ends[0]),
-                           float(ends[1])))
+        rows.append(LawRow(name, inv.B, inv.C, inv.D, float(ends[0]), float(ends[1]),
+                           jerk if np.isfinite(jerk) else None))
     return Table(rows)
