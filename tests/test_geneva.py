@@ -670,3 +670,27 @@ def test_small_helpers():
     with pytest.raises(TypeError, match="ExternalGeneva or InternalGeneva"):
         PlanarGeneva(4, 1.0)
     assert np.array_equal(g.engaged([np.pi, 0.0]), [True, False])
+
+
+@pytest.mark.parametrize("cls", [ExternalGeneva, InternalGeneva])
+@pytest.mark.parametrize("z", [3, 6, 8])
+def test_two_dwell_fractions_exact_and_near_standstill(cls, z):
+    """dwell_fraction is exact (the wheel locked); standstill_fraction is the design layer's dwell within
+    a band of precision × the index angle, here in closed form against the design layer's own sampled
+    measure (mechlab.design.criteria.longest_still) — 0.680 against 2/3 for the external z = 6."""
+    from mechlab.design.criteria import longest_still
+
+    g = cls(z, 100.0)
+    n = 200000
+    phi = np.linspace(0, 2 * np.pi, n + 1)
+    x = g.motion(phi).psi
+    for precision in (0.001, 0.01):
+        _, run = longest_still(x[:-1], x[-1] - x[0], precision * abs(g.index_angle))
+        assert g.standstill_fraction(precision) == pytest.approx(run / n, abs=2.0 / n)
+        assert g.standstill_fraction(precision) > g.dwell_fraction
+    locked = ~g.engaged(phi)
+    assert g.dwell_fraction == pytest.approx(locked.mean(), abs=2.0 / n)
+    if cls is ExternalGeneva and z == 6:
+        assert round(g.standstill_fraction(), 3) == 0.680 and g.dwell_fraction == pytest.approx(2 / 3)
+    with pytest.raises(DimensionError, match="precision"):
+        g.standstill_fraction(0.0)

@@ -15,11 +15,12 @@ from dataclasses import dataclass, replace
 from typing import Annotated
 
 import numpy as np
+from scipy.optimize import brentq
 from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
 from ..motion import AngularMotion, Quantity, Table, scalar_law
-from ..validate import MAX_SLOTS, Length, check, choice, count, length
+from ..validate import MAX_SLOTS, Length, check, choice, count, length, number
 
 LENGTH_UNITS = ("mm", "cm", "m", "in")   # the units a design table may name
 
@@ -135,8 +136,47 @@ class PlanarGeneva(Mechanism):
 
     @property
     def dwell_fraction(self) -> float:
-        """Fraction of the crank turn with the wheel locked: 1/2 - κ/z."""
+        """Fraction of the crank turn with the wheel locked, exactly still (ψ' = 0): 1/2 - κ/z.
+        :meth:`standstill_fraction` is the longer share within a tolerance of standing still."""
         return 1.0 - self.engagement_half_angle / np.pi
+
+    def standstill_fraction(self, precision: float = 0.001) -> float:
+        """The near-standstill fraction: the longest share of the turn over which the wheel's angle stays
+        within a band of ``precision`` × the index angle 2π/z (the design layer's dwell, :mod:`mechlab.design`,
+        with its ``dwell_precision``), longer than the exact :attr:`dwell_fraction`.
+
+        The band takes in the end of one motion and the start of the next: crank angles t before the
+        motion ends and after the next begins, moving the wheel by a and b with a + b = the band. The wheel
+        leaves rest with zero velocity, so the crank angle per wheel angle falls as the wheel speeds up and
+        the split a = b is the longest; t is the root of |β(σ0) − β(σ0 − t)| = band/2 (closed form β,
+        bracketed on (0, σ0), Brent's method).
+
+        Parameters
+        ----------
+        precision : the band as a fraction of the index angle, in (0, 1).
+
+        Returns
+        -------
+        float
+            dwell_fraction + t/π.
+
+        Raises
+        ------
+        DimensionError
+            ``precision`` outside (0, 1).
+
+        Examples
+        --------
+        >>> g = ExternalGeneva(6, 100.0)
+        >>> round(g.dwell_fraction, 4), round(g.standstill_fraction(0.001), 4)
+        (0.6667, 0.6801)
+        """
+        precision = check("precision", precision, number(0.0, 1.0, open=True))
+        s0 = self.engagement_half_angle
+        end = self.closed_form(s0).theta
+        half = precision * abs(self.index_angle) / 2
+        t = brentq(lambda t: abs(end - self.closed_form(s0 - t).theta) - half, 0.0, s0, xtol=1e-15)
+        return self.dwell_fraction + t / np.pi
 
     @property
     def motion_fraction(self) -> float:
