@@ -9,20 +9,14 @@ Kinitsky (1994) compares linkages with cams by three invariants of the rise:
 * D = max |y'·y''| — "kinetic power" (velocity × acceleration), the peak of the inertia
   power is D·J·h²·ω³/Φ³.
 
-Textbooks in English (Norton, *Design of Machinery*, ch. 8) call B and C the velocity and
-acceleration factors C_v, C_a, and D the power factor; the jerk factor C_j = max |y‴| (the
-peak jerk is C_j·h·ω³/Φ³) is :func:`law_jerk`, infinite where y'' jumps (a soft impact). Every
-law of :data:`LAWS` gives y‴ in closed form (:meth:`RiseLaw.jerk`); other names of the same
-laws ("simple harmonic", "cycloidal", …) are :data:`ALIASES`.
-
 C and D are **absolute** extremes by default: the thesis' МЧВ1 rows are reproduced only with
 them. ``signed=True`` gives the signed maxima max y'' and max y'y'' instead (the driving phase
 only). They differ where the law is not odd about mid-rise: for the double harmonic law
 D = 9.8948 (absolute) against 7.7516 (signed), and the thesis prints 7.00, neither.
 
-:func:`invariants` measures the same numbers on any output law ψ(φ) sampled by a mechanism
-(analogs ψ', ψ'' with respect to φ; :func:`rise_invariants` over one sampled rise), so linkages
-and cams go in one table.
+:func:`invariants` (:func:`rise_invariants` over one sampled rise) measures the same numbers on any
+output law ψ(φ) sampled by a mechanism, so linkages and cams go in one table. Norton (*Design of
+Machinery*, ch. 8) calls B, C the factors C_v, C_a; the jerk factor C_j = max |y‴| is :func:`law_jerk`.
 """
 
 from __future__ import annotations
