@@ -75,6 +75,10 @@ class LoadError(DimensionError):
     """A load's value has the wrong shape or is not finite."""
 
 
+class FrictionlessOnlyError(LoadError):
+    """Inverse kinetostatics needs the ideal mechanism: with friction the torque is not linear in the load."""
+
+
 class SelfLockingError(MechanismError):
     """Friction admits no consistent solution (or makes a group singular): the mechanism locks."""
 

@@ -291,3 +291,39 @@ def test_any_practical_cam_follows_its_law(law, rise, ret, dwell, stroke, base, 
     assert np.max(np.abs(got[0] - q.theta)) < 1e-8 * pr.stroke
     assert np.max(np.abs(got[1] - q.d)) < 1e-6 * np.max(np.abs(q.d))
     assert np.max(np.abs(got[2] - q.dd)[away_from_cuts(cam, PHI)]) < 1e-4 * np.max(np.abs(q.dd))
+
+
+# ------------------------------------------------------------------------- jerk and the exact peaks
+@pytest.mark.parametrize("make", [translating, oscillating])
+def test_every_cam_reports_the_jerk_of_its_law(make):
+    cam = make("modified sine")
+    mo = cam.motion(PHI)
+    h = 1e-5
+    ok = away_from_cuts(cam, PHI, gap=3 * h)
+    fd = (cam.follower(PHI + h).dd - cam.follower(PHI - h).dd) / (2 * h)
+    assert np.allclose(mo.jerk[ok], fd[ok], atol=1e-5 * np.max(np.abs(fd)))
+    assert np.max(np.abs(mo.jerk)) > 0 and np.all(mo.jerk[cam.in_dwell(PHI)] == 0)
+    assert isinstance(cam.motion(1.0).jerk, float)   # a scalar angle gives a scalar jerk
+
+
+@pytest.mark.parametrize("law", ["cycloidal (sine)", "modified trapezoid", "constant acceleration", "cosine"])
+@pytest.mark.parametrize("make", [translating, oscillating])
+def test_peaks_are_exact_and_beat_every_sample(make, law):
+    cam = make(law)
+    phi = np.linspace(0.0, 2 * np.pi, 200001)
+    peak = cam.max_pressure_angle()
+    alpha = np.abs(cam.pressure_angle(phi))
+    # (where y'' jumps a peak may sit on a phase's end, a kink or a jump that the samples miss by up to a step)
+    assert peak.value >= alpha.max() - 1e-12 and peak.value - alpha.max() < 1e-5
+    assert abs(cam.pressure_angle(peak.phi)) == pytest.approx(peak.value, abs=1e-14)
+    rho = cam.min_radius_of_curvature()
+    k = cam.curvature(phi)
+    assert 1 / rho.value >= k.max() - 1e-14 and rho.value == pytest.approx(1 / k.max(), rel=1e-4)
+    assert cam.curvature(rho.phi) == pytest.approx(1 / rho.value, rel=1e-14)
+    # the closed-form rates are the derivatives of the values they locate
+    t, h = np.linspace(0.05, 5.0, 9), 1e-6
+    t = t[~cam.in_dwell(t)]
+    for value_and_rate in (cam._pressure_and_rate, cam._curvature_and_rate):
+        fd = (value_and_rate(t + h)[0] - value_and_rate(t - h)[0]) / (2 * h)
+        assert np.allclose(value_and_rate(t)[1], fd, atol=1e-7)
+    assert "pressure angle" in str(peak) and "°" in str(peak)

@@ -418,9 +418,26 @@ def test_invariants_absolute_by_default_signed_on_request():
     assert abs(inv.D - s.D) < 1e-6 and abs(inv.C - s.C) < 1e-6
 
 
-def test_thesis_iteration_converges_wherever_a_design_exists():
+@pytest.mark.parametrize("delta,a,dwell", [(90, 0.7, 60), (90, 0.7, 120), (120, 0.9, 60), (150, 1.1, 60)])
+def test_thesis_iteration_recovers_when_an_iterate_leaves_the_cranks_range(delta, a, dwell):
+    """From r0 = a/4 the first r1 is negative here, and so is the averaged iterate; the scheme's formulas
+    hold there and the halving comes back (it gave up at step 1 before): the fixed point is circle_guiding's
+    design, to the stopping tolerance, and to 1e-11 when the tolerance is tightened."""
+    g = circle_guiding(delta * DEG, a, dwell * DEG)
+    it = thesis_iteration(delta * DEG, a, dwell * DEG)
+    r0 = it.history[:, 0]
+    assert np.any(r0 <= 0) and 0 < it.r < min(a, 2 - a)
+    assert abs(it.r - g.r) < 1e-6
+    tight = thesis_iteration(delta * DEG, a, dwell * DEG, tol=1e-12, maxiter=1000)
+    assert abs(tight.r - g.r) < 1e-11
+    mu3, mu2 = tight.history[-1, 4:6]
+    assert np.allclose([mu3, mu2], LambdaMechanism(g.r, a, delta * DEG).mu(np.pi + np.array([g.t3, g.t2])), atol=1e-8)
+
+
+def test_thesis_iteration_converges_at_sampled_designs():
     """Over designs sampled from the existence region, the thesis' scheme converges to the equal-ripple r
-    (to a few ε: it stops at |r1 − r0| ≤ 10⁻⁶ while converging linearly)."""
+    (to a few ε: it stops at |r1 − r0| ≤ 10⁻⁶ while converging linearly). A sample, not a proof: the scheme
+    is a fixed-point iteration without a convergence guarantee."""
     for delta, a, dwell in _region_samples(15, 0):
         try:
             g = circle_guiding(delta * DEG, a, dwell * DEG, minimax=False)

@@ -302,3 +302,19 @@ def test_mchv1_drive_loads_the_output_with_its_inertia_and_a_moment_against_its_
     assert np.allclose(res.torque, by_hand, rtol=0, atol=1e-9 * np.max(np.abs(by_hand)))
     rough = mchv1_drive(six, 2.0, 0.5, 3.0, friction=0.1, radius=0.05).forces(motion=mo)
     assert rough.power_gap <= 1e-9 and rough.model.pair("D").friction == 0.1
+
+
+def test_mchv1_orients_the_rod_by_the_dwell_so_a_far_extreme_near_the_tangent_designs():
+    """At (δ, a, 2α) = (180°, 1.2, 240°), K = 1, β_m = 20° the arc centre O1 lies almost on the tangent at D1
+    (n·(O1 − D1) = −0.014): oriented by O1 − D0, the rod's far position gives S = |O1E1| = 0.53381 and the
+    rocker b = S/(2 sin(β_m/2)) = 1.53705, a consistent design on both sides (the dyad's transmission
+    angle reaches 170°, so it needs mu_min=None); oriented by O1 − D1 both sides were refused."""
+    guide = circle_guiding(180 * DEG, 1.2, 240 * DEG)
+    for side in (1, -1):
+        six = mchv1(guide, 1.0, 20 * DEG, side=side, mu_min=None)
+        assert six.rocker == pytest.approx(1.53705, abs=5e-6)
+        assert 2 * six.rocker * np.sin(10 * DEG) == pytest.approx(0.53381, abs=5e-6)
+        rep = report(six, guide.dwell)
+        assert rep.K == pytest.approx(1.0, abs=1e-6) and rep.swing == pytest.approx(20 * DEG, rel=0.05)
+    with pytest.raises(InfeasibleDesignError, match="transmission angle D-E-F reaches 170"):
+        mchv1(guide, 1.0, 20 * DEG)

@@ -837,3 +837,44 @@ def test_class_iv_drive_puts_the_masses_where_the_chapter_says_in_model_for_fram
     assert rough.power_gap <= 1e-9 and np.all(rough.losses >= 0) and np.any(rough.losses > 0)
     with pytest.raises(MechanismError):
         class_iv_drive(T=-1.0)
+
+
+# ------------------------------------------------------------------------------ inverse kinetostatics
+def test_balanced_load_is_what_the_forward_solve_balances():
+    """The load that a given crank torque balances, put on the output by its public names, makes the
+    group-by-group solve return that torque (with masses, gravity, ω1 and ε1); and back again."""
+    from mechlab.kinetostatics import Force, Torque, balanced_load, model_for, solve, torque_for_load
+
+    phi = np.linspace(0.2, 6.0, 25)
+    fb = FourBar(0.1, 0.3, 0.3, 0.35)
+    model = model_for(fb).with_body("coupler", mass=2.0, inertia=0.02).with_body("rocker", mass=1.5, inertia=0.01)
+    M = 5.0 + np.sin(phi)
+    Q = balanced_load(fb, M, phi, model=model, omega1=12.0, eps1=3.0)
+    assert not np.ma.is_masked(Q)
+    load = Torque(fb.structure().output, lambda motion: np.asarray(Q))  # one value per angle: a function
+    res = solve(model, fb.motion(phi), [load], omega1=12.0, eps1=3.0)
+    assert np.allclose(res.torque, M, rtol=1e-9, atol=1e-9)
+    assert np.allclose(torque_for_load(fb, np.asarray(Q), phi, model=model, omega1=12.0, eps1=3.0), M, rtol=1e-12)
+    # a slider: the force along the slider's path (+s), masked at the dead centres where s' = 0
+    sc = SliderCrank(0.1, 0.4)
+    phi = np.array([0.0, 0.7, 2.0, np.pi, 4.0])
+    Q = balanced_load(sc, 10.0, phi)
+    assert list(np.ma.getmaskarray(Q)) == [True, False, False, True, False]
+    mo = sc.motion(phi[~Q.mask])
+    along = mo.points["B"].d / mo.ds[:, None]                       # the unit vector of +s
+    res = solve(model_for(sc), mo, [Force(sc.structure().output, "B", Q.compressed()[:, None] * along)])
+    assert np.allclose(res.torque, 10.0, rtol=1e-9)
+    assert isinstance(balanced_load(sc, 10.0, 1.0), float) and balanced_load(sc, 10.0, 0.0) is np.ma.masked
+
+
+def test_inverse_kinetostatics_refuses_friction_and_bad_input_by_name():
+    from mechlab.errors import DimensionError
+    from mechlab.kinetostatics import FrictionlessOnlyError, balanced_load, model_for
+
+    sc = SliderCrank(0.1, 0.4)
+    with pytest.raises(FrictionlessOnlyError, match="friction in pairs"):
+        balanced_load(sc, 10.0, [1.0], model=model_for(sc).with_friction(0.1, 0.01))
+    with pytest.raises(TypeError, match="mechanism must be"):
+        balanced_load("slider", 10.0, [1.0])
+    with pytest.raises(DimensionError, match="phi"):
+        balanced_load(sc, 10.0, [np.nan])

@@ -120,11 +120,33 @@ def test_planar_dimensions():
     assert "slot length (in)" in g.design(unit="in").by("name")
 
 
+@pytest.mark.parametrize("cls", [ExternalGeneva, InternalGeneva])
+@pytest.mark.parametrize("z", [3, 4, 6, 8])
+def test_slot_centre_length_is_the_pins_travel_in_the_slot(cls, z):
+    """The drawing's slot-centre length is how far the pin centre runs along the slot (measured on the
+    motion: the range of |WA| while engaged), in closed form; the design table lists it with the rims."""
+    g = cls(z, 100.0)
+    s0 = g.engagement_half_angle
+    phi = np.pi + np.linspace(-s0, s0, 20001)          # the engagement, entry to exit (σ = φ − π)
+    mo = g.motion(phi)
+    assert g.engaged(phi[1:-1]).all() and not g.engaged(np.pi + s0 + 1e-9)
+    dist = np.hypot(*(mo.points["A"].p - mo.points["W"].p).T)
+    assert g.slot_centre_length == pytest.approx(dist.max() - dist.min(), rel=1e-12)
+    s, c = np.sin(np.pi / z), np.cos(np.pi / z)
+    assert g.slot_centre_length == pytest.approx(100 * (s + c - 1 if cls is ExternalGeneva else 1 + s - c), rel=1e-14)
+    rows = g.design().by("name")
+    assert rows["slot centre length (mm)"].value == g.slot_centre_length
+    assert rows["slot width (mm)"].value == 2 * g.roller_radius
+    rims = ("wheel outer radius", "locking disc radius") if cls is ExternalGeneva else \
+        ("ring inner radius", "ring outer radius")
+    assert all(f"{name} (mm)" in rows for name in rims)
+
+
 def test_geneva_design_names_its_unit():
     """Every length of the design table names its unit; an unknown unit is refused by name."""
     names = [q.name for q in ExternalGeneva(6, 100.0).design()]
     lengths = [n for n in names if n != "z" and not any(w in n for w in ("fraction", "deg", "ψ"))]
-    assert len(lengths) == 6 and all(n.endswith(" (mm)") for n in lengths), names
+    assert len(lengths) == 10 and all(n.endswith(" (mm)") for n in lengths), names
     with pytest.raises(DimensionError, match="unit"):
         ExternalGeneva(6, 100.0).design(unit="furlong")
     # the spherical drive's table too: every row but z, the angles and the fraction is a length
@@ -648,3 +670,27 @@ def test_small_helpers():
     with pytest.raises(TypeError, match="ExternalGeneva or InternalGeneva"):
         PlanarGeneva(4, 1.0)
     assert np.array_equal(g.engaged([np.pi, 0.0]), [True, False])
+
+
+@pytest.mark.parametrize("cls", [ExternalGeneva, InternalGeneva])
+@pytest.mark.parametrize("z", [3, 6, 8])
+def test_two_dwell_fractions_exact_and_near_standstill(cls, z):
+    """dwell_fraction is exact (the wheel locked); standstill_fraction is the design layer's dwell within
+    a band of precision × the index angle, here in closed form against the design layer's own sampled
+    measure (mechlab.design.criteria.longest_still) — 0.680 against 2/3 for the external z = 6."""
+    from mechlab.design.criteria import longest_still
+
+    g = cls(z, 100.0)
+    n = 200000
+    phi = np.linspace(0, 2 * np.pi, n + 1)
+    x = g.motion(phi).psi
+    for precision in (0.001, 0.01):
+        _, run = longest_still(x[:-1], x[-1] - x[0], precision * abs(g.index_angle))
+        assert g.standstill_fraction(precision) == pytest.approx(run / n, abs=2.0 / n)
+        assert g.standstill_fraction(precision) > g.dwell_fraction
+    locked = ~g.engaged(phi)
+    assert g.dwell_fraction == pytest.approx(locked.mean(), abs=2.0 / n)
+    if cls is ExternalGeneva and z == 6:
+        assert round(g.standstill_fraction(), 3) == 0.680 and g.dwell_fraction == pytest.approx(2 / 3)
+    with pytest.raises(DimensionError, match="precision"):
+        g.standstill_fraction(0.0)

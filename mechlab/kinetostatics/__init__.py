@@ -1,13 +1,15 @@
 """Kinetostatics: bodies and loads, the group-by-group solve, the motor rule, the chapters' machines.
 
 :mod:`~mechlab.kinetostatics.model`, :mod:`~mechlab.kinetostatics.solve`, :mod:`~mechlab.kinetostatics.drive`,
-:mod:`~mechlab.kinetostatics.machines`, :mod:`~mechlab.kinetostatics.geneva` and
-:mod:`~mechlab.kinetostatics.lambda_sixbars`.
+:mod:`~mechlab.kinetostatics.machines`, :mod:`~mechlab.kinetostatics.geneva`,
+:mod:`~mechlab.kinetostatics.lambda_sixbars` and :mod:`~mechlab.kinetostatics.inverse` (the load a torque
+balances, the torque a load needs).
 
 ``mechlab.forces`` (``ml.forces``) is this package under the name the course used first.
 """
 
 from .drive import Drive, DriveError, cycle_mean, drive, motor_torque
+from .inverse import FrictionlessOnlyError, balanced_load, torque_for_load
 from .machines import Kinetostatics, class_iv_drive, press, press_load, rocker_drive, rpm_to_rad
 from .model import (FRAME, G, Body, Force, ForceModel, FrictionError, HigherPair, LoadError, MassError, Prismatic,
                     Revolute, SelfLockingError, StructureError, Torque, model_for, slender_bar)
@@ -17,7 +19,7 @@ __all__ = [
     "FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque",
     "Reaction", "ForceResult", "Drive", "DriveError", "Kinetostatics",
     "solve", "virtual_work_torque", "model_for", "slender_bar", "drive", "motor_torque", "cycle_mean",
-    "output_axis",
+    "output_axis", "balanced_load", "torque_for_load",
     "rpm_to_rad", "press_load", "press", "rocker_drive", "class_iv_drive",
-    "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError",
+    "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError", "FrictionlessOnlyError",
 ]

@@ -21,6 +21,7 @@ from functools import cached_property
 
 import numpy as np
 from scipy.interpolate import PPoly, make_interp_spline
+from scipy.optimize import brentq
 
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_number, cross, dot, fixed_point, perp
@@ -28,13 +29,16 @@ from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import check, count
 from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars
 
-__all__ = ["TranslatingRollerCam", "OscillatingRollerCam", "CamProfile", "Undercut", "CamUndercutError"]
+__all__ = ["TranslatingRollerCam", "OscillatingRollerCam", "CamProfile", "Undercut", "CamUndercutError", "CamPeak",
+           "CamLinearMotion", "CamAngularMotion"]
 
 # Newton on the contact stops when the step in the profile parameter is below this (radians)
 _NEWTON_TOL = 1e-11
 # accepted mismatch of the roller's centre where two phases' spline pieces meet, relative to the prime
 # radius (the pieces share the tangent there: Newton may only step back and forth by rounding)
 _GAP_TOL = 1e-9
+# grid per moving phase on which the exact peaks' rates are bracketed before Brent's method
+_PEAK_GRID = 257
 # bracketing the contact holds at most this many (angle × profile node) residuals at once
 _CHUNK = 1 << 20
 
@@ -67,6 +71,35 @@ class CamProfile:
             return 1.0 / self.curvature - self.roller_radius
 
 
+@dataclass(frozen=True)
+class CamPeak:
+    """An extreme of a cam over its turn: ``what`` it is, its ``value`` and the cam angle ``phi`` (radians)."""
+
+    what: str
+    value: float
+    phi: float
+
+    def __str__(self) -> str:
+        value = f"{np.degrees(self.value):.4g}°" if self.what == "pressure angle" else f"{self.value:.6g}"
+        return f"{self.what} {value} at φ = {np.degrees(self.phi):.3f}°"
+
+
+@dataclass(frozen=True, eq=False)
+class CamLinearMotion(LinearMotion):
+    """A translating follower's motion, with ``jerk``: the third analog s‴ of the design law
+    (length/rad³; the jerk is s‴·ω³ at constant cam speed ω)."""
+
+    jerk: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class CamAngularMotion(AngularMotion):
+    """An oscillating follower's motion, with ``jerk``: the third analog ψ‴ of the design law
+    (1/rad²; the angular jerk is ψ‴·ω³ at constant cam speed ω)."""
+
+    jerk: np.ndarray
+
+
 @dataclass(frozen=True, eq=False)
 class Undercut:
     """Where the pitch curve is too sharp for the roller: the smallest convex radius of curvature
@@ -95,6 +128,10 @@ class RollerCam(Mechanism):
     # -- the follower (subclasses) ------------------------------------------------------------
     def _centre(self, q):  # pragma: no cover - abstract
         """Roller centre C(q), C_q, C_qq (each (n, 2)) in the fixed frame."""
+        raise NotImplementedError
+
+    def _centre_qqq(self, q, Cq):  # pragma: no cover - abstract
+        """C_qqq (n, 2), given C_q."""
         raise NotImplementedError
 
     def _q_at(self, X):  # pragma: no cover - abstract
@@ -220,6 +257,103 @@ class RollerCam(Mechanism):
                           Pair("higher", "contact", "cam", "follower", "K", normal=contact_normal), support),
                          (("follower",),), "follower", scale=self._reach)
 
+    # -- exact peaks ----------------------------------------------------------------------------
+    def _pressure_and_rate(self, theta):
+        """α and dα/dφ at cam angles θ in closed form: α = π/2 − (angle of the follower's direction w −
+        angle of the roller centre's path on the cam τ), so α′ = (τ × τ′)/|τ|² − (w × w′)/|w|²."""
+        q = self.follower(theta)
+        C, Cq, Cqq = self._centre(q.theta)
+        d1 = Cq * q.d[:, None]
+        d2 = Cqq * (q.d**2)[:, None] + Cq * q.dd[:, None]
+        tau, tau1, w1 = d1 - perp(C), d2 - perp(d1), Cqq * q.d[:, None]
+        rate = cross(tau, tau1) / dot(tau, tau) - cross(Cq, w1) / dot(Cq, Cq)
+        return _pressure(tau, Cq), rate
+
+    def _curvature_and_rate(self, theta):
+        """κ of the pitch curve and dκ/dφ in closed form, from P⁽ᵏ⁾ = Rot(−θ)·Vₖ, V₀ = C, Vₖ₊₁ = Vₖ′ − perp(Vₖ):
+        κ = −(V₁ × V₂)/|V₁|³ and κ′ = −(V₁ × V₃)/|V₁|³ + 3(V₁ × V₂)(V₁·V₂)/|V₁|⁵ (needs the law's jerk)."""
+        q, j = self.follower(theta), self.programme.jerk(theta)
+        C, Cq, Cqq = self._centre(q.theta)
+        d, dd = q.d[:, None], q.dd[:, None]
+        C1, C2 = Cq * d, Cqq * d**2 + Cq * dd
+        C3 = self._centre_qqq(q.theta, Cq) * d**3 + 3 * Cqq * d * dd + Cq * j[:, None]
+        V1, V2 = C1 - perp(C), C2 - 2 * perp(C1) - C
+        V3 = C3 - 3 * perp(C2) - 3 * C1 + perp(C)
+        m = np.hypot(*V1.T)
+        k = -cross(V1, V2) / m**3
+        return k, -cross(V1, V3) / m**3 + 3 * cross(V1, V2) * dot(V1, V2) / m**5
+
+    def _peak(self, value_and_rate, size) -> tuple[float, float]:
+        """The largest ``size(value)`` over the turn and its cam angle: at a root of the closed-form rate
+        (bracketed on a grid of each moving phase, then Brent's method) or at a phase's end (where y″ may
+        jump); a dwell's value is constant."""
+        best = (-np.inf, 0.0)
+        for a, e in _phases(self.programme):
+            ends = np.array([a, np.nextafter(e, a)])
+            candidates = [ends]
+            if not self.in_dwell(np.array([(a + e) / 2]))[0]:
+                grid = np.linspace(a, ends[1], _PEAK_GRID)
+                rate = value_and_rate(grid)[1]
+                flips = np.flatnonzero(np.sign(rate[:-1]) * np.sign(rate[1:]) < 0)
+                roots = [brentq(lambda t: value_and_rate(np.array([t]))[1][0], grid[i], grid[i + 1], xtol=1e-14)
+                         for i in flips]
+                candidates.append(np.array(roots))
+            t = np.concatenate(candidates)
+            v = size(value_and_rate(t)[0])
+            i = int(np.argmax(v))
+            if v[i] > best[0]:
+                best = (float(v[i]), float(t[i]))
+        return best
+
+    def max_pressure_angle(self) -> "CamPeak":
+        """The largest |pressure angle| of the design over the turn and the cam angle where it occurs.
+
+        Exact: at a root of dα/dφ (closed form) bracketed on each rise and return and found by Brent's
+        method, or at a phase's end; not a maximum over samples.
+
+        Returns
+        -------
+        CamPeak
+            ``value``: |α|max (radians), ``phi``: the cam angle (radians).
+
+        Examples
+        --------
+        >>> from mechlab.synthesis.cam_design import CamProgramme
+        >>> cam = TranslatingRollerCam(CamProgramme(20.0, np.pi / 2, np.pi / 2), 40.0, 10.0)
+        >>> peak = cam.max_pressure_angle()
+        >>> round(float(np.degrees(peak.value)), 3) == round(float(np.degrees(abs(cam.pressure_angle(peak.phi)))), 3)
+        True
+        """
+        value, phi = self._peak(self._pressure_and_rate, np.abs)
+        return CamPeak("pressure angle", value, phi)
+
+    def min_radius_of_curvature(self) -> "CamPeak":
+        """The smallest convex radius of curvature of the pitch curve (1/κmax, lengths as the cam's) and the
+        cam angle where it occurs; the profile's is this minus the roller radius (undercut if ≤ 0).
+
+        Exact: at a root of dκ/dφ, in closed form from the law's jerk, bracketed on each rise and return
+        and found by Brent's method, or at a phase's end (κ jumps where y″ does).
+
+        Returns
+        -------
+        CamPeak
+            ``value``: ρmin of the pitch curve, ``phi``: the cam angle (radians).
+
+        Raises
+        ------
+        MechanismError
+            The law gives no jerk analog (a RiseLaw without ``dddy``).
+
+        Examples
+        --------
+        >>> from mechlab.synthesis.cam_design import CamProgramme
+        >>> cam = TranslatingRollerCam(CamProgramme(20.0, np.pi / 2, np.pi / 2), 40.0, 10.0)
+        >>> cam.min_radius_of_curvature().value < cam.prime_radius
+        True
+        """
+        kappa, phi = self._peak(self._curvature_and_rate, lambda k: k)
+        return CamPeak("radius of curvature", 1.0 / kappa, phi)
+
     # -- motion through the profile -----------------------------------------------------------
     def _design_surface(self, u) -> np.ndarray:
         P = self.pitch(u)
@@ -337,22 +471,25 @@ class RollerCam(Mechanism):
 
     def motion(self, phi):
         """Paths of O, the roller centre C and the contact K, and the follower's law, at cam angles φ
-        (radians), solved from the splined profile. CamUndercutError if the profile is undercut."""
+        (radians), solved from the splined profile, with the design law's jerk analog (``jerk``: the
+        profile is cut to it; closed form). CamUndercutError if the profile is undercut."""
         phi = as_angles(phi)
         q, C, K, alpha = self._contact(phi)
         points = {"O": fixed_point((0.0, 0.0), len(phi)), "C": C, "K": K, **self._fixed_points(len(phi))}
-        kind = LinearMotion if self.output == "position" else AngularMotion
-        return kind(phi, points, np.pi / 2 - np.abs(alpha), q.theta, q.d, q.dd)
+        kind = CamLinearMotion if self.output == "position" else CamAngularMotion
+        return kind(phi, points, np.pi / 2 - np.abs(alpha), q.theta, q.d, q.dd, self.programme.jerk(phi))
 
     def _fixed_points(self, n: int) -> dict:
         return {}
 
 
 def _phases(programme):
-    """The programme's phases as (start, end), each transition cut at its middle too (the
-    constant-acceleration law changes its formula there); empty phases left out."""
+    """The programme's phases as (start, end), each transition cut at its middle and at its laws' knots
+    too (where the law changes its formula); empty phases left out."""
     b = programme.breaks
-    cuts = sorted({*b, (b[0] + b[1]) / 2, (b[2] + b[3]) / 2})
+    inner = [b[0] + k * (b[1] - b[0]) for k in (0.5, *programme.law.knots)] + \
+            [b[2] + k * (b[3] - b[2]) for k in (0.5, *programme.return_law.knots)]
+    cuts = sorted({*b, *inner})
     return [(a, e) for a, e in zip(cuts[:-1], cuts[1:]) if e - a > 1e-12]
 
 
@@ -436,6 +573,9 @@ class TranslatingRollerCam(RollerCam):
         up = np.broadcast_to([0.0, 1.0], C.shape)
         return C, up, np.zeros_like(C)
 
+    def _centre_qqq(self, q, Cq):
+        return np.zeros_like(Cq)
+
     def _q_at(self, X):
         return X[:, 1] - self.s0
 
@@ -506,6 +646,9 @@ class OscillatingRollerCam(RollerCam):
         q = np.asarray(q, dtype=float)
         u = np.stack([np.cos(q), np.sin(q)], axis=-1)
         return np.array([self.pivot_distance, 0.0]) + self.arm * u, self.arm * perp(u), -self.arm * u
+
+    def _centre_qqq(self, q, Cq):
+        return -Cq                      # C = B + L(cos q, sin q): the third derivative turns back to −C_q
 
     def _q_at(self, X):
         return np.arctan2(X[:, 1], X[:, 0] - self.pivot_distance)

@@ -15,11 +15,12 @@ from dataclasses import dataclass, replace
 from typing import Annotated
 
 import numpy as np
+from scipy.optimize import brentq
 from ..errors import DimensionError, OffsetError, SlotCountError
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
 from ..motion import AngularMotion, Quantity, Table, scalar_law
-from ..validate import MAX_SLOTS, Length, check, choice, count, length
+from ..validate import MAX_SLOTS, Length, check, choice, count, length, number
 
 LENGTH_UNITS = ("mm", "cm", "m", "in")   # the units a design table may name
 
@@ -127,8 +128,47 @@ class PlanarGeneva(Mechanism):
 
     @property
     def dwell_fraction(self) -> float:
-        """Fraction of the crank turn with the wheel locked: 1/2 - κ/z."""
+        """Fraction of the crank turn with the wheel locked, exactly still (ψ' = 0): 1/2 - κ/z.
+        :meth:`standstill_fraction` is the longer share within a tolerance of standing still."""
         return 1.0 - self.engagement_half_angle / np.pi
+
+    def standstill_fraction(self, precision: float = 0.001) -> float:
+        """The near-standstill fraction: the longest share of the turn over which the wheel's angle stays
+        within a band of ``precision`` × the index angle 2π/z (the design layer's dwell, :mod:`mechlab.design`,
+        with its ``dwell_precision``), longer than the exact :attr:`dwell_fraction`.
+
+        The band takes in the end of one motion and the start of the next: crank angles t before the
+        motion ends and after the next begins, moving the wheel by a and b with a + b = the band. The wheel
+        leaves rest with zero velocity, so the crank angle per wheel angle falls as the wheel speeds up and
+        the split a = b is the longest; t is the root of |β(σ0) − β(σ0 − t)| = band/2 (closed form β,
+        bracketed on (0, σ0), Brent's method).
+
+        Parameters
+        ----------
+        precision : the band as a fraction of the index angle, in (0, 1).
+
+        Returns
+        -------
+        float
+            dwell_fraction + t/π.
+
+        Raises
+        ------
+        DimensionError
+            ``precision`` outside (0, 1).
+
+        Examples
+        --------
+        >>> g = ExternalGeneva(6, 100.0)
+        >>> round(g.dwell_fraction, 4), round(g.standstill_fraction(0.001), 4)
+        (0.6667, 0.6801)
+        """
+        precision = check("precision", precision, number(0.0, 1.0, open=True))
+        s0 = self.engagement_half_angle
+        end = self.closed_form(s0).theta
+        half = precision * abs(self.index_angle) / 2
+        t = brentq(lambda t: abs(end - self.closed_form(s0 - t).theta) - half, 0.0, s0, xtol=1e-15)
+        return self.dwell_fraction + t / np.pi
 
     @property
     def motion_fraction(self) -> float:
@@ -184,6 +224,18 @@ class PlanarGeneva(Mechanism):
         """Distance from W of the slot bottom's centre: the pin centre's extreme C ∓ a."""
         return self.centre_distance + self.kappa * self.crank_radius
 
+    @property
+    def slot_centre_length(self) -> float:
+        """The pin centre's travel along a slot, entry to deepest point: |C·cos(π/z) − (C ∓ a)| =
+        C(sin(π/z) + cos(π/z) − 1) external, C(1 + sin(π/z) − cos(π/z)) internal — the length between the
+        centres of the slot's end arcs on a drawing (the slot is this plus the roller's diameter long)."""
+        return abs(self.entry_radius - self.slot_bottom)
+
+    @property
+    def slot_width(self) -> float:
+        """The slot's width, the roller's diameter 2r (add the running clearance on a drawing)."""
+        return 2.0 * self.roller_radius
+
     def _check_roller(self):
         a, r, b = self.crank_radius, self.roller_radius, self.entry_radius
         gap = b * np.sin(np.pi / self.z)  # half the chord between neighbouring slot mouths
@@ -238,11 +290,16 @@ class PlanarGeneva(Mechanism):
         unit = check("unit", unit, choice(*LENGTH_UNITS))
         lengths = (("C", self.centre_distance), ("crank radius a", self.crank_radius),
                    ("pin radius at entry |WA|", self.entry_radius), ("roller radius", self.roller_radius),
-                   ("slot bottom from W", self.slot_bottom), ("slot length", self.slot_length))
+                   ("slot bottom from W", self.slot_bottom), ("slot centre length", self.slot_centre_length),
+                   ("slot width", self.slot_width), ("slot length", self.slot_length),
+                   *self._drawing_radii())
         return Table(Quantity(k, v) for k, v in (
             ("z", self.z), *((f"{k} ({unit})", v) for k, v in lengths),
             ("dwell fraction", self.dwell_fraction), ("index angle (deg)", np.degrees(abs(self.index_angle))),
             ("max |ψ'| = |dψ/dφ|", self.max_velocity()), ("max |ψ''| = |d²ψ/dφ²|", self.max_acceleration())))
+
+    def _drawing_radii(self) -> tuple:  # pragma: no cover - each drive names its rims
+        raise NotImplementedError
 
     def structure(self) -> Structure:
         """Crank O→A and the wheel turning about W (axis at ψ), joined by one higher pair at the pin A: while
@@ -309,6 +366,9 @@ class ExternalGeneva(PlanarGeneva):
         radius, centred at distance C from W on the bisectors between slots."""
         return self.crank_radius - 1.5 * self.roller_radius
 
+    def _drawing_radii(self) -> tuple:
+        return ("wheel outer radius", self.outer_radius), ("locking disc radius", self.locking_radius)
+
     def sketch(self, motion) -> Sketch:
         """The wheel, and the crank's locking disc whose relief lets the wheel turn."""
         sk = super().sketch(motion)
@@ -346,6 +406,9 @@ class InternalGeneva(PlanarGeneva):
     def slot_length(self) -> float:
         """From the inner rim to the slot's bottom: C + a + r - inner radius."""
         return self.slot_bottom + self.roller_radius - self.inner_radius
+
+    def _drawing_radii(self) -> tuple:
+        return ("ring inner radius", self.inner_radius), ("ring outer radius", self.outer_radius)
 
 
 def _arc(centre, radius, a0, a1, n=40):

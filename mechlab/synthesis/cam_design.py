@@ -12,18 +12,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..analysis.motion_laws import LAWS, RiseLaw
+from ..analysis.motion_laws import RiseLaw, named_law
 from ..errors import DimensionError
 from ..geometry import AnglePath, check_length
 from ..mechanisms.base import TWO_PI
-from ..validate import check, choice
 
 __all__ = ["CamProgramme"]
-
-
-def _law(name: str, law) -> RiseLaw:
-    """A RiseLaw, or the one :data:`LAWS` names."""
-    return law if isinstance(law, RiseLaw) else LAWS[check(name, law, choice(*LAWS))]
 
 
 @dataclass(frozen=True)
@@ -47,9 +41,9 @@ class CamProgramme:
         for name in ("rise", "ret"):
             object.__setattr__(self, name, check_length(f"{name} angle", getattr(self, name)))
         object.__setattr__(self, "outer_dwell", check_length("outer dwell", self.outer_dwell, allow_zero=True))
-        object.__setattr__(self, "law", _law("law", self.law))
+        object.__setattr__(self, "law", named_law(self.law, "law"))
         object.__setattr__(self, "return_law", self.law if self.return_law is None else
-                           _law("return_law", self.return_law))
+                           named_law(self.return_law, "return_law"))
         total = self.rise + self.outer_dwell + self.ret
         if total > TWO_PI * (1 + 1e-12):
             raise DimensionError(
@@ -78,6 +72,25 @@ class CamProgramme:
         Y, dY, ddY = self.return_law((t[down] - b) / self.ret)
         y[down], d[down], dd[down] = h * (1 - Y), -h * dY / self.ret, -h * ddY / self.ret**2
         return AnglePath(y, d, dd)
+
+    def jerk(self, phi) -> np.ndarray:
+        """The lift's third analog y‴(φ) (stroke units per rad³; the jerk is y‴·ω³ at constant cam speed ω):
+        h·Y‴/Φ³ on the rise, −h·Y‴/Φ³ on the return, 0 in the dwells; between the points where y″ jumps,
+        where the jerk is an impulse (:func:`~mechlab.analysis.motion_laws.law_jerk` gives inf there).
+
+        Examples
+        --------
+        >>> prog = CamProgramme(10.0, np.pi / 2, np.pi / 2, law="3-4-5 polynomial")
+        >>> float(prog.jerk(np.array([0.0]))[0]) == 10.0 * 60 / (np.pi / 2) ** 3
+        True
+        """
+        t = np.mod(np.asarray(phi, dtype=float), TWO_PI)
+        _, a, b, c, _ = self.breaks
+        out = np.zeros_like(t)
+        up, down = t < a, (t >= b) & (t < c)
+        out[up] = self.stroke * self.law.jerk(t[up] / self.rise) / self.rise**3
+        out[down] = -self.stroke * self.return_law.jerk((t[down] - b) / self.ret) / self.ret**3
+        return out
 
     def in_dwell(self, phi) -> np.ndarray:
         """True where the follower stands still (either dwell)."""

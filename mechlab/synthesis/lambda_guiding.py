@@ -708,8 +708,16 @@ def thesis_iteration(delta: float, a: float, dwell: float, tol: float = 1e-6, ma
     k = a² − r² of the band (:func:`_touch_angles`); (6) returns r1 = ½(d0 − k/d0), d0 = 2 sin(μ0/2)
     (from a + r = d0, a − r = k/d0). Stop when |r1 − r0| ≤ ε = 10⁻⁶ (13), else r0 ← (r0 + r1)/2
     (the thesis' "halving"). Converges in 8 steps at (150°, 0.9, 60°) and 26-27 at (180°, 0.5, 120°),
-    (180°, 0.8, 180°), to within a few ε of :func:`circle_guiding`; it converged at every one of 60
-    designs sampled over δ 90°-270° (median 27 steps, at most 90).
+    (180°, 0.8, 180°), to within a few ε of :func:`circle_guiding`.
+
+    An iterate may leave the crank's range (0, min(a, 2 − a)): from r0 = a/4 the first r1 is negative at
+    short dwells, e.g. (δ, a, 2α) = (90°, 0.7, 60°), (120°, 0.9, 60°), (150°, 1.1, 60°). The scheme's
+    formulas still hold there ((5) and a + r = 2 sin(μ0/2) while 0 < a + r < 2) and the halving brings the
+    next iterate back, as the thesis' scheme does; only the converged r must be a design: in the crank's
+    range with its touches in order μ0 > μ3 > μ2 > μ1. Raises SynthesisError where the touch equations
+    have no solution, a + r leaves (0, 2), the fixed point is not a design or ``maxiter`` steps do not
+    settle; the scheme is a fixed-point iteration without a convergence proof, so it may fail where
+    :func:`circle_guiding` finds a design.
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "thesis iteration")
     maxiter = int(_bounded("maxiter", maxiter, 1, 10_000))
@@ -725,12 +733,13 @@ def thesis_iteration(delta: float, a: float, dwell: float, tol: float = 1e-6, ma
         d0 = 2 * np.sin(mu0 / 2)
         r1 = 0.5 * (d0 - (q / p) / d0)
         rows.append((r0, r1, mu0, mu1, m3, m2))
-        if res > 1e-9 or not np.isfinite(r1) or not mu1 < m2 < m3 < mu0:
+        design = 0 < r0 < min(a, 2 - a) and mu1 < m2 < m3 < mu0
+        if res > 1e-9 or not np.isfinite(r1) or (abs(r1 - r0) <= tol and not design):
             break
         if abs(r1 - r0) <= tol:
             return ThesisIteration(float(r1), step, np.array(rows))
         r0 = 0.5 * (r0 + r1)
-        if not 0 < r0 < min(a, 2 - a):
+        if not 0 < a + r0 < 2:   # μ0 from a + r = 2 sin(μ0/2) no longer exists
             break
     raise SynthesisError(f"the thesis' iteration did not converge for δ = {np.degrees(delta):.4g}°, "
                          f"a = {a:.4g}, 2α = {np.degrees(dwell):.4g}° after {len(rows)} steps (last r = {r0:.6g})")

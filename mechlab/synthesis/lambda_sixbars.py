@@ -74,7 +74,18 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
           mu_min: MuMin = np.radians(30)) -> LambdaRockerSixBar:
     """МЧВ1 from a circle-guiding design, a time ratio K and a swing β_m (radians) — Fig. 3.
 
-    ``side`` picks F on one or the other side of the chord Q-E1. Raises InfeasibleDesignError
+    The rod's direction at the far extreme, E1 = D1 + R·n, is the normal n to the coupler curve at D1
+    oriented by O1 − D0 (O1 = Q, the arc centre; D0 = D at the dwell's centre): in the dwell E sits at O1,
+    so the rod points along O1 − D0, and from there to the far extreme it turns with the normal of the
+    convex branch without changing assembly, staying on that side of the curve. Orienting it by O1 − D1
+    instead fails where O1 lies near the tangent at D1: at (δ, a, 2α) = (180°, 1.2, 240°), K = 1,
+    n·(O1 − D1) = −0.014 picks the wrong side (S = 0.5052 instead of 0.53381, b = 1.53705).
+
+    ``side`` picks the rocker's pivot F on the perpendicular bisector of the chord O1-E1 (the thesis' locus
+    of F for a given K): +1 (the default) to the left of O1→E1, −1 to the right. The thesis fixes F by
+    its figure only; +1 is kept as the default for continuity with earlier results, and the other side
+    gives a different mechanism (at (δ, a, 2α) = (180°, 0.5, 240°), K = 1, β_m = 20°, side −1 has B, C, D
+    9 %, 0.6 % and 28 % larger): pass ``side`` to choose, and compare both with :func:`report`. Raises InfeasibleDesignError
     (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
     ``mu_min`` is None — when the transmission angle D-E-F of the attached dyad leaves the working
     range [μ_min, 180° − μ_min] over the turn (Kinitsky (1994), §1.8: 30° ≤ μ ≤ 150°, the figure "cnm"
@@ -84,10 +95,11 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
     m, alpha, R, Q = guide.mechanism, guide.alpha, guide.R, guide.centre
     phi_far = np.pi + alpha + time_ratio_far_angle(K, guide.dwell)
     D1 = m.motion(np.array([phi_far])).points["D"]
+    D0 = m.coupler_point(np.array([np.pi]))[0]
     v = D1.d[0] / np.hypot(*D1.d[0])
-    # the rod lies along the normal at D1, on the side of the arc centre (where E was)
+    # the rod lies along the normal at D1, on the side the rod D0→E = Q points to in the dwell (docstring)
     n = np.array([-v[1], v[0]])
-    if n @ (Q - D1.p[0]) < 0:
+    if n @ (Q - D0) < 0:
         n = -n
     E1 = D1.p[0] + R * n
     S = float(np.hypot(*(E1 - Q)))
@@ -100,7 +112,6 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
     F = U + side * h * np.array([-w[1], w[0]])
     # the assembly in which E sits at E1 at the far extreme (and near Q in the dwell)
     asm = 1 if cross(F - D1.p[0], E1 - D1.p[0]) > 0 else -1
-    D0 = m.coupler_point(np.array([np.pi]))[0]
     if (cross(F - D0, Q - D0) > 0) != (asm > 0):
         raise InfeasibleDesignError(
             f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the rod D-E would have to change "

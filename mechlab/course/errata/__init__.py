@@ -41,7 +41,9 @@ class Claim:
     """A printed expression and its correction evaluated on the same numbers, against the truth.
 
     ``truth`` is computed independently of both; the correction must match it within ``tol``
-    and the printed expression must miss it by more (arrays: the worst point counts).
+    and the printed expression must miss it by more than ``printed_tol`` (default ``tol``; e.g.
+    half a unit of the printed last digit where the correction is exact); both may be one value per
+    entry. Arrays: with ``each`` every printed entry must be wrong, else the worst point counts.
     ``text`` says what was evaluated, on which numbers. Making a Claim judges it: it raises
     AssertionError when it does not hold, so ``Erratum.check()`` fails like an assert.
     """
@@ -49,9 +51,10 @@ class Claim:
     truth: object
     printed: object
     correct: object
-    tol: float
+    tol: object
     text: str
     each: bool = True
+    printed_tol: object = None
 
     def __post_init__(self):
         self.judge()  # a claim that does not hold cannot be made
@@ -64,14 +67,24 @@ class Claim:
         (with ``each``, at any of the compared points: every printed entry must be wrong) or the
         correction wrong."""
         t, p, c = (np.asarray(v, dtype=float) for v in (self.truth, self.printed, self.correct))
+        tol = np.broadcast_to(np.asarray(self.tol, dtype=float), t.shape)
+        ptol = tol if self.printed_tol is None else np.broadcast_to(np.asarray(self.printed_tol, dtype=float), t.shape)
         miss_c = float(np.max(np.abs(c - t)))
         miss_p = float((np.min if self.each else np.max)(np.abs(p - t)))
-        if not miss_c <= self.tol:
-            raise AssertionError(f"{self.text}: the correction misses the truth by {miss_c:.3g} > {self.tol:g}")
-        if not miss_p > self.tol:
+        if not np.all(np.abs(c - t) <= tol):
+            raise AssertionError(f"{self.text}: the correction misses the truth by {miss_c:.3g} > {_show(tol)}")
+        margin = np.abs(p - t) - ptol
+        if not (np.min if self.each else np.max)(margin) > 0:
             raise AssertionError(f"{self.text}: the printed expression agrees with the truth ({miss_p:.3g} ≤ "
-                                 f"{self.tol:g}); it is not a mistake")
-        return f"{self.text} (printed off by {miss_p:.3g}; corrected within {miss_c:.1g}, tolerance {self.tol:.3g})"
+                                 f"{_show(ptol)}); it is not a mistake")
+        return (f"{self.text} (printed off by {miss_p:.3g}; corrected within {miss_c:.1g}, tolerance {_show(tol)}"
+                + ("" if self.printed_tol is None else f", printed beyond {_show(ptol)}") + ")")
+
+
+def _show(tol) -> str:
+    """A tolerance as one number, or its range when it differs per entry."""
+    lo, hi = float(np.min(tol)), float(np.max(tol))
+    return f"{hi:.3g}" if lo == hi else f"{lo:.3g}…{hi:.3g}"
 
 
 @dataclass(frozen=True)

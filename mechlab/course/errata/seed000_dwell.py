@@ -69,6 +69,19 @@ def _beta_right():
             f"{abs(2 * printed_dbeta_pi):.3f}·ω1 at φ = π); corrected β'(π) = {correct:.1e}"))
 
 
+def _beta_middle():
+    # on the dwell [φ1, φ2] the link stands at ψ_B, so β = ψ_K − ψ_B; truth: ψ_K − the simulated ψ
+    m = curved_slot_dwell(LAM, P1, P2)
+    phi = np.linspace(P1, P2, 7)
+    K = base_law(LAM, phi).psi
+    c = LAM * P1 / (3 * (LAM + 1))
+    truth = K - m.motion(phi).psi
+    return Claim(truth, K + c, K - c, 1e-12, text=(
+        f"λ = 0.5, dwell [60°, 150°] at 7 angles: ψ_K − ψ(simulated) = β; the printed constant +λφ1/(3(λ+1)) = "
+        f"+{np.degrees(c):.3f}° (the end pieces' wrong sign) puts the slot {np.degrees(2 * c):.3f}° off; with "
+        f"−λφ1/(3(λ+1)) = −ψ_B it is exact"))
+
+
 def _distance():
     m = curved_slot_dwell(LAM, P1, P2)
     lOA, lOB = m.crank, m.pivot_distance
@@ -127,6 +140,11 @@ ERRATA = [
             correct=r"$\beta = \mathrm{arctg}(\dots) - \frac{\lambda\varphi_1}{3(\lambda+1)} + "
                     r"\frac{\lambda(\varphi-\varphi_2)^3}{3(1-\lambda)(\pi-\varphi_2)^2}$",
             check=_beta_right, notebook=NB),
+    Erratum(source="000", where="§3, slot profile β(φ) on [φ1, φ2] (the source's (23))",
+            printed=r"$\beta = \mathrm{arctg}(\dots) + \frac{\lambda\varphi_1}{3(\lambda+1)}$",
+            correct=r"$\beta = \mathrm{arctg}(\dots) - \frac{\lambda\varphi_1}{3(\lambda+1)} = \psi_K - \psi_B$ "
+                    r"(the link dwells at ψ_B)",
+            check=_beta_middle, notebook=NB),
     Erratum(source="000", where="§3, distance S(φ) from A to B",
             printed=r"$S = \sqrt{(l_{OA}\cos\varphi - l_{OB})^2 + (l_{OA}\sin\varphi)^2}$",
             correct=r"$S = \sqrt{(l_{OA}\cos\varphi + l_{OB})^2 + (l_{OA}\sin\varphi)^2}$ (φ = 0 farthest from B)",

@@ -51,13 +51,15 @@ def _two_branch_jump():
 
 
 def _notation():
-    fb = FourBar(0.3, 0.8, 1.0, 1.0, 1)
+    # l_BE ≠ l_OE, so the twin's pivot distance tells which of the two §2's l_OB is
+    l_oa, l_ab, l_be, l_oe = 0.3, 0.8, 1.2, 1.0
+    fb = FourBar(l_oa, l_ab, l_be, l_oe, 1)
     slot = equivalent_slot(fb).slot_mechanism
-    assert slot.pivot_distance == 1.0 and slot.crank == 0.3
-    return (f"the four-bar O-A-B-E (0.3, 0.8, 1, 1) of §1: its slotted twin has crank {slot.crank:g} and pivot "
-            f"distance {slot.pivot_distance:g} = l_OE; so §2's B (the slotted link's pivot) is §1's E, and "
-            f"λ = l_OA/l_OB of (18) is l_OA/l_OE = {slot.crank / slot.pivot_distance:g}, not l_OA over the "
-            f"distance to §1's joint B")
+    assert slot.pivot_distance == l_oe != l_be and slot.crank == l_oa
+    return (f"the four-bar O-A-B-E (l_OA, l_AB, l_BE, l_OE) = ({l_oa:g}, {l_ab:g}, {l_be:g}, {l_oe:g}): its slotted "
+            f"twin has crank {slot.crank:g} and pivot distance {slot.pivot_distance:g} = l_OE (not l_BE = {l_be:g}); "
+            f"so §2's B (the slotted link's pivot) is §1's E, and λ = l_OA/l_OB of (18) is l_OA/l_OE = "
+            f"{slot.crank / slot.pivot_distance:g}, not l_OA over the distance to §1's joint B")
 
 
 ERRATA = [

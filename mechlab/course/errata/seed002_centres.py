@@ -1,4 +1,10 @@
-"""Mistakes in Kozhevnikov (§7.1-7.2), each recomputed by mechlab.analysis.centres."""
+"""Kozhevnikov (§7.1-7.2): two passages we could only read by guessing an OCR-garbled line, each
+recomputed by mechlab.analysis.centres under that reading.
+
+Both rest on one reading of the line that names the angle α (and the points B, C) on the trammel's
+and the antiparallelogram's drawings. Under our reading (7.11) and the text are wrong; a
+self-consistent reading, with α measured from the other guide, makes (7.11) right. The scan does not
+settle which, so they are listed as unreadable passages, with the computation for our reading."""
 
 import numpy as np
 
@@ -76,13 +82,15 @@ ERRATA = [
     Erratum(
         source="002", where="§7.2, formula (7.11) (the elliptic trammel's drawing)",
         printed=r"$y = \frac{BC}{\sin\beta} = \frac{l_{AB}\cos(\beta-\alpha)}{\sin\beta}$",
-        correct=r"$y = \frac{l_{AB}\cos\alpha}{\sin\beta}$ (the α of (7.10), (7.13), (7.14)); only then "
-                r"(7.10)² + (7.11)² gives (7.12)",
-        check=_trammel_y_coordinate, notebook=NOTEBOOK),
+        correct=r"if α is the angle of (7.10), (7.13), (7.14) as we read the garbled line: "
+                r"$y = \frac{l_{AB}\cos\alpha}{\sin\beta}$, and only then (7.10)² + (7.11)² gives (7.12); "
+                r"with α measured from the other guide the printed (7.11) is right",
+        check=_trammel_y_coordinate, notebook=NOTEBOOK, kind="unreadable"),
     Erratum(
         source="002", where="§7.2, text on the antiparallelogram's drawing",
         printed="the centre of links 2 and 4 lies at the intersection of lines AB and BC",
-        correct="… of the lines of links 1 and 3 (AB and CD for the loop A-B-C-D): lines AB and BC only "
-                "meet at the joint B",
-        check=_antiparallelogram_pole, notebook=NOTEBOOK),
+        correct="as we read the garbled letters: … of the lines of links 1 and 3 (AB and CD for the loop "
+                "A-B-C-D), since lines AB and BC only meet at the joint B; the letters rest on the same guessed "
+                "reading as (7.11)",
+        check=_antiparallelogram_pole, notebook=NOTEBOOK, kind="unreadable"),
 ]

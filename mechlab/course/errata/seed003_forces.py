@@ -61,9 +61,9 @@ def _check_rod_tangential() -> str:
 
 
 def _check_crank_moment() -> str:
-    """The crank's moment equation about B drops the crank's inertia force F_И1 (and couple
-    M_И1) that its force equation includes; harmless only when ε1 = 0 and the crank's
-    centre of mass lies on the line OB."""
+    """The crank's moment equation about B leaves out the crank's inertia force F_И1 (and couple
+    M_И1) that its force equation includes: exact under the source's uniform rotation (ε1 = 0,
+    centre of mass on OB), a remark; shown wrong only for an accelerating crank."""
     out = []
     for eps1 in (0.0, 400.0):
         model, mo, res = _rod_group(eps1)
@@ -113,8 +113,8 @@ ERRATA = [
             check=_check_rod_tangential, notebook=NOTEBOOK),
     Erratum(source="003", where="slider-crank with an additional link, the drawing of the leading link, moment equation about B",
             printed=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l$",
-            correct=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l \pm F_{\text{И}1} h_{\text{И}1} \mu_l \pm M_{\text{И}1}$: the inertia force that the force equation includes also has a moment about B (zero only if ε1 = 0 and the centre of mass is on OB)",
-            check=_check_crank_moment, notebook=NOTEBOOK),
+            correct=r"exact under the source's uniform rotation (ε1 = 0, centre of mass on OB); in general $M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l \pm F_{\text{И}1} h_{\text{И}1} \mu_l \pm M_{\text{И}1}$: with a crank acceleration (a start-up) the crank's inertia force, which the force equation includes, also has a moment about B",
+            check=_check_crank_moment, notebook=NOTEBOOK, kind="remark"),
     Erratum(source="004", where="last section, mean crank torque with friction losses",
             printed=r"$M_{cp} \approx n\,\eta^{-1} \sum P_i \rho_i \omega/\omega_{KP}$",
             correct=r"$M_{cp} \approx (n\,\eta)^{-1} \sum P_i \rho_i \omega/\omega_{KP}$ (the mean of the n sampled torques, as in $M_{cp} = \sum R_i\rho_i/n$ above it)",
