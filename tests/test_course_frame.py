@@ -548,3 +548,19 @@ def test_a_glossary_symbol_pattern_tells_symbols_apart():
     assert symbol_pattern(r"\mu").search("μ_min") and not symbol_pattern(r"\mu").search(r"\mult")
     assert symbol_pattern("P_{ij}").search("$P_{13}$") and not symbol_pattern("P_{ij}").search("P_b")
     assert not symbol_pattern("k_a").search("k_c")
+
+
+def test_chapters_promise_on_the_hub_only_what_its_image_installs():
+    """The hub image (binder/postBuild installs the `hub` extra) has no nbgrader, so no Assignments tab: a chapter
+    that told students to use one would send them looking for a panel that is not there."""
+    import tomllib
+
+    hub = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]["hub"]
+    assert '".[hub]"' in (ROOT / "binder" / "postBuild").read_text()   # the image installs exactly the hub extra
+    if not any(dep.startswith("nbgrader") for dep in hub):
+        promised = [p.name for p in CHAPTERS
+                    if re.search(r"Assignments\s+tab", "\n".join(source(c) for c in cells(p)))]
+        assert not promised, f"chapters promise the hub's Assignments tab, which its image lacks: {promised}"
+    for path in CHAPTERS:
+        exercises = next(source(c) for c in cells(path) if source(c).startswith("## Exercises"))
+        assert "JupyterHub" in exercises and "assignment link" in exercises, f"{path.name}: how to get it on the hub"
