@@ -198,11 +198,15 @@ def test_built_fourbar_equals_the_closed_form(fb, shift):
     phi = phi[np.sin(fb.motion(phi).transmission) > np.sin(15 * DEG)]
     assume(len(phi) >= 8)
     a, b = lk.motion(phi), fb.motion(phi)
-    assert close(a.psi, b.psi) and close(a.dpsi, b.dpsi) and close(a.transmission, b.transmission)
-    # ψ'' to 2e-12: FourBar(3, 4, 0.25, 1)'s own ψ'' lies 9.5e-13 from a 40-digit closed form, the built one's 3.5e-13
-    assert close(a.ddpsi, b.ddpsi, 2e-12)
+    # rounding in a dyad's solve grows with the ratio of its lengths (hypothesis found 3.2e-12 at 1 : 5 : 0.27 : 5):
+    # 1e-12 up to a ratio of 5, in proportion beyond it
+    lengths = (fb.crank, fb.coupler, fb.rocker, fb.ground)
+    tol = 1e-12 * max(1.0, max(lengths) / min(lengths) / 5)
+    assert close(a.psi, b.psi, tol) and close(a.dpsi, b.dpsi, tol) and close(a.transmission, b.transmission, tol)
+    # ψ'' at twice that: FourBar(3, 4, 0.25, 1)'s own ψ'' lies 9.5e-13 from a 40-digit closed form, the built one's 3.5e-13
+    assert close(a.ddpsi, b.ddpsi, 2 * tol)
     for k in "AB":
-        assert all(close(x, y) for x, y in zip(a.points[k], b.points[k], strict=True))
+        assert all(close(x, y, tol) for x, y in zip(a.points[k], b.points[k], strict=True))
 
 
 def test_built_slider_crank_equals_the_closed_form():
