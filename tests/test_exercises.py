@@ -196,25 +196,52 @@ def _notebooks():
     return sorted(SOURCE.glob("*/*.ipynb"))
 
 
-def test_every_chapter_has_an_assignment_of_four_exercises_of_three_kinds():
+# issue 25's kinds; a "code" exercise (write a function) is allowed but does not count among the four
+COUNTED = {"predict", "compute", "explain", "debug", "design", "graphical"}
+KINDS = COUNTED | {"code"}
+# the assignments not yet rewritten to issue 25's standard (five exercises of four kinds, explain and debug
+# among them); each entry fails the test below strictly once it is rewritten, so the list only shrinks
+NOT_YET = {"base_mechanism", "cams", "chebyshev_sixbars", "chebyshev_synthesis", "choosing", "dwell_curved_slot",
+           "equivalence", "forces", "geneva", "getting_started", "instant_centres", "symmetry"}
+
+
+def _kinds(path) -> list[str]:
+    nb = json.loads(path.read_text())
+    heads = [c["source"] if isinstance(c["source"], str) else "".join(c["source"]) for c in nb["cells"]
+             if c["cell_type"] == "markdown" and "".join(c["source"]).startswith("## Exercise")]
+    return [" ".join(h.split()).split("·")[1].split("(")[0].strip() for h in heads]
+
+
+def test_every_chapter_has_an_assignment():
     ids = {p.stem for p in _notebooks()}
     pointed = {m for nb in (SOURCE.parents[1] / "notebooks").glob("*.ipynb")
                for m in re.findall(r"assignments/release/(\w+)/", nb.read_text())}
     assert pointed <= ids and len(ids) >= 11, pointed - ids      # every chapter's pointer has its assignment
-    for path in _notebooks():
-        nb = json.loads(path.read_text())
-        heads = [c["source"] if isinstance(c["source"], str) else "".join(c["source"]) for c in nb["cells"]
-                 if c["cell_type"] == "markdown" and "".join(c["source"]).startswith("## Exercise")]
-        heads = [" ".join(h.split()) for h in heads]
-        kinds = [h.split("·")[1].split("(")[0].strip() for h in heads]
-        assert len(kinds) >= 4 and len(set(kinds)) >= 3, (path.stem, kinds)
-        assert set(kinds) <= {"predict", "compute", "design", "code"}
-        assert "design" in kinds or "code" in kinds, path.stem
-        for h in heads:                                              # each states its unit or what is checked
-            if "· compute" in h:
-                assert "3 significant figures" in h or "in mm" in h.lower() or "**in" in h, (path.stem, h)
-        for c in nb["cells"]:
-            meta = c["metadata"].get("nbgrader", {})
-            if meta.get("grade"):
-                assert meta["points"] >= 0 and c["cell_type"] == "code"
-            assert not c.get("outputs") and c.get("execution_count") is None
+    assert NOT_YET <= ids
+
+
+@pytest.mark.parametrize("path", _notebooks(), ids=lambda p: p.stem)
+def test_an_assignment_has_five_exercises_of_four_kinds(path, request):
+    if path.stem in NOT_YET:
+        request.applymarker(pytest.mark.xfail(strict=True, reason="not yet rewritten for issue 25"))
+    kinds = _kinds(path)
+    assert set(kinds) <= KINDS, (path.stem, kinds)
+    assert len(kinds) >= 5 and len(set(kinds) & COUNTED) >= 4, (path.stem, kinds)
+
+
+@pytest.mark.parametrize("path", _notebooks(), ids=lambda p: p.stem)
+def test_an_assignment_states_units_and_points(path):
+    nb = json.loads(path.read_text())
+    kinds = _kinds(path)
+    assert len(kinds) >= 4 and len(set(kinds)) >= 3 and set(kinds) <= KINDS, (path.stem, kinds)
+    assert {"design", "code", "debug"} & set(kinds), path.stem
+    for c in nb["cells"]:
+        text = " ".join("".join(c["source"]).split())
+        if c["cell_type"] == "markdown" and text.startswith("## Exercise") and "· compute" in text:
+            assert "3 significant figures" in text or "in mm" in text.lower() or "**in" in text, (path.stem, text)
+        meta = c["metadata"].get("nbgrader", {})
+        if meta.get("grade") and c["cell_type"] == "markdown":
+            assert meta.get("solution") and "explain" in kinds      # a hand-graded answer is an explanation
+        elif meta.get("grade"):
+            assert meta["points"] >= 0 and c["cell_type"] == "code"
+        assert not c.get("outputs") and c.get("execution_count") is None

@@ -5,10 +5,10 @@ model): the grader must be able to say *which* slip an answer is (degrees for ra
 assembly, …), so the notebook needs one test per candidate value — the right one and every named slip —
 and it must agree with the grader to the last bin. Each candidate is replaced by the set of grid bins
 that the grader accepts for it (:func:`windows`: the textbook tolerance on a grid ten times finer than the
-third significant figure for the right value, a 1 % window on the third-figure grid for "close" and the
-slips). A bin is written ``"<grid>|<decade>|<index>"`` and stored only as the first 4 bytes of
+third significant figure for the right value, a 1 % window on a logarithmic grid of 0.2 % steps for
+"close" and the slips). A bin is written ``"<grid>|<decade or sign>|<index>"`` and stored only as the first 4 bytes of
 HMAC-SHA256(salt, bin). The self-check hashes the few bins the student's answer falls in (its own decade
-and the two next to it, both grids) and looks them up, kind by kind, in the grader's order. The grader
+and the two next to it on the fine grid, one logarithmic bin) and looks them up, kind by kind, in the grader's order. The grader
 (:func:`mechlab.course.exercises.check`) runs the same :func:`classify` on the bins in clear, so the two
 verdicts are the same function of the answer; they could differ only on a 32-bit hash collision
 (≈ 1e-7 per check).
@@ -35,6 +35,8 @@ from typing import Iterable
 DIGEST = 4
 #: relative window of a slip and of "close": the grader's 1 %
 WINDOW = 0.01
+#: the logarithmic grid of the slip windows: 0.2 % steps
+_LOG_STEP = math.log1p(0.002)
 
 
 def _decade(x: float) -> int:
@@ -45,25 +47,30 @@ def windows(value: float, *, right: bool, significant: int = 3) -> set[str]:
     """The bins the grader accepts around ``value``.
 
     ``right``: the textbook tolerance — half a unit in the ``significant``-th figure — on a grid ten
-    times finer (``"f"`` bins, ±5 of them). Otherwise a ±1 % window on the grid of the third figure
-    (``"c"`` bins). A zero value lives in decade −1 (the decade every answer's look-up includes).
+    times finer (``"f"`` bins, ±5 of them; a zero value lives in decade −1, which every look-up includes).
+    Otherwise a ±1 % window on a logarithmic grid of 0.2 % steps (``"c"`` bins, sign apart: 11 of them).
     """
-    d = _decade(value)
     if right:
+        d = _decade(value)
         step = 10.0 ** (d - significant)
         centre = round(value / step)
         return {f"f{significant}|{d}|{centre + k}" for k in range(-5, 6)}
-    step = 10.0 ** (d - 2)
-    lo, hi = sorted((value * (1 - WINDOW), value * (1 + WINDOW)))
-    return {f"c|{d}|{k}" for k in range(round(lo / step), round(hi / step) + 1)}
+    if not value:
+        return {"c|0"}
+    sign = "+" if value > 0 else "-"
+    lo, hi = (round(math.log(abs(value) * (1 + s * WINDOW)) / _LOG_STEP) for s in (-1, 1))
+    return {f"c|{sign}|{k}" for k in range(lo, hi + 1)}
 
 
 def lookups(answer: float, significant: int = 3) -> set[str]:
-    """The bins an answer falls in: its own decade, the two next to it and decade −1 (zero), both grids."""
-    out = set()
-    for d in {_decade(answer) - 1, _decade(answer), _decade(answer) + 1, -1}:
-        out.add(f"f{significant}|{d}|{round(answer / 10.0 ** (d - significant))}")
-        out.add(f"c|{d}|{round(answer / 10.0 ** (d - 2))}")
+    """The bins an answer falls in: on the fine grid in its own decade, the two next to it and decade −1
+    (zero); on the logarithmic grid its one bin."""
+    out = {f"f{significant}|{d}|{round(answer / 10.0 ** (d - significant))}"
+           for d in {_decade(answer) - 1, _decade(answer), _decade(answer) + 1, -1}}
+    if abs(answer) < 1e-12:
+        out.add("c|0")
+    else:
+        out.add(f"c|{'+' if answer > 0 else '-'}|{round(math.log(abs(answer)) / _LOG_STEP)}")
     return out
 
 
@@ -156,8 +163,8 @@ def choice_verdict(body: dict, option: str) -> tuple[bool, str] | None:
     """(right, hint) for a choice the token lists, None for one it does not."""
     key = body["s"].encode()
     mine = base64.b64encode(digest(key, f"choice|{option}")).decode()
-    for digest, sealed in body["rows"]:
-        if digest == mine:
+    for stored, sealed in body["rows"]:
+        if stored == mine:
             return _decrypt(key, option, sealed)
     return None
 
