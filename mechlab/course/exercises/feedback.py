@@ -126,12 +126,15 @@ def check(answer, expected: float, *, name: str = "answer", unit: str = "", sign
         _RECORDING.append(call)
         return Verdict(True, "recorded", f"{name}: recorded")
     a = _parsed(answer, name, unit)
+    slip = ""
     if isinstance(a, Verdict):
         verdict = a
     else:
         table = selfcheck.candidates(call["expected"], call["unit_slips"], call["alternatives"], significant)
-        verdict = _number_verdict(a, selfcheck.classify(a, table, significant), call)
-    _log(call, verdict, answer)
+        found = selfcheck.classify(a, table, significant)
+        verdict = _number_verdict(a, found, call)
+        slip = {"units": f"{found[1]} for {unit}", "alternative": found[1]}.get(found[0], "") if found else ""
+    _log(call, verdict, answer, slip)
     return verdict
 
 
@@ -205,10 +208,10 @@ def recording():
         _RECORDING = previous
 
 
-def _log(call: dict, verdict: Verdict, answer) -> None:
+def _log(call: dict, verdict: Verdict, answer, slip: str = "") -> None:
     """The grader's verdict, for the class report (only while ``make grade`` names a log file)."""
     number = _number(answer) if call["kind"] == "number" else None
-    selfcheck.record({"name": call["name"], "kind": verdict.kind, "ok": verdict.ok,
+    selfcheck.record({"name": call["name"], "kind": verdict.kind, "ok": verdict.ok, "slip": slip,
                       "answer": number if number is not None else (None if answer in (None, Ellipsis)
                                                                       else str(answer)[:40])})
 
