@@ -88,7 +88,8 @@ clean:
 # nbgrader lives in a folder of its own, not in the course's venv, so its JupyterLab extensions stay
 # out of the students' lab; `make student` writes the student edition to assignments/release,
 # `make grade SUBMISSIONS=<folder>` grades <folder>/<student>/<id>.ipynb into assignments/graded
-# (grades.csv, feedback/<student>/<id>.html), `make book-instructor` executes the worked solutions
+# (grades.csv, feedback/<student>/<id>.html; each submission in a sandbox of its own; results accumulate,
+# FRESH=1 starts a new grades.csv after asking, the old kept in history/), `make book-instructor` executes the worked solutions
 # to HTML in assignments/instructor (all three folders git-ignored).
 NBGRADER_DEPS := assignments/.nbgrader-deps
 NBGRADER_PINS := nbgrader==0.9.6 alembic==1.20.1 Mako==1.4.3 RapidFuzz==3.14.6
@@ -103,7 +104,7 @@ student: nbgrader
 
 grade: nbgrader
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade SUBMISSIONS=<folder of <student>/<id>.ipynb>"; exit 1; }
-	$(NBGRADER_ENV) $(BIN)/python assignments/course.py grade "$(SUBMISSIONS)"
+	$(NBGRADER_ENV) $(BIN)/python assignments/course.py grade "$(SUBMISSIONS)" $(if $(FRESH),--fresh)
 
 book-instructor: venv
 	rm -rf assignments/instructor

@@ -1,36 +1,46 @@
 """The lecturer's two commands around nbgrader (see README, "For lecturers"); run by `make student` and `make grade`.
 
     python assignments/course.py student [--out assignments/release]
-    python assignments/course.py grade SUBMISSIONS [--out assignments/graded] [--timeout 60]
+    python assignments/course.py grade SUBMISSIONS [--out assignments/graded] [--timeout 60] [--fresh [--yes]]
 
-Both work in a fresh temporary nbgrader course (this folder's ``source/`` and ``nbgrader_config.py``), so
+Both work in fresh temporary nbgrader courses (this folder's ``source/`` and ``nbgrader_config.py``), so
 nothing tracked is written. ``student`` writes the student edition (solutions and hidden tests removed).
 ``grade`` takes a folder with one sub-folder per student holding that student's notebooks, named
 ``<assignment id>.ipynb`` (or a re-download's ``<id> (1).ipynb``: the last saved counts) anywhere below
-it; it autogrades them (a cell left running is interrupted after ``--timeout`` seconds, deleted graded
-cells are restored, an error in any cell does not stop the run) and writes ``grades.csv`` (nbgrader's
-gradebook export) and ``feedback/<student>/<assignment>.html``.
+it. Each submission is graded in a sandbox of its own (a fresh course holding only it, its own temp folder,
+both removed afterwards), so no submission sees a file another one wrote. A cell left running is
+interrupted after ``--timeout`` seconds, deleted graded cells are restored, an error in any cell does not
+stop the run. Results accumulate in ``grades.csv`` (nbgrader's gradebook export, one row per student and
+assignment) and ``feedback/<student>/<assignment>.html``: grading a late submission adds its row; grading a
+student again replaces only that student's row and page, and the replaced ones are kept in ``history.csv``
+and ``history/<time>/``. ``--fresh`` starts a new ``grades.csv`` (after a confirmation, or ``--yes``),
+keeping the old one in ``history/`` too: nothing graded is ever deleted.
 """
 
 from __future__ import annotations
 
 import argparse
 import csv
+import os
 import re
 import shutil
 import sys
 import tempfile
+import time
 import uuid
+from contextlib import contextmanager
 from pathlib import Path
 
 import nbformat
 
 HERE = Path(__file__).resolve().parent
+GRADES = "grades.csv"
 IDS = sorted(p.name for p in (HERE / "source").iterdir() if (p / f"{p.name}.ipynb").is_file())
 
 
 def _course(work: Path) -> Path:
-    shutil.copytree(HERE / "source", work / "source")
+    # files a run of the sources left (a DXF an exercise writes, checkpoints) are not part of the course
+    shutil.copytree(HERE / "source", work / "source", ignore=shutil.ignore_patterns("*.dxf", ".ipynb_checkpoints"))
     shutil.copy(HERE / "nbgrader_config.py", work)
     return work
 
@@ -76,9 +86,9 @@ def _assignment_id(nb: Path) -> str:
     return re.sub(r"\s*\(\d+\)$", "", nb.stem)
 
 
-def _collect(submissions: Path, work: Path) -> dict[str, list[str]]:
-    """Copy every student's notebooks into nbgrader's submitted/<student>/<id>/<id>.ipynb; of two notebooks
-    of one assignment (a re-download), the one saved last is graded."""
+def _collect(submissions: Path) -> dict[tuple[str, str], Path]:
+    """Every student's notebook of each assignment, {(student, id): path}; of two notebooks of one assignment
+    (a re-download), the one saved last is graded."""
     latest: dict[tuple[str, str], Path] = {}
     for folder in sorted(p for p in submissions.iterdir() if p.is_dir()):
         for nb in sorted(folder.rglob("*.ipynb")):
@@ -89,13 +99,7 @@ def _collect(submissions: Path, work: Path) -> dict[str, list[str]]:
             key = (folder.name, aid)
             if key not in latest or nb.stat().st_mtime > latest[key].stat().st_mtime:
                 latest[key] = nb
-    found: dict[str, list[str]] = {}
-    for (student, aid), nb in sorted(latest.items()):
-        dest = work / "submitted" / student / aid / f"{aid}.ipynb"
-        dest.parent.mkdir(parents=True, exist_ok=True)
-        nbformat.write(_without_copies(nbformat.read(nb, as_version=4)), dest)
-        found.setdefault(aid, []).append(student)
-    return found
+    return dict(sorted(latest.items()))
 
 
 def _without_copies(nb):
@@ -114,41 +118,143 @@ def _without_copies(nb):
     return nb
 
 
-def grade(submissions: Path, out: Path, timeout: int) -> None:
+@contextmanager
+def _temp_folder(path: Path):
+    """Point TMPDIR (and Windows' TMP, TEMP) at ``path`` for what starts inside: the graded kernel's
+    ``tempfile.gettempdir()`` is then the submission's own."""
+    names = ("TMPDIR", "TMP", "TEMP")
+    saved = {name: os.environ.get(name) for name in names}
+    os.environ.update(dict.fromkeys(names, str(path)))
+    try:
+        yield
+    finally:
+        for name, value in saved.items():
+            if value is None:
+                os.environ.pop(name, None)
+            else:
+                os.environ[name] = value
+
+
+def _grade_one(student: str, aid: str, nb: Path, timeout: int) -> tuple[list[dict], str | None]:
+    """Grade one submission in a sandbox of its own: a fresh nbgrader course holding only this notebook, and a
+    temp folder of its own, both removed afterwards. Files the submission writes are visible to its own checks
+    and to no other submission's. Returns nbgrader's CSV rows for it and its feedback page (None if none)."""
+    with tempfile.TemporaryDirectory(prefix="mechlab-grade-") as tmp:
+        sandbox = Path(tmp)
+        work = _course(sandbox / "course")
+        dest = work / "submitted" / student / aid / f"{aid}.ipynb"
+        dest.parent.mkdir(parents=True)
+        nbformat.write(_without_copies(nbformat.read(nb, as_version=4)), dest)
+        (sandbox / "tmp").mkdir()
+        with _temp_folder(sandbox / "tmp"):
+            api = _api(work, **{"Execute.timeout": timeout})
+            _release(api, [aid])
+            if _done(api.autograde(aid, student, force=True, create=True), f"autograde {student}/{aid}"):
+                _done(api.generate_feedback(aid, student, force=True), f"feedback {student}/{aid}")
+        rows = _export(work)
+        page = work / "feedback" / student / aid / f"{aid}.html"
+        return rows, page.read_text(encoding="utf-8") if page.is_file() else None
+
+
+def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: bool = False) -> None:
+    """Grade every submission below ``submissions`` into ``out``, adding to what was graded there before: a
+    re-graded student's rows and feedback replace only their own, and the replaced ones are kept in
+    ``out/history/``. ``fresh`` starts a new grades.csv, after a confirmation, keeping the old one in history."""
     if not submissions.is_dir():
         sys.exit(f"SUBMISSIONS={submissions} is not a folder (one sub-folder per student, holding <id>.ipynb)")
-    with tempfile.TemporaryDirectory() as tmp:
-        work = _course(Path(tmp))
-        found = _collect(submissions, work)
-        if not found:
-            sys.exit(f"no submitted notebook in {submissions} (expected <student>/<id>.ipynb, id one of "
-                     f"{', '.join(IDS)})")
-        api = _api(work, **{"Execute.timeout": timeout})
-        _release(api, found)
-        for aid, students in found.items():
-            for who in students:
-                if _done(api.autograde(aid, who, force=True, create=True), f"autograde {who}/{aid}"):
-                    _done(api.generate_feedback(aid, who, force=True), f"feedback {who}/{aid}")
-        shutil.rmtree(out, ignore_errors=True)
-        (out / "feedback").mkdir(parents=True)
-        _export(work, out / "grades.csv")
-        for html in (work / "feedback").glob("*/*/*.html"):
-            dest = out / "feedback" / html.parts[-3] / html.name
+    found = _collect(submissions)
+    if not found:
+        sys.exit(f"no submitted notebook in {submissions} (expected <student>/<id>.ipynb, id one of "
+                 f"{', '.join(IDS)})")
+    stamp = time.strftime("%Y%m%d-%H%M%S")
+    history = out / "history" / stamp
+    if fresh and (out / GRADES).is_file():
+        _confirm_fresh(out, yes)
+        _keep(out / GRADES, history / GRADES)
+        for page in (out / "feedback").glob("*/*.html"):
+            _keep(page, history / "feedback" / page.parent.name / page.name)
+    table = _read_grades(out / GRADES)
+    for (student, aid), nb in found.items():
+        rows, page = _grade_one(student, aid, nb, timeout)
+        old = [r for r in table if (r["student_id"], r["assignment"]) == (student, aid)]
+        if old:
+            _append_history(out / "history.csv", old, stamp)
+            feedback = out / "feedback" / student / f"{aid}.html"
+            if feedback.is_file():
+                _keep(feedback, history / "feedback" / student / feedback.name)
+        table = [r for r in table if r not in old] + rows
+        if page is not None:
+            dest = out / "feedback" / student / f"{aid}.html"
             dest.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy(html, dest)
-    with open(out / "grades.csv", newline="") as f:
-        for row in csv.DictReader(f):
+            dest.write_text(page, encoding="utf-8")
+        _write_grades(out / GRADES, table)  # after each submission: an interrupted run keeps what it graded
+    for row in table:
+        if (row["student_id"], row["assignment"]) in found:
             score, top = float(row["score"]), float(row["max_score"])
             print(f"{row['student_id']:>16} {row['assignment']:<22} {score:5.1f} / {top:g}")
-    print(f"graded {sum(map(len, found.values()))} notebooks: {out / 'grades.csv'}, feedback in {out / 'feedback'}")
+    print(f"graded {len(found)} notebooks into {out / GRADES} ({len(table)} rows in all), feedback in "
+          f"{out / 'feedback'}" + (f"; replaced results kept in {out / 'history'}" if history.exists() else ""))
 
 
-def _export(work: Path, dest: Path) -> None:
+
+def _confirm_fresh(out: Path, yes: bool) -> None:
+    if yes:
+        return
+    if not sys.stdin.isatty():
+        sys.exit("--fresh starts a new grades.csv; confirm with --yes (the old one is kept in history/)")
+    answer = input(f"Start a new {out / GRADES}? The old one and its feedback go to {out / 'history'}/. [y/N] ")
+    if answer.strip().lower() not in ("y", "yes"):
+        sys.exit("nothing changed")
+
+
+def _keep(path: Path, dest: Path) -> None:
+    """Move ``path`` into the history, never over an earlier copy."""
+    dest.parent.mkdir(parents=True, exist_ok=True)
+    n = 1
+    while dest.exists():
+        dest = dest.with_name(f"{dest.stem}.{n}{dest.suffix}")
+        n += 1
+    shutil.move(path, dest)
+
+
+def _read_grades(path: Path) -> list[dict]:
+    if not path.is_file():
+        return []
+    with open(path, newline="", encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+def _write_grades(path: Path, rows: list[dict]) -> None:
+    """Write through a temporary file beside it, so that grades.csv is never left truncated."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    rows = sorted(rows, key=lambda r: (r["assignment"], r["student_id"]))
+    fields = list(rows[0]) if rows else []
+    part = path.with_name(path.name + ".part")
+    with open(part, "w", newline="", encoding="utf-8") as f:
+        writer = csv.DictWriter(f, fieldnames=fields)
+        writer.writeheader()
+        writer.writerows(rows)
+    os.replace(part, path)
+
+
+def _append_history(path: Path, rows: list[dict], stamp: str) -> None:
+    new = not path.is_file()
+    with open(path, "a", newline="", encoding="utf-8") as f:
+        writer = csv.DictWriter(f, fieldnames=["replaced_at", *rows[0]])
+        if new:
+            writer.writeheader()
+        writer.writerows({"replaced_at": stamp, **r} for r in rows)
+
+
+def _export(work: Path) -> list[dict]:
+    """nbgrader's gradebook of one sandbox as CSV rows."""
     from nbgrader.api import Gradebook
     from nbgrader.plugins import CsvExportPlugin
 
+    dest = work / "grades.csv"
     with Gradebook(f"sqlite:///{work / 'gradebook.db'}") as gb:
         CsvExportPlugin(to=str(dest)).export(gb)
+    return _read_grades(dest)
 
 
 def main(argv=None) -> None:
@@ -160,11 +266,14 @@ def main(argv=None) -> None:
     g.add_argument("submissions", type=Path)
     g.add_argument("--out", type=Path, default=HERE / "graded")
     g.add_argument("--timeout", type=int, default=60, help="seconds a cell may run before it is interrupted")
+    g.add_argument("--fresh", action="store_true",
+                   help="start a new grades.csv (asks first; the old one is kept in <out>/history/)")
+    g.add_argument("--yes", action="store_true", help="with --fresh: do not ask")
     args = parser.parse_args(argv)
     if args.command == "student":
         student(args.out.resolve())
     else:
-        grade(args.submissions.resolve(), args.out.resolve(), args.timeout)
+        grade(args.submissions.resolve(), args.out.resolve(), args.timeout, args.fresh, args.yes)
 
 
 if __name__ == "__main__":

@@ -183,3 +183,108 @@ def test_student_edition_has_no_solution_and_no_answer(graded):
         assert secret and not [s for s in secret if s in student], aid
         assert "BEGIN SOLUTION" not in student and "HIDDEN TESTS" not in student
         assert not [v for v in values if len(v) > 3 and v in student], aid
+
+
+SLOT = "dwell_curved_slot"   # the assignment whose design exercise writes a file (a DXF) and checks it
+
+
+def _with_answer(nb, grade_id: str, code: str):
+    for cell in _cells(nb, "solution"):
+        if cell.metadata.nbgrader.grade_id == grade_id:
+            cell.source = code
+    return nb
+
+
+def test_a_submission_never_gets_credit_for_another_submissions_file(tmp_path):
+    """alice writes the DXF (beside her notebook and into the temp folder); mallory submits the right design,
+    writes no DXF and copies whatever lies in the temp folder. Graded in sequence, she must get no credit for
+    alice's file, and grading leaves nothing in the temp folder."""
+    release, subs, out, temp = (tmp_path / name for name in ("release", "subs", "out", "temp"))
+    temp.mkdir()
+    _run("student", "--out", str(release))
+    src = nbformat.read(SOURCE / SLOT / f"{SLOT}.ipynb", as_version=4)
+    design = next(c for c in _cells(src, "solution") if c.metadata.nbgrader.grade_id == "ex5")
+    right = _solution(design)
+    assert 'write_dxf(design, "packaging_slot.dxf")' in right
+    shared = 'import os, tempfile\nfrom mechlab.synthesis.slot_export import write_dxf\n' \
+             'write_dxf(design, os.path.join(tempfile.gettempdir(), "packaging_slot.dxf"))'
+    alice = _with_answer(_answered(SLOT, release), "ex5", right + "\n" + shared)
+    copying = ('import os, shutil, tempfile\n' + right.replace('write_dxf(design, "packaging_slot.dxf")', "") +
+               '\nleft = os.path.join(tempfile.gettempdir(), "packaging_slot.dxf")\n'
+               'if os.path.exists(left):\n    shutil.copy(left, "packaging_slot.dxf")')
+    mallory = _with_answer(_answered(SLOT, release), "ex5", copying)
+    for student, nb in (("alice", alice), ("mallory", mallory)):
+        (subs / student).mkdir(parents=True)
+        nbformat.write(nb, subs / student / f"{SLOT}.ipynb")
+    env_temp = {name: os.environ.get(name) for name in ("TMPDIR", "TMP", "TEMP")}
+    os.environ.update(dict.fromkeys(env_temp, str(temp)))
+    try:
+        _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT))
+    finally:
+        for name, value in env_temp.items():
+            os.environ.pop(name) if value is None else os.environ.__setitem__(name, value)
+    rows = {r["student_id"]: r for r in csv.DictReader(open(out / "grades.csv", newline=""))}
+    pts = _points(SLOT)
+    assert float(rows["alice"]["raw_score"]) == sum(pts)
+    assert float(rows["mallory"]["raw_score"]) == sum(pts) - 4      # the design exercise's 4 points
+    assert "no DXF file" in (out / "feedback" / "mallory" / f"{SLOT}.html").read_text()
+    assert list(temp.iterdir()) == []
+
+
+def test_a_dxf_outside_the_notebooks_folder_is_not_read(tmp_path, monkeypatch):
+    """The check reads only files in the working folder: a path into a shared folder is refused by name."""
+    import mechlab as ml
+    from mechlab.course.exercises import dwell_slot_design
+    from mechlab.synthesis.slot_export import write_dxf
+
+    design = ml.curved_slot_dwell(0.3, 1.03, 2.61, transition="quintic")
+    elsewhere = tmp_path / "shared" / "slot.dxf"
+    elsewhere.parent.mkdir()
+    write_dxf(design, elsewhere)
+    (tmp_path / "mine").mkdir()
+    monkeypatch.chdir(tmp_path / "mine")
+    report = dwell_slot_design(design, min_dwell=80, max_pressure=80, dxf=elsewhere)
+    assert not report and "beside this notebook" in report.problem
+    write_dxf(design, "slot.dxf")
+    assert dwell_slot_design(design, min_dwell=80, max_pressure=80, dxf="slot.dxf")
+
+
+def _grades(out: Path) -> dict[tuple[str, str], dict]:
+    with open(out / "grades.csv", newline="") as f:
+        return {(r["student_id"], r["assignment"]): r for r in csv.DictReader(f)}
+
+
+def test_grading_accumulates_and_keeps_what_it_replaces(tmp_path):
+    """A second `make grade` (a late submission, a re-graded student) adds to the first; the replaced row and
+    feedback are kept in history; --fresh refuses without a confirmation and keeps the old batch too."""
+    release, out = tmp_path / "release", tmp_path / "out"
+    _run("student", "--out", str(release))
+    empty = nbformat.read(release / CASES / f"{CASES}.ipynb", as_version=4)
+    first, second = tmp_path / "batch1", tmp_path / "batch2"
+    for folder, student, nb in ((first, "alice", _answered(CASES, release)), (first, "bob", empty),
+                                (second, "bob", _answered(CASES, release)), (second, "late", empty)):
+        (folder / student).mkdir(parents=True)
+        nbformat.write(nb, folder / student / f"{CASES}.ipynb")
+    top = sum(_points(CASES))
+    _run("grade", str(first), "--out", str(out), "--timeout", str(TIMEOUT))
+    assert float(_grades(out)[("bob", CASES)]["raw_score"]) == 0.0
+    _run("grade", str(second), "--out", str(out), "--timeout", str(TIMEOUT))
+    rows = _grades(out)
+    assert set(rows) == {("alice", CASES), ("bob", CASES), ("late", CASES)}
+    assert float(rows[("alice", CASES)]["raw_score"]) == top                 # untouched by the second batch
+    assert float(rows[("bob", CASES)]["raw_score"]) == top                   # replaced by his re-submission
+    with open(out / "history.csv", newline="") as f:
+        old = list(csv.DictReader(f))
+    assert [(r["student_id"], float(r["raw_score"])) for r in old] == [("bob", 0.0)] and old[0]["replaced_at"]
+    assert (out / "feedback" / "alice" / f"{CASES}.html").is_file()
+    kept = list((out / "history").glob(f"*/feedback/bob/{CASES}.html"))
+    assert len(kept) == 1 and "no answer yet" in kept[0].read_text()
+    env = dict(os.environ, PYTHONPATH=f"{DEPS}{os.pathsep}{ROOT}")
+    refused = subprocess.run([sys.executable, str(ROOT / "assignments" / "course.py"), "grade", str(second),
+                              "--out", str(out), "--fresh"], env=env, capture_output=True, text=True,
+                             stdin=subprocess.DEVNULL, timeout=300)
+    assert refused.returncode != 0 and "--yes" in refused.stderr + refused.stdout
+    assert _grades(out) == rows                                             # nothing changed
+    _run("grade", str(second), "--out", str(out), "--timeout", str(TIMEOUT), "--fresh", "--yes")
+    assert set(_grades(out)) == {("bob", CASES), ("late", CASES)}
+    assert len(list((out / "history").glob("*/grades.csv"))) == 1

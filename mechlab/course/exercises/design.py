@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Callable, Iterable, Sequence
 
 import numpy as np
@@ -196,7 +197,7 @@ def dwell_slot_design(mech, *, min_dwell: float, max_pressure: float, dxf: str |
                       n: int = 721) -> DesignReport:
     """A curved-slot dwell mechanism (Zinchenko et al., 2013, §3): dwell φ2 − φ1 ≥ ``min_dwell`` (degrees),
     the largest pressure angle over the turn < ``max_pressure`` (degrees), and — when ``dxf`` is given — that
-    file a readable DXF whose centre line (layer CENTRE) lies within 1e-3 pivot distances of the designed
+    file, which must lie in the working folder (the notebook's own, a submission's own when graded), a readable DXF whose centre line (layer CENTRE) lies within 1e-3 pivot distances of the designed
     slot's centre line."""
     from ...synthesis.dwell_slot import DwellSlotMechanism
 
@@ -220,6 +221,11 @@ def _dxf_gap(mech, path) -> tuple[float, str]:
     import ezdxf
 
     where = repr(os.fspath(path))
+    here = Path.cwd().resolve()
+    if here not in Path(path).resolve().parents:
+        # a file outside the notebook's own folder may be another student's: grading reads only the submission's
+        return np.inf, (f"write the DXF beside this notebook (a plain file name such as 'slot.dxf'), not to {where}: "
+                        "the check reads only files in the notebook's own folder")
     if not os.path.isfile(path):
         return np.inf, f"no DXF file at {where}: write it with mechlab.synthesis.slot_export.write_dxf"
     try:
