@@ -100,11 +100,11 @@ nbgrader: venv
 	    --target $(NBGRADER_DEPS) $(NBGRADER_PINS)
 
 student: nbgrader
-	$(NBGRADER_ENV) $(BIN)/python assignments/course.py student
+	$(NBGRADER_ENV) $(BIN)/python assignments/course.py student $(if $(CLASS),--class "$(CLASS)")
 
 grade: nbgrader
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade SUBMISSIONS=<folder of <student>/<id>.ipynb>"; exit 1; }
-	$(NBGRADER_ENV) $(BIN)/python assignments/course.py grade "$(SUBMISSIONS)" $(if $(FRESH),--fresh)
+	$(NBGRADER_ENV) $(BIN)/python assignments/course.py grade "$(SUBMISSIONS)" $(if $(FRESH),--fresh) $(if $(CLASS),--class "$(CLASS)")
 
 book-instructor: venv
 	rm -rf assignments/instructor
