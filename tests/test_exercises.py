@@ -245,3 +245,27 @@ def test_an_assignment_states_units_and_points(path):
         elif meta.get("grade"):
             assert meta["points"] >= 0 and c["cell_type"] == "code"
         assert not c.get("outputs") and c.get("execution_count") is None
+
+
+# -- no graded answer one public call away (tools/one_call_audit.py) -----------------------------------------
+def _audit():
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("one_call_audit", SOURCE.parents[1] / "tools" / "one_call_audit.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_the_audit_finds_a_one_call_answer():
+    audit = _audit()
+    found = audit.sweep([8.0, 150.0], {"ExternalGeneva": ml.ExternalGeneva, "FourBar": ml.FourBar})
+    assert audit.answered_by(ml.ExternalGeneva(8, 150.0).crank_radius, found).startswith("ExternalGeneva(8, 150)")
+    assert audit.answered_by(np.degrees(ml.ExternalGeneva(8, 150.0).index_angle), found).endswith("in degrees")
+    assert audit.answered_by(ml.ExternalGeneva(8, 150.0).crank_radius * 1.001, found) is None
+
+
+@pytest.mark.parametrize("aid", sorted({p.stem for p in _notebooks()} - NOT_YET))
+def test_no_graded_answer_is_one_public_call_away(aid):
+    audit = _audit()
+    rows = audit.audit(aid, audit.public_callables())
+    assert len(rows) >= 3 and not [r for r in rows if r[2]], rows

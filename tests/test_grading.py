@@ -382,3 +382,45 @@ def test_every_variant_solved_scores_full_marks_and_swapped_answers_are_flagged(
     assert any(f.startswith("flag: s00:") and "s01's answer" in f for f in flags), flags
     assert any(f.startswith("flag: s01:") and "s00's answer" in f for f in flags), flags
     assert not [f for f in flags if not f.startswith(("flag: s00:", "flag: s01:"))], flags
+
+
+@pytest.fixture(scope="module")
+def planted(tmp_path_factory):
+    """A class of six on the variant assignment: right, slipped, wrong, copied, empty, looping."""
+    tmp = tmp_path_factory.mktemp("planted")
+    ids = ["right", "slipped", "wrong", "copied", "empty", "looping"]
+    (tmp / "class.csv").write_text("\n".join(ids) + "\n")
+    release, subs, out = tmp / "release", tmp / "submissions", tmp / "graded"
+    _run("student", "--class", str(tmp / "class.csv"), "--assignment", VARIANT, "--out", str(release))
+    src = nbformat.read(SOURCE / VARIANT / f"{VARIANT}.ipynb", as_version=4)
+    edition = {who: nbformat.read(release / who / VARIANT / f"{VARIANT}.ipynb", as_version=4) for who in ids}
+    books = {"right": _fill(edition["right"], src), "wrong": _fill(edition["wrong"], src, which=set()),
+             "empty": edition["empty"], "copied": _fill(copy.deepcopy(edition["right"]), src),
+             "slipped": _fill(edition["slipped"], src), "looping": _fill(edition["looping"], src)}
+    slip = _answer_line(books["slipped"], "ex2")
+    slip.source += "\nindex_time = index_time * 1000  # in ms"                    # a unit slip
+    books["looping"].cells.insert(3, nbformat.v4.new_code_cell("while True:\n    pass"))
+    for who, nb in books.items():
+        (subs / who).mkdir(parents=True)
+        nbformat.write(nb, subs / who / f"{VARIANT}.ipynb")
+    _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT), "--class", str(tmp / "class.csv"))
+    with open(out / "class_report.csv", newline="") as f:
+        report = list(csv.DictReader(f))
+    return dict(out=out, report=report)
+
+
+def test_the_class_report_shows_shares_slips_and_flags(planted):
+    rows = planted["report"]
+    share = {(r["answer"], r["outcome"]): float(r["share"]) for r in rows if r["share"]}
+    # index time: right for right, copied (the right student's answers, graded against copied's own numbers:
+    # the copied notebook's locked numbers are restored, the answers recomputed from them) and looping
+    assert share[("index time", "right")] == pytest.approx(3 / 6)
+    assert share[("index time", "ms for s")] == pytest.approx(1 / 6)
+    assert share[("index time", "wrong")] == pytest.approx(1 / 6)
+    assert share[("index time", "no answer")] == pytest.approx(1 / 6)
+    flags = [r["outcome"] for r in rows if r["outcome"].startswith("flag:")]
+    assert flags == ["flag: copied: carries the numbers of right"], flags
+    assert share[("Geneva drive design", "every specification met")] == pytest.approx(4 / 6)
+    assert share[("Geneva drive design", "missed: could not be examined")] == pytest.approx(2 / 6)
+    page = (planted["out"] / "class_report.html").read_text()
+    assert "What the class got wrong" in page and "carries the numbers of right" in page

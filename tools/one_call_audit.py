@@ -180,10 +180,13 @@ def _exercise_texts(nb) -> dict[int, str]:
 
 
 def _inputs(text: str, values: dict) -> list[float]:
-    nums = [float(s) for s in NUMBER.findall(text.split("\n", 1)[-1])]
-    nums += [float(v) for v in values.values()]
-    nums = [x for x in dict.fromkeys(nums)]
-    return nums + [math.radians(x) for x in nums if 1 < abs(x) <= 360 and math.radians(x) not in nums]
+    """The prompt's numbers in order (the title, points and "3 significant figures" left out), then the
+    student's numbers, then, if the prompt speaks of degrees, each plausible angle in radians."""
+    body = re.sub(r"\d+ significant figures|\(\d+ points?[^)]*\)", "", text.split("\n", 1)[-1])
+    nums = list(dict.fromkeys([float(s) for s in NUMBER.findall(body)] + [float(v) for v in values.values()]))
+    if "°" in body or "degree" in body:
+        nums += [math.radians(x) for x in nums if 1 < abs(x) <= 360]
+    return nums
 
 
 def audit(aid: str, calls: dict[str, object]) -> list[tuple[str, str, str | None]]:
