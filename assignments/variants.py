@@ -7,8 +7,8 @@ source, one release, the hidden tests re-inserted from the master at autograde):
 a template. Its cell tagged ``metadata.mechlab.variant`` (``{"R": [40, 80, 5], …}``: low, high, step)
 holds the shared numbers as ``V = {...}``; markdown cells say ``{{R}}`` where a number goes.
 :func:`render` writes one student's master: that cell with the student's numbers and id, the
-placeholders filled, and every check cell's visible line replaced by ``self_check(token, answer)``,
-the token sealed (:mod:`mechlab.course.exercises.selfcheck`) from the very call its hidden test makes
+placeholders filled, every check cell's visible line replaced by ``self_check(CHECKS[key], answer);``
+and a cell ``CHECKS = {key: token}`` (source hidden in JupyterLab) after the numbers, each token sealed (:mod:`mechlab.course.exercises.selfcheck`) from the very call its hidden test makes
 (run here with :func:`~mechlab.course.exercises.recording`). ``make student`` releases each student's
 master; ``make grade`` releases the master of the student id nbgrader files the submission under, so
 nbgrader's own OverwriteCells puts that student's numbers back in the locked cells and the hidden
@@ -154,13 +154,26 @@ def render(src, aid: str, student: str = SHARED, values: dict | None = None):
             raise ValueError(f"{aid}: the numbers {mine} give a non-finite expected value")
     else:
         raise ValueError(f"{aid}: no variant of {student!r} in 20 draws gives finite expected values")
+    sealed = {}
     for k, calls in checks:
         c = nb.cells[k]
         hidden = "".join(HIDDEN.findall(c.source))
-        lines = [f'self_check("{seal(call, salt(aid, student, c.get("id", str(k)), j))}", {answer})'
-                 for j, (call, answer) in enumerate(zip(calls, _answer(hidden, len(calls))))]
-        block = HIDDEN.search(c.source).group(0)
-        c.source = "\n".join(lines) + "\n" + block
+        gid = c.metadata.get("nbgrader", {}).get("grade_id", c.get("id", str(k)))
+        lines = []
+        for j, (call, answer) in enumerate(zip(calls, _answer(hidden, len(calls)))):
+            sealed[f"{gid}:{j}"] = seal(call, salt(aid, student, gid, j))
+            lines.append(f'self_check(CHECKS["{gid}:{j}"], {answer});')
+        c.source = "\n".join(lines) + "\n" + HIDDEN.search(c.source).group(0)
+    if sealed:
+        at = nb.cells.index(variant_cell(nb) or next(c for c in nb.cells if c.cell_type == "code")) + 1
+        cell = nbformat.v4.new_code_cell(
+            "# what the check cells compare your answers with, sealed (no number in it): run it, do not edit it\n"
+            "CHECKS = {\n" + "".join(f"    {k!r}: {v!r},\n" for k, v in sealed.items()) + "}\n")
+        cell["id"] = "sealed-checks"
+        cell.metadata.update({"jupyter": {"source_hidden": True}, "nbgrader": {
+            "grade": False, "grade_id": "sealed_checks", "locked": True, "schema_version": 3, "solution": False,
+            "task": False}})
+        nb.cells.insert(at, cell)
     return nb
 
 
