@@ -328,8 +328,8 @@ def press_design(k, motor_power: float, *, stroke: float, stroke_tol: float, max
 
 def function_check(fn: Callable, reference: Callable, cases: Iterable[tuple], *, name: str,
                    rtol: float = 1e-6, atol: float = 1e-9) -> DesignReport:
-    """Call the student's ``fn(*case)`` and mechlab's ``reference(*case)`` on every case (e.g. random
-    geometries); report how many agree and the first that does not, with its inputs and both values."""
+    """Call the student's ``fn(*case)`` and the grader's ``reference(*case)`` (mechlab, or better an
+    independent formula) on every case (e.g. random geometries); report how many agree and the first that does not, with its inputs and both values."""
     title = f"function {name}"
     if not callable(fn):
         return DesignReport(title, problem=f"expected a function, got {type(fn).__name__}")
@@ -344,10 +344,10 @@ def function_check(fn: Callable, reference: Callable, cases: Iterable[tuple], *,
             return DesignReport(title, problem=f"{name}{_args(case)} returned shape {got.shape}, expected "
                                                f"{want.shape}")
         if not np.allclose(got, want, rtol=rtol, atol=atol):
-            return DesignReport(title, (Spec("cases that agree with mechlab", n, "≥", len(cases)),),
-                                problem=f"{name}{_args(case)} = {np.array2string(got, precision=5)}, mechlab gives "
+            return DesignReport(title, (Spec("cases that agree with the reference", n, "≥", len(cases)),),
+                                problem=f"{name}{_args(case)} = {np.array2string(got, precision=5)}, the reference gives "
                                         f"{np.array2string(want, precision=5)}")
-    return DesignReport(title, (Spec(f"cases that agree with mechlab (rtol {rtol:g})", len(cases), "≥",
+    return DesignReport(title, (Spec(f"cases that agree with the reference (rtol {rtol:g})", len(cases), "≥",
                                      len(cases)),))
 
 
