@@ -34,6 +34,7 @@ UNIT_SLIPS = {
     "rad/s": [(180 / math.pi, "deg/s", "the answer is asked in rad/s: convert with np.radians"),
               (30 / math.pi, "rpm", "the answer is asked in rad/s: ω = 2π·n/60")],
     "mm": [(1e-3, "metres", "the answer is asked in mm: multiply by 1000")],
+    "m/s": [(1e3, "mm/s", "the answer is asked in m/s: divide by 1000")],
     "m": [(1e3, "millimetres", "the answer is asked in metres: divide by 1000")],
     "N·m": [(1e3, "N·mm", "the answer is asked in N·m: divide by 1000")],
     "W": [(1e-3, "kW", "the answer is asked in watts: multiply by 1000")],
