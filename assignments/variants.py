@@ -168,7 +168,7 @@ def render(src, aid: str, student: str = SHARED, values: dict | None = None):
         at = nb.cells.index(variant_cell(nb) or next(c for c in nb.cells if c.cell_type == "code")) + 1
         cell = nbformat.v4.new_code_cell(
             "# what the check cells compare your answers with, sealed (no number in it): run it, do not edit it\n"
-            "CHECKS = {\n" + "".join(f"    {k!r}: {v!r},\n" for k, v in sealed.items()) + "}\n")
+            "from mechlab.course.exercises import self_check\n\nCHECKS = {\n" + "".join(f"    {k!r}: {v!r},\n" for k, v in sealed.items()) + "}\n")
         cell["id"] = "sealed-checks"
         cell.metadata.update({"jupyter": {"source_hidden": True}, "nbgrader": {
             "grade": False, "grade_id": "sealed_checks", "locked": True, "schema_version": 3, "solution": False,

@@ -117,6 +117,29 @@ def test_self_check_names_what_the_grader_names_and_reveals_nothing(aid, student
             assert mine.kind == check(missing, e, name=call["name"], unit=call["unit"]).kind
 
 
+@pytest.mark.parametrize("aid", IDS)
+def test_the_editions_check_cells_run_on_their_own(aid):
+    """The rendered check cells, run as the student runs them (set-up, numbers, sealed checks, then each check
+    cell's visible line with the right answer bound): every one says ✓."""
+    nb = variants.render(_source(aid), aid, "ada")
+    calls = [call for _, cs in variants._checks(nb) for call in cs]
+    env: dict = {}
+    for c in nb.cells:
+        role = c.metadata.get("nbgrader", {})
+        if c.cell_type == "code" and role.get("locked") and not role.get("points") and "HIDDEN" not in c.source:
+            exec(c.source, env)
+    lines = [line for c in nb.cells for line in variants.HIDDEN.sub("", c.source).splitlines()
+             if line.startswith("self_check(")]
+    assert len(lines) == len(calls)
+    for line, call in zip(lines, calls):
+        answer = re.search(r"\], (.+)\);$", line).group(1)
+        env[answer] = call["expected"] if call["kind"] == "number" else call["expected"]
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            exec(line, env)
+        assert out.getvalue().startswith("✓"), (aid, line[:60], out.getvalue())
+
+
 def _near_other(value, plant, call) -> bool:
     """True when the planted slip also falls in the window of a row tried before it (e.g. −e = an alternative)."""
     table = candidates(call["expected"], call["unit_slips"], call["alternatives"], call["significant"])
