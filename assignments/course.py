@@ -1,7 +1,8 @@
 """The lecturer's two commands around nbgrader (see README, "For lecturers"); run by `make student` and `make grade`.
 
-    python assignments/course.py student [--out assignments/release]
+    python assignments/course.py student [--out assignments/release] [--class ids.csv] [--assignment ID ...]
     python assignments/course.py grade SUBMISSIONS [--out assignments/graded] [--timeout 60] [--fresh [--yes]]
+                                                   [--class ids.csv]
 
 Both work in fresh temporary nbgrader courses (this folder's ``source/`` and ``nbgrader_config.py``), so
 nothing tracked is written. ``student`` writes the student edition (solutions and hidden tests removed).
@@ -15,6 +16,14 @@ assignment) and ``feedback/<student>/<assignment>.html``: grading a late submiss
 student again replaces only that student's row and page, and the replaced ones are kept in ``history.csv``
 and ``history/<time>/``. ``--fresh`` starts a new ``grades.csv`` (after a confirmation, or ``--yes``),
 keeping the old one in ``history/`` too: nothing graded is ever deleted.
+
+A variant per student (``variants.py``): with ``--class`` (a CSV of student ids) ``student`` writes
+``<out>/<student>/<id>/`` per student, each with the student's own numbers and sealed self-checks, and
+``grade`` gives nbgrader, as the master of each submission, the variant of the student id the submission is
+filed under; numbers edited by hand or another student's, and answers right for another student's numbers,
+are flagged. Without ``--class``, one shared variant. Each grading also rewrites ``class_report.csv`` and
+``class_report.html`` (``report.py``) from every graded submission: share right, named slips, design
+outcomes, flags.
 """
 
 from __future__ import annotations
