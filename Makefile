@@ -89,8 +89,10 @@ clean:
 # out of the students' lab; `make student` writes the student edition to assignments/release,
 # `make grade SUBMISSIONS=<folder>` grades <folder>/<student>/<id>.ipynb into assignments/graded
 # (grades.csv, feedback/<student>/<id>.html; each submission in a sandbox of its own; results accumulate,
-# FRESH=1 starts a new grades.csv after asking, the old kept in history/), `make book-instructor` executes the worked solutions
-# to HTML in assignments/instructor (all three folders git-ignored).
+# FRESH=1 starts a new grades.csv after asking, the old kept in history/; class_report.html/.csv: what the class
+# got wrong), `make book-instructor` executes the worked solutions to HTML in assignments/instructor (all three
+# folders git-ignored). CLASS=ids.csv: `make student` writes release/<student>/<id>/ with each student's own
+# numbers, `make grade` grades each submission against the numbers of its student id and flags copies.
 NBGRADER_DEPS := assignments/.nbgrader-deps
 NBGRADER_PINS := nbgrader==0.9.6 alembic==1.20.1 Mako==1.4.3 RapidFuzz==3.14.6
 NBGRADER_ENV  := PATH="$(CURDIR)/$(NBGRADER_DEPS)/bin:$$PATH" PYTHONPATH="$(CURDIR)/$(NBGRADER_DEPS):$(CURDIR):$(CURDIR)/tools"
@@ -109,11 +111,11 @@ lecturer:
 	$(call nbgrader_into,$(LECTURER_VENV))
 
 student: lecturer
-	$(NBGRADER_ENV) $(LECTURER_VENV)/bin/python assignments/course.py student
+	$(NBGRADER_ENV) $(LECTURER_VENV)/bin/python assignments/course.py student $(if $(CLASS),--class "$(CLASS)")
 
 grade: lecturer
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade SUBMISSIONS=<folder of <student>/<id>.ipynb>"; exit 1; }
-	$(NBGRADER_ENV) $(LECTURER_VENV)/bin/python assignments/course.py grade "$(SUBMISSIONS)" $(if $(FRESH),--fresh)
+	$(NBGRADER_ENV) $(LECTURER_VENV)/bin/python assignments/course.py grade "$(SUBMISSIONS)" $(if $(FRESH),--fresh) $(if $(CLASS),--class "$(CLASS)")
 
 book-instructor: lecturer
 	rm -rf assignments/instructor

@@ -1,7 +1,8 @@
 """The lecturer's two commands around nbgrader (see README, "For lecturers"); run by `make student` and `make grade`.
 
-    python assignments/course.py student [--out assignments/release]
+    python assignments/course.py student [--out assignments/release] [--class ids.csv] [--assignment ID ...]
     python assignments/course.py grade SUBMISSIONS [--out assignments/graded] [--timeout 60] [--fresh [--yes]]
+                                                   [--class ids.csv]
 
 Both work in fresh temporary nbgrader courses (this folder's ``source/`` and ``nbgrader_config.py``), so
 nothing tracked is written. ``student`` writes the student edition (solutions and hidden tests removed).
@@ -15,12 +16,21 @@ assignment) and ``feedback/<student>/<assignment>.html``: grading a late submiss
 student again replaces only that student's row and page, and the replaced ones are kept in ``history.csv``
 and ``history/<time>/``. ``--fresh`` starts a new ``grades.csv`` (after a confirmation, or ``--yes``),
 keeping the old one in ``history/`` too: nothing graded is ever deleted.
+
+A variant per student (``variants.py``): with ``--class`` (a CSV of student ids) ``student`` writes
+``<out>/<student>/<id>/`` per student, each with the student's own numbers and sealed self-checks, and
+``grade`` gives nbgrader, as the master of each submission, the variant of the student id the submission is
+filed under; numbers edited by hand or another student's, and answers right for another student's numbers,
+are flagged. Without ``--class``, one shared variant. Each grading also rewrites ``class_report.csv`` and
+``class_report.html`` (``report.py``) from every graded submission: share right, named slips, design
+outcomes, flags.
 """
 
 from __future__ import annotations
 
 import argparse
 import csv
+import json
 import os
 import re
 import shutil
@@ -34,6 +44,10 @@ from pathlib import Path
 
 import nbformat
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import report  # noqa: E402  (this folder's scripts)
+import variants  # noqa: E402
+
 HERE = Path(__file__).resolve().parent
 GRADES = "grades.csv"
 IDS = sorted(p.name for p in (HERE / "source").iterdir() if (p / f"{p.name}.ipynb").is_file())
@@ -44,6 +58,48 @@ def _course(work: Path) -> Path:
     shutil.copytree(HERE / "source", work / "source", ignore=shutil.ignore_patterns("*.dxf", ".ipynb_checkpoints"))
     shutil.copy(HERE / "nbgrader_config.py", work)
     return work
+
+
+def read_class(path: Path | None) -> list[str]:
+    """The student ids of a class list: a CSV whose first column (or column ``student_id``/``id``) holds them."""
+    if path is None:
+        return []
+    with open(path, newline="", encoding="utf-8") as f:
+        table = [row for row in csv.reader(f) if row and row[0].strip()]
+    if not table:
+        sys.exit(f"CLASS={path}: no student id in it")
+    head = [h.strip().lower() for h in table[0]]
+    col = next((head.index(h) for h in ("student_id", "id", "student") if h in head), None)
+    ids = [row[col or 0].strip() for row in (table[1:] if col is not None else table)]
+    bad = [i for i in ids if not re.fullmatch(r"[\w.@-]+", i)]
+    if bad or len(set(ids)) != len(ids):
+        sys.exit(f"CLASS={path}: ids must be unique words (letters, digits, . @ - _): {bad or 'duplicates'}")
+    return ids
+
+
+class Masters:
+    """Each student's master of each assignment (:func:`variants.render`), made once: the shared one for an
+    id outside the class list (or when there is none)."""
+
+    def __init__(self, class_ids: list[str]):
+        self.class_ids = class_ids
+        self._cache: dict[tuple[str, str], nbformat.NotebookNode] = {}
+
+    def of(self, aid: str, student: str):
+        who = student if student in self.class_ids else variants.SHARED
+        if (aid, who) not in self._cache:
+            src = nbformat.read(HERE / "source" / aid / f"{aid}.ipynb", as_version=4)
+            self._cache[aid, who] = variants.render(src, aid, who)
+        return self._cache[aid, who]
+
+    def install(self, work: Path, aid: str, student: str) -> None:
+        """Put ``student``'s master of ``aid`` in the course ``work`` as nbgrader's source."""
+        nbformat.write(self.of(aid, student), work / "source" / aid / f"{aid}.ipynb")
+
+    def expected(self, aid: str) -> dict[str, dict[str, dict]]:
+        """student → answer name → the hidden test's recorded call, for every student of the class."""
+        return {who: {c["name"]: c for _, calls in variants._checks(self.of(aid, who)) for c in calls
+                      if c["kind"] == "number"} for who in self.class_ids}
 
 
 def _api(work: Path, **settings):
@@ -84,13 +140,22 @@ def _release(api, ids) -> None:
             sys.exit(1)
 
 
-def student(out: Path) -> None:
+def student(out: Path, class_ids: list[str] | None = None, ids: list[str] | None = None) -> None:
+    """The student edition in ``out`` (of the assignments ``ids``, all by default): one shared, or with a
+    class list ``out/<student>/<id>/`` per student, each with the student's own numbers and self-check tokens."""
+    masters = Masters(class_ids or [])
+    ids = ids or IDS
     with tempfile.TemporaryDirectory() as tmp:
         work = _course(Path(tmp))
-        _release(_api(work), IDS)
+        api = _api(work)
         shutil.rmtree(out, ignore_errors=True)
-        shutil.copytree(work / "release", out)
-    print(f"student edition of {len(IDS)} assignments: {out}")
+        for who in class_ids or [variants.SHARED]:
+            for aid in ids:
+                masters.install(work, aid, who)
+            _release(api, ids)
+            shutil.copytree(work / "release", out / who, dirs_exist_ok=True)
+    print(f"student edition of {len(ids)} assignments" + (f" for {len(class_ids)} students" if class_ids else "")
+          + f": {out}")
 
 
 def _assignment_id(nb: Path) -> str:
@@ -131,34 +196,45 @@ def _without_copies(nb):
 
 
 @contextmanager
-def _temp_folder(path: Path):
-    """Point TMPDIR (and Windows' TMP, TEMP) at ``path`` for what starts inside: the graded kernel's
-    ``tempfile.gettempdir()`` is then the submission's own."""
-    names = ("TMPDIR", "TMP", "TEMP")
-    saved = {name: os.environ.get(name) for name in names}
-    os.environ.update(dict.fromkeys(names, str(path)))
+def _environ(**values):
+    """Set environment variables for what starts inside the block (the graded kernel inherits them)."""
+    saved = {k: os.environ.get(k) for k in values}
+    os.environ.update(values)
     try:
         yield
     finally:
-        for name, value in saved.items():
-            if value is None:
-                os.environ.pop(name, None)
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
             else:
-                os.environ[name] = value
+                os.environ[k] = v
 
 
-def _grade_one(student: str, aid: str, nb: Path, timeout: int) -> tuple[list[dict], str | None]:
-    """Grade one submission in a sandbox of its own: a fresh nbgrader course holding only this notebook, and a
-    temp folder of its own, both removed afterwards. Files the submission writes are visible to its own checks
-    and to no other submission's. Returns nbgrader's CSV rows for it and its feedback page (None if none)."""
+def _temp_folder(path: Path):
+    """Point TMPDIR (and Windows' TMP, TEMP) at ``path`` for what starts inside: the graded kernel's
+    ``tempfile.gettempdir()`` is then the submission's own."""
+    return _environ(**dict.fromkeys(("TMPDIR", "TMP", "TEMP"), str(path)))
+
+
+def _grade_one(student: str, aid: str, nb: Path, timeout: int, masters: Masters):
+    """Grade one submission in a sandbox of its own: a fresh nbgrader course holding only this notebook (and,
+    as nbgrader's source, the master of this student's own variant), and a temp folder of its own, both
+    removed afterwards. Files the submission writes are visible to its own checks and to no other
+    submission's. Returns nbgrader's CSV rows for it, its feedback page (None if none), the verdicts its
+    checks logged and the flag on its variant numbers ("" if they are the student's own)."""
     with tempfile.TemporaryDirectory(prefix="mechlab-grade-") as tmp:
         sandbox = Path(tmp)
         work = _course(sandbox / "course")
+        masters.install(work, aid, student)
+        submitted = nbformat.read(nb, as_version=4)
+        flag = variants.whose(submitted, aid, student, {who: masters.of(aid, who) for who in
+                                                         {*masters.class_ids, student}})
         dest = work / "submitted" / student / aid / f"{aid}.ipynb"
         dest.parent.mkdir(parents=True)
-        nbformat.write(_without_copies(nbformat.read(nb, as_version=4)), dest)
+        nbformat.write(_without_copies(submitted), dest)
         (sandbox / "tmp").mkdir()
-        with _temp_folder(sandbox / "tmp"):
+        log = sandbox / "verdicts.jsonl"
+        with _temp_folder(sandbox / "tmp"), _environ(MECHLAB_GRADE_LOG=str(log)):
             api = _api(work, **{"Execute.timeout": timeout})
             _release(api, [aid])
             if _done(api.autograde(aid, student, force=True, create=True), f"autograde {student}/{aid}"):
@@ -166,7 +242,8 @@ def _grade_one(student: str, aid: str, nb: Path, timeout: int) -> tuple[list[dic
                 _done(api.generate_feedback(aid, student, force=True), f"feedback {student}/{aid}")
         rows = _export(work)
         page = work / "feedback" / student / aid / f"{aid}.html"
-        return rows, page.read_text(encoding="utf-8") if page.is_file() else None
+        verdicts = [json.loads(line) for line in log.read_text(encoding="utf-8").splitlines()] if log.is_file() else []
+        return rows, page.read_text(encoding="utf-8") if page.is_file() else None, verdicts, flag
 
 
 STOPPED = {"KeyboardInterrupt", "CellTimeoutError"}  # what nbclient leaves in a cell it interrupted
@@ -188,7 +265,8 @@ def _plain_timeouts(nb_path: Path, timeout: int) -> None:
         nbformat.write(nb, nb_path)
 
 
-def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: bool = False) -> None:
+def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: bool = False,
+          class_ids: list[str] | None = None) -> None:
     """Grade every submission below ``submissions`` into ``out``, adding to what was graded there before: a
     re-graded student's rows and feedback replace only their own, and the replaced ones are kept in
     ``out/history/``. ``fresh`` starts a new grades.csv, after a confirmation, keeping the old one in history."""
@@ -206,8 +284,10 @@ def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: 
         for page in (out / "feedback").glob("*/*.html"):
             _keep(page, history / "feedback" / page.parent.name / page.name)
     table = _read_grades(out / GRADES)
+    masters = Masters(class_ids or [])
     for (student, aid), nb in found.items():
-        rows, page = _grade_one(student, aid, nb, timeout)
+        rows, page, verdicts, flag = _grade_one(student, aid, nb, timeout, masters)
+        _write_verdicts(out / "verdicts" / student / f"{aid}.json", verdicts, flag)
         old = [r for r in table if (r["student_id"], r["assignment"]) == (student, aid)]
         if old:
             _append_history(out / "history.csv", old, stamp)
@@ -220,12 +300,43 @@ def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: 
             dest.parent.mkdir(parents=True, exist_ok=True)
             dest.write_text(page, encoding="utf-8")
         _write_grades(out / GRADES, table)  # after each submission: an interrupted run keeps what it graded
+    _class_report(out, table, masters)
     for row in table:
         if (row["student_id"], row["assignment"]) in found:
             score, top = float(row["score"]), float(row["max_score"])
             print(f"{row['student_id']:>16} {row['assignment']:<22} {score:5.1f} / {top:g}")
     print(f"graded {len(found)} notebooks into {out / GRADES} ({len(table)} rows in all), feedback in "
-          f"{out / 'feedback'}" + (f"; replaced results kept in {out / 'history'}" if history.exists() else ""))
+          f"{out / 'feedback'}" + (f"; replaced results kept in {out / 'history'}" if history.exists() else "")
+          + f"; what the class got wrong: {out / 'class_report.html'}")
+
+
+def _write_verdicts(path: Path, verdicts: list[dict], flag: str) -> None:
+    """One submission's logged verdicts and variant flag (replaced when the student is graded again)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps({"verdicts": verdicts, "flags": [flag] if flag else []}, ensure_ascii=False),
+                    encoding="utf-8")
+
+
+def _class_report(out: Path, table: list[dict], masters: Masters) -> None:
+    """class_report.csv/.html from every graded submission in ``out`` (this run's and earlier ones)."""
+    subs = []
+    for row in table:
+        who, aid = row["student_id"], row["assignment"]
+        path = out / "verdicts" / who / f"{aid}.json"
+        saved = json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {"verdicts": [], "flags": []}
+        subs.append(report.Submission(who, aid, saved["verdicts"], float(row["score"] or 0),
+                                      float(row["max_score"] or 0), list(saved["flags"])))
+    names: dict[str, list[str]] = {}
+    for aid in sorted({s.assignment for s in subs}):
+        recorded = [c["name"] for _, calls in variants._checks(masters.of(aid, variants.SHARED)) for c in calls]
+        logged = [v["name"] for s in subs if s.assignment == aid for v in s.verdicts]
+        names[aid] = list(dict.fromkeys(recorded + logged))
+        if masters.class_ids:
+            expected = masters.expected(aid)
+            for s in subs:
+                if s.assignment == aid:
+                    s.flags += report.copied_answers(s, expected)
+    report.write(subs, names, out)
 
 
 
@@ -294,6 +405,9 @@ def main(argv=None) -> None:
     sub = parser.add_subparsers(dest="command", required=True)
     s = sub.add_parser("student", help="write the student edition")
     s.add_argument("--out", type=Path, default=HERE / "release")
+    s.add_argument("--class", dest="class_list", type=Path,
+                   help="CSV of student ids: one edition per student, with the student's own numbers")
+    s.add_argument("--assignment", action="append", choices=IDS, help="only this assignment (repeatable)")
     g = sub.add_parser("grade", help="autograde a folder of submissions")
     g.add_argument("submissions", type=Path)
     g.add_argument("--out", type=Path, default=HERE / "graded")
@@ -301,11 +415,14 @@ def main(argv=None) -> None:
     g.add_argument("--fresh", action="store_true",
                    help="start a new grades.csv (asks first; the old one is kept in <out>/history/)")
     g.add_argument("--yes", action="store_true", help="with --fresh: do not ask")
+    g.add_argument("--class", dest="class_list", type=Path,
+                   help="the class list the editions were made for: each submission graded against its own numbers")
     args = parser.parse_args(argv)
+    class_ids = read_class(args.class_list)
     if args.command == "student":
-        student(args.out.resolve())
+        student(args.out.resolve(), class_ids, args.assignment)
     else:
-        grade(args.submissions.resolve(), args.out.resolve(), args.timeout, args.fresh, args.yes)
+        grade(args.submissions.resolve(), args.out.resolve(), args.timeout, args.fresh, args.yes, class_ids)
 
 
 if __name__ == "__main__":

@@ -32,7 +32,7 @@ def test_textbook_tolerance_is_three_significant_figures_and_said():
 
 def test_close_answers_are_asked_for_more_digits():
     v = check(0.67, 2 / 3)
-    assert not v and v.kind == "close" and "give more digits" in v.message and "±0.0005" in v.message
+    assert not v and v.kind == "close" and "give more digits" in v.message and "0.0005" not in v.message
     assert check(0.6617, 2 / 3).kind == "close" and check(0.6567, 2 / 3).kind == "wrong"   # 0.75 %, 1.5 % off
 
 
@@ -95,7 +95,7 @@ def test_choice_and_form():
 def test_the_package_holds_no_answer():
     assert not hasattr(ex, "solution") and not hasattr(ex, "get")
     names = {p.stem for p in Path(ex.__file__).parent.glob("*.py")}
-    assert names == {"__init__", "feedback", "design"}
+    assert names == {"__init__", "feedback", "design", "selfcheck"}
 
 
 # -- design and code checks: one passing, one failing design each --------------------------------------------
@@ -124,9 +124,9 @@ def test_guide_design():
 
 
 def test_dwell_slot_design_with_its_dxf(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)   # the check reads only the working folder's files, as in a notebook
+    monkeypatch.chdir(tmp_path)                                # the check reads only the notebook's own folder
     design = ml.curved_slot_dwell(0.3, np.radians(59), np.radians(149.5), transition="quintic")
-    path = "slot.dxf"
+    path = Path("slot.dxf")
     report = dwell_slot_design(design, min_dwell=90, max_pressure=70, dxf=path)
     assert not report and "no DXF file" in report.problem
     write_dxf(design, path)
@@ -187,7 +187,7 @@ def test_function_check():
     good = lambda z: np.sin(np.pi / z) / (1 - np.sin(np.pi / z))
     assert function_check(good, ref, cases, name="peak", rtol=1e-9)
     wrong = function_check(lambda z: np.sin(np.pi / z), ref, cases, name="peak")
-    assert not wrong and "peak(3) = 0.86603, mechlab gives 6.4641" in repr(wrong)
+    assert not wrong and "peak(3) = 0.86603, the reference gives 6.4641" in repr(wrong)
     assert "raised ZeroDivisionError" in function_check(lambda z: 1 / 0, ref, cases, name="peak").problem
     assert "returned shape (2,)" in function_check(lambda z: (1, 2), ref, cases, name="peak").problem
 
@@ -197,25 +197,76 @@ def _notebooks():
     return sorted(SOURCE.glob("*/*.ipynb"))
 
 
-def test_every_chapter_has_an_assignment_of_four_exercises_of_three_kinds():
+# issue 25's kinds; a "code" exercise (write a function) is allowed but does not count among the four
+COUNTED = {"predict", "compute", "explain", "debug", "design", "graphical"}
+KINDS = COUNTED | {"code"}
+# the assignments not yet rewritten to issue 25's standard (five exercises of four kinds, explain and debug
+# among them); each entry fails the test below strictly once it is rewritten, so the list only shrinks
+NOT_YET = {"base_mechanism", "cams", "chebyshev_sixbars", "chebyshev_synthesis", "choosing", "dwell_curved_slot",
+           "equivalence", "forces", "instant_centres", "symmetry"}
+
+
+def _kinds(path) -> list[str]:
+    nb = json.loads(path.read_text())
+    heads = [c["source"] if isinstance(c["source"], str) else "".join(c["source"]) for c in nb["cells"]
+             if c["cell_type"] == "markdown" and "".join(c["source"]).startswith("## Exercise")]
+    return [" ".join(h.split()).split("·")[1].split("(")[0].strip() for h in heads]
+
+
+def test_every_chapter_has_an_assignment():
     ids = {p.stem for p in _notebooks()}
     pointed = {m for nb in (SOURCE.parents[1] / "notebooks").glob("*.ipynb")
                for m in re.findall(r"assignments/release/(\w+)/", nb.read_text())}
     assert pointed <= ids and len(ids) >= 11, pointed - ids      # every chapter's pointer has its assignment
-    for path in _notebooks():
-        nb = json.loads(path.read_text())
-        heads = [c["source"] if isinstance(c["source"], str) else "".join(c["source"]) for c in nb["cells"]
-                 if c["cell_type"] == "markdown" and "".join(c["source"]).startswith("## Exercise")]
-        heads = [" ".join(h.split()) for h in heads]
-        kinds = [h.split("·")[1].split("(")[0].strip() for h in heads]
-        assert len(kinds) >= 4 and len(set(kinds)) >= 3, (path.stem, kinds)
-        assert set(kinds) <= {"predict", "compute", "design", "code"}
-        assert "design" in kinds or "code" in kinds, path.stem
-        for h in heads:                                              # each states its unit or what is checked
-            if "· compute" in h:
-                assert "3 significant figures" in h or "in mm" in h.lower() or "**in" in h, (path.stem, h)
-        for c in nb["cells"]:
-            meta = c["metadata"].get("nbgrader", {})
-            if meta.get("grade"):
-                assert meta["points"] >= 0 and c["cell_type"] == "code"
-            assert not c.get("outputs") and c.get("execution_count") is None
+    assert NOT_YET <= ids
+
+
+@pytest.mark.parametrize("path", _notebooks(), ids=lambda p: p.stem)
+def test_an_assignment_has_five_exercises_of_four_kinds(path, request):
+    if path.stem in NOT_YET:
+        request.applymarker(pytest.mark.xfail(strict=True, reason="not yet rewritten for issue 25"))
+    kinds = _kinds(path)
+    assert set(kinds) <= KINDS, (path.stem, kinds)
+    assert len(kinds) >= 5 and len(set(kinds) & COUNTED) >= 4, (path.stem, kinds)
+
+
+@pytest.mark.parametrize("path", _notebooks(), ids=lambda p: p.stem)
+def test_an_assignment_states_units_and_points(path):
+    nb = json.loads(path.read_text())
+    kinds = _kinds(path)
+    assert len(kinds) >= 4 and len(set(kinds)) >= 3 and set(kinds) <= KINDS, (path.stem, kinds)
+    assert {"design", "code", "debug"} & set(kinds), path.stem
+    for c in nb["cells"]:
+        text = " ".join("".join(c["source"]).split())
+        if c["cell_type"] == "markdown" and text.startswith("## Exercise") and "· compute" in text:
+            assert "3 significant figures" in text or "in mm" in text.lower() or "**in" in text, (path.stem, text)
+        meta = c["metadata"].get("nbgrader", {})
+        if meta.get("grade") and c["cell_type"] == "markdown":
+            assert meta.get("solution") and "explain" in kinds      # a hand-graded answer is an explanation
+        elif meta.get("grade"):
+            assert meta["points"] >= 0 and c["cell_type"] == "code"
+        assert not c.get("outputs") and c.get("execution_count") is None
+
+
+# -- no graded answer one public call away (tools/one_call_audit.py) -----------------------------------------
+def _audit():
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("one_call_audit", SOURCE.parents[1] / "tools" / "one_call_audit.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_the_audit_finds_a_one_call_answer():
+    audit = _audit()
+    found = audit.sweep([8.0, 150.0], {"ExternalGeneva": ml.ExternalGeneva, "FourBar": ml.FourBar})
+    assert audit.answered_by(ml.ExternalGeneva(8, 150.0).crank_radius, found).startswith("ExternalGeneva(8, 150)")
+    assert audit.answered_by(np.degrees(ml.ExternalGeneva(8, 150.0).index_angle), found).endswith("in degrees")
+    assert audit.answered_by(ml.ExternalGeneva(8, 150.0).crank_radius * 1.001, found) is None
+
+
+@pytest.mark.parametrize("aid", sorted({p.stem for p in _notebooks()} - NOT_YET))
+def test_no_graded_answer_is_one_public_call_away(aid):
+    audit = _audit()
+    rows = audit.audit(aid, audit.public_callables())
+    assert len(rows) >= 3 and not [r for r in rows if r[2]], rows

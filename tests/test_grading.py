@@ -11,6 +11,7 @@ from __future__ import annotations
 import copy
 import csv
 import html
+import json
 import os
 import re
 import subprocess
@@ -64,8 +65,11 @@ def _answered(aid: str, release: Path, good: int | None = None):
     nb = nbformat.read(release / aid / f"{aid}.ipynb", as_version=4)
     solved = {c.metadata.nbgrader.grade_id: _solution(c) for c in _cells(src, "solution")}
     for k, cell in enumerate(_cells(nb, "solution")):
-        assert STUB in cell.source
         right = good is None or k < good
+        if cell.cell_type == "markdown":                      # an explanation, graded by hand
+            cell.source = solved[cell.metadata.nbgrader.grade_id] if right else "I do not know."
+            continue
+        assert STUB in cell.source
         cell.source = (cell.source.replace(STUB, solved[cell.metadata.nbgrader.grade_id]) if right
                        else cell.source.replace(STUB, "").replace("...", "0.123"))
     return nb
@@ -124,10 +128,16 @@ def _points(aid: str) -> list[float]:
     return [c.metadata.nbgrader.points for c in _cells(src, "grade")]
 
 
+def _auto_points(aid: str) -> float:
+    """The points the autograder gives (an explanation's points wait for the lecturer)."""
+    src = nbformat.read(SOURCE / aid / f"{aid}.ipynb", as_version=4)
+    return sum(c.metadata.nbgrader.points for c in _cells(src, "grade") if c.cell_type == "code")
+
+
 def test_worked_solutions_get_full_marks(graded):
     for aid in IDS:
         score, top = _score(graded, "alice", aid)
-        assert top == sum(_points(aid)) > 0 and score == top, (aid, score, top)
+        assert top == sum(_points(aid)) > 0 and score == _auto_points(aid), (aid, score, top)
         assert "✓" in _feedback(graded, "alice", aid)
 
 
@@ -139,13 +149,13 @@ def test_wrong_and_empty_answers_get_partial_and_zero_marks_with_feedback(graded
 
 
 def test_what_students_do_does_not_stop_grading(graded):
-    pts = _points(CASES)
+    pts, auto = _points(CASES), _auto_points(CASES)                 # an explanation's points wait for the lecturer
     # the deleted check cell comes back and is graded; the deleted answer loses its exercise only
-    assert _score(graded, "dave") == (sum(pts) - pts[3], sum(pts))
+    assert _score(graded, "dave") == (auto - pts[3], sum(pts))
     assert "was missing from the submission" in _feedback(graded, "dave")
-    assert _score(graded, "erin")[0] == sum(pts)
-    assert _score(graded, "frank")[0] == sum(pts)                   # a cell left running, an ungraded error
-    assert _score(graded, "gina")[0] == sum(pts)                    # the notebook saved last counts
+    assert _score(graded, "erin")[0] == auto
+    assert _score(graded, "frank")[0] == auto                       # a cell left running, an ungraded error
+    assert _score(graded, "gina")[0] == auto                        # the notebook saved last counts
     assert "ZeroDivisionError" in _feedback(graded, "frank")
     assert f"ran for more than {TIMEOUT} s and was stopped (an endless loop?)" in _feedback(graded, "frank")
     assert "CellTimeoutError" not in _feedback(graded, "frank")                 # plain words, not a traceback
@@ -266,7 +276,7 @@ def test_grading_accumulates_and_keeps_what_it_replaces(tmp_path):
                                 (second, "bob", _answered(CASES, release)), (second, "late", empty)):
         (folder / student).mkdir(parents=True)
         nbformat.write(nb, folder / student / f"{CASES}.ipynb")
-    top = sum(_points(CASES))
+    top = _auto_points(CASES)                          # the explanation waits for the lecturer
     _run("grade", str(first), "--out", str(out), "--timeout", str(TIMEOUT))
     assert float(_grades(out)[("bob", CASES)]["raw_score"]) == 0.0
     _run("grade", str(second), "--out", str(out), "--timeout", str(TIMEOUT))
@@ -289,3 +299,129 @@ def test_grading_accumulates_and_keeps_what_it_replaces(tmp_path):
     _run("grade", str(second), "--out", str(out), "--timeout", str(TIMEOUT), "--fresh", "--yes")
     assert set(_grades(out)) == {("bob", CASES), ("late", CASES)}
     assert len(list((out / "history").glob("*/grades.csv"))) == 1
+
+
+# -- a variant per student, and what the class got wrong ---------------------------------------------------
+VARIANT = "geneva_spherical"                      # the assignment the class below submits
+CLASS = int(os.environ.get("MECHLAB_CLASS_SIZE", "30"))
+
+
+def _fill(nb, src, which=None, wrong="0.123"):
+    """``nb`` (a student's edition) with its answers from the worked solutions (``which``: the grade ids to
+    answer right, all by default; the others get ``wrong``)."""
+    solved = {c.metadata.nbgrader.grade_id: _solution(c) for c in _cells(src, "solution")}
+    for cell in _cells(nb, "solution"):
+        gid = cell.metadata.nbgrader.grade_id
+        right = which is None or gid in which
+        if cell.cell_type == "markdown":
+            cell.source = solved[gid] if right else "I do not know."
+        else:
+            cell.source = cell.source.replace(STUB, solved[gid] if right else "").replace("...", wrong) \
+                if right or wrong is not None else cell.source
+    return nb
+
+
+def _answer_line(nb, gid):
+    return next(c for c in _cells(nb, "solution") if c.metadata.nbgrader.grade_id == gid)
+
+
+@pytest.fixture(scope="module")
+def klass(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("class")
+    ids = [f"s{k:02d}" for k in range(CLASS)]
+    (tmp / "class.csv").write_text("student_id\n" + "\n".join(ids) + "\n")
+    release, subs, out = tmp / "release", tmp / "submissions", tmp / "graded"
+    _run("student", "--class", str(tmp / "class.csv"), "--assignment", VARIANT, "--out", str(release))
+    again = tmp / "again"
+    _run("student", "--class", str(tmp / "class.csv"), "--assignment", VARIANT, "--out", str(again))
+    src = nbformat.read(SOURCE / VARIANT / f"{VARIANT}.ipynb", as_version=4)
+    books = {who: _fill(nbformat.read(release / who / VARIANT / f"{VARIANT}.ipynb", as_version=4), src)
+             for who in ids}
+    # s00 and s01 swap their compute answers (each computed from the other's numbers)
+    for a, b in (("s00", "s01"), ("s01", "s00")):
+        theirs = nbformat.read(release / b / VARIANT / f"{VARIANT}.ipynb", as_version=4)
+        v = variants_numbers(theirs)
+        for gid in ("ex2", "ex3", "ex4"):
+            cell = _answer_line(books[a], gid)
+            cell.source = cell.source.replace('V["', '_THEIRS["')
+            cell.source = f"_THEIRS = {v!r}\n" + cell.source
+    for who, nb in books.items():
+        (subs / who).mkdir(parents=True)
+        nbformat.write(nb, subs / who / f"{VARIANT}.ipynb")
+    _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT), "--class", str(tmp / "class.csv"))
+    with open(out / "grades.csv", newline="") as f:
+        rows = {r["student_id"]: r for r in csv.DictReader(f)}
+    return dict(ids=ids, release=release, again=again, out=out, rows=rows)
+
+
+def variants_numbers(nb) -> dict:
+    sys.path.insert(0, str(ROOT / "assignments"))
+    import variants
+    return variants.numbers(nb)[0]
+
+
+def test_each_student_gets_numbers_of_their_own_and_the_same_again(klass):
+    seen = set()
+    for who in klass["ids"]:
+        nb = klass["release"] / who / VARIANT / f"{VARIANT}.ipynb"
+        numbers = variants_numbers(nbformat.read(nb, as_version=4))
+        seen.add(json.dumps(numbers, sort_keys=True))
+        assert nb.read_bytes() == (klass["again"] / who / VARIANT / f"{VARIANT}.ipynb").read_bytes()
+        text = nb.read_text()
+        assert "BEGIN SOLUTION" not in text and "HIDDEN TESTS" not in text and "self_check(" in text
+    assert len(seen) == len(klass["ids"])
+
+
+def test_every_variant_solved_scores_full_marks_and_swapped_answers_are_flagged(klass):
+    pts = _auto_points(VARIANT)
+    swapped = sum(_points(VARIANT)[k] for k in (2, 3, 4))     # the check cells of ex2-4 (after setup and ex1)
+    for who in klass["ids"]:
+        score = float(klass["rows"][who]["raw_score"])
+        assert score == (pts - swapped if who in ("s00", "s01") else pts), (who, score)
+    with open(klass["out"] / "class_report.csv", newline="") as f:
+        flags = [r["outcome"] for r in csv.DictReader(f) if r["outcome"].startswith("flag:")]
+    assert any(f.startswith("flag: s00:") and "s01's answer" in f for f in flags), flags
+    assert any(f.startswith("flag: s01:") and "s00's answer" in f for f in flags), flags
+    assert not [f for f in flags if not f.startswith(("flag: s00:", "flag: s01:"))], flags
+
+
+@pytest.fixture(scope="module")
+def planted(tmp_path_factory):
+    """A class of six on the variant assignment: right, slipped, wrong, copied, empty, looping."""
+    tmp = tmp_path_factory.mktemp("planted")
+    ids = ["right", "slipped", "wrong", "copied", "empty", "looping"]
+    (tmp / "class.csv").write_text("\n".join(ids) + "\n")
+    release, subs, out = tmp / "release", tmp / "submissions", tmp / "graded"
+    _run("student", "--class", str(tmp / "class.csv"), "--assignment", VARIANT, "--out", str(release))
+    src = nbformat.read(SOURCE / VARIANT / f"{VARIANT}.ipynb", as_version=4)
+    edition = {who: nbformat.read(release / who / VARIANT / f"{VARIANT}.ipynb", as_version=4) for who in ids}
+    books = {"right": _fill(edition["right"], src), "wrong": _fill(edition["wrong"], src, which=set()),
+             "empty": edition["empty"], "copied": _fill(copy.deepcopy(edition["right"]), src),
+             "slipped": _fill(edition["slipped"], src), "looping": _fill(edition["looping"], src)}
+    slip = _answer_line(books["slipped"], "ex2")
+    slip.source += "\nindex_time = index_time * 1000  # in ms"                    # a unit slip
+    books["looping"].cells.insert(3, nbformat.v4.new_code_cell("while True:\n    pass"))
+    for who, nb in books.items():
+        (subs / who).mkdir(parents=True)
+        nbformat.write(nb, subs / who / f"{VARIANT}.ipynb")
+    _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT), "--class", str(tmp / "class.csv"))
+    with open(out / "class_report.csv", newline="") as f:
+        report = list(csv.DictReader(f))
+    return dict(out=out, report=report)
+
+
+def test_the_class_report_shows_shares_slips_and_flags(planted):
+    rows = planted["report"]
+    share = {(r["answer"], r["outcome"]): float(r["share"]) for r in rows if r["share"]}
+    # index time: right for right, copied (the right student's answers, graded against copied's own numbers:
+    # the copied notebook's locked numbers are restored, the answers recomputed from them) and looping
+    assert share[("index time", "right")] == pytest.approx(3 / 6, abs=1e-3)
+    assert share[("index time", "ms for s")] == pytest.approx(1 / 6, abs=1e-3)
+    assert share[("index time", "wrong")] == pytest.approx(1 / 6, abs=1e-3)
+    assert share[("index time", "no answer")] == pytest.approx(1 / 6, abs=1e-3)
+    flags = [r["outcome"] for r in rows if r["outcome"].startswith("flag:")]
+    assert flags == ["flag: copied: carries the numbers of right"], flags
+    assert share[("Geneva drive design", "every specification met")] == pytest.approx(4 / 6, abs=1e-3)
+    assert share[("Geneva drive design", "missed: could not be examined")] == pytest.approx(2 / 6, abs=1e-3)
+    page = (planted["out"] / "class_report.html").read_text()
+    assert "What the class got wrong" in page and "carries the numbers of right" in page

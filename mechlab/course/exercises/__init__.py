@@ -8,8 +8,8 @@ specification with its numbers. This package stores no answer.
 
 from .design import (DesignReport, Spec, cam_design, dwell_slot_design, fourbar_design, function_check,
                      geneva_design, guide_design, output_design, press_design, sixbar_design)
-from .feedback import NotYet, Verdict, check, check_choice, check_form, tolerance
+from .feedback import NotYet, Verdict, check, check_choice, check_form, recording, self_check, tolerance
 
-__all__ = ["check", "check_choice", "check_form", "tolerance", "Verdict", "NotYet", "Spec", "DesignReport",
+__all__ = ["check", "check_choice", "check_form", "self_check", "recording", "tolerance", "Verdict", "NotYet", "Spec", "DesignReport",
            "fourbar_design", "output_design", "cam_design", "guide_design", "dwell_slot_design", "sixbar_design",
            "geneva_design", "press_design", "function_check"]

@@ -17,6 +17,7 @@ import numpy as np
 
 from ...errors import MechanismError
 from .feedback import NotYet
+from .selfcheck import record
 
 _TEST = {"<": np.less, "≤": np.less_equal, ">": np.greater, "≥": np.greater_equal}
 _NEGATION = {"<": "≥", "≤": ">", ">": "≤", "≥": "<"}
@@ -76,7 +77,11 @@ class DesignReport:
         return "\n".join([head, *lines])
 
     def require(self) -> None:
-        """Print the report if every specification is met, else raise NotYet with it."""
+        """Print the report if every specification is met, else raise NotYet with it (and log the outcome
+        for the class report while ``make grade`` runs)."""
+        missed = [s.name for s in self.specs if not s.met] + (["could not be examined"] if self.problem else [])
+        record({"name": self.title, "kind": "design", "ok": self.ok,
+                "outcome": "every specification met" if self.ok else "missed: " + ", ".join(missed)})
         if not self.ok:
             raise NotYet(repr(self))
         print(repr(self))
@@ -323,8 +328,8 @@ def press_design(k, motor_power: float, *, stroke: float, stroke_tol: float, max
 
 def function_check(fn: Callable, reference: Callable, cases: Iterable[tuple], *, name: str,
                    rtol: float = 1e-6, atol: float = 1e-9) -> DesignReport:
-    """Call the student's ``fn(*case)`` and mechlab's ``reference(*case)`` on every case (e.g. random
-    geometries); report how many agree and the first that does not, with its inputs and both values."""
+    """Call the student's ``fn(*case)`` and the grader's ``reference(*case)`` (mechlab, or better an
+    independent formula) on every case (e.g. random geometries); report how many agree and the first that does not, with its inputs and both values."""
     title = f"function {name}"
     if not callable(fn):
         return DesignReport(title, problem=f"expected a function, got {type(fn).__name__}")
@@ -339,10 +344,10 @@ def function_check(fn: Callable, reference: Callable, cases: Iterable[tuple], *,
             return DesignReport(title, problem=f"{name}{_args(case)} returned shape {got.shape}, expected "
                                                f"{want.shape}")
         if not np.allclose(got, want, rtol=rtol, atol=atol):
-            return DesignReport(title, (Spec("cases that agree with mechlab", n, "≥", len(cases)),),
-                                problem=f"{name}{_args(case)} = {np.array2string(got, precision=5)}, mechlab gives "
+            return DesignReport(title, (Spec("cases that agree with the reference", n, "≥", len(cases)),),
+                                problem=f"{name}{_args(case)} = {np.array2string(got, precision=5)}, the reference gives "
                                         f"{np.array2string(want, precision=5)}")
-    return DesignReport(title, (Spec(f"cases that agree with mechlab (rtol {rtol:g})", len(cases), "≥",
+    return DesignReport(title, (Spec(f"cases that agree with the reference (rtol {rtol:g})", len(cases), "≥",
                                      len(cases)),))
 
 

@@ -8,12 +8,19 @@ grader's feedback never shows the test's source (where the expected value is com
 
 from __future__ import annotations
 
+import contextlib
 import math
 import textwrap
 from dataclasses import dataclass
 from numbers import Real
 
 import numpy as np
+
+from . import selfcheck
+
+#: While not None, :func:`check` and :func:`check_choice` append their call here instead of judging
+#: (see :func:`recording`: how a student edition's tokens are made from the hidden tests).
+_RECORDING: list | None = None
 
 #: A textbook answer: three significant figures.
 SIGNIFICANT = 3
@@ -27,6 +34,7 @@ UNIT_SLIPS = {
     "rad/s": [(180 / math.pi, "deg/s", "the answer is asked in rad/s: convert with np.radians"),
               (30 / math.pi, "rpm", "the answer is asked in rad/s: ω = 2π·n/60")],
     "mm": [(1e-3, "metres", "the answer is asked in mm: multiply by 1000")],
+    "m/s": [(1e3, "mm/s", "the answer is asked in m/s: divide by 1000")],
     "m": [(1e3, "millimetres", "the answer is asked in metres: divide by 1000")],
     "N·m": [(1e3, "N·mm", "the answer is asked in N·m: divide by 1000")],
     "W": [(1e-3, "kW", "the answer is asked in watts: multiply by 1000")],
@@ -105,33 +113,49 @@ def check(answer, expected: float, *, name: str = "answer", unit: str = "", sign
           alternatives: dict[str, float] | None = None, hint: str = "") -> Verdict:
     """Compare a numeric ``answer`` with ``expected`` to ``significant`` figures and name the slip if any.
 
-    Tried in order: right to the textbook tolerance (:func:`tolerance`); within 1 % ("close — give more
-    digits"); the right value in another unit (``UNIT_SLIPS[unit]``: degrees for radians and back, m for
-    mm, rpm for rad/s, …); the right magnitude with the sign flipped; one of ``alternatives`` (name →
-    the value that slip gives, e.g. ``{"the other assembly (kc = −1)": …}``). Otherwise "not yet" and
-    ``hint``. No message contains ``expected``.
+    Tried in order: right to the textbook tolerance (:func:`tolerance`, on the grid of
+    :func:`.selfcheck.windows`); within 1 % ("close — give more digits"); the right value in another unit
+    (``UNIT_SLIPS[unit]``: degrees for radians and back, m for mm, rpm for rad/s, …); the right magnitude
+    with the sign flipped; one of ``alternatives`` (name → the value that slip gives, e.g.
+    ``{"the other assembly (kc = −1)": …}``). Otherwise "not yet" and ``hint``. No message contains
+    ``expected``. The student edition's :func:`self_check` gives the same verdict from a token.
     """
-    u = f" {unit}" if unit else ""
+    call = dict(kind="number", expected=float(expected), name=name, unit=unit, significant=significant,
+                alternatives={k: float(v) for k, v in (alternatives or {}).items()}, hint=hint,
+                unit_slips=UNIT_SLIPS.get(unit, []))
+    if _RECORDING is not None:
+        _RECORDING.append(call)
+        return Verdict(True, "recorded", f"{name}: recorded")
     a = _parsed(answer, name, unit)
+    slip = ""
     if isinstance(a, Verdict):
-        return a
-    e = float(expected)
-    tol = tolerance(e, significant)
-    if abs(a - e) <= tol:
-        return Verdict(True, "correct", f"✓ {name} = {a:.4g}{u}: right to {significant} significant figures.")
-    if _near(a, e):
-        return Verdict(False, "close", f"≈ {name} = {a:.4g}{u} is within 1 % but not within {significant} "
-                                       f"significant figures (±{tol:.2g}{u}): close — give more digits.")
-    for factor, gave, fix in UNIT_SLIPS.get(unit, []):
-        if _near(a, e * factor):
-            return Verdict(False, "units", f"✗ {name} = {a:.4g} is the right value in {gave}: {fix}.")
-    if e != 0 and _near(a, -e):
-        return Verdict(False, "sign", f"✗ {name} = {a:.4g}{u}: the size is right, the sign is flipped — check the "
-                                      f"sign convention (which sense is positive).")
-    for slip, value in (alternatives or {}).items():
-        if _near(a, float(value)):
-            return Verdict(False, "alternative",
-                           f"✗ {name} = {a:.4g}{u} is what {slip} gives: {hint or 'reread the question'}.")
+        verdict = a
+    else:
+        table = selfcheck.candidates(call["expected"], call["unit_slips"], call["alternatives"], significant)
+        found = selfcheck.classify(a, table, significant)
+        verdict = _number_verdict(a, found, call)
+        slip = {"units": f"{found[1]} for {unit}", "alternative": found[1]}.get(found[0], "") if found else ""
+    _log(call, verdict, answer, slip)
+    return verdict
+
+
+def _number_verdict(a: float, found, call: dict) -> Verdict:
+    """The one-line verdict on answer ``a`` from the row :func:`.selfcheck.classify` found (None: wrong)."""
+    name, unit, hint, significant = call["name"], call["unit"], call["hint"], call["significant"]
+    u = f" {unit}" if unit else ""
+    kind, label, fix = found or ("wrong", "", "")
+    if kind == "correct":
+        return Verdict(True, kind, f"✓ {name} = {a:.4g}{u}: right to {significant} significant figures.")
+    if kind == "close":
+        return Verdict(False, kind, f"≈ {name} = {a:.4g}{u} is within 1 % but not within {significant} "
+                                    f"significant figures: close — give more digits.")
+    if kind == "units":
+        return Verdict(False, kind, f"✗ {name} = {a:.4g} is the right value in {label}: {fix}.")
+    if kind == "sign":
+        return Verdict(False, kind, f"✗ {name} = {a:.4g}{u}: the size is right, the sign is flipped — check the "
+                                    f"sign convention (which sense is positive).")
+    if kind == "alternative":
+        return Verdict(False, kind, f"✗ {name} = {a:.4g}{u} is what {label} gives: {hint or 'reread the question'}.")
     more = f" Hint: {hint}" if hint else ""
     return Verdict(False, "wrong", f"✗ {name} = {a:.4g}{u}: not yet (more than 1 % off, and not a unit or sign "
                                    f"slip).{more}")
@@ -141,6 +165,16 @@ def check_choice(answer, expected: str, options: dict[str, str], *, name: str = 
                  hints: dict[str, str] | None = None) -> Verdict:
     """Check a multiple-choice ``answer`` (a key of ``options``, case and spaces ignored); a wrong key gets
     its own hint from ``hints`` when there is one."""
+    call = dict(kind="choice", expected=expected, options=dict(options), name=name, hints=dict(hints or {}))
+    if _RECORDING is not None:
+        _RECORDING.append(call)
+        return Verdict(True, "recorded", f"{name}: recorded")
+    verdict = _choice_verdict(answer, expected, options, name, hints)
+    _log(call, verdict, answer)
+    return verdict
+
+
+def _choice_verdict(answer, expected, options, name, hints) -> Verdict:
     if answer is None or answer is Ellipsis:
         return Verdict(False, "missing", f"✗ {name}: no choice yet — one of {', '.join(map(repr, options))}.")
     key = str(answer).strip().lower()
@@ -159,3 +193,67 @@ def check_form(answer, *, name: str = "answer", unit: str = "") -> Verdict:
         return a
     return Verdict(True, "form", f"{name} = {a:.6g}{' ' + unit if unit else ''} — a number; it is graded to "
                                  f"{SIGNIFICANT} significant figures when you submit.")
+
+
+@contextlib.contextmanager
+def recording():
+    """Within the block, :func:`check` and :func:`check_choice` record their calls (expected value, slips,
+    name, unit, hint) in the list this yields and pass; ``make student`` runs the hidden tests so to seal
+    each one into a :func:`self_check` token."""
+    global _RECORDING
+    calls, previous = [], _RECORDING
+    _RECORDING = calls
+    try:
+        yield calls
+    finally:
+        _RECORDING = previous
+
+
+def _log(call: dict, verdict: Verdict, answer, slip: str = "") -> None:
+    """The grader's verdict, for the class report (only while ``make grade`` names a log file)."""
+    number = _number(answer) if call["kind"] == "number" else None
+    selfcheck.record({"name": call["name"], "kind": verdict.kind, "ok": verdict.ok, "slip": slip,
+                      "answer": number if number is not None else (None if answer in (None, Ellipsis)
+                                                                      else str(answer)[:40])})
+
+
+def self_check(token: str, answer) -> Verdict:
+    """The grader's verdict on ``answer``, at once, from the ``token`` the student edition holds.
+
+    The token (made by ``make student`` from the hidden test's own call, see :mod:`.selfcheck`) holds the
+    right value and each named slip only as keyed digests of the bins the grader accepts, so the same
+    verdict — right, close, the unit or sign slip, the named alternative, or not yet with the hint — is
+    shown without the expected value being anywhere in the notebook. Prints the verdict and returns it;
+    inside nbgrader's autograde it returns quietly (the hidden test prints the grade's own verdict).
+
+    Examples
+    --------
+    >>> from mechlab.course.exercises.selfcheck import seal
+    >>> token = seal(dict(kind="number", expected=2.5, name="x", unit="mm", significant=3,
+    ...                   alternatives={}, hint="", unit_slips=UNIT_SLIPS["mm"]), salt="demo")
+    >>> self_check(token, 0.0025).kind
+    ✗ x = 0.0025 is the right value in metres: the answer is asked in mm: multiply by 1000.
+    'units'
+    """
+    body = selfcheck.unseal(token)
+    name, unit, hint = body["name"], body["unit"], body["hint"]
+    if body["t"] == "c":
+        opts = body["options"]
+        if answer is None or answer is Ellipsis or str(answer).strip().lower() not in opts:
+            verdict = _choice_verdict(answer, None, opts, name, None)
+        else:
+            key = str(answer).strip().lower()
+            right, why = selfcheck.choice_verdict(body, key)
+            verdict = _choice_verdict(key, key if right else None, opts, name, {key: why} if why else None)
+    else:
+        a = _parsed(answer, name, unit)
+        if isinstance(a, Verdict):
+            verdict = a
+        else:
+            salt = body["s"].encode()
+            found = selfcheck.classify(a, selfcheck.digest_table(body), body["sig"],
+                                       hashed=lambda b: selfcheck.digest(salt, b))
+            verdict = _number_verdict(a, found, dict(name=name, unit=unit, hint=hint, significant=body["sig"]))
+    if not selfcheck.grading():
+        print("\n".join(_wrapped(verdict.message)))
+    return verdict
