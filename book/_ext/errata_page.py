@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import html
 import json
+import re
 from pathlib import Path
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent.parent / "notebooks"
@@ -27,12 +28,13 @@ def _source(cell: dict) -> str:
 def demo_cell(notebook: Path) -> int | None:
     """Index (in the notebook's cells) of the code cell that shows the chapter's errata.
 
-    The first code cell that calls ``table(`` and mentions ``errata``; failing that, the
+    The first code cell that calls ``table(`` and mentions ``errata``, or calls the errata's ``table(notebook=…)``
+    imported by name; failing that, the
     first one that uses ``errata`` on a line that is not an import.
     """
     code = [(i, _source(c)) for i, c in enumerate(_cells(notebook)) if c["cell_type"] == "code"]
     for i, src in code:
-        if "errata" in src and "table(" in src:
+        if ("errata" in src and "table(" in src) or re.search(r"(?<![\w.])table\(notebook=", src):
             return i
     for i, src in code:
         if any("errata" in line and not line.lstrip().startswith(("import ", "from "))
