@@ -11,9 +11,7 @@ HMAC-SHA256(salt, bin). The self-check hashes the few bins the student's answer 
 and the two next to it on the fine grid, one logarithmic bin) and looks them up, kind by kind, in the grader's order. The grader
 (:func:`mechlab.course.exercises.check`) runs the same :func:`classify` on the bins in clear, so the two
 verdicts are the same function of the answer; they could differ only on a 32-bit hash collision
-(≈ 1e-7 per check).
-
-A recompiled model would carry the answer in code a student can run on other numbers; the hashes carry
+(≈ 1e-7 per check). A recompiled model would carry the answer in code a student can run on other numbers; the hashes carry
 no number: reading a token gives the salt, the slips' names and bin digests. Limits, said plainly: a check
 that answers "right" at once is an oracle, so a student who loops over the ~9000 bins of a decade can
 find the right bin (as with any immediate feedback; the hidden tests still decide the grade, and a
