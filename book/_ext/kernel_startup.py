@@ -20,6 +20,7 @@ conf.py removes the widget view from myst-nb's MIME priority, so this HTML is ch
 
 
 def _mechbook_setup():
+    import base64
     import html
     import os
 
@@ -72,6 +73,9 @@ def _mechbook_setup():
         for w in walk(widget, set()):
             if isinstance(w, ipywidgets.Output) and w.model_id in last_image:
                 parts.append(f'<img src="data:image/png;base64,{last_image[w.model_id]}" '
+                             f'alt="figure for the default values"/>')
+            elif isinstance(w, ipywidgets.Image) and w.value:   # an explorer that sends its figure as one picture
+                parts.append(f'<img src="data:image/{w.format};base64,{base64.b64encode(w.value).decode()}" '
                              f'alt="figure for the default values"/>')
             elif isinstance(w, ipywidgets.HTML) and w.value.strip():
                 texts.append(f'<div class="mechbook-widget-text">{w.value}</div>')  # the widget's own HTML
