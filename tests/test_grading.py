@@ -206,7 +206,7 @@ def _with_answer(nb, grade_id: str, code: str):
     return nb
 
 
-def test_a_submission_never_gets_credit_for_another_submissions_file(tmp_path):
+def test_a_submission_never_gets_credit_for_another_submissions_file(tmp_path, monkeypatch):
     """alice writes the DXF (beside her notebook and into the temp folder); mallory submits the right design,
     writes no DXF and copies whatever lies in the temp folder. Graded in sequence, she must get no credit for
     alice's file, and grading leaves nothing in the temp folder."""
@@ -227,13 +227,9 @@ def test_a_submission_never_gets_credit_for_another_submissions_file(tmp_path):
     for student, nb in (("alice", alice), ("mallory", mallory)):
         (subs / student).mkdir(parents=True)
         nbformat.write(nb, subs / student / f"{SLOT}.ipynb")
-    env_temp = {name: os.environ.get(name) for name in ("TMPDIR", "TMP", "TEMP")}
-    os.environ.update(dict.fromkeys(env_temp, str(temp)))
-    try:
-        _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT))
-    finally:
-        for name, value in env_temp.items():
-            os.environ.pop(name) if value is None else os.environ.__setitem__(name, value)
+    for name in ("TMPDIR", "TMP", "TEMP"):
+        monkeypatch.setenv(name, str(temp))
+    _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT))
     rows = {r["student_id"]: r for r in csv.DictReader(open(out / "grades.csv", newline=""))}
     pts = _points(SLOT)
     assert float(rows["alice"]["raw_score"]) == sum(pts)
