@@ -174,9 +174,13 @@ class Group:
         return tuple(self.links) if self.links is not None else default
 
 
-def _two(names, kind):
-    if names is not None and len(names) != 2:
-        raise StructureError(f"links of a {kind} dyad: two names, got {names!r}")
+class _Dyad(Group):
+    """A group of two links (class II): its optional link names are checked to be two."""
+
+    def __post_init__(self):
+        super().__post_init__()
+        if self.links is not None and len(self.links) != 2:
+            raise StructureError(f"links of a {self.kind} dyad: two names, got {self.links!r}")
 
 
 @dataclass(frozen=True)
@@ -240,7 +244,7 @@ def _bar_angle(state, start: str, end: str) -> AnglePath:
 
 
 @dataclass(frozen=True)
-class RRR(Group, Checked):
+class RRR(_Dyad, Checked):
     """Two links pinned at the new joint ``joint`` and to the joints ``first`` and ``second``:
     |joint - first| = first_length, |joint - second| = second_length. ``assembly`` +1 puts the joint on
     the left of the directed line first → second, -1 on its right. ``links``: the two links' names
@@ -261,10 +265,6 @@ class RRR(Group, Checked):
     links: LinkNames = None
 
     kind: ClassVar[str] = "RRR"
-
-    def __post_init__(self):
-        super().__post_init__()
-        _two(self.links, self.kind)
 
     def needs(self):
         return (self.first, self.second)
@@ -327,7 +327,7 @@ def _guide_axis(guide: Guide, on: str, links):
 
 
 @dataclass(frozen=True)
-class RRP(Group, Checked):
+class RRP(_Dyad, Checked):
     """A rod ``pin``-``joint`` of ``length`` and a slider at ``joint`` on the straight ``guide`` (a
     :class:`Guide` on any link). ``assembly`` +1 takes the slider ahead of the pin's foot along the guide,
     -1 behind. ``links``: the rod's and the slider's names (default "AB" and "slider B").
@@ -346,10 +346,6 @@ class RRP(Group, Checked):
     links: LinkNames = None
 
     kind: ClassVar[str] = "RRP"
-
-    def __post_init__(self):
-        super().__post_init__()
-        _two(self.links, self.kind)
 
     def needs(self):
         return (self.pin, self.guide.through)
@@ -401,7 +397,7 @@ class RRP(Group, Checked):
 
 
 @dataclass(frozen=True)
-class RPR(Group, Checked):
+class RPR(_Dyad, Checked):
     """A block pinned at the joint ``pin`` slides in the straight slot of a link pivoted at the joint
     ``pivot``; the slot passes through the pivot, so the link turns with the line pivot → pin. ``length``:
     the slotted link's length (to draw it; points on it are placed with :class:`Point`). ``links``: the
@@ -419,10 +415,6 @@ class RPR(Group, Checked):
     links: LinkNames = None
 
     kind: ClassVar[str] = "RPR"
-
-    def __post_init__(self):
-        super().__post_init__()
-        _two(self.links, self.kind)
 
     def needs(self):
         return (self.pin, self.pivot)
@@ -456,7 +448,7 @@ class RPR(Group, Checked):
 
 
 @dataclass(frozen=True)
-class PRP(Group, Checked):
+class PRP(_Dyad, Checked):
     """Two blocks pinned together at the new joint ``joint``, one sliding on the guide ``first``, the other on
     the guide ``second`` (:class:`Guide` s on any links): the joint is where the two lines cross. ``links``:
     the two blocks' names (default "slider B" and "block B").
@@ -473,10 +465,6 @@ class PRP(Group, Checked):
     links: LinkNames = None
 
     kind: ClassVar[str] = "PRP"
-
-    def __post_init__(self):
-        super().__post_init__()
-        _two(self.links, self.kind)
 
     def needs(self):
         return (self.first.through, self.second.through)
