@@ -221,7 +221,8 @@ def _grade_one(student: str, aid: str, nb: Path, timeout: int, masters: Masters)
     as nbgrader's source, the master of this student's own variant), and a temp folder of its own, both
     removed afterwards. Files the submission writes are visible to its own checks and to no other
     submission's. Returns nbgrader's CSV rows for it, its feedback page (None if none), the verdicts its
-    checks logged and the flag on its variant numbers ("" if they are the student's own)."""
+    checks logged, the flag on its variant numbers ("" if they are the student's own) and the cells stopped
+    at the time limit."""
     with tempfile.TemporaryDirectory(prefix="mechlab-grade-") as tmp:
         sandbox = Path(tmp)
         work = _course(sandbox / "course")
@@ -234,35 +235,38 @@ def _grade_one(student: str, aid: str, nb: Path, timeout: int, masters: Masters)
         nbformat.write(_without_copies(submitted), dest)
         (sandbox / "tmp").mkdir()
         log = sandbox / "verdicts.jsonl"
+        stopped: list[str] = []
         with _temp_folder(sandbox / "tmp"), _environ(MECHLAB_GRADE_LOG=str(log)):
             api = _api(work, **{"Execute.timeout": timeout})
             _release(api, [aid])
             if _done(api.autograde(aid, student, force=True, create=True), f"autograde {student}/{aid}"):
-                _plain_timeouts(work / "autograded" / student / aid / f"{aid}.ipynb", timeout)
+                stopped = _plain_timeouts(work / "autograded" / student / aid / f"{aid}.ipynb", timeout)
                 _done(api.generate_feedback(aid, student, force=True), f"feedback {student}/{aid}")
         rows = _export(work)
         page = work / "feedback" / student / aid / f"{aid}.html"
         verdicts = [json.loads(line) for line in log.read_text(encoding="utf-8").splitlines()] if log.is_file() else []
-        return rows, page.read_text(encoding="utf-8") if page.is_file() else None, verdicts, flag
+        return rows, page.read_text(encoding="utf-8") if page.is_file() else None, verdicts, flag, stopped
 
 
 STOPPED = {"KeyboardInterrupt", "CellTimeoutError"}  # what nbclient leaves in a cell it interrupted
 
 
-def _plain_timeouts(nb_path: Path, timeout: int) -> None:
-    """Say in plain words, in the feedback, that a cell was stopped, in place of the interrupt's traceback."""
+def _plain_timeouts(nb_path: Path, timeout: int) -> list[str]:
+    """Say in plain words, in the feedback, that a cell was stopped, in place of the interrupt's traceback.
+    Returns the stopped cells (grade id, else "cell N") for the class report."""
     nb = nbformat.read(nb_path, as_version=4)
-    changed = False
-    for cell in nb.cells:
+    changed = []
+    for n, cell in enumerate(nb.cells, 1):
         outputs = cell.get("outputs", [])
         if any(o.get("output_type") == "error" and o.get("ename") in STOPPED for o in outputs):
             cell.outputs = [o for o in outputs if o.get("ename") not in STOPPED] + [nbformat.v4.new_output(
                 "stream", name="stderr",
                 text=f"This cell ran for more than {timeout} s and was stopped (an endless loop?). "
                      "Cells below that use what it defines fail too.\n")]
-            changed = True
+            changed.append(cell.metadata.get("nbgrader", {}).get("grade_id") or f"cell {n}")
     if changed:
         nbformat.write(nb, nb_path)
+    return changed
 
 
 def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: bool = False,
@@ -286,8 +290,8 @@ def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: 
     table = _read_grades(out / GRADES)
     masters = Masters(class_ids or [])
     for (student, aid), nb in found.items():
-        rows, page, verdicts, flag = _grade_one(student, aid, nb, timeout, masters)
-        _write_verdicts(out / "verdicts" / student / f"{aid}.json", verdicts, flag)
+        rows, page, verdicts, flag, stopped = _grade_one(student, aid, nb, timeout, masters)
+        _write_verdicts(out / "verdicts" / student / f"{aid}.json", verdicts, flag, stopped, timeout)
         old = [r for r in table if (r["student_id"], r["assignment"]) == (student, aid)]
         if old:
             _append_history(out / "history.csv", old, stamp)
@@ -310,11 +314,12 @@ def grade(submissions: Path, out: Path, timeout: int, fresh: bool = False, yes: 
           + f"; what the class got wrong: {out / 'class_report.html'}")
 
 
-def _write_verdicts(path: Path, verdicts: list[dict], flag: str) -> None:
-    """One submission's logged verdicts and variant flag (replaced when the student is graded again)."""
+def _write_verdicts(path: Path, verdicts: list[dict], flag: str, stopped: list[str], timeout: int) -> None:
+    """One submission's logged verdicts, variant flag and cells stopped at the ``timeout`` (replaced when the
+    student is graded again)."""
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps({"verdicts": verdicts, "flags": [flag] if flag else []}, ensure_ascii=False),
-                    encoding="utf-8")
+    path.write_text(json.dumps({"verdicts": verdicts, "flags": [flag] if flag else [], "stopped": stopped,
+                                "timeout": timeout}, ensure_ascii=False), encoding="utf-8")
 
 
 def _class_report(out: Path, table: list[dict], masters: Masters) -> None:
@@ -325,7 +330,8 @@ def _class_report(out: Path, table: list[dict], masters: Masters) -> None:
         path = out / "verdicts" / who / f"{aid}.json"
         saved = json.loads(path.read_text(encoding="utf-8")) if path.is_file() else {"verdicts": [], "flags": []}
         subs.append(report.Submission(who, aid, saved["verdicts"], float(row["score"] or 0),
-                                      float(row["max_score"] or 0), list(saved["flags"])))
+                                      float(row["max_score"] or 0), list(saved["flags"]),
+                                      list(saved.get("stopped", [])), saved.get("timeout")))
     names: dict[str, list[str]] = {}
     for aid in sorted({s.assignment for s in subs}):
         recorded = [c["name"] for _, calls in variants._checks(masters.of(aid, variants.SHARED)) for c in calls]

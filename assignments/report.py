@@ -5,8 +5,9 @@ class right, the named slips most made (degrees for radians, the other assembly,
 nothing; per design check the distribution of outcomes (every specification met, which one missed); and
 the flagged submissions — numbers that are another student's (a copied notebook), answers that are right
 for another student's variant and not for the student's own (copied answers), variant numbers edited by
-hand, a check that never finished (a loop). Written as ``class_report.csv`` (one row per assignment,
-answer and outcome) and ``class_report.html``.
+hand; and the submissions with a cell stopped at the time limit (a loop): their answers without a verdict
+read "stopped: ran over 60 s", not as a wrong or missing answer. Written as ``class_report.csv`` (one row
+per assignment, answer and outcome) and ``class_report.html``.
 """
 
 from __future__ import annotations
@@ -26,7 +27,8 @@ OUTCOMES = {"correct": "right", "close": "close (too few digits)", "units": "uni
 
 @dataclass
 class Submission:
-    """One graded notebook: its verdicts (from the grade log, in order), nbgrader's score and the flags."""
+    """One graded notebook: its verdicts (from the grade log, in order), nbgrader's score, the flags, and the
+    cells stopped at the time limit of ``timeout`` seconds."""
 
     student: str
     assignment: str
@@ -34,6 +36,15 @@ class Submission:
     score: float = 0.0
     max_score: float = 0.0
     flags: list[str] = field(default_factory=list)
+    stopped: list[str] = field(default_factory=list)
+    timeout: int | None = None
+
+    @property
+    def stop(self) -> str:
+        """What an answer without a verdict reads as: stopped at the limit, or a check that did not finish."""
+        if not self.stopped:
+            return OUTCOMES["unfinished"]
+        return f"stopped: ran over {self.timeout} s" if self.timeout else "stopped at the time limit"
 
 
 def copied_answers(sub: Submission, expected: dict[str, dict[str, dict]]) -> list[str]:
@@ -77,7 +88,7 @@ def rows(subs: list[Submission], expected_names: dict[str, list[str]]) -> list[d
             counts = Counter()
             for s in group:
                 mine = [v for v in s.verdicts if v["name"] == name]
-                counts[_label(mine[0]) if mine else OUTCOMES["unfinished"]] += 1
+                counts[_label(mine[0]) if mine else s.stop] += 1
             for outcome, n in counts.most_common():
                 out.append({"assignment": aid, "answer": name, "outcome": outcome, "students": n,
                             "share": round(n / len(group), 3)})
@@ -96,6 +107,9 @@ def write(subs: list[Submission], expected_names: dict[str, list[str]], folder: 
             for flag in s.flags:
                 w.writerow({"assignment": s.assignment, "answer": "", "outcome": f"flag: {s.student}: {flag}",
                             "students": 1, "share": ""})
+            if s.stopped:
+                w.writerow({"assignment": s.assignment, "answer": "", "students": 1, "share": "",
+                            "outcome": f"stopped: {s.student}: ran over {s.timeout} s in {', '.join(s.stopped)}"})
     html_path.write_text(_html(subs, table), encoding="utf-8")
     return csv_path, html_path
 
@@ -129,5 +143,9 @@ def _html(subs: list[Submission], table: list[dict]) -> str:
         if flagged:
             parts.append("<h3 class='flag'>Flagged</h3><ul>" + "".join(
                 f"<li class='flag'>{esc(who)}: {esc(f)}</li>" for who, f in flagged) + "</ul>")
+        looped = [s for s in group if s.stopped]
+        if looped:
+            parts.append("<h3>Stopped at the time limit (a loop?)</h3><ul>" + "".join(
+                f"<li>{esc(s.student)}: {esc(s.stop)} in {esc(', '.join(s.stopped))}</li>" for s in looped) + "</ul>")
     parts.append("</body></html>")
     return "\n".join(parts)
