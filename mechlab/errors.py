@@ -44,6 +44,10 @@ class InfeasibleDesignError(SynthesisError):
     """A six-bar requested by K, β_m (or a pivot position) cannot be built."""
 
 
+class TransmissionAngleError(InfeasibleDesignError):
+    """A six-bar's design leaves the working range of a transmission angle (its base four-bar's or its dyad's)."""
+
+
 class StructureError(MechanismError):
     """A mechanism's links, pairs and groups do not make a well-formed structure (statically solvable groups,
     joints defined once, one degree of freedom)."""

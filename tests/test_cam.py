@@ -8,7 +8,7 @@ import ezdxf
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings, strategies as st
+from hypothesis import HealthCheck, Phase, assume, given, settings, strategies as st
 
 import mechlab as ml
 from mechlab.analysis.motion_laws import LAWS
@@ -172,7 +172,7 @@ def test_undercut_at_the_known_radius():
     with pytest.raises(CamUndercutError, match=rf"falls to {rho_min:.4g} at φ = ") as err:
         cam.motion(PHI)
     said = float(str(err.value).split("at φ = ")[1].split("°")[0])
-    assert said == pytest.approx(np.degrees(where), abs=0.06)   # the flag's grid: 0.05°
+    assert said == pytest.approx(np.degrees(where), abs=0.006)   # exact, printed to 0.01°
     # drawn anyway, the profile's offset turns back on itself where ρ < r_r (a swallowtail)
     prof = cam.profile(72001, check=False)
     dq, dp = np.diff(prof.surface, axis=0), np.diff(prof.pitch, axis=0)
@@ -266,6 +266,64 @@ def test_cam_explorer_shows_an_undercut_in_place_and_recovers():
     ex.angle.value = 60.0
     assert [id(a) for a in ex.drawing.artists] == artists
     plt.close("all")
+
+
+def _random_cam(law, rise, ret, dwell, stroke, base, offset, swinging, pivot, arm, roller=1.0):
+    if swinging:
+        pr = ml.CamProgramme(np.radians(stroke / 2), rise * DEG, ret * DEG, dwell * DEG, law=law)
+        return ml.OscillatingRollerCam(pr, base, roller, pivot * (base + roller), arm * (base + roller))
+    pr = ml.CamProgramme(stroke, rise * DEG, ret * DEG, dwell * DEG, law=law)
+    return ml.TranslatingRollerCam(pr, base, roller, offset=offset * (base + roller))
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=list(HealthCheck),
+          phases=[Phase.explicit, Phase.reuse, Phase.generate])   # a failing cam is reported unshrunk: each costs 0.5 s
+@given(law=st.sampled_from(list(LAWS)), rise=st.floats(20, 200), ret=st.floats(20, 200), dwell=st.floats(0, 100),
+       stroke=st.floats(2, 60), base=st.floats(10, 80), offset=st.floats(-0.8, 0.8), swinging=st.booleans(),
+       pivot=st.floats(1.2, 3), arm=st.floats(0.5, 2.5), share=st.floats(0.2, 1.5))
+def test_the_undercut_flag_is_exact_against_dense_sampling(law, rise, ret, dwell, stroke, base, offset, swinging,
+                                                          pivot, arm, share):
+    # random cams, the roller a share of the pitch curve's smallest radius (from 200,001 samples): the exact flag
+    # agrees with the samples, its radius is never above theirs, and its stretches hold every undercut sample
+    assume(rise + ret + dwell <= 360)
+    try:
+        probe = _random_cam(law, rise, ret, dwell, stroke, base, offset, swinging, pivot, arm)
+    except ml.DimensionError:
+        assume(False)
+    phi = np.linspace(0.0, 2 * np.pi, 200001)
+    k = probe.curvature(phi)
+    roller = share / k.max()
+    cam = _random_cam(law, rise, ret, dwell, stroke, max(base - roller + 1.0, 1e-3), offset, swinging, pivot, arm,
+                      roller)   # the same pitch curve (r_b + r_r kept) for a translating follower
+    k = cam.curvature(phi)
+    flag = cam.undercut()
+    sampled = k * roller >= 1.0
+    if flag is None:
+        assert not sampled.any() or k.max() * roller - 1.0 < 1e-9
+        return
+    assert flag.radius <= 1 / k.max() * (1 + 1e-12) and flag.radius == pytest.approx(1 / k.max(), rel=1e-4)
+    assert cam.curvature(flag.phi) == pytest.approx(1 / flag.radius, rel=1e-12)
+    inside = np.zeros_like(sampled)
+    for a, e in flag.spans:
+        inside |= (phi >= a) & (phi <= e)
+        assert np.all(cam.curvature(np.array([a, e])) * roller >= 1.0)   # the ends are on the undercut side
+    # (a sample may sit on an end, where κ·r_r = 1 up to rounding)
+    assert np.all((inside == sampled) | (np.abs(k * roller - 1.0) < 1e-9))
+    assert np.all(cam.curvature(flag.where) * roller >= 1.0)
+
+
+def test_an_undercut_narrower_than_any_grid_is_found():
+    # the roller a hair larger than the smallest radius: the stretch is ~1e-4° wide, below the former
+    # test's 0.05° grid; a hair smaller and the flag is None
+    pr = ml.CamProgramme(30.0, 40 * DEG, 40 * DEG, 0.0, law="cycloidal (sine)")
+    rho = ml.TranslatingRollerCam(pr, 25.0, 1.0).min_radius_of_curvature()
+    wide = ml.TranslatingRollerCam(pr, 26.0 - rho.value * (1 + 1e-9), rho.value * (1 + 1e-9)).undercut()
+    assert wide is not None and wide.radius == pytest.approx(rho.value, rel=1e-12)
+    assert np.all(np.diff(wide.spans, axis=1) < 1e-3 * DEG)
+    assert any(a <= rho.phi <= e for a, e in wide.spans)
+    assert ml.TranslatingRollerCam(pr, 26.0 - rho.value * (1 - 1e-9), rho.value * (1 - 1e-9)).undercut() is None
+    with pytest.warns(DeprecationWarning, match="n is ignored"):
+        assert ml.TranslatingRollerCam(pr, 25.0, 1.0).undercut(7201) is None
 
 
 @settings(max_examples=25, deadline=None, suppress_health_check=list(HealthCheck))

@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.errors import InfeasibleDesignError
+from mechlab.errors import InfeasibleDesignError, TransmissionAngleError
 from mechlab.mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
 from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
 from mechlab.synthesis.lambda_sixbars import mchv1, mchv3_full_turn, mchv3_half_turn, mchv3_oscillating, report, time_ratio_far_angle
@@ -61,6 +61,22 @@ def test_mchv1_refuses_a_dyad_outside_the_transmission_range_unless_asked(guide)
     with pytest.raises(InfeasibleDesignError, match="outside 45°…135°"):
         mchv1(guide, 1.0, 20 * DEG, mu_min=45 * DEG) if r1.mu2_min < 45 * DEG or r1.mu2_max > 135 * DEG else \
             mchv1(guide, 1.25, 20 * DEG, side=-1, mu_min=45 * DEG)
+
+
+def test_mchv1_checks_the_base_four_bars_transmission_angle_too():
+    # (δ, a, 2α) = (150°, 0.9, 150°), K = 1, β_m = 20°: the dyad stays within 57.0°…135.4°, but the base
+    # four-bar's transmission angle (the guide's own, over the turn) falls to 38.4°: refused at 40°, by name
+    g = circle_guiding(150 * DEG, 0.9, 150 * DEG)
+    base = g.mechanism.motion(np.linspace(0.0, 2 * np.pi, 20001)).transmission
+    worst = min(base.min(), np.pi - base.max())
+    assert np.degrees(worst) == pytest.approx(38.43, abs=0.01)
+    with pytest.raises(TransmissionAngleError, match=r"transmission angle of the base four-bar reaches 38\.4°, "
+                                                     r"outside 40°…140°"):
+        mchv1(g, 1.0, 20 * DEG, mu_min=40 * DEG)
+    six = mchv1(g, 1.0, 20 * DEG, mu_min=38 * DEG)   # a limit both four-bars meet
+    rep = report(six, g.dwell)
+    assert rep.mu_min == pytest.approx(worst, abs=1e-4) and 40 * DEG < rep.mu2_min and rep.mu2_max < 140 * DEG
+    assert issubclass(TransmissionAngleError, InfeasibleDesignError)
 
 
 def test_far_extreme_angle_formula():

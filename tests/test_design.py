@@ -14,6 +14,7 @@ from mechlab import design as D
 from mechlab.analysis.half_turn import base_peaks
 from mechlab.analysis.motion_laws import law_invariants
 from mechlab.geometry import PointPath
+from mechlab.mechanisms.cam import CamAngularMotion
 from mechlab.motion import AngularMotion
 
 
@@ -126,8 +127,8 @@ def test_geneva_criteria_agree_with_its_closed_form(z):
     spec = D.Specification("index", (z + 2) / (2 * z), stations=z, inertia=1.0)
     cand = D.candidates(spec, ["external Geneva"]).candidates[0]
     g, c = cand.design.mechanism, cand.criteria
-    # the index is one rise, from the end of the dwell as measured (the output within 0.001 h of rest)
-    # to the next: its duration is the rest of the turn, its height h less at most 0.002 h
+    # the index is one rise, from the end of the exact dwell to the start of the next: the rest of the turn
+    assert c.dwell_fraction == pytest.approx(g.dwell_fraction, abs=1e-7)
     motion_angle, h = 2 * np.pi * (1 - c.dwell_fraction), 2 * np.pi / z
     assert c.B == pytest.approx(g.max_velocity() * motion_angle / h, rel=2.5e-3)
     assert c.C == pytest.approx(g.max_acceleration() * motion_angle**2 / h, rel=3e-3)
@@ -162,17 +163,45 @@ def test_criteria_reproduce_the_cycloidal_invariants():
     c = D.evaluate(mech, spec, scale=1.0, structure=D.Structure(1, 1, 1))
     law = law_invariants("cycloidal (sine)")
     assert (law.B, law.C) == (pytest.approx(2.0), pytest.approx(2 * np.pi))
-    # the rise is measured from where the output leaves the dwell band (y = ε at u*), up to its top:
-    # its duration is (1 − u*)·Φ/2 and its height (1 − ε)·h
-    eps = spec.dwell_precision
-    u = brentq(lambda u: u - np.sin(2 * np.pi * u) / (2 * np.pi) - eps, 1e-6, 0.5)
-    t, k = 1 - u, 1 - eps
-    assert (c.B, c.C, c.D) == pytest.approx((law.B * t / k, law.C * t**2 / k, law.D * t**3 / k**2), rel=3e-3)
-    assert c.J == pytest.approx(4 * np.pi**2 * t**3 / k, rel=3e-3)
+    # the rise is measured from where the exact dwell ends (its end refined between samples) up to the top
+    assert (c.B, c.C, c.D) == pytest.approx((law.B, law.C, law.D), rel=1e-3)
+    # no closed-form jerk in this motion: a central difference of x″
+    assert c.J == pytest.approx(4 * np.pi**2, rel=3e-3)
     assert c.impact == "none"
-    # the output stays within 0.001 h of its rest value also where the cycloid leaves and joins it
-    assert c.dwell_fraction == pytest.approx(1 / 3 + 2 * u * (mech.Phi / 2) / (2 * np.pi), abs=1e-3)
+    # the exact dwell is the stand-in's: a third of the turn
+    assert c.dwell_fraction == pytest.approx(1 / 3, abs=1e-6)
+    # the near-standstill is longer: the output stays within 0.001 h of rest also where the cycloid leaves
+    # and joins it (y = ε at u*)
+    u = brentq(lambda u: u - np.sin(2 * np.pi * u) / (2 * np.pi) - spec.dwell_precision, 1e-6, 0.5)
+    assert c.standstill_fraction == pytest.approx(1 / 3 + 2 * u * (mech.Phi / 2) / (2 * np.pi), abs=1e-3)
+    assert c.standstill_fraction > c.dwell_fraction + 0.01
     assert c.dwell_residual == pytest.approx(0.0, abs=1e-6)
+
+
+class _CycloidalWithJerk(_CycloidalRiseReturn):
+    """The same stand-in whose motion carries a closed-form ``jerk`` (as a cam's does), times ``factor``."""
+
+    factor = 1.0
+
+    def motion(self, phi):
+        mo = super().motion(phi)
+        half, t = self.Phi / 2, np.mod(np.asarray(phi, float), 2 * np.pi)
+        u = np.clip(np.where(t < half, t, self.Phi - t) / half, 0.0, 1.0)
+        sgn = np.where(t < half, 1.0, -1.0) * (t < self.Phi)
+        jerk = self.factor * sgn * self.h / half**3 * 4 * np.pi**2 * np.cos(2 * np.pi * u)
+        return CamAngularMotion(mo.phi, mo.points, mo._transmission, mo.psi, mo.dpsi, mo.ddpsi, jerk)
+
+
+def test_criteria_take_the_jerk_from_the_motions_closed_form():
+    # the capstone's J is the law's closed-form jerk where the motion has one: exact to the sampling of Φ,
+    # and it is that jerk (scaling it scales J; a central difference of x″ would not follow)
+    spec = D.Specification("swing", 1 / 3, amplitude=0.5)
+    mech = _CycloidalWithJerk(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
+    assert D.evaluate(mech, spec, scale=1.0, structure=D.Structure(1, 1, 1)).J == pytest.approx(4 * np.pi**2,
+                                                                                                 rel=1e-5)
+    mech.factor = 1.5
+    assert D.evaluate(mech, spec, scale=1.0, structure=D.Structure(1, 1, 1)).J == pytest.approx(6 * np.pi**2,
+                                                                                                 rel=1e-5)
 
 
 def test_curved_slot_candidate_respects_the_limit_theorem():
@@ -189,7 +218,7 @@ def test_the_table_shows_and_exports(tmp_path):
     assert {c.family for c in comp.candidates} >= {"external Geneva", "spherical Geneva"}
     text = comp.to_csv(tmp_path / "t.csv")
     assert (tmp_path / "t.csv").read_text(encoding="utf-8") == text
-    assert text.splitlines()[0].startswith("family,dwell_fraction,dwell_residual,B,C,D,J,impact")
+    assert text.splitlines()[0].startswith("family,dwell_fraction,standstill_fraction,dwell_residual,B,C,D,J,impact")
     assert "external Geneva" in comp._repr_html_() and "Refused" in comp._repr_html_()
     by_power = comp.ranked("motor_power")
     powers = [c.criteria.motor_power for c in by_power.candidates]
@@ -274,15 +303,14 @@ def test_geneva_torque_and_motor_agree_with_the_geneva_chapter(z):
 
 @pytest.mark.parametrize("motion, amplitude", [("stroke", 80.0), ("swing", np.radians(30))])
 def test_the_cam_candidate_carries_its_law_and_exports_its_profile(motion, amplitude, tmp_path):
-    # the cam's rise is the cycloidal law solved through the profile: its invariants are the law's,
-    # over the rise as measured (from where the follower leaves the dwell band, as for the stand-in above)
+    # the cam's rise is the cycloidal law solved through the profile: from the end of its exact dwell, its
+    # invariants are the law's, and its jerk the law's closed form, C_j = 4π²
     spec = D.Specification(motion, 0.3, amplitude=amplitude, max_pressure_angle=np.radians(35), impacts="none")
     cand = D.candidates(spec, ["disc cam"]).candidates[0]
     law = law_invariants("cycloidal (sine)")
-    u = brentq(lambda u: u - np.sin(2 * np.pi * u) / (2 * np.pi) - spec.dwell_precision, 1e-6, 0.5)
-    t, k = 1 - u, 1 - spec.dwell_precision
     c = cand.criteria
-    assert (c.B, c.C) == pytest.approx((law.B * t / k, law.C * t**2 / k), rel=3e-3)
+    assert (c.B, c.C, c.J) == pytest.approx((law.B, law.C, 4 * np.pi**2), rel=1e-5)
+    assert c.dwell_fraction == pytest.approx(0.3, abs=1e-6)
     assert c.pressure_angle <= spec.max_pressure_angle and c.impact == "none"
     # the base circle is the smallest within the limit: 2 % smaller breaks it
     cam = cand.design.mechanism

@@ -42,6 +42,7 @@ class Candidate:
 # (column, heading, unit, formatter); the order of the table
 COLUMNS = (
     ("dwell_fraction", "dwell", "of turn", "{:.3f}"),
+    ("standstill_fraction", "near-standstill", "of turn", "{:.3f}"),
     ("dwell_residual", "dwell residual", "of amplitude", "{:.2e}"),
     ("B", "B", "", "{:.3f}"),
     ("C", "C", "", "{:.3f}"),
@@ -85,15 +86,17 @@ class Verdict:
 def limits(spec: Specification, c: Criteria) -> list[Verdict]:
     """The specification's limits on a simulated design (dwell, pressure angle, size, impacts), each
     met or missed with its numbers: :func:`check_design` reports them, :func:`candidates` refuses on them."""
-    # a longer dwell than asked still serves the machine; a shorter one does not
-    dwell_ok = c.dwell_fraction >= spec.dwell_fraction - spec.dwell_tolerance
+    # the specification's dwell is a near-standstill (within its dwell_precision): a longer one than asked
+    # still serves the machine, a shorter one does not
+    dwell_ok = c.standstill_fraction >= spec.dwell_fraction - spec.dwell_tolerance
     pa_ok = c.pressure_angle <= spec.max_pressure_angle + 1e-9
     size_ok = c.size <= spec.max_size
     impact_ok = IMPACTS.index(c.impact) <= IMPACTS.index(spec.impacts)
     return [
-        Verdict("dwell", dwell_ok, f"{c.dwell_fraction:.3f} of the turn (output within ± {spec.dwell_precision:g} of "
-                                   f"its amplitude) {'≥' if dwell_ok else '<'} {spec.dwell_fraction:.3f} − "
-                                   f"{spec.dwell_tolerance:.3f} asked"),
+        Verdict("dwell", dwell_ok, f"near-standstill {c.standstill_fraction:.3f} of the turn (output within "
+                                   f"± {spec.dwell_precision:g} of its amplitude; exact dwell {c.dwell_fraction:.3f}) "
+                                   f"{'≥' if dwell_ok else '<'} {spec.dwell_fraction:.3f} − {spec.dwell_tolerance:.3f} "
+                                   f"asked"),
         Verdict("pressure angle", pa_ok, f"worst {np.degrees(c.pressure_angle):.1f}° {'≤' if pa_ok else '>'} "
                                          f"{np.degrees(spec.max_pressure_angle):.1f}°"),
         Verdict("size", size_ok, f"{c.size:.0f} mm {'≤' if size_ok else '>'} {spec.max_size:.0f} mm"),

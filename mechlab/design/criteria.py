@@ -6,6 +6,12 @@ those by which Kinitsky (1994) compares six-bars with cam laws, measured over th
 (from the end of the dwell to the output's farthest position, or to the next dwell of an
 index) with :func:`~mechlab.analysis.motion_laws.rise_invariants`: B (velocity), C
 (acceleration), D (kinetic power, velocity × acceleration); and the jerk J = max|x‴|·Φ³/h.
+
+One definition of dwell, the mechanisms' own: the **dwell fraction** is the share of the turn over
+which the output stands exactly still (x′ = 0 up to rounding), as ``ExternalGeneva.dwell_fraction``;
+the **near-standstill fraction** is the longer share over which it stays within a band of
+``dwell_precision``·h, as ``ExternalGeneva.standstill_fraction(precision)``. A linkage that only
+approximates a dwell (Chebyshev's six-bars) has a dwell fraction of 0 and a near-standstill one.
 """
 
 from __future__ import annotations
@@ -36,7 +42,9 @@ class Movable(Protocol):
 
 AnyMovable = Annotated[Movable, instance_of(Movable, why="an object with motion(phi), e.g. a mechlab mechanism")]
 
-SAMPLES = 2880  # crank angles per turn (1/8°): the dwell is found to this resolution
+SAMPLES = 2880  # crank angles per turn (1/8°): the near-standstill is found to this resolution
+STILL = 1e-12  # |x′| ≤ STILL·max|x′|: the output stands exactly still, up to rounding
+REFINE = 513  # crank angles per refinement of a dwell's end (two refinements: ends to ~1e-8 rad)
 
 
 Parts = Annotated[int, count(0, 1000)]
@@ -93,14 +101,20 @@ class Criteria:
     Attributes
     ----------
     dwell_fraction : float
-        Longest share of the turn over which the output stays within ``dwell_precision``·h.
+        Longest share of the turn over which the output stands exactly still (x′ = 0 up to
+        rounding, its ends refined to ~1e-8 rad); 0 for an approximate dwell.
+    standstill_fraction : float
+        Longest share of the turn over which the output stays within ``dwell_precision``·h (the
+        near-standstill, to 1/SAMPLES of the turn): what the specification's dwell asks.
     dwell_residual : float
         Output motion (max − min) over the asked dwell, centred on the achieved one, as a
         fraction of h: the dwell's accuracy (0 for an exact dwell).
     B, C, D : float
-        The rise's invariants of velocity, acceleration and kinetic power (Kinitsky, 1994).
+        The rise's invariants of velocity, acceleration and kinetic power (Kinitsky, 1994). The rise
+        starts where the exact dwell ends, or where the near-standstill ends if there is no exact dwell.
     J : float or None
-        The rise's peak jerk, max|x‴|·Φ³/h; None where the acceleration jumps (the jerk is unbounded).
+        The rise's peak jerk, max|x‴|·Φ³/h: from the motion's closed-form ``jerk`` where it has one (a
+        cam), else a central difference of x″; None where the acceleration jumps (the jerk is unbounded).
     velocity_jump, acceleration_jump : float
         Jumps of x′ and x″ (as fractions of their peaks); non-zero means a hard or soft impact.
     impact : str
@@ -115,6 +129,7 @@ class Criteria:
     """
 
     dwell_fraction: float
+    standstill_fraction: float
     dwell_residual: float
     B: float
     C: float
@@ -161,6 +176,53 @@ def longest_still(x: np.ndarray, shift: float, band: float) -> tuple[int, int]:
     return start % n, best[1]
 
 
+def longest_true(still: np.ndarray) -> tuple[int, int]:
+    """Longest run (start, length) of True in the periodic boolean samples ``still`` (one turn)."""
+    n = len(still)
+    if still.all():
+        return 0, n
+    if not still.any():
+        return 0, 0
+    first = int(np.argmin(still))  # a False: no run wraps past it
+    edges = np.diff(np.concatenate([[0], np.roll(still, -first).astype(np.int8), [0]]))
+    starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+    k = int(np.argmax(ends - starts))
+    return int((starts[k] + first) % n), int(ends[k] - starts[k])
+
+
+def _still_end(mechanism, still_at: float, moving_at: float, vmax: float, scale: float) -> float:
+    """The crank angle between ``still_at`` (output still) and ``moving_at`` (moving) where the exact
+    dwell ends, to ~1e-8 rad: two refinements on grids of REFINE angles."""
+    for _ in range(2):
+        grid = np.linspace(still_at, moving_at, REFINE)
+        d = np.abs(np.asarray(mechanism.motion(grid).output.d, float)) * scale
+        k = max(int(np.argmax(d > STILL * vmax)), 1)  # the first moving angle (the last one is)
+        still_at, moving_at = grid[k - 1], grid[k]
+    return 0.5 * (still_at + moving_at)
+
+
+def exact_dwell(mechanism, phi: np.ndarray, d1: np.ndarray, scale: float = 1.0) -> tuple[int, int, float, float]:
+    """The exact dwell of a motion sampled at ``phi`` (one turn and its end point) with output
+    velocity ``d1``: (first still sample, still samples, crank angles where it begins and ends).
+
+    The output stands still where |x′| ≤ STILL·max|x′|; a run of fewer than two samples (a velocity
+    crossing zero) is no dwell: (start, 0, nan, nan). The ends are refined between the samples.
+    ``scale`` converts the motion's units to those of ``d1``.
+    """
+    n = len(phi) - 1
+    v = np.abs(d1[:-1])
+    vmax = float(np.max(v))
+    start, run = longest_true(v <= STILL * vmax)
+    if run < 2:
+        return start, 0, np.nan, np.nan
+    step = phi[1] - phi[0]
+    lo = phi[0] + start * step
+    if run == n:
+        return 0, n, lo, lo + 2 * np.pi
+    hi = lo + (run - 1) * step
+    return start, run, _still_end(mechanism, lo, lo - step, vmax, scale), _still_end(mechanism, hi, hi + step, vmax, scale)
+
+
 def _jumps(mechanism, phase: float, d1: np.ndarray, d2: np.ndarray) -> tuple[float, float]:
     """Largest neighbour-to-neighbour change of x′ and x″ that does not shrink when the grid is halved.
 
@@ -202,8 +264,12 @@ def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
     x, d1, d2 = x * length, d1 * length, d2 * length
     h = spec.amplitude
     shift = x[-1] - x[0] if spec.motion == "index" else 0.0
-    start, run = longest_still(x[:-1], shift, spec.dwell_precision * h)
-    dwell = run / SAMPLES
+    near, near_run = longest_still(x[:-1], shift, spec.dwell_precision * h)
+    start, run, begin, finish = exact_dwell(mechanism, phi, d1, length)
+    exact = 0 < run < SAMPLES  # a dwell with ends to refine
+    dwell = (finish - begin) / (2 * np.pi) if run else 0.0
+    if not run:  # an approximate dwell: the near-standstill is the dwell the rise starts from
+        start, run = near, near_run
     # residual over the asked dwell, centred on the achieved one
     want = int(round(spec.dwell_fraction * SAMPLES))
     centre = start + run // 2
@@ -219,12 +285,19 @@ def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
         k = k[:int(np.argmax(np.abs(xs - xs[0]))) + 1]
         xs = xs[:len(k)]
     rise_phi = phi[0] + k * (2 * np.pi / SAMPLES)
-    inv = rise_invariants(rise_phi, xs, d1[:-1][k % SAMPLES], d2[:-1][k % SAMPLES])
+    v_rise, a_rise = d1[:-1][k % SAMPLES], d2[:-1][k % SAMPLES]
+    if exact:  # from the exact dwell's refined end (output still there), not the sample after it
+        rise_phi, xs = np.r_[finish, rise_phi], np.r_[x[(end - 1) % SAMPLES] + shift * ((end - 1) // SAMPLES), xs]
+        v_rise, a_rise = np.r_[0.0, v_rise], np.r_[0.0, a_rise]
+        if spec.motion == "index":  # to the next dwell's refined start
+            rise_phi[-1] = begin + 2 * np.pi
+    inv = rise_invariants(rise_phi, xs, v_rise, a_rise)
     v_jump, a_jump = _jumps(mechanism, phase, np.asarray(mo.output.d, float), np.asarray(mo.output.dd, float))
     impact = "hard" if v_jump > 1e-6 else "soft" if a_jump > 1e-6 else "none"
     jerk = None
     if impact == "none":
-        d3 = np.gradient(d2, phi)[:-1][k % SAMPLES]
+        # the law's closed form where the motion carries one (a cam), else a central difference of x″
+        d3 = (np.asarray(mo.jerk, float) * length if hasattr(mo, "jerk") else np.gradient(d2, phi))[:-1][k % SAMPLES]
         jerk = float(np.max(np.abs(d3))) * (rise_phi[-1] - rise_phi[0]) ** 3 / abs(xs[-1] - xs[0])
     if pressure_angle is None:
         pressure_angle = float(np.max(mo.pressure_angle))
@@ -238,7 +311,7 @@ def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
     w = spec.omega1
     torque = load * (d1 * si) * (d2 * si) * w**2 + spec.resisting * np.abs(d1 * si)
     motor = drive(torque, phi, w, overload=spec.overload)
-    return Criteria(dwell_fraction=dwell, dwell_residual=residual, B=inv.B, C=inv.C, D=inv.D,
+    return Criteria(dwell_fraction=float(dwell), standstill_fraction=near_run / SAMPLES, dwell_residual=residual, B=inv.B, C=inv.C, D=inv.D,
                     J=jerk, velocity_jump=v_jump, acceleration_jump=a_jump, impact=impact,
                     pressure_angle=float(pressure_angle), size=size, peak_torque=motor.peak_torque,
                     rms_torque=motor.rms_torque, motor_power=motor.nominal_power, structure=structure)

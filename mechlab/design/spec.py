@@ -33,7 +33,9 @@ class Specification(Checked):
         table); ``"swing"``: it rocks through ``amplitude`` (rad) and back; ``"stroke"``: it
         translates through ``amplitude`` (mm) and back.
     dwell_fraction : float
-        Share of the crank turn during which the output stands still, in (0, 1).
+        Share of the crank turn during which the output stands still, in (0, 1): still within
+        ``dwell_precision`` (a near-standstill), so that an approximate dwell can meet it; a design's
+        ``Criteria.standstill_fraction`` is compared with it, its exact ``dwell_fraction`` is reported beside.
     amplitude : float, optional
         Swing (rad) or stroke (mm); for ``"index"`` it follows from ``stations``.
     stations : int, optional

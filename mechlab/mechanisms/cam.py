@@ -16,6 +16,7 @@ exported profile would move.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, replace
 from functools import cached_property
 
@@ -103,11 +104,13 @@ class CamAngularMotion(AngularMotion):
 @dataclass(frozen=True, eq=False)
 class Undercut:
     """Where the pitch curve is too sharp for the roller: the smallest convex radius of curvature
-    ``radius`` at cam angle ``phi`` (radians), and the cam angles ``where`` with ρ ≤ r_r."""
+    ``radius`` at cam angle ``phi`` (radians), the (start, end) cam angles ``spans`` of each stretch
+    with ρ ≤ r_r, and cam angles ``where`` inside them."""
 
     radius: float
     phi: float
     where: np.ndarray
+    spans: np.ndarray
 
     def __str__(self) -> str:
         lo, hi = np.degrees(self.where.min()), np.degrees(self.where.max())
@@ -203,15 +206,84 @@ class RollerCam(Mechanism):
         return CamProfile(theta, P.p, P.p - self.roller_radius * normal, normal, self.curvature(theta),
                           self.pressure_angle(theta), self.roller_radius)
 
-    def undercut(self, n: int = 7201) -> Undercut | None:
-        """The undercut flag: None if the roller fits the pitch curve everywhere, else where it does not."""
-        theta = np.linspace(0.0, TWO_PI, n)
-        k = self.curvature(theta)
-        bad = k * self.roller_radius >= 1.0
-        if not np.any(bad):
-            return None
+    def undercut(self, n: int | None = None) -> Undercut | None:
+        """The undercut flag: None if the roller fits the pitch curve everywhere, else where it does not.
+
+        Exact: the pitch curve's largest convex curvature κmax (:meth:`min_radius_of_curvature`) against
+        1/r_r, and the stretches where κ ≥ 1/r_r with their ends found by bisection between the curvature's
+        extremes (where it is monotone); not a test on samples.
+
+        Parameters
+        ----------
+        n : int, optional
+            Deprecated and unused (the number of samples of the former test); it goes in the next release.
+
+        Returns
+        -------
+        Undercut or None
+            ``radius``: ρmin of the pitch curve, ``phi``: its cam angle, ``spans``: the (start, end) cam
+            angles of each undercut stretch, ``where``: cam angles inside them.
+
+        Examples
+        --------
+        >>> from mechlab.synthesis.cam_design import CamProgramme
+        >>> pr = CamProgramme(30.0, np.radians(40), np.radians(40), law="cycloidal (sine)")
+        >>> TranslatingRollerCam(pr, 25.0, 1.0).undercut() is None
+        True
+        >>> TranslatingRollerCam(pr, 20.0, 6.0).undercut().spans.shape
+        (1, 2)
+        """
+        if n is not None:
+            warnings.warn("undercut(n): the test is exact now and takes no samples; n is ignored and goes in "
+                          "the next release", DeprecationWarning, stacklevel=2)
+        r = self.roller_radius
+        value_and_rate = self._curvature_and_rate if self._has_jerk else self._curvature_and_difference
+        points = self._critical(value_and_rate)
+        t = np.concatenate(points)
+        k = value_and_rate(t)[0]
         i = int(np.argmax(k))
-        return Undercut(float(1.0 / k[i]), float(theta[i]), theta[bad])
+        if k[i] * r < 1.0:
+            return None
+        spans = []
+        for phase in points:
+            inside = self.curvature(phase) * r >= 1.0
+            for j in range(len(phase) - 1):  # κ is monotone from one critical angle to the next
+                lo, hi = phase[j], phase[j + 1]
+                if inside[j] and inside[j + 1]:
+                    piece = (lo, hi)
+                elif inside[j] or inside[j + 1]:
+                    edge = self._undercut_edge(hi if inside[j + 1] else lo, lo if inside[j + 1] else hi)
+                    piece = (edge, hi) if inside[j + 1] else (lo, edge)
+                else:
+                    continue
+                if spans and piece[0] - spans[-1][1] <= 1e-12:  # the same stretch across a phase's end
+                    spans[-1] = (spans[-1][0], piece[1])
+                else:
+                    spans.append(piece)
+        spans = np.array(spans)
+        where = np.concatenate([np.linspace(a, e, 33) for a, e in spans])
+        return Undercut(float(1.0 / k[i]), float(t[i]), where, spans)
+
+    @property
+    def _has_jerk(self) -> bool:
+        return self.programme.law.dddy is not None and self.programme.return_law.dddy is not None
+
+    def _curvature_and_difference(self, theta):
+        """κ and a central difference of it, for a law without a jerk analog."""
+        h = 1e-7
+        return self.curvature(theta), (self.curvature(theta + h) - self.curvature(theta - h)) / (2 * h)
+
+    def _undercut_edge(self, inside: float, outside: float) -> float:
+        """Where κ·r_r crosses 1 between ``inside`` (≥ 1) and ``outside`` (< 1), κ monotone between: the
+        bisection's last angle on the undercut side."""
+        r = self.roller_radius
+        while abs(outside - inside) > 1e-13:
+            mid = 0.5 * (inside + outside)
+            if self.curvature(np.array([mid]))[0] * r >= 1.0:
+                inside = mid
+            else:
+                outside = mid
+        return inside
 
     def check_undercut(self) -> None:
         """Raise CamUndercutError naming the cam angle if the profile would be undercut."""
@@ -283,27 +355,29 @@ class RollerCam(Mechanism):
         k = -cross(V1, V2) / m**3
         return k, -cross(V1, V3) / m**3 + 3 * cross(V1, V2) * dot(V1, V2) / m**5
 
-    def _peak(self, value_and_rate, size) -> tuple[float, float]:
-        """The largest ``size(value)`` over the turn and its cam angle: at a root of the closed-form rate
-        (bracketed on a grid of each moving phase, then Brent's method) or at a phase's end (where y″ may
-        jump); a dwell's value is constant."""
-        best = (-np.inf, 0.0)
+    def _critical(self, value_and_rate) -> list[np.ndarray]:
+        """Per phase, the cam angles where a value can be extreme: the phase's ends (where y″ may jump)
+        and the roots of its closed-form rate, bracketed on a grid of each moving phase and found by
+        Brent's method; a dwell's value is constant. Between neighbours the value is monotone."""
+        points = []
         for a, e in _phases(self.programme):
             ends = np.array([a, np.nextafter(e, a)])
-            candidates = [ends]
+            roots = []
             if not self.in_dwell(np.array([(a + e) / 2]))[0]:
                 grid = np.linspace(a, ends[1], _PEAK_GRID)
                 rate = value_and_rate(grid)[1]
                 flips = np.flatnonzero(np.sign(rate[:-1]) * np.sign(rate[1:]) < 0)
                 roots = [brentq(lambda t: value_and_rate(np.array([t]))[1][0], grid[i], grid[i + 1], xtol=1e-14)
                          for i in flips]
-                candidates.append(np.array(roots))
-            t = np.concatenate(candidates)
-            v = size(value_and_rate(t)[0])
-            i = int(np.argmax(v))
-            if v[i] > best[0]:
-                best = (float(v[i]), float(t[i]))
-        return best
+            points.append(np.sort(np.concatenate([ends, roots])))
+        return points
+
+    def _peak(self, value_and_rate, size) -> tuple[float, float]:
+        """The largest ``size(value)`` over the turn and its cam angle, among :meth:`_critical`'s angles."""
+        t = np.concatenate(self._critical(value_and_rate))
+        v = size(value_and_rate(t)[0])
+        i = int(np.argmax(v))
+        return float(v[i]), float(t[i])
 
     def max_pressure_angle(self) -> "CamPeak":
         """The largest |pressure angle| of the design over the turn and the cam angle where it occurs.

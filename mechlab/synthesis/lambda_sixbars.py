@@ -26,7 +26,7 @@ from ..errors import MechanismError
 from ..geometry import cross
 from ..mechanisms.base import TWO_PI
 from .lambda_guiding import CircleGuide, StraightGuide, straight_guiding
-from ..errors import InfeasibleDesignError
+from ..errors import InfeasibleDesignError, TransmissionAngleError
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
 from ..motion import Table, scalar_law
 from ..validate import (MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check, count, mechanism, number,
@@ -87,9 +87,10 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
     gives a different mechanism (at (δ, a, 2α) = (180°, 0.5, 240°), K = 1, β_m = 20°, side −1 has B, C, D
     9 %, 0.6 % and 28 % larger): pass ``side`` to choose, and compare both with :func:`report`. Raises InfeasibleDesignError
     (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
-    ``mu_min`` is None — when the transmission angle D-E-F of the attached dyad leaves the working
-    range [μ_min, 180° − μ_min] over the turn (Kinitsky (1994), §1.8: 30° ≤ μ ≤ 150°, the figure "cnm"
-    of Fig. 2a); pass ``mu_min=None`` to get such a design anyway.
+    ``mu_min`` is None — TransmissionAngleError (an InfeasibleDesignError) when the transmission angle
+    of the base four-bar or the angle D-E-F of the attached dyad leaves the working range
+    [μ_min, 180° − μ_min] over the turn (Kinitsky (1994), §1.8: 30° ≤ μ ≤ 150°, the figure "cnm" of
+    Fig. 2a); pass ``mu_min=None`` to get such a design anyway.
     """
     swing = check("swing", swing, Spec("angle", MIN_SWING, np.pi, open_hi=True))
     m, alpha, R, Q = guide.mechanism, guide.alpha, guide.R, guide.centre
@@ -127,13 +128,15 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
             f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the simulated rocker's far extreme is at "
             f"φ = {np.degrees(rep.far):.2f}°, not at the designed {np.degrees(phi_far % TWO_PI):.2f}°")
     if mu_min is not None:
-        lo = mu_min
-        if rep.mu2_min < lo or rep.mu2_max > np.pi - lo:
-            bad = rep.mu2_min if rep.mu2_min < lo else rep.mu2_max
-            raise InfeasibleDesignError(
-                f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the transmission angle D-E-F reaches "
-                f"{np.degrees(bad):.1f}°, outside {np.degrees(lo):g}°…{180 - np.degrees(lo):g}° (mu_min); "
-                f"pass mu_min=None to accept it")
+        # both four-bars transmit: the base (crank, coupler, rocker) and the attached dyad D-E-F
+        angles = (("of the base four-bar", rep.mu_min, rep.mu_max), ("D-E-F", rep.mu2_min, rep.mu2_max))
+        for what, low, high in angles:
+            if low < mu_min or high > np.pi - mu_min:
+                bad = low if low < mu_min else high
+                raise TransmissionAngleError(
+                    f"K = {K:g}, β_m = {np.degrees(swing):.4g}° (side {side:+d}): the transmission angle {what} "
+                    f"reaches {np.degrees(bad):.1f}°, outside {np.degrees(mu_min):g}°…{180 - np.degrees(mu_min):g}° "
+                    f"(mu_min); pass mu_min=None to accept it")
     return six
 
 
