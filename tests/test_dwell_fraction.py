@@ -15,6 +15,7 @@ import nbformat
 import numpy as np
 import pytest
 
+import mechlab as ml
 from mechlab import design as D
 from mechlab.design.candidates import limits
 from mechlab.design.criteria import SAMPLES
@@ -115,3 +116,30 @@ def test_chapter_12_prints_the_mechanisms_dwell_and_near_standstill():
     # the prose quotes no other dwell figure than these
     quoted = {q for text in prose for q in re.findall(r"\b0\.\d{3}\b", text)}
     assert quoted <= {exact, near, f"{table.dwell_precision:.3f}"}, quoted  # the band, 0.001 of the amplitude
+
+
+INDEXING = EXACT[:5]   # the Geneva drives: intermittency is defined for an output that indexes, not a rocker
+
+
+@pytest.mark.parametrize("family, spec", INDEXING, ids=[f"{f}-{s.dwell_fraction:.3f}" for f, s in INDEXING])
+def test_the_analysis_layers_dwell_is_the_same_exact_dwell(family, spec):
+    # mechlab.analysis.intermittency (chapter 10's comparison table) counts the samples where the output is
+    # exactly still: the same figure as the design layer, to one sample at each end of the dwell
+    cand = _candidate(spec, family)
+    m, n = cand.design.mechanism, 7201
+    row = ml.intermittency(m, n=n, phase=1e-3)
+    assert row.dwell_fraction == pytest.approx(cand.criteria.dwell_fraction, abs=2 / (n - 1))
+    # a tolerance widens only the near-standstill (the planar drives' slow ends; the spherical one enters
+    # with a velocity jump), never the dwell
+    loose = ml.intermittency(m, n=n, phase=1e-3, dwell_tol=0.05)
+    assert loose.dwell_fraction == row.dwell_fraction <= loose.standstill_fraction
+    assert (loose.standstill_fraction > row.dwell_fraction) == (m.impacts().kind != "hard")
+
+
+def test_an_approximate_dwell_has_no_exact_dwell_in_the_analysis_layer():
+    from mechlab.synthesis.lambda_guiding import straight_guiding
+    from mechlab.synthesis.lambda_sixbars import mchv3_half_turn
+
+    six = mchv3_half_turn(straight_guiding(np.pi, 0.8, np.pi))
+    row = ml.intermittency(six, n=3601, phase=1e-3, dwell_tol=1e-2)
+    assert row.dwell_fraction == 0.0 and row.standstill_fraction > 0.5

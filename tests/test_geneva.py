@@ -496,7 +496,8 @@ def test_impact_detection_and_comparison():
     shifted = intermittency(ExternalGeneva(4, 1.0), n=14401, phase=0.3)
     assert shifted.dwell_fraction == pytest.approx(0.75, abs=2e-4) and shifted.impact == "soft"
     loose = intermittency(ExternalGeneva(4, 1.0), n=14401, dwell_tol=0.5)
-    assert loose.dwell_fraction > 0.8  # a loose tolerance counts the slow ends of the motion as dwell
+    # a loose tolerance counts the slow ends of the motion as near-standstill, never as dwell
+    assert loose.standstill_fraction > 0.8 and loose.dwell_fraction == ext.dwell_fraction
     rows = compare({"external": ExternalGeneva(4, 1.0), "spherical": SphericalGeneva(40, 15, 4),
                     "whitworth": SlottedLink(2.0, 1.0)})
     assert [r.name for r in rows] == ["external", "spherical", "whitworth"]
@@ -513,11 +514,12 @@ def test_compare_takes_a_dwell_tolerance_per_mechanism():
     rows = compare(mechs, n=1441, phase=1e-3, dwell_tol=loose)
     for r, (name, m) in zip(rows, mechs.items()):
         assert r == intermittency(m, n=1441, phase=1e-3, dwell_tol=loose.get(name, 1e-9), name=name)
-    assert rows.by("name")["whitworth"].dwell_fraction > 0
-    assert compare(mechs, n=1441).by("name")["whitworth"].dwell_fraction == 0
-    assert [r.dwell_fraction for r in compare(mechs, n=1441, dwell_tol=0.4)] == \
-        [intermittency(m, n=1441, dwell_tol=0.4).dwell_fraction for m in mechs.values()]
-    assert rows.headers[:3] == ("name", "dwell", "Δψ per turn, °") and "<td>0.750</td><td>90</td>" in rows._repr_html_()
+    assert rows.by("name")["whitworth"].standstill_fraction > 0 == rows.by("name")["whitworth"].dwell_fraction
+    assert compare(mechs, n=1441).by("name")["whitworth"].standstill_fraction == 0
+    assert [r.standstill_fraction for r in compare(mechs, n=1441, dwell_tol=0.4)] == \
+        [intermittency(m, n=1441, dwell_tol=0.4).standstill_fraction for m in mechs.values()]
+    assert rows.headers[:4] == ("name", "dwell", "near-standstill", "Δψ per turn, °")
+    assert "<td>0.750</td><td>0.750</td><td>90</td>" in rows._repr_html_()
     with pytest.raises(DimensionError, match=r"dwell_tol names no mechanism compared: 'whitworh' \(the mechanisms: "
                                              r"'external', 'whitworth', 'internal'\)"):
         compare(mechs, dwell_tol={"whitworh": 0.1})

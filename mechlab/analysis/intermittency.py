@@ -44,12 +44,16 @@ def detect_impacts(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)],
 
 @dataclass(frozen=True)
 class Intermittency:
-    """The invariants of one crank turn (:func:`intermittency`); ``index_deg`` = |Δψ| in degrees;
-    B, C, D are the motion-law invariants (:class:`~mechlab.analysis.motion_laws.Invariants`, the
-    glossary's C_v, C_a, C_p) of the motion part of the turn."""
+    """The invariants of one crank turn (:func:`intermittency`); ``dwell_fraction`` is the share where the
+    output stands exactly still (the course's one dwell), ``standstill_fraction`` the share where it stays
+    within the tolerance asked for (a linkage's approximate dwell; equal to the dwell at the default);
+    ``index_deg`` = |Δψ| in degrees; B, C, D are the motion-law invariants
+    (:class:`~mechlab.analysis.motion_laws.Invariants`, the glossary's C_v, C_a, C_p) of the motion part of
+    the turn, outside the near-standstill."""
 
     name: str
     dwell_fraction: float = field(metadata={"label": "dwell", "format": ".3f"})
+    standstill_fraction: float = field(metadata={"label": "near-standstill", "format": ".3f"})
     index_deg: float = field(metadata={"label": "Δψ per turn, °", "format": ".0f"})
     max_dpsi: float = field(metadata={"label": "max ψ′", "format": ".3f"})
     max_ddpsi: float = field(metadata={"label": "max ψ″, 1/rad", "format": ".3f"})
@@ -71,11 +75,13 @@ def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
                   n: Annotated[int, count(3, MAX_SAMPLES // 2)] = 7201,
                   dwell_tol: DwellTol = DWELL_TOL, phase: Angle = 0.0,
                   name: str | None = None) -> Intermittency:
-    """Invariants of one crank turn: dwell fraction (share of φ with |ψ'| ≤ dwell_tol·max|ψ'|),
+    """Invariants of one crank turn: dwell fraction (share of φ where the output stands still: |ψ'| within
+    1e-9 of its peak, a numerical zero), near-standstill fraction (share with |ψ'| ≤ dwell_tol·max|ψ'|),
     output turn Δψ per crank turn, max |ψ'| and |ψ''|, and the motion-law invariants B, C, D
-    (:func:`~mechlab.analysis.motion_laws.invariants`) with h = Δψ over Φ = (1 - dwell)·2π, the crank
-    angle of the motion (cycloidal law: B = 2, C = 2π; Kinitsky, 1994, chapter 2).
-    An approximate dwell (a linkage's) needs a larger ``dwell_tol`` (in (0, 1)); the samples start at
+    (:func:`~mechlab.analysis.motion_laws.invariants`) with h = Δψ over Φ = (1 - near-standstill)·2π, the
+    crank angle of the motion (cycloidal law: B = 2, C = 2π; Kinitsky, 1994, chapter 2).
+    An approximate dwell (a linkage's) has no exact dwell and needs a larger ``dwell_tol`` (in (0, 1)) for
+    its near-standstill; the samples start at
     ``phase``; ``name`` labels the row (by default the mechanism's class). The output must turn:
     DimensionError for a rocker (Δψ = 0 per turn, B undefined)."""
     if mechanism.output != "angle":
@@ -83,14 +89,14 @@ def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
     phi = phase + np.linspace(0.0, TWO_PI, n)
     mo = mechanism.motion(phi)
     vmax = float(np.max(np.abs(mo.dpsi)))
-    still = np.abs(mo.dpsi) <= dwell_tol * vmax
-    dwell = float(np.mean(still[:-1]))
+    dwell = float(np.mean(np.abs(mo.dpsi[:-1]) <= DWELL_TOL * vmax))
+    standstill = float(np.mean(np.abs(mo.dpsi[:-1]) <= max(dwell_tol, DWELL_TOL) * vmax))
     dpsi_turn = float(mo.psi[-1] - mo.psi[0])
     if abs(dpsi_turn) <= 1e-9:
         raise DimensionError(f"the output does not advance over a crank turn (Δψ = {dpsi_turn:.3g} rad): "
                              f"B and C are defined for an indexing output, not a rocker")
-    inv = invariants((1.0 - dwell) * TWO_PI, dpsi_turn, mo.dpsi, mo.ddpsi)
-    return Intermittency(type(mechanism).__name__ if name is None else name, dwell,
+    inv = invariants((1.0 - standstill) * TWO_PI, dpsi_turn, mo.dpsi, mo.ddpsi)
+    return Intermittency(type(mechanism).__name__ if name is None else name, dwell, standstill,
                          float(np.degrees(abs(dpsi_turn))), vmax, float(np.max(np.abs(mo.ddpsi))), *inv.values,
                          detect_impacts(mechanism, phase=phase))
 
@@ -103,9 +109,10 @@ def compare(mechanisms: dict, *, dwell_tol: float | dict = DWELL_TOL, **kw) -> T
     mechanisms : dict
         Name → mechanism; the name labels its row.
     dwell_tol : float or dict, optional
-        The share of the peak |ψ'| below which the output counts as dwelling, in (0, 1): one for every
-        mechanism, or a dict name → tolerance (a mechanism it does not name keeps the default 1e-9). A
-        linkage's approximate dwell needs a larger one than a Geneva's exact dwell.
+        The share of the peak |ψ'| below which the output counts as nearly still (the near-standstill
+        column; the dwell column is always the exact standstill), in (0, 1): one for every mechanism, or a
+        dict name → tolerance (a mechanism it does not name keeps the default 1e-9). A linkage's approximate
+        dwell needs a larger one than a Geneva's exact dwell.
     **kw
         Passed on to :func:`intermittency` (``n``, ``phase``).
 

@@ -151,7 +151,9 @@ def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.
         mo = m.motion(phi)
         sense = np.sign(mo.psi[-1] - mo.psi[0])
         inv = rows[name]
-        label = f"{name}: dwell {inv.dwell_fraction:.2f}, impact: {inv.impact}"
+        still = (f"dwell {inv.dwell_fraction:.2f}" if inv.dwell_fraction > 0
+                 else f"near-standstill {inv.standstill_fraction:.2f}")
+        label = f"{name}: {still}, impact: {inv.impact}"
         for ax, y, lab, kept in zip(axes, (sense * mo.dpsi, sense * mo.ddpsi), (label, name), curves):
             kept.append((ax.plot(np.degrees(phi), y, label=lab)[0], name, y))
     axes[0].set_ylabel("ψ′ = dψ/dφ (–)")
