@@ -159,7 +159,7 @@ def test_criteria_reproduce_the_cycloidal_invariants():
     # over its rise (Φ/2) the output is the cycloidal law: B, C, D are the law's own, and its jerk peaks at 4π²
     spec = D.Specification("swing", 1 / 3, amplitude=0.5)
     mech = _CycloidalRiseReturn(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
-    c = D.evaluate(mech, spec, scale=1.0, structure=D.Structure(1, 1, 1))
+    c = D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1))
     law = law_invariants("cycloidal (sine)")
     assert (law.B, law.C) == (pytest.approx(2.0), pytest.approx(2 * np.pi))
     # the rise is measured from where the output leaves the dwell band (y = ε at u*), up to its top:

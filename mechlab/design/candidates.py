@@ -11,7 +11,7 @@ import numpy as np
 
 from ..errors import MechanismError
 from ..validate import Length, Spec, choice, validated
-from .criteria import AnyMovable, Criteria, Phase, Structure, evaluate
+from .criteria import AnyMovable, Counts, Criteria, Phase, evaluate
 from .families import FAMILIES, Design, Unsuitable
 from .spec import IMPACTS, AnySpecification, Specification
 
@@ -222,7 +222,7 @@ class DesignReport:
 def check_design(spec: AnySpecification, mechanism: AnyMovable, *, scale: Length = 1.0, phase: Phase = 0.0) -> DesignReport:
     """Run ``mechanism`` (its lengths × ``scale`` = mm) against ``spec``: amplitude, dwell, pressure
     angle, size and impacts, each met or missed with the numbers, from its simulated motion."""
-    c = evaluate(mechanism, spec, scale=scale, structure=Structure(0, 0, 0), phase=phase)
+    c = evaluate(mechanism, spec, scale=scale, structure=Counts(0, 0, 0), phase=phase)
     phi = phase + np.linspace(0.0, 2 * np.pi, 2881)
     x = np.asarray(mechanism.motion(phi).output.value, float) * (1.0 if spec.rotary else scale)
     reached = abs(x[-1] - x[0]) if spec.motion == "index" else float(np.ptp(x))
