@@ -23,7 +23,7 @@ import numpy as np
 from scipy.interpolate import PPoly, make_interp_spline
 from scipy.optimize import brentq
 
-from ..errors import DimensionError, MechanismError, SingularityError
+from ..errors import CamUndercutError, DimensionError, MechanismError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_number, cross, dot, fixed_point, perp
 from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import check, count
@@ -41,10 +41,6 @@ _GAP_TOL = 1e-9
 _PEAK_GRID = 257
 # bracketing the contact holds at most this many (angle × profile node) residuals at once
 _CHUNK = 1 << 20
-
-
-class CamUndercutError(MechanismError):
-    """The roller is too large for the pitch curve's curvature: the profile would be undercut."""
 
 
 @dataclass(frozen=True)
