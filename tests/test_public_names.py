@@ -17,7 +17,7 @@ KNOWN = {
     "Verdict": {"mechlab.course.exercises.feedback", "mechlab.design.candidates"},
     "Spec": {"mechlab.course.exercises.design", "mechlab.validate"},
     "candidates": {"mechlab.course.exercises.selfcheck", "mechlab.design.candidates"},
-    "base_law": {"mechlab.analysis.equivalence", "mechlab.synthesis.dwell_slot"},   # two signatures
+    "base_law": {"mechlab.analysis.equivalence", "mechlab.synthesis.dwell_slot"},   # two signatures; chapters 2-3 import one
     "check": {"mechlab.course.exercises.feedback", "mechlab.validate"},
     "count": {"mechlab.course.errata", "mechlab.validate"},
     "drive": {"mechlab.kinetostatics.drive", "mechlab.kinetostatics.geneva"},

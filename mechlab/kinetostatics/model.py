@@ -150,7 +150,7 @@ class ForceModel(Checked):
     groups: tuple
     crank: Name
     pivot: Name
-    numbering: tuple[str, ...] = ()
+    numbering: Annotated[tuple, Spec("items", expected=str)] = ()
 
     def __post_init__(self):
         super().__post_init__()
