@@ -112,6 +112,11 @@ class SlotUndercutError(MechanismError):
     """The roller is too large for the slot's curvature (a flank would fold over)."""
 
 
+# -- raised by mechanisms.cam
+class CamUndercutError(MechanismError):
+    """The roller is too large for the pitch curve's curvature: the profile would be undercut."""
+
+
 # -- raised by synthesis.dwell_slot
 class DwellError(MechanismError):
     """A dwell design that cannot be built."""

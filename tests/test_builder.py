@@ -349,3 +349,22 @@ def test_examples_in_the_docstrings_run():
     for module in (built, groups, criteria):
         result = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
         assert result.attempted > 0 and result.failed == 0, module.__name__
+
+
+def test_the_shaper_returns_quickly_as_its_closed_form_says():
+    # the ram's dead points are where the lever is tangent to the crank circle (O→A ⟂ P→A): sin φ = −R/D, so the
+    # working stroke (the crank over the top) takes π + 2 asin(R/D) of the turn and the return π − 2 asin(R/D):
+    # time ratio 2 at R/D = 1/2; the stroke from the closed form at those two angles
+    from scipy.optimize import brentq
+
+    sh = shaper()
+    ends = sorted(brentq(lambda p: float(sh.motion(p).ds), lo, hi, xtol=1e-14)
+                  for lo, hi in ((-0.9, -0.1), (np.pi + 0.1, np.pi + 0.9)))
+    beta = float(np.arcsin(R / D_))
+    assert abs(ends[0] + beta) < 1e-10 and abs(ends[1] - np.pi - beta) < 1e-10
+    work, back = ends[1] - ends[0], 2 * np.pi - (ends[1] - ends[0])
+    assert abs(work / back - 2.0) < 1e-9
+    with mp.workdps(40):
+        stroke = float(shaper_closed(mp.pi + mp.asin(mp.mpf(R) / D_))[4] - shaper_closed(-mp.asin(mp.mpf(R) / D_))[4])
+    s = [float(sh.motion(p).s) for p in ends]
+    assert abs(abs(s[1] - s[0]) - abs(stroke)) < 1e-10 * abs(stroke)

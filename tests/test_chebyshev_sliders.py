@@ -285,7 +285,7 @@ def test_drawings_highlight_the_dwell(guide, line):
         assert len(ax.lines) == before
         plt.close(fig)
         # links, extras, trace, ground symbol, pivots, joints, and the labels
-        assert len(d.artists) == len(mech.links) + len(d.extras(0)) + 4 + len(d.label_artists)
+        assert len(d.artists) == len(d.bars) + len(d.extras(0)) + 4 + len(d.label_artists)
 
 
 

@@ -160,7 +160,7 @@ def test_criteria_reproduce_the_cycloidal_invariants():
     # over its rise (Φ/2) the output is the cycloidal law: B, C, D are the law's own, and its jerk peaks at 4π²
     spec = D.Specification("swing", 1 / 3, amplitude=0.5)
     mech = _CycloidalRiseReturn(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
-    c = D.evaluate(mech, spec, scale=1.0, structure=D.Structure(1, 1, 1))
+    c = D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1))
     law = law_invariants("cycloidal (sine)")
     assert (law.B, law.C) == (pytest.approx(2.0), pytest.approx(2 * np.pi))
     # the rise is measured from where the exact dwell ends (its end refined between samples) up to the top
@@ -197,10 +197,10 @@ def test_criteria_take_the_jerk_from_the_motions_closed_form():
     # and it is that jerk (scaling it scales J; a central difference of x″ would not follow)
     spec = D.Specification("swing", 1 / 3, amplitude=0.5)
     mech = _CycloidalWithJerk(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
-    assert D.evaluate(mech, spec, scale=1.0, structure=D.Structure(1, 1, 1)).J == pytest.approx(4 * np.pi**2,
+    assert D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J == pytest.approx(4 * np.pi**2,
                                                                                                  rel=1e-5)
     mech.factor = 1.5
-    assert D.evaluate(mech, spec, scale=1.0, structure=D.Structure(1, 1, 1)).J == pytest.approx(6 * np.pi**2,
+    assert D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J == pytest.approx(6 * np.pi**2,
                                                                                                  rel=1e-5)
 
 

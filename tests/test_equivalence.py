@@ -220,7 +220,6 @@ class RockingSlot(Mechanism):
     """A crank O-P (radius a) whose pin P slides in the straight slot of a link pivoted at Q = (-d, 0): the
     slotted link with its joints named otherwise. Nothing in mechlab knows this class."""
 
-    links = (("O", "P"),)
     pivots = ("O", "Q")
 
     def __init__(self, a, d):
@@ -235,7 +234,7 @@ class RockingSlot(Mechanism):
 
     def structure(self):
         return Structure(
-            (Link("crank", "O", ("O", "P"), self.a), Link("block", "P", ("Q", "P"), block=True),
+            (Link("crank", "O", ("O", "P"), self.a, joints=("O", "P")), Link("block", "P", ("Q", "P"), block=True),
              Link("link", "Q", ("Q", "P"), self.a + self.d)),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "P", "crank", "block", "P"),
              Pair("prismatic", "slot", "link", "block", "P", 0.0), Pair("revolute", "Q", FRAME, "link", "Q")),

@@ -13,7 +13,6 @@ from mechlab import errors
 
 # defined elsewhere on purpose, with the reason; a stale entry fails
 ELSEWHERE = {
-    "mechlab.mechanisms.cam.CamUndercutError": "cam.py is being rewritten in a parallel branch; move it when merged",
     "mechlab.course.exercises.feedback.NotYet": "an AssertionError: nbgrader's signal that a check failed, not an "
                                                 "error of the library",
 }
@@ -25,6 +24,7 @@ OLD_HOMES = {
     "mechlab.kinetostatics.model": ["MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"],
     "mechlab.kinetostatics.drive": ["DriveError"],
     "mechlab.mechanisms.spherical_geneva": ["SpatialMechanismError"],
+    "mechlab.mechanisms.cam": ["CamUndercutError"],
     "mechlab.mechanisms.geneva": ["SlotCountError", "OffsetError"],
     "mechlab.synthesis.slot_export": ["SlotUndercutError"],
     "mechlab.synthesis.dwell_slot": ["DwellError", "DwellIntervalError", "DwellRatioError"],

@@ -117,8 +117,11 @@ def test_kinetostatics_balance_the_load_by_virtual_work(mech):
 
 
 def test_the_spherical_geneva_has_no_planar_structure_and_says_so():
+    # its links and pairs are counted (W = 3·2 − 2·2 − 1 = 1 on the sphere too); the planar methods refuse it
     g = ml.SphericalGeneva(40.0, 15.0, 5)
-    for ask in (g.structure, lambda: instant_centres(g, [0.1, 0.2]), lambda: model_for(g)):
+    st = g.structure()
+    assert st.spatial and st.mobility() == 1 and [st.mobility(k) for k in st.groups] == [0]
+    for ask in (st.planar, lambda: instant_centres(g, [0.1, 0.2]), lambda: model_for(g)):
         with pytest.raises(SpatialMechanismError, match="spatial mechanism .* no planar structure"):
             ask()
 

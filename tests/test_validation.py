@@ -340,13 +340,13 @@ def test_design_inputs_go_through_the_layer():
     with pytest.raises(D.SpecificationError, match="amplitude must be ≤ π"):
         D.Specification("swing", 0.3, amplitude=4.0)
     with pytest.raises(DimensionError, match="parts must be a whole number ≥ 0"):
-        D.Structure(-1, 2, 2)
+        D.Counts(-1, 2, 2)
     with pytest.raises(TypeError, match="families must be a tuple of str"):
         D.candidates(spec, "external Geneva")
     with pytest.raises(DimensionError, match="phase must be ≤"):
         D.check_design(spec, ml.ExternalGeneva(4, 1.0), phase=10.0)
     with pytest.raises(DimensionError, match=r"circles\[0\] radius must be > 0"):
-        D.evaluate(ml.ExternalGeneva(4, 1.0), spec, scale=1.0, structure=D.Structure(2, 2, 2), circles=(((0, 0), -1),))
+        D.evaluate(ml.ExternalGeneva(4, 1.0), spec, scale=1.0, structure=D.Counts(2, 2, 2), circles=(((0, 0), -1),))
     comparison = D.candidates(spec, ["external Geneva"])
     with pytest.raises(DimensionError, match="by must be one of"):
         comparison.ranked(np.array([1.0, 2.0]))                   # explore mode: a raw ValueError ("truth value")

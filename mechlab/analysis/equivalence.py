@@ -84,7 +84,6 @@ class EquivalentSlot(Mechanism):
     slot_mechanism: Mechanism
     phase: float = 0.0
 
-    links = (("O", "A"),)
 
     @property
     def crank(self) -> float:
@@ -120,7 +119,7 @@ class EquivalentSlot(Mechanism):
         def turned(normal):
             return lambda mo: _rot(self.phase, normal(self.slot_mechanism.motion(mo.phi - self.phase)))
 
-        links = tuple(replace(k, origin=named(k.origin)) for k in st.links)
+        links = tuple(replace(k, origin=named(k.origin), joints=tuple(map(named, k.joints))) for k in st.links)
         # a normal given in the fixed frame turns with the frame; one given as an angle to a link's axis does not
         pairs = tuple(replace(p, point=named(p.point), normal=turned(p.normal) if callable(p.normal) else p.normal)
                       for p in st.pairs)

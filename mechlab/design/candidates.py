@@ -11,7 +11,7 @@ import numpy as np
 
 from ..errors import MechanismError
 from ..validate import Length, Spec, choice, validated
-from .criteria import AnyMovable, Criteria, Phase, Structure, evaluate
+from .criteria import AnyMovable, Counts, Criteria, Phase, counted, evaluate
 from .families import FAMILIES, Design, Unsuitable
 from .spec import IMPACTS, AnySpecification, Specification
 
@@ -221,11 +221,19 @@ class DesignReport:
         return f"<p><b>The design {head}</b></p><ul>{rows}</ul>"
 
 
+def _counts(mechanism) -> Counts:
+    """The parts and pairs of a mechanism that describes its structure; none known for one with motion() alone."""
+    try:
+        return counted(mechanism)
+    except (AttributeError, MechanismError):
+        return Counts(0, 0, 0)
+
+
 @validated
 def check_design(spec: AnySpecification, mechanism: AnyMovable, *, scale: Length = 1.0, phase: Phase = 0.0) -> DesignReport:
     """Run ``mechanism`` (its lengths × ``scale`` = mm) against ``spec``: amplitude, dwell, pressure
     angle, size and impacts, each met or missed with the numbers, from its simulated motion."""
-    c = evaluate(mechanism, spec, scale=scale, structure=Structure(0, 0, 0), phase=phase)
+    c = evaluate(mechanism, spec, scale=scale, structure=_counts(mechanism), phase=phase)
     phi = phase + np.linspace(0.0, 2 * np.pi, 2881)
     x = np.asarray(mechanism.motion(phi).output.value, float) * (1.0 if spec.rotary else scale)
     reached = abs(x[-1] - x[0]) if spec.motion == "index" else float(np.ptp(x))

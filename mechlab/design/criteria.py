@@ -52,8 +52,9 @@ Phase = Annotated[float, angle(-TWO_PI, TWO_PI)]  # a shift of the sampled crank
 
 
 @dataclass(frozen=True)
-class Structure(Checked):
-    """What a design is built of: moving parts, lower pairs and higher pairs (cam, pin in slot)."""
+class Counts(Checked):
+    """What a design is built of: moving parts, lower pairs and higher pairs (cam, pin in slot), as
+    :func:`counted` reads them from the mechanism's :class:`~mechlab.mechanisms.base.Structure`."""
 
     parts: Parts
     lower_pairs: Parts
@@ -64,7 +65,7 @@ class Structure(Checked):
         return f"{self.parts} parts, {self.lower_pairs} lower{higher} pairs"
 
 
-def counted(mechanism, *, rollers: int = 0, locks: int = 0) -> Structure:
+def counted(mechanism, *, rollers: int = 0, locks: int = 0) -> Counts:
     """The parts and pairs of a design, counted from ``mechanism.structure()``.
 
     The kinematic structure leaves out what does not change the motion: a roller (a part on its own
@@ -74,13 +75,13 @@ def counted(mechanism, *, rollers: int = 0, locks: int = 0) -> Structure:
     Parameters
     ----------
     mechanism : Mechanism
-        A mechanism with a planar ``structure()``.
+        A mechanism with a ``structure()`` (a spatial one's links and pairs count alike).
     rollers, locks : int
         Rollers and locking pairs the structure leaves out.
 
     Returns
     -------
-    Structure
+    Counts
         Moving parts, lower pairs (revolute, prismatic) and higher pairs.
 
     Examples
@@ -91,7 +92,7 @@ def counted(mechanism, *, rollers: int = 0, locks: int = 0) -> Structure:
     """
     st = mechanism.structure()
     higher = sum(p.kind == "higher" for p in st.pairs)
-    return Structure(len(st.links) + rollers, len(st.pairs) - higher + rollers, higher + locks)
+    return Counts(len(st.links) + rollers, len(st.pairs) - higher + rollers, higher + locks)
 
 
 @dataclass(frozen=True)
@@ -125,7 +126,8 @@ class Criteria:
         Largest side of the footprint's bounding box (mm).
     peak_torque, rms_torque, motor_power : float
         Crank torque (N·m) and the motor's nominal power (W) by the course's motor rule.
-    structure : Structure
+    structure : Counts
+        The parts and pairs of the design (:func:`counted`).
     """
 
     dwell_fraction: float
@@ -143,7 +145,7 @@ class Criteria:
     peak_torque: float
     rms_torque: float
     motor_power: float
-    structure: Structure
+    structure: Counts
 
 
 def longest_still(x: np.ndarray, shift: float, band: float) -> tuple[int, int]:
@@ -247,7 +249,7 @@ def _circle(i: int, circle: tuple) -> tuple[tuple, float]:
 
 @validated
 def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
-             structure: Annotated[Structure, instance_of(Structure)], circles: Circles = (),
+             structure: Annotated[Counts, instance_of(Counts)], circles: Circles = (),
              pressure_angle: Annotated[float | None, angle(0.0, np.pi / 2, optional=True)] = None,
              phase: Phase = 0.0) -> Criteria:
     """Judge ``mechanism`` (lengths × ``scale`` = mm) against ``spec`` from its simulated motion.

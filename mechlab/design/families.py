@@ -21,7 +21,7 @@ from ..synthesis.lambda_guiding import circle_guiding, straight_guiding
 from ..synthesis.lambda_sixbars import mchv1, mchv3_half_turn
 from ..synthesis.lambda_sliders import mchv2, mchv5
 from ..synthesis.slot_export import write_cam_csv, write_cam_dxf, write_csv, write_dxf
-from .criteria import SAMPLES, Structure, counted
+from .criteria import SAMPLES, Counts, counted
 from .spec import Specification
 
 # lambda mechanisms tried, (δ, a): inside the existence region of Kinitsky (1994), Fig. 2a
@@ -43,7 +43,7 @@ class Design:
     family: str
     mechanism: object
     scale: float
-    structure: Structure
+    structure: Counts
     circles: tuple = ()
     pressure_angle: float | None = None
     phase: float = 0.0
@@ -105,9 +105,8 @@ def spherical_geneva(spec: Specification) -> Design:
     e = brentq(lambda e: SphericalGeneva(R, e, z).dwell_fraction - np.clip(want, d_min, d_max), 0.0, e_max,
                xtol=1e-9) if d_min < want < d_max else (0.0 if want <= d_min else e_max)
     g = SphericalGeneva(R, e, z)
-    # spatial: no planar structure to count from (crank with pin and locking disc, wheel; two pivots, pin in
-    # slot, locking arcs)
-    return Design("spherical Geneva", g, 1.0, Structure(parts=2, lower_pairs=2, higher_pairs=2),
+    # the crank's locking disc and the wheel's arcs: a second, passive higher pair
+    return Design("spherical Geneva", g, 1.0, counted(g, locks=1),
                   circles=(((0.0, 0.0), R),), note=f"offset e = {e:.4g} mm sets the dwell (sphere R = {R:g} mm)")
 
 

@@ -28,7 +28,8 @@ from matplotlib.animation import FuncAnimation, HTMLWriter
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from PIL import Image
 
-from ..mechanisms.base import Mechanism
+from ..errors import MechanismError
+from ..mechanisms.base import FRAME, Mechanism
 from ..motion import Motion
 
 LINK_STYLE = dict(color="#1f4e79", lw=3, solid_capstyle="round", zorder=3)
@@ -287,6 +288,12 @@ class LinkageDrawing:
         for name, text in self.letters.items():
             text.set_visible(name in names)
         self.numbered = [p for p in self.sketch.parts if p.number is not None]
+        # the structure's numbering, which the centres and the force model share
+        self.link_numbers = self.mechanism.structure().numbers() if self.numbered else {}
+        unknown = [p.number for p in self.numbered if p.number not in self.link_numbers]
+        if unknown:
+            raise MechanismError(f"the sketch of {type(self.mechanism).__name__} numbers {unknown}, not links of its "
+                                 f"structure ({', '.join(k for k in self.link_numbers if k != FRAME)})")
         parts = len(self.numbered)
         count = parts + 1 if self.show_labels and parts else 0   # no moving link numbered: no frame number
         while len(self.numbers) < count:
@@ -343,13 +350,13 @@ class LinkageDrawing:
         parts = self.numbered_parts(i)
         for k, (text, part, spec) in enumerate(zip(self.numbers, parts, self.numbered)):
             where, normal = _label_anchor(part, centre)
-            text.set_text(str(k + 1) if spec.number is True else spec.number)
+            text.set_text(str(self.link_numbers[spec.number]))
             text.xy = where
             text.set_position(NUMBER_OFFSET * normal)
         if not parts:
             return
         frame = self.numbers[len(parts)]
-        frame.set_text(self.sketch.frame_number or str(len(parts) + 1))
+        frame.set_text(str(self.link_numbers[FRAME]))
         if len(piv):   # beside the hatching of the fixed pivot farthest out: clear of the crank's numbers at O
             far = piv[np.argmax(np.hypot(*(piv - centre).T))]
             frame.xy = far + np.array([-1.9, -1.7]) * self._ground_size

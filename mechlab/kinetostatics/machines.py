@@ -40,9 +40,11 @@ class Kinetostatics(Mechanism):
         if self.model is None:
             object.__setattr__(self, "model", model_for(self.mechanism))
 
-    @property
-    def links(self):
-        return self.mechanism.links
+    def structure(self):
+        return self.mechanism.structure()
+
+    def sketch(self, motion):
+        return self.mechanism.sketch(motion)
 
     @property
     def pivots(self):

@@ -138,13 +138,19 @@ Pair = Revolute | Prismatic | HigherPair
 
 @dataclass(frozen=True)
 class ForceModel(Checked):
-    """Links, pairs and the structural groups (output first) of a mechanism driven by ``crank``."""
+    """Links, pairs and the structural groups (output first) of a mechanism driven by ``crank``.
+
+    ``numbering``: the bodies' names in the order of their numbers 1, 2, …, the frame included (from
+    :meth:`Structure.numbers` in :func:`model_for`, so forces number links as the drawing and the centres
+    do); empty for a model built by hand.
+    """
 
     bodies: Annotated[tuple, Spec("items", expected=Body)]
     pairs: Annotated[tuple, Spec("items", expected=(Revolute, Prismatic, HigherPair))]
     groups: tuple
     crank: Name
     pivot: Name
+    numbering: Annotated[tuple, Spec("items", expected=str)] = ()
 
     def __post_init__(self):
         super().__post_init__()
@@ -167,6 +173,8 @@ class ForceModel(Checked):
                 raise StructureError(f"pair {p.name} joins {p.a} to itself")
         if self.crank not in names:
             raise StructureError(f"crank {self.crank!r} is not a body; bodies: {names}")
+        if any(b not in known for b in self.numbering) or len(set(self.numbering)) != len(self.numbering):
+            raise StructureError(f"numbering {self.numbering} must name bodies or the frame, each once; bodies: {names}")
         listed = [b for g in self.groups for b in g] + [self.crank]
         if sorted(listed) != sorted(names):
             raise StructureError(f"every body except the crank must be in exactly one group: groups "
@@ -185,6 +193,12 @@ class ForceModel(Checked):
 
     def _unknown_pairs(self, group, solved):
         return [p for p in self.pairs if (p.a in group or p.b in group) and p.name not in solved]
+
+    def number(self, name: str) -> int:
+        """The number of body ``name`` (or of the frame) in ``numbering``; KeyError for an unnumbered one."""
+        if name not in self.numbering:
+            raise KeyError(f"body {name!r} has no number; numbered: {list(self.numbering)}")
+        return self.numbering.index(name) + 1
 
     def body(self, name: str) -> Body:
         for b in self.bodies:
@@ -266,13 +280,15 @@ def model_for(mechanism) -> ForceModel:
     if not callable(describe):
         raise TypeError(f"mechanism must be a mechanism that describes its structure(): no force model for "
                         f"{type(mechanism).__name__}; build a ForceModel for it")
-    st = describe()
+    st = describe().planar()
     bodies = tuple(Body(k.name, k.origin, k.axis, com=(k.length / 2, 0.0), length=k.length) for k in st.links)
     pairs = tuple(_pair(p) for p in st.pairs)
     pivot = next((p for p in st.pairs if p.kind == "revolute" and {p.a, p.b} == {FRAME, st.input}), None)
     if pivot is None:
         raise StructureError(f"the input link {st.input} turns about no pivot on the frame: it is not a crank")
-    return ForceModel(bodies, pairs, st.groups, st.input, pivot.point)
+    numbers = st.numbers()
+    numbering = tuple(sorted([*(k.name for k in st.links if k.name in numbers), FRAME], key=numbers.get))
+    return ForceModel(bodies, pairs, st.groups, st.input, pivot.point, numbering)
 
 
 def _pair(p):

@@ -35,7 +35,6 @@ class Antiparallelogram(Mechanism):
     crank: Length
     ground: Length
 
-    links = (("O", "A"), ("A", "B"), ("B", "E"))
     pivots = ("O", "E")
     output = "angle"
 

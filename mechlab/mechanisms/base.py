@@ -10,7 +10,7 @@ from typing import Annotated, Any, ClassVar
 
 import numpy as np
 
-from ..errors import AssemblyError, MechanismError, RotationError
+from ..errors import AssemblyError, MechanismError, RotationError, SpatialMechanismError
 from ..geometry import AnglePath, lift, relative, unit, vector_angle
 from ..motion import AngularMotion, Motion, scalar_in_scalar_out
 from ..validate import Checked, Samples, mechanism, validated
@@ -58,7 +58,9 @@ class Link:
     link that translates; or ``axis(motion) → (θ, θ′, θ″)``. ``length`` is a bar's length (a uniform
     bar's centre of mass lies half-way along the axis). ``block``: a sliding block, which the
     instantaneous centres merge with its two pairs into one higher pair (Kozhevnikov, §7.1).
-    ``label``: the link's name in the centres' numbering, where it differs from ``name``.
+    ``label``: the link's name in the centres' numbering, where it differs from ``name``. ``joints``: the
+    joints the drawing's bar (or plate, the first joint repeated last) passes through; none for a link
+    drawn otherwise (a block, a slotted link, a wheel, a cam).
     """
 
     name: str
@@ -67,6 +69,7 @@ class Link:
     length: float = 0.0
     block: bool = False
     label: str = ""
+    joints: tuple[str, ...] = ()
 
     @property
     def translates(self) -> bool:
@@ -114,8 +117,10 @@ class Structure:
     ``groups``: the structural (Assur) groups of links, from the output back to the input, which
     is attached to the frame by its own revolute pair; ``output``: the link whose law the motion
     reports; ``scale``: a typical length. ``numbering``: the links' labels, the frame included,
-    in the order the instantaneous centres number them (default: the links, then the frame);
-    ``input_rate``: dθ/dφ of the input link (1 for a crank).
+    in the order the drawing, the instantaneous centres and the force model number them (default: the
+    links but the blocks, then the frame: :meth:`numbers`); ``input_rate``: dθ/dφ of the input link (1 for a
+    crank). ``spatial``: why the mechanism is not planar (its links move on a sphere), empty for a planar
+    one; the planar methods (centres, kinetostatics, the curved-slot twin) refuse a spatial structure.
     """
 
     links: tuple[Link, ...]
@@ -125,10 +130,63 @@ class Structure:
     scale: float
     numbering: tuple[str, ...] = ()
     input_rate: float = 1.0
+    spatial: str = ""
 
     @property
     def input(self) -> str:
         return self.links[0].name
+
+    def order(self) -> tuple[str, ...]:
+        """The numbered links' labels (a link's ``label``, else its name) in the order of their numbers.
+
+        ``numbering`` when given (Kozhevnikov's for the trammel), else the moving links but the blocks (a
+        block merges with its two pairs into one higher pair and carries no number), then :data:`FRAME`.
+        MechanismError when ``numbering`` names a link the structure lacks, one twice, or not the frame.
+        """
+        labels = {k.name: k.label or k.name for k in self.links}
+        if self.numbering:
+            order = tuple(labels.get(name, name) for name in self.numbering)
+        else:
+            order = (*(labels[k.name] for k in self.links if not k.block), FRAME)
+        unknown = sorted(set(order) - set(labels.values()) - {FRAME})
+        if unknown or len(set(order)) != len(order) or FRAME not in order:
+            raise MechanismError(f"numbering {order} must name links at most once each and the frame once; "
+                                 f"links: {', '.join(labels.values())}")
+        return order
+
+    def numbers(self) -> dict[str, int]:
+        """Each numbered link's number, the frame's included: the one numbering of drawing, centres and forces.
+
+        Returns
+        -------
+        dict
+            Number (from 1) of each link in :meth:`order`, keyed by its name, by its label where it has
+            one, and by :data:`FRAME`.
+
+        Raises
+        ------
+        MechanismError
+            ``numbering`` names a link the structure does not have, or one twice.
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> st = ml.SlottedLink(0.5, 1.0).structure()
+        >>> st.numbers()["link"], st.numbers()["frame"]
+        (2, 3)
+        """
+        name = {k.label or k.name: k.name for k in self.links}
+        numbers = {}
+        for i, label in enumerate(self.order(), start=1):
+            numbers[label] = numbers[name.get(label, label)] = i
+        return numbers
+
+    def planar(self, what: str = "planar instantaneous centres and the planar kinetostatics do not apply"
+               ) -> Structure:
+        """This structure, or SpatialMechanismError for a spatial one (``what``: why the caller needs it planar)."""
+        if self.spatial:
+            raise SpatialMechanismError(f"{self.spatial}: it has no planar structure, so {what}")
+        return self
 
     def link(self, name: str) -> Link:
         for link in self.links:
@@ -169,13 +227,13 @@ class Part:
     ``role`` names its style in the drawing ("link", "output", "guide", "highlight", "extra", "slot",
     "profile", "fill", "anchor" (not drawn: only carries a number), "note" (a text), …); ``at`` is a
     tuple of joint names (a bar through them) or ``at(i)`` → the polyline (k, 2) at frame i (NaN rows
-    break it; a ``note``'s text); ``number`` the link number it carries: None, True (the next one) or
-    a label.
+    break it; a ``note``'s text); ``number``: the name of the structure's link whose number the part
+    carries (:meth:`Structure.numbers`), or None.
     """
 
     role: str
     at: tuple[str, ...] | Callable[[int], Any]
-    number: bool | str | None = None
+    number: str | None = None
 
     def points(self, points: dict, i: int):
         """The polyline at frame i (``points``: the motion's paths)."""
@@ -186,17 +244,16 @@ class Part:
 
 @dataclass(frozen=True)
 class Sketch:
-    """What a drawing shows of a mechanism: its ``parts`` in drawing order, the joints fixed to the frame
-    (hatched supports) and the frame's number (None: the one after the moving links)."""
+    """What a drawing shows of a mechanism: its ``parts`` in drawing order and the joints fixed to the frame
+    (hatched supports); the links' numbers are the structure's (:meth:`Structure.numbers`)."""
 
     parts: tuple[Part, ...]
     pivots: tuple[str, ...]
-    frame_number: str | None = None
 
 
-def bars(mechanism) -> tuple[Part, ...]:
-    """A numbered bar through the joints of each of ``mechanism.links``."""
-    return tuple(Part("link", names, True) for names in mechanism.links)
+def bars(st: Structure) -> tuple[Part, ...]:
+    """A bar through the ``joints`` of each link of the structure that has some, carrying its number."""
+    return tuple(Part("link", k.joints, k.name) for k in st.links if k.joints)
 
 
 @validated
@@ -221,13 +278,12 @@ def fmt_ranges(ranges) -> str:
 class Mechanism(Checked):
     """Base of the single-loop mechanisms: a crank O-A driving one output.
 
-    Subclasses are frozen dataclasses of their dimensions and define
-    :meth:`crank_ranges` and :meth:`motion`. ``links`` names the joints each moving
-    link joins (for drawing and for reading the structure), ``pivots`` the joints
+    Subclasses are frozen dataclasses of their dimensions and define :meth:`crank_ranges`,
+    :meth:`motion` and :meth:`structure` (its links, pairs and groups, from which the drawing, the
+    centres, the force model and the design layer's counts are read). ``pivots`` names the joints
     fixed to the frame, ``output`` is ``"angle"`` or ``"position"``.
     """
 
-    links: ClassVar[tuple[tuple[str, ...], ...]] = ()
     pivots: ClassVar[tuple[str, ...]] = ("O",)
     output: ClassVar[str] = "angle"
 
@@ -299,16 +355,13 @@ class Mechanism(Checked):
         raise MechanismError(f"{type(self).__name__} describes no structure: define its structure() method")
 
     def sketch(self, motion: Motion) -> Sketch:
-        """The kinematic diagram over ``motion``: a bar through the joints of each of ``links`` (numbered
-        1, 2, …), the fixed ``pivots``, and what ``structure()`` adds: a link carrying a slot drawn as a
-        slotted bar (turning) or a yoke (translating), a link sliding on the frame as a guide and a block;
-        each numbered after the bars. The one method a family overrides to show more (calling this one).
+        """The kinematic diagram over ``motion``, read from ``structure()``: a bar through the ``joints`` of
+        each link that has some, the fixed ``pivots``, a link carrying a slot drawn as a slotted bar (turning)
+        or a yoke (translating), a link sliding on the frame as a guide and a block; each part carries its
+        link's number (:meth:`Structure.numbers`). The one method a family overrides to show more.
         """
-        try:
-            st = self.structure()
-        except MechanismError:   # no structure: the bars alone
-            return Sketch(bars(self), self.pivots)
-        return Sketch(bars(self) + _pair_parts(st, motion), self.pivots)
+        st = self.structure()
+        return Sketch(bars(st) + _pair_parts(st, motion), self.pivots)
 
     def curved_slot_twin(self) -> tuple[Mechanism, float]:
         """The curved-slot mechanism that moves like this one (Zinchenko et al. (2013) §1), in their frame, and the
@@ -362,13 +415,13 @@ def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
             th = link.angle(motion).theta + slot.angle
             reach = 1.15 * link.length
             parts.append(Part("extra", lambda i, o=origin, th=th, r=reach: np.array(
-                [o[i], o[i] + r * np.array([np.cos(th[i]), np.sin(th[i])])]), True))
+                [o[i], o[i] + r * np.array([np.cos(th[i]), np.sin(th[i])])]), link.name))
         elif slot is not None:   # a yoke: the slot across the pin's track (1.3 × its reach), a rod along the guide
             v = unit(link.axis + slot.angle)
             u = unit(guide.angle if guide is not None else link.axis)
             reach = float(np.max(np.abs((pts[slot.point].p - origin) @ v)))
             parts.append(Part("extra", lambda i, o=origin, v=v, u=u, r=reach: np.array(
-                [o[i] + 1.3 * r * v, o[i] - 1.3 * r * v, o[i], o[i] + 1.6 * r * u]), True))
+                [o[i] + 1.3 * r * v, o[i] - 1.3 * r * v, o[i], o[i] + 1.6 * r * u]), link.name))
         elif guide is not None and link.translates and not link.block:   # a block on its guide
             u = unit(guide.angle)   # the frame's axis is x
             path = pts[guide.point].p
@@ -377,7 +430,7 @@ def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
             foot = path[0] - along[0] * u
             rail = np.array([foot + (along.min() - 2 * size) * u, foot + (along.max() + 2 * size) * u])
             parts += [Part("extra", lambda i, g=rail: g),
-                      Part("extra", lambda i, p=path, u=u, h=size: block_outline(p[i], u, 2 * h, h), True)]
+                      Part("extra", lambda i, p=path, u=u, h=size: block_outline(p[i], u, 2 * h, h), link.name)]
     return tuple(parts)
 
 

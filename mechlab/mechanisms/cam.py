@@ -24,7 +24,7 @@ import numpy as np
 from scipy.interpolate import PPoly, make_interp_spline
 from scipy.optimize import brentq
 
-from ..errors import DimensionError, MechanismError, SingularityError
+from ..errors import CamUndercutError, DimensionError, MechanismError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_number, cross, dot, fixed_point, perp
 from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import check, count
@@ -42,10 +42,6 @@ _GAP_TOL = 1e-9
 _PEAK_GRID = 257
 # bracketing the contact holds at most this many (angle × profile node) residuals at once
 _CHUNK = 1 << 20
-
-
-class CamUndercutError(MechanismError):
-    """The roller is too large for the pitch curve's curvature: the profile would be undercut."""
 
 
 @dataclass(frozen=True)
@@ -313,11 +309,11 @@ class RollerCam(Mechanism):
         # the course's link numbers: the driving cam 1 (its number on the disc, turning with it), the follower next,
         # the frame last
         mark = 0.55 * self.base_radius * np.array([[np.cos(-3 * np.pi / 4), np.sin(-3 * np.pi / 4)]])
-        number = (Part("anchor", lambda i: _turned(mark, phi[i]), True),)
+        number = (Part("anchor", lambda i: _turned(mark, phi[i]), "cam"),)
         parts = (Part("fill", lambda i: _turned(profile, phi[i])), Part("profile", lambda i: _turned(profile, phi[i])),
                  Part("base circle", lambda i: _turned(base, phi[i])), Part("roller", lambda i: C[i] + r * _CIRCLE),
                  Part("normal", normal), Part("note", lambda i: "dwell" if dwell[i] else ""))
-        return Sketch(number + bars(self) + parts, self.pivots)
+        return Sketch(number + bars(self.structure()) + parts, self.pivots)
 
     def structure(self) -> Structure:
         """The cam turns about O and drives the follower through the roller's contact K, a higher pair
@@ -624,7 +620,6 @@ class TranslatingRollerCam(RollerCam):
     offset: float = 0.0
     samples: int = 2880
 
-    links = ()
     output = "position"
 
     def __post_init__(self):
@@ -661,7 +656,7 @@ class TranslatingRollerCam(RollerCam):
         w = 0.35 * max(self.roller_radius, 0.1 * self.base_radius)
         y0, x = self.s0 + self.programme.stroke + 0.3 * self.prime_radius, self.offset
         bushing = np.array([[x - w, y0], [x - w, top], [np.nan, np.nan], [x + w, y0], [x + w, top]])
-        stem = (Part("link", lambda i: np.array([C[i], [x, top]]), True), Part("guide", lambda i: bushing))
+        stem = (Part("link", lambda i: np.array([C[i], [x, top]]), "follower"), Part("guide", lambda i: bushing))
         return replace(sk, parts=sk.parts + stem)
 
     def _track(self, x, y):
@@ -693,7 +688,6 @@ class OscillatingRollerCam(RollerCam):
     arm: float
     samples: int = 2880
 
-    links = (("B", "C"),)
     pivots = ("O", "B")
     output = "angle"
 
@@ -731,7 +725,8 @@ class OscillatingRollerCam(RollerCam):
         return (x - self.pivot_distance) ** 2 + y**2 - self.arm**2, -y
 
     def _follower(self):
-        return Link("follower", "B", ("B", "C"), self.arm), Pair("revolute", "B", FRAME, "follower", "B")
+        return (Link("follower", "B", ("B", "C"), self.arm, joints=("B", "C")),
+                Pair("revolute", "B", FRAME, "follower", "B"))
 
     @property
     def _reach(self) -> float:

@@ -256,7 +256,8 @@ def slot_sketch(mech, motion, pivot: str = "B") -> Sketch:
     carried by the link) and the arm holding it: two bars from the pivot to the slot's ends (numbered),
     or for a translating link a rod along the guide (numbered) and the guide."""
     slot = mech.slot_samples(160)
-    crank = bars(mech)
+    st = mech.structure()
+    crank = bars(st)
     if motion.output.kind == "angle":
         P, psi = motion.points[pivot].p, motion.psi
 
@@ -264,14 +265,14 @@ def slot_sketch(mech, motion, pivot: str = "B") -> Sketch:
             c, s = np.cos(psi[i]), np.sin(psi[i])
             return P[i] + slot @ np.array([[c, s], [-s, c]])
 
-        parts = (Part("slot", world), Part("extra", lambda i: np.array([P[i], world(i)[0]]), True),
+        parts = (Part("slot", world), Part("extra", lambda i: np.array([P[i], world(i)[0]]), st.output),
                  Part("extra", lambda i: np.array([P[i], world(i)[-1]])))
         return Sketch(crank + parts, mech.pivots)
     x = motion.s
     span = np.ptp(x) + 2 * np.max(np.abs(motion.points["A"].p[:, 1]))
     guide = np.array([[x.min() - 0.5 * span, 0.0], [x.max() + 2.2 * span, 0.0]])
     parts = (Part("slot", lambda i: slot + np.array([x[i], 0.0])),
-             Part("extra", lambda i: np.array([[x[i], 0.0], [x[i] + 1.5 * span, 0.0]]), True),
+             Part("extra", lambda i: np.array([[x[i], 0.0], [x[i] + 1.5 * span, 0.0]]), st.output),
              Part("extra", lambda i: guide))
     return Sketch(crank + parts, mech.pivots)
 
@@ -293,7 +294,6 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
     slot: Slot
     start: Annotated[float | None, number(optional=True)] = None
 
-    links = (("O", "A"),)
     pivots = ("O", "B")
     output = "angle"
 
@@ -565,7 +565,8 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
             return _unit_normal(self._slot_tangent_world(mo.phi, mo.psi))
 
         return Structure(
-            (Link("crank", "O", ("O", "A"), self.crank), Link("link", "B", output_axis, label="slotted link")),
+            (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")),
+             Link("link", "B", output_axis, label="slotted link")),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("higher", "slot", "link", "crank", "A", normal=normal),
              Pair("revolute", "B", FRAME, "link", "B")),
             (("link",),), "link", scale=self.crank + self.pivot_distance)
@@ -613,7 +614,6 @@ class TranslatingCurvedSlot(Mechanism):
     slot: Slot
     start: Annotated[float | None, number(optional=True)] = None
 
-    links = (("O", "A"),)
     pivots = ("O",)
     output = "position"
 
@@ -789,7 +789,7 @@ class TranslatingCurvedSlot(Mechanism):
             return _unit_normal(self._tangent(mo.phi))
 
         return Structure(
-            (Link("crank", "O", ("O", "A"), self.crank), Link("yoke", "C", 0.0)),
+            (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")), Link("yoke", "C", 0.0)),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("higher", "slot", "yoke", "crank", "A", normal=normal),
              Pair("prismatic", "guide", FRAME, "yoke", "C", 0.0)),
             (("yoke",),), "yoke", scale=self.crank)
@@ -862,7 +862,7 @@ def crank_pin(mech: Mechanism) -> tuple[Structure, Pair, Pair]:
     a slot). DimensionError naming the family where there is none (a cam's contact point moves on the cam).
     """
     name = type(mech).__name__
-    st = mech.structure()
+    st = mech.structure().planar("it has no planar curved-slot twin")
     crank = st.input
     base_pair = next((p for p in st.pairs if FRAME in (p.a, p.b) and crank in (p.a, p.b)), None)
     if base_pair is None or base_pair.kind != "revolute" or st.input_rate != 1.0:

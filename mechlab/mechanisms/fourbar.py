@@ -107,7 +107,6 @@ class FourBar(Mechanism):
     ground: Length
     assembly: Assembly = 1
 
-    links = (("O", "A"), ("A", "B"), ("B", "E"))
     pivots = ("O", "E")
     output = "angle"
 
@@ -179,8 +178,9 @@ class FourBar(Mechanism):
     def structure(self) -> Structure:
         """Crank O→A, coupler A→B, rocker E→B; revolute pairs O, A, B, E; one RRR group."""
         return Structure(
-            (Link("crank", "O", ("O", "A"), self.crank), Link("coupler", "A", ("A", "B"), self.coupler),
-             Link("rocker", "E", ("E", "B"), self.rocker)),
+            (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")),
+             Link("coupler", "A", ("A", "B"), self.coupler, joints=("A", "B")),
+             Link("rocker", "E", ("E", "B"), self.rocker, joints=("B", "E"))),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "coupler", "A"),
              Pair("revolute", "B", "coupler", "rocker", "B"), Pair("revolute", "E", FRAME, "rocker", "E")),
             (("coupler", "rocker"),), "rocker", scale=max(self.crank, self.coupler, self.rocker, self.ground))

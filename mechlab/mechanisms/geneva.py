@@ -88,7 +88,6 @@ class PlanarGeneva(Mechanism):
     roller_radius: Annotated[float | None, length(optional=True)] = None
 
     kappa = 0  # -1 external, +1 internal
-    links = (("O", "A"),)
     pivots = ("O", "W")
     output = "angle"
 
@@ -314,7 +313,7 @@ class PlanarGeneva(Mechanism):
             return np.where(self.engaged(mo.phi)[:, None], across, lock)
 
         return Structure(
-            (Link("crank", "O", ("O", "A"), self.crank_radius), Link("wheel", "W", output_axis)),
+            (Link("crank", "O", ("O", "A"), self.crank_radius, joints=("O", "A")), Link("wheel", "W", output_axis)),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("higher", "pin", "wheel", "crank", "A", normal=normal),
              Pair("revolute", "W", FRAME, "wheel", "W")),
             (("wheel",),), "wheel", scale=self.centre_distance)
@@ -335,7 +334,7 @@ class PlanarGeneva(Mechanism):
 
         radius = 0.7 * self.outer_radius
         return replace(sk, parts=sk.parts + (Part("wheel", turned(0)), Part("wheel", turned(1)), Part(
-            "anchor", lambda i: np.array([W[i], W[i] + radius * np.array([np.cos(psi[i]), np.sin(psi[i])])]), True)))
+            "anchor", lambda i: np.array([W[i], W[i] + radius * np.array([np.cos(psi[i]), np.sin(psi[i])])]), "wheel")))
 
 
 @dataclass(frozen=True)

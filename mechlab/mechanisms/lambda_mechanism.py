@@ -49,7 +49,6 @@ class LambdaMechanism(Mechanism):
     delta: Delta
     assembly: Sign = 1
 
-    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
     pivots = ("O", "C")
     output = "angle"
 
@@ -181,9 +180,11 @@ class GuidedLambda(LambdaMechanism):
 
 
 def lambda_links(m) -> tuple[Link, ...]:
-    """The lambda mechanism's moving links (the base of its six-bars): crank, coupler, rocker."""
-    return (Link("crank", "O", ("O", "A"), m.r), Link("coupler", "A", ("A", "B"), 1.0),
-            Link("rocker", "C", ("C", "B"), 1.0))
+    """The lambda mechanism's moving links (the base of its six-bars): crank, coupler (a plate A-B-D),
+    rocker."""
+    return (Link("crank", "O", ("O", "A"), m.r, joints=("O", "A")),
+            Link("coupler", "A", ("A", "B"), 1.0, joints=("A", "B", "D", "A")),
+            Link("rocker", "C", ("C", "B"), 1.0, joints=("C", "B")))
 
 
 def lambda_pairs() -> tuple[Pair, ...]:

@@ -36,7 +36,6 @@ class LambdaRockerSixBar(Mechanism):
     assembly: Sign = 1
     dwell: Dwell = 0.0  # the designed dwell 2α (informational: drawings, widgets)
 
-    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"), ("D", "E"), ("F", "E"))
     pivots = ("O", "C", "F")
     output = "angle"
 
@@ -93,7 +92,8 @@ class LambdaRockerSixBar(Mechanism):
         (coupler, rocker) (Kinitsky (1994), ch. 3)."""
         r = self.base
         return Structure(
-            (*lambda_links(r), Link("rod", "D", ("D", "E"), self.rod), Link("output", "F", ("F", "E"), self.rocker)),
+            (*lambda_links(r), Link("rod", "D", ("D", "E"), self.rod, joints=("D", "E")),
+             Link("output", "F", ("F", "E"), self.rocker, joints=("F", "E"))),
             (*lambda_pairs(), Pair("revolute", "D", "coupler", "rod", "D"), Pair("revolute", "E", "rod", "output", "E"),
              Pair("revolute", "F", FRAME, "output", "F")),
             (("rod", "output"), ("coupler", "rocker")), "output", scale=r.a)
@@ -128,7 +128,6 @@ class LambdaSlottedSixBar(Mechanism):
     offset: Coordinate = 0.0
     dwell: Dwell = 0.0  # the straight part's crank angle 2α (informational)
 
-    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
     pivots = ("O", "C", "P")
     output = "angle"
 
@@ -230,7 +229,7 @@ class LambdaSlottedSixBar(Mechanism):
     def sketch(self, motion) -> Sketch:
         """МЧВ3: the slotted link (a bar through the pivot along the slot, numbered), highlighted in the
         dwell, and the dwell part of D's path."""
-        sk = Sketch(bars(self), self.pivots)   # the slotted link drawn here, offset slot and all
+        sk = Sketch(bars(self.structure()), self.pivots)   # the slotted link drawn here, offset slot and all
         P, psi, still = motion.points["P"].p, motion.psi, in_dwell(motion.phi, self.dwell)
         reach = 1.2 * np.max(np.hypot(*(motion.points["D"].p - P).T))
         path, offset = dwell_path(self, self.dwell), self.offset
@@ -241,5 +240,5 @@ class LambdaSlottedSixBar(Mechanism):
             return np.array([P[i], base, base + reach * u]) if offset else np.array([P[i] - reach * u, P[i] + reach * u])
 
         return replace(sk, parts=sk.parts + (
-            Part("output", bar, True), Part("extra", lambda i: path),
+            Part("output", bar, "output"), Part("extra", lambda i: path),
             Part("highlight", lambda i: bar(i) if still[i] else np.full((2, 2), np.nan))))

@@ -54,7 +54,6 @@ class LambdaSliderSixBar(_OnLambda):
     assembly: Sign = 1
     dwell: Dwell = 0.0  # the designed dwell 2α (informational: drawings, reports)
 
-    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"), ("D", "E"))
     pivots = ("O", "C")
     output = "position"
 
@@ -104,7 +103,8 @@ class LambdaSliderSixBar(_OnLambda):
         """МЧВ2: the lambda mechanism, the rod D→E and the slider E on the guide (angle θ); groups
         (rod, slider), then (coupler, rocker)."""
         return Structure(
-            (*lambda_links(self.base), Link("rod", "D", ("D", "E"), self.rod), Link("slider", "E", self.theta)),
+            (*lambda_links(self.base), Link("rod", "D", ("D", "E"), self.rod, joints=("D", "E")),
+             Link("slider", "E", self.theta)),
             (*lambda_pairs(), Pair("revolute", "D", "coupler", "rod", "D"), Pair("revolute", "E", "rod", "slider", "E"),
              Pair("prismatic", "guide", FRAME, "slider", "E", self.theta)),
             (("rod", "slider"), ("coupler", "rocker")), "slider", scale=self.a)
@@ -112,7 +112,7 @@ class LambdaSliderSixBar(_OnLambda):
     def sketch(self, motion) -> Sketch:
         """МЧВ2: the guide through Q, the slider block at E (numbered, highlighted in the dwell), D's dwell
         path."""
-        sk = Sketch(bars(self), self.pivots)   # the guide and the output drawn here
+        sk = Sketch(bars(self.structure()), self.pivots)   # the guide and the output drawn here
         u, s, E, still = self.u, motion.s, motion.points["E"].p, in_dwell(motion.phi, self.dwell)
         size = 0.2 * self.rod
         guide = np.array([self.Q + (s.min() - 2 * size) * u, self.Q + (s.max() + 2 * size) * u])
@@ -122,7 +122,7 @@ class LambdaSliderSixBar(_OnLambda):
             return block_outline(E[i], u, size, size)
 
         return replace(sk, parts=sk.parts + (
-            Part("guide", lambda i: guide), Part("output", block, True), Part("extra", lambda i: path),
+            Part("guide", lambda i: guide), Part("output", block, "slider"), Part("extra", lambda i: path),
             Part("highlight", lambda i: block(i) if still[i] else np.full((2, 2), np.nan))))
 
 
@@ -150,7 +150,6 @@ class LambdaTranslatingSlot(_OnLambda):
     guide: Angle
     dwell: Dwell = 0.0  # the straight part's crank angle 2α (informational)
 
-    links = (("O", "A"), ("A", "B", "D", "A"), ("C", "B"))
     pivots = ("O", "C")
     output = "position"
 
@@ -205,7 +204,7 @@ class LambdaTranslatingSlot(_OnLambda):
     def sketch(self, motion) -> Sketch:
         """МЧВ5: the fixed guide (a bushing beyond the bar's travel), the output link (a slot through D
         and a bar along the guide; numbered, highlighted in the dwell), the block at D, D's dwell path."""
-        sk = Sketch(bars(self), self.pivots)   # the guide and the output drawn here
+        sk = Sketch(bars(self.structure()), self.pivots)   # the guide and the output drawn here
         v, w = np.array([np.cos(self.slot), np.sin(self.slot)]), np.array([np.cos(self.guide), np.sin(self.guide)])
         E, D = motion.points["E"].p, motion.points["D"].p
         still = in_dwell(motion.phi, self.dwell)
@@ -222,6 +221,6 @@ class LambdaTranslatingSlot(_OnLambda):
             return np.array([slot[0], slot[1], E[i], E[i] + reach * w])
 
         return replace(sk, parts=sk.parts + (
-            Part("guide", lambda i: guide), Part("output", link, True),
+            Part("guide", lambda i: guide), Part("output", link, "output"),
             Part("output", lambda i: block_outline(D[i], v, 0.08, 0.08)), Part("extra", lambda i: path),
             Part("highlight", lambda i: link(i) if still[i] else np.full((4, 2), np.nan))))

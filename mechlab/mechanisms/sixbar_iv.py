@@ -18,7 +18,7 @@ J·x' = -F_φ and its derivative (J singular at a dead position of the group).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
@@ -27,7 +27,7 @@ from scipy.optimize import brentq
 from ..errors import AssemblyError, DimensionError, RotationError, SingularityError
 from ..geometry import (AnglePath, PointPath, as_angles, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit,
                         vector_angle)
-from .base import FRAME, Link, Mechanism, Pair, Sketch, Structure, output_axis
+from .base import FRAME, Link, Mechanism, Pair, Structure, output_axis
 from ..motion import AngularMotion
 from ..validate import Length, OptionalAngle, Point, Sign
 
@@ -63,7 +63,6 @@ class SixBarIV(Mechanism):
     inner_assembly: Sign = 1
     start: OptionalAngle = None
 
-    links = (("O", "A"), ("A", "Q", "P", "A"), ("Q", "R"), ("P", "T"), ("R", "T", "E", "R"))
     pivots = ("O", "E")
     output = "angle"
 
@@ -247,23 +246,20 @@ class SixBarIV(Mechanism):
     # -- structure and motion (the curved-slot twin comes from them: Mechanism.curved_slot_twin) ---------
     def structure(self) -> Structure:
         """Crank O→A and the class-IV group: coupler A-Q-P (axis Q→P), link 3 Q→R, link 5 P→T and the
-        output R-T-E turning about E (axis at ψ); seven revolute pairs."""
+        output R-T-E turning about E (axis at ψ); seven revolute pairs. Numbered as in the class docstring:
+        the coupler 2 and the output 4 are triangles (ternary links), link 3 = QR, link 5 = PT, the frame 6."""
         return Structure(
-            (Link("crank", "O", ("O", "A"), self.crank), Link("coupler", "A", ("Q", "P"), self.qp),
-             Link("link 3", "Q", ("Q", "R"), self.link3), Link("link 5", "P", ("P", "T"), self.link5),
-             Link("output", "E", output_axis)),
+            (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")),
+             Link("coupler", "A", ("Q", "P"), self.qp, joints=("A", "Q", "P", "A")),
+             Link("link 3", "Q", ("Q", "R"), self.link3, joints=("Q", "R")),
+             Link("link 5", "P", ("P", "T"), self.link5, joints=("P", "T")),
+             Link("output", "E", output_axis, joints=("R", "T", "E", "R"))),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "coupler", "A"),
              Pair("revolute", "Q", "coupler", "link 3", "Q"), Pair("revolute", "P", "coupler", "link 5", "P"),
              Pair("revolute", "R", "link 3", "output", "R"), Pair("revolute", "T", "link 5", "output", "T"),
              Pair("revolute", "E", FRAME, "output", "E")),
-            (("coupler", "link 3", "link 5", "output"),), "output", scale=self.ground)
-
-    def sketch(self, motion) -> Sketch:
-        """Links 2 and 4 are triangles (ternary links); numbered as in the class docstring: the group's
-        links 3 = QR, 5 = PT, output 4 = RTE."""
-        sk = super().sketch(motion)
-        labels = iter(("1", "2", "3", "5", "4"))
-        return replace(sk, parts=tuple(replace(p, number=next(labels)) if p.number else p for p in sk.parts))
+            (("coupler", "link 3", "link 5", "output"),), "output", scale=self.ground,
+            numbering=("crank", "coupler", "link 3", "output", "link 5", FRAME))
 
     def motion(self, phi) -> AngularMotion:
         """Joint paths (O, A, Q, P, R, T, E) and ψ, ψ', ψ'' of link 4 at crank angles φ (radians)."""

@@ -35,7 +35,6 @@ class SliderCrank(Mechanism):
     offset: Coordinate = 0.0
     assembly: Assembly = 1
 
-    links = (("O", "A"), ("A", "B"))
     pivots = ("O",)
     output = "position"
 
@@ -80,7 +79,8 @@ class SliderCrank(Mechanism):
     def structure(self) -> Structure:
         """Crank O→A, rod A→B, slider at B on the guide (the x axis); one RRP group (rod, slider)."""
         return Structure(
-            (Link("crank", "O", ("O", "A"), self.crank), Link("rod", "A", ("A", "B"), self.rod),
+            (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")),
+             Link("rod", "A", ("A", "B"), self.rod, joints=("A", "B")),
              Link("slider", "B", 0.0)),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "rod", "A"),
              Pair("revolute", "B", "rod", "slider", "B"), Pair("prismatic", "guide", FRAME, "slider", "B", 0.0)),

@@ -58,7 +58,6 @@ class SlottedLink(PivotedSlot, Mechanism):
     crank: Length
     pivot_distance: Length
 
-    links = (("O", "A"),)
     pivots = ("O", "B")
     output = "angle"
 
@@ -83,7 +82,7 @@ class SlottedLink(PivotedSlot, Mechanism):
         """Crank O→A; a block at A slides in the link's slot B→A; the link turns about B; one RPR group."""
         reach = self.pivot_distance + self.crank
         return Structure(
-            (Link("crank", "O", ("O", "A"), self.crank), Link("block", "A", ("B", "A"), block=True),
+            (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")), Link("block", "A", ("B", "A"), block=True),
              Link("link", "B", ("B", "A"), reach, label="slotted link")),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "block", "A"),
              Pair("prismatic", "slot", "link", "block", "A", 0.0), Pair("revolute", "B", FRAME, "link", "B")),
@@ -100,7 +99,6 @@ class SineMechanism(Mechanism):
 
     crank: Length
 
-    links = (("O", "A"),)
     pivots = ("O",)
     output = "position"
 
@@ -118,7 +116,7 @@ class SineMechanism(Mechanism):
         """Crank O→A; a block at A slides in the yoke's slot (perpendicular to the guide); the yoke at K
         slides on the frame along x; one group (block, yoke)."""
         return Structure(
-            (Link("crank", "O", ("O", "A"), self.crank), Link("block", "A", np.pi / 2, block=True),
+            (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")), Link("block", "A", np.pi / 2, block=True),
              Link("yoke", "K", 0.0)),
             (Pair("revolute", "O", FRAME, "crank", "O"), Pair("revolute", "A", "crank", "block", "A"),
              Pair("prismatic", "slot", "yoke", "block", "A", np.pi / 2),

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 from typing import Annotated
 
 import numpy as np
-from ..errors import DimensionError, MechanismError, SpatialMechanismError
+from ..errors import DimensionError, MechanismError, SpatialMechanismError  # noqa: F401 (re-exported)
 from ..geometry import AnglePath, PointPath, as_angles, vector_angle
-from .base import Mechanism
+from .base import FRAME, Link, Mechanism, Pair, Structure
 from .geneva import LENGTH_UNITS
 from ..motion import AngularMotion, Quantity, Table, scalar_law
 from ..validate import Length, check, choice, length, number, validated
@@ -64,19 +64,23 @@ class SphericalGeneva(Mechanism):
     pin_diameter: Length = 10.0
 
     spatial = True   # drawn in 3-D
-    links = (("B", "P"),)
     pivots = ("O", "O1")
     output = "angle"
 
-    def structure(self):
-        """None in the plane: crank and wheel turn about perpendicular axes and the pin touches the slot on
-        the sphere, so the planar structure of links, planar pairs and Assur groups, and with it the
-        instantaneous centres and the planar kinetostatics, does not apply; the crank torque comes from the
-        power balance (:func:`mechlab.kinetostatics.geneva.crank_torque`). SpatialMechanismError says so."""
-        raise SpatialMechanismError(
-            "the spherical Geneva is a spatial mechanism (crank and wheel axes perpendicular, the contact on the "
-            "sphere): it has no planar structure, so planar instantaneous centres and the planar kinetostatics do "
-            "not apply; use mechlab.kinetostatics.geneva.crank_torque (the power balance) for its torque")
+    def structure(self) -> Structure:
+        """The crank B→P turning about the crank axis (through O1), the wheel turning about its axis through the
+        sphere's centre O, the pin P in a slot (a higher pair); one group, the wheel. Spatial: the axes are
+        perpendicular and the contact lies on the sphere, so the planar methods (instantaneous centres, planar
+        kinetostatics) refuse it with SpatialMechanismError; its links and pairs still give the design layer's
+        counts (a spherical linkage's mobility has the planar formula, 3n − 2p₅ − p₄)."""
+        return Structure(
+            (Link("crank", "O1", ("B", "P"), self.R, joints=("B", "P")), Link("wheel", "O", 0.0)),
+            (Pair("revolute", "O1", FRAME, "crank", "O1"), Pair("higher", "pin", "wheel", "crank", "P"),
+             Pair("revolute", "O", FRAME, "wheel", "O")),
+            (("wheel",),), "wheel", scale=self.R,
+            spatial="the spherical Geneva is a spatial mechanism (crank and wheel axes perpendicular, the contact on "
+                    "the sphere; its crank torque comes from the power balance, "
+                    "mechlab.kinetostatics.geneva.crank_torque)")
 
     def __post_init__(self):
         super().__post_init__()

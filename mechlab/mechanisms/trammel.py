@@ -46,7 +46,6 @@ class EllipticTrammel(Mechanism):
     beta: Annotated[float, angle(_MIN_GUIDE_ANGLE, np.pi - _MIN_GUIDE_ANGLE, open=True,
                                  why="0 < β < 180°: parallel guides leave no room for the rod to turn")] = np.pi / 2
 
-    links = (("O", "C"), ("A", "B"), ("B", "C"), ("C", "A"))
     pivots = ("O",)
     output = "position"
 
@@ -69,7 +68,8 @@ class EllipticTrammel(Mechanism):
         """The rod A→B (the input: Cardan's crank only parametrises it, θ′ = −1) and the sliders A, B on
         their guides; numbered as in Kozhevnikov, Fig. 7.5: 1 = frame, 2 = slider A, 3 = slider B, 4 = rod."""
         return Structure(
-            (Link("rod", "A", ("A", "B"), self.rod), Link("slider A", "A", 0.0), Link("slider B", "B", self.beta)),
+            (Link("rod", "A", ("A", "B"), self.rod, joints=("A", "B")), Link("slider A", "A", 0.0),
+             Link("slider B", "B", self.beta)),
             (Pair("prismatic", "guide A", FRAME, "slider A", "A", 0.0),
              Pair("prismatic", "guide B", FRAME, "slider B", "B", self.beta),
              Pair("revolute", "A", "slider A", "rod", "A"), Pair("revolute", "B", "slider B", "rod", "B")),
@@ -82,13 +82,13 @@ class EllipticTrammel(Mechanism):
         crank O-C only parametrises the motion and has no number."""
         R = self.fixed_radius
         h = 0.06 * R
-        parts = [Part("link", ("O", "C")), Part("link", ("A", "B"), "4"), Part("link", ("B", "C")),
+        parts = [Part("link", ("O", "C")), Part("link", ("A", "B"), "rod"), Part("link", ("B", "C")),
                  Part("link", ("C", "A"))]
-        for name, guide, number in (("A", 0.0, "2"), ("B", self.beta, "3")):
+        for name, guide, number in (("A", 0.0, "slider A"), ("B", self.beta, "slider B")):
             u, P = unit(guide), motion.points[name].p
             parts += [Part("extra", lambda i, u=u: np.array([-1.15 * R * u, 1.15 * R * u])),
                       Part("extra", lambda i, P=P, u=u: block_outline(P[i], u, 2 * h, 1.2 * h), number)]
-        return Sketch(tuple(parts), self.pivots, frame_number="1")
+        return Sketch(tuple(parts), self.pivots)
 
     def motion(self, phi) -> LinearMotion:
         """Paths of O, C, A, B and the slider law s = x_A, s', s'' at crank angles φ (rad)."""

@@ -509,7 +509,6 @@ class DwellSlotMechanism(Mechanism):
     transition: str = "cubic"
     roller_radius: Distance = 0.0
 
-    links = (("O", "A"),)
     pivots = ("O", "B")
     output = "angle"
 
@@ -568,9 +567,9 @@ class DwellSlotMechanism(Mechanism):
             c, s = np.cos(psi[i]), np.sin(psi[i])
             return B[i] + xy @ np.array([[c, s], [-s, c]])
 
-        parts = (Part("link", ("O", "A"), True),
+        parts = (Part("link", ("O", "A"), "crank"),
                  Part("arm", lambda i: np.array([world(centre[:1], i)[0], B[i], world(centre[-1:], i)[0]])),
-                 Part("anchor", lambda i: np.array([world(centre[:1], i)[0], B[i]]), True),
+                 Part("anchor", lambda i: np.array([world(centre[:1], i)[0], B[i]]), "link"),
                  Part("slot centre", lambda i: world(centre, i)), Part("dwell", lambda i: world(arc, i)),
                  *(Part("flank", lambda i, f=f: world(f, i)) for f in flanks),
                  *((Part("roller", lambda i: A[i] + ring),) if rho > 0 else ()),

@@ -62,10 +62,10 @@ def centre_model(mechanism, motion: Motion) -> CentreModel:
     a prismatic pair at infinity normal to the guide, a higher pair puts the centre on the common
     normal; a sliding block and its two pairs count as one higher pair (the pin in the slot, Kozhevnikov
     Fig. 7.3's method), whose normal is the slot's."""
-    st: Structure = mechanism.structure()
+    st: Structure = mechanism.structure().planar()
     label = {link.name: link.label or link.name for link in st.links}
     label[FRAME] = FRAME
-    order = st.numbering or tuple(label[k.name] for k in st.links if not k.block) + (FRAME,)
+    order = st.order()   # the numbering the drawing and the force model share
     index = {name: i for i, name in enumerate(order)}
     n = len(motion.phi)
     angles = {FRAME: AnglePath(np.zeros(n), np.zeros(n), np.zeros(n))}

@@ -437,11 +437,6 @@ class Linkage(Mechanism):
 
     # -- what the drawing and the forces read ----------------------------------------------------------------
     @property
-    def links(self) -> tuple[tuple[str, ...], ...]:
-        """The joints of each numbered link (the drawing's bars)."""
-        return tuple(self._joints_of(k.name) for k in self.structure().links if not k.block)
-
-    @property
     def pivots(self) -> tuple[str, ...]:
         """The frame points where a link turns on the frame."""
         return tuple(dict.fromkeys(p.point for p in self.structure().pairs
@@ -564,9 +559,10 @@ class Linkage(Mechanism):
 
     # -- drawing ----------------------------------------------------------------------------------------------
     def sketch(self, motion: Motion) -> Sketch:
-        """The kinematic diagram: each link numbered as the instantaneous centres number it (the structure's
-        links without blocks, then the frame): a bar (or a plate) through its joints, a slider with its rail,
-        a slotted link with its slot, blocks outlined.
+        """The kinematic diagram: a bar (or a plate) through each link's joints, a slider with its rail, a
+        slotted link with its slot, blocks outlined; each numbered link's part names it, and the drawing numbers
+        it by :meth:`Structure.numbers` (the structure's links without blocks, then the frame), as the
+        instantaneous centres and the force model do.
 
         Parameters
         ----------
@@ -582,28 +578,28 @@ class Linkage(Mechanism):
         >>> import mechlab as ml
         >>> lk = ml.Linkage({"O": (0, 0), "E": (4, 0)}, ml.Crank("O", "A", 1.0)).rrr("A", "E", "B", 3, 3)
         >>> [p.number for p in lk.sketch(lk.motion(lk.turn(3))).parts]
-        ['1', '2', '3']
+        ['crank', 'AB', 'EB']
         """
         st, pts = self.structure(), motion.points
         size = 0.08 * st.scale
         numbered = [k for k in st.links if not k.block]
         parts = []
-        for number, link in enumerate(numbered, start=1):
+        for link in numbered:
             joints = self._joints_of(link.name)
             axis = link.angle(motion).theta
             slots = [p for p in st.pairs if p.kind == "prismatic" and p.a == link.name]
             if link.translates or (not isinstance(link.axis, tuple) and len(joints) < 2):
                 at = pts[link.origin].p
                 parts.append(Part("extra", lambda i, p=at, a=axis: block_outline(p[i], _dir(a[i]), 2 * size, size),
-                                  str(number)))
+                                  link.name))
             elif len(joints) >= 2:
-                parts.append(Part("link", joints + joints[:1] if len(joints) > 2 else joints, str(number)))
+                parts.append(Part("link", joints + joints[:1] if len(joints) > 2 else joints, link.name))
             for k, p in enumerate(slots):   # the slot (or guide) on this link along the block's track
                 track = pts[p.point].p
                 o = pts[link.origin].p
                 shown = len(joints) < 2 and k == 0   # a link drawn by its slot alone carries its number there
                 parts.append(Part("slot", lambda i, o=o, t=track, a=axis + p.angle: _along(o[i], t[i], a[i], size),
-                                  str(number) if shown else None))
+                                  link.name if shown else None))
         for link in st.links:
             slide = next((p for p in st.pairs if p.kind == "prismatic" and p.b == link.name), None)
             if slide is not None and slide.a == FRAME and link.translates:   # the rail under a slider
@@ -616,7 +612,7 @@ class Linkage(Mechanism):
             if link.block:
                 at, axis = pts[link.origin].p, link.angle(motion).theta
                 parts.append(Part("extra", lambda i, p=at, a=axis: block_outline(p[i], _dir(a[i]), 2 * size, size)))
-        return Sketch(tuple(parts), self.pivots, str(len(numbered) + 1))
+        return Sketch(tuple(parts), self.pivots)
 
 
 def _dir(angle):
