@@ -125,6 +125,22 @@ def alembic_head() -> str:
     return ScriptDirectory(ALEMBIC_DIR).get_current_head()
 
 
+@functools.cache
+def _throwaway_gradebooks() -> None:
+    """Every gradebook this script opens is a sandbox's or an edition's, removed when done (grades leave as CSV):
+    sqlite need not wait for the disk at each of the few hundred commits nbgrader makes per submission."""
+    import sqlite3
+
+    from sqlalchemy import event
+    from sqlalchemy.engine import Engine
+
+    @event.listens_for(Engine, "connect")
+    def _no_sync(connection, _record):
+        if isinstance(connection, sqlite3.Connection):
+            connection.execute("PRAGMA synchronous = OFF")
+            connection.execute("PRAGMA journal_mode = MEMORY")
+
+
 def _api(work: Path, **settings):
     """nbgrader's Python API on the course in ``work`` (one process for every step: nbgrader's start-up is slow),
     configured by nbgrader_config.py and then ``settings`` ({"Execute.timeout": 10, ...})."""
@@ -148,6 +164,7 @@ def _api(work: Path, **settings):
     # a new gradebook asks for the schema's version by running `alembic heads` in a subprocess (~4 s of CPU,
     # nbgrader imported again); every sandbox makes a new gradebook, so it is read here, in this process, once
     nbgrader_api.get_alembic_version = alembic_head
+    _throwaway_gradebooks()
     config.Execute.extra_arguments = [*config.Execute.get("extra_arguments", []), "--IPKernelApp.log_level=ERROR"]
     for key, value in settings.items():
         section, name = key.split(".")

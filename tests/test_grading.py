@@ -36,7 +36,7 @@ def _run(*args: str) -> str:
     env = dict(os.environ, PYTHONPATH=f"{DEPS}{os.pathsep}{ROOT}",
                PATH=f"{DEPS / 'bin'}{os.pathsep}{os.environ['PATH']}")
     res = subprocess.run([sys.executable, str(ROOT / "assignments" / "course.py"), *args], env=env,
-                         capture_output=True, text=True, timeout=900)
+                         capture_output=True, text=True, timeout=1800)
     assert res.returncode == 0, res.stdout + res.stderr
     return res.stdout
 
