@@ -22,7 +22,8 @@ lab:
 sync:
 	$(COURSE) sync
 
-# the library's tests, then every notebook and every assignment's source (nbval); nbgrader for the grading tests
+# the library's tests, then every notebook and every assignment's source (nbval); nbgrader for the grading tests.
+# With two cores the grading tests, the one-call audit and the many-kernels test run beside them (course.py BESIDE).
 test: nbgrader
 	$(COURSE) test
 
