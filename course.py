@@ -21,6 +21,7 @@ import hashlib
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -381,10 +382,35 @@ def cmd_lab(args) -> None:
             pass  # Ctrl-C reaches JupyterLab too, which asks whether to stop
 
 
+# The grading tests (nbgrader executes every planted submission, one after another), the one-call audit of the
+# exercises and the many-kernels test take about as long as all the other tests and the notebooks together, on
+# about one core: with two cores they run beside them, their report after.
+BESIDE = ["tests/test_grading.py", "tests/test_exercises.py", "tests/test_kernels.py"]
+
+
 def cmd_test(args) -> None:
     python = ensure_venv(Path(args.venv), "test")
-    run(python, "-m", "pytest", "tests", "-q")
-    run(python, "-m", "pytest", *NBVAL_ARGS, "-q", "notebooks", "assignments/source")
+    if (os.cpu_count() or 1) < 2:
+        run(python, "-m", "pytest", "tests", "-q")
+        run(python, "-m", "pytest", *NBVAL_ARGS, "-q", "notebooks", "assignments/source")
+        return
+    with tempfile.TemporaryFile("w+", encoding="utf-8") as log:
+        beside = subprocess.Popen([str(python), "-m", "pytest", "-q", "-p", "no:cacheprovider", *BESIDE], cwd=ROOT,
+                                  env=tools_env(), stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            codes = [subprocess.run([str(python), *cmd], cwd=ROOT, env=tools_env()).returncode for cmd in (
+                ["-m", "pytest", "tests", "-q", *(f"--ignore={path}" for path in BESIDE)],
+                ["-m", "pytest", *NBVAL_ARGS, "-q", "notebooks", "assignments/source"])]
+            codes.append(beside.wait())
+        finally:
+            if beside.poll() is None:  # interrupted: nothing is left running (its nbgrader runs too)
+                os.killpg(beside.pid, signal.SIGTERM) if hasattr(os, "killpg") else beside.kill()
+                beside.wait()
+        log.seek(0)
+        say(f"{', '.join(BESIDE)} (run beside the others):")
+        print(log.read(), flush=True)
+    if any(codes):
+        sys.exit(next(c for c in codes if c))
 
 
 def cmd_book(args) -> None:

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import functools
 import json
 import os
 import re
@@ -77,6 +78,19 @@ def read_class(path: Path | None) -> list[str]:
     return ids
 
 
+# the source's link to its chapter, relative to assignments/source/<id>/
+CHAPTER_LINK = re.compile(r"\]\((?:\.\./)+notebooks/([^)/]+\.ipynb)\)")
+
+
+def for_my_notebooks(nb):
+    """``nb`` with its links to a chapter made to open from ``my-notebooks/``: the chapters tell the student to
+    save the edition there, beside their working copy of every chapter (``course.py sync``)."""
+    for cell in nb.cells:
+        if cell.cell_type == "markdown":
+            cell.source = CHAPTER_LINK.sub(r"](\1)", cell.source)
+    return nb
+
+
 class Masters:
     """Each student's master of each assignment (:func:`variants.render`), made once: the shared one for an
     id outside the class list (or when there is none)."""
@@ -89,7 +103,7 @@ class Masters:
         who = student if student in self.class_ids else variants.SHARED
         if (aid, who) not in self._cache:
             src = nbformat.read(HERE / "source" / aid / f"{aid}.ipynb", as_version=4)
-            self._cache[aid, who] = variants.render(src, aid, who)
+            self._cache[aid, who] = for_my_notebooks(variants.render(src, aid, who))
         return self._cache[aid, who]
 
     def install(self, work: Path, aid: str, student: str) -> None:
@@ -102,9 +116,35 @@ class Masters:
                       if c["kind"] == "number"} for who in self.class_ids}
 
 
+@functools.cache
+def alembic_head() -> str:
+    """The revision nbgrader's gradebook schema is at (what ``alembic heads`` prints for nbgrader's migrations)."""
+    from alembic.script import ScriptDirectory
+    from nbgrader.dbutil import ALEMBIC_DIR
+
+    return ScriptDirectory(ALEMBIC_DIR).get_current_head()
+
+
+@functools.cache
+def _throwaway_gradebooks() -> None:
+    """Every gradebook this script opens is a sandbox's or an edition's, removed when done (grades leave as CSV):
+    sqlite need not wait for the disk at each of the few hundred commits nbgrader makes per submission."""
+    import sqlite3
+
+    from sqlalchemy import event
+    from sqlalchemy.engine import Engine
+
+    @event.listens_for(Engine, "connect")
+    def _no_sync(connection, _record):
+        if isinstance(connection, sqlite3.Connection):
+            connection.execute("PRAGMA synchronous = OFF")
+            connection.execute("PRAGMA journal_mode = MEMORY")
+
+
 def _api(work: Path, **settings):
     """nbgrader's Python API on the course in ``work`` (one process for every step: nbgrader's start-up is slow),
     configured by nbgrader_config.py and then ``settings`` ({"Execute.timeout": 10, ...})."""
+    from nbgrader import api as nbgrader_api
     from nbgrader.apps import NbGraderAPI
     from nbgrader.coursedir import CourseDirectory
     from nbgrader.preprocessors import execute as nbgrader_execute
@@ -121,6 +161,10 @@ def _api(work: Path, **settings):
     # graded kernels over unique Unix sockets, as on every other route (tools/ipc_kernels.py): no port race.
     # nbgrader's Execute passes its own AsyncKernelManager over any configured class, so its name is rebound.
     nbgrader_execute.AsyncKernelManager = ipc_kernels.IPCKernelManager
+    # a new gradebook asks for the schema's version by running `alembic heads` in a subprocess (~4 s of CPU,
+    # nbgrader imported again); every sandbox makes a new gradebook, so it is read here, in this process, once
+    nbgrader_api.get_alembic_version = alembic_head
+    _throwaway_gradebooks()
     config.Execute.extra_arguments = [*config.Execute.get("extra_arguments", []), "--IPKernelApp.log_level=ERROR"]
     for key, value in settings.items():
         section, name = key.split(".")

@@ -9,7 +9,8 @@ through the kernel's websocket, and moves a slider (the comm message JupyterLab 
     python tests_hub/hub_load.py --students 5 --chapter notebooks/00_getting_started.ipynb
 
 Prints one JSON object: success count, p50/p95 of the times, memory per student (PSS of
-the server and its kernel), the CPU the hub and the proxy used. Every request goes to
+the server and its kernel), the CPU the hub and the proxy used, the machine's load average
+(``--save``: also into benchmarks/hub_load_N.json, the files benchmarks/README.md's table quotes). Every request goes to
 127.0.0.1 with a timeout; the hub and the proxy are stopped by their PIDs.
 """
 
@@ -170,13 +171,40 @@ def percentile(values: list[float], q: float) -> float:
     return statistics.quantiles(values, n=100, method="inclusive")[q - 1] if len(values) > 1 else values[0]
 
 
+# benchmarks/README.md's table of a class on one hub: each column is one run's JSON, kept as measured
+def results_file(students: int) -> Path:
+    return ROOT / "benchmarks" / f"hub_load_{students}.json"
+
+
+ROWS = [("succeeded", lambda r: f"{r['succeeded']} / {r['students']}"),
+        ("login → server running, p50 / p95", lambda r: f"{r['server']['p50']:.1f} / {r['server']['p95']:.1f} s"),
+        ("session → kernel answering, p50 / p95", lambda r: f"{r['kernel']['p50']:.1f} / {r['kernel']['p95']:.1f} s"),
+        ("all cells of chapter 00 run, p50 / p95", lambda r: f"{r['cells']['p50']:.1f} / {r['cells']['p95']:.1f} s"),
+        ("slider moved → kernel done redrawing, p50 / p95",
+         lambda r: f"{r['slider']['p50']:.2f} / {r['slider']['p95']:.2f} s"),
+        ("memory per student (server + kernel, PSS), p50", lambda r: f"{r['pss_mb']['p50']:.0f} MB"),
+        ("hub + proxy CPU over the run", lambda r: f"{r['hub_and_proxy_cpu_s']:.1f} s in {r['wall_s']:.0f} s"),
+        ("load average (1 min) before / after: other work on the machine",
+         lambda r: f"{r['load_average_before'][0]:g} / {r['load_average_after'][0]:g}")]
+
+
+def table(reports: list[dict]) -> str:
+    """The Markdown table of the runs ``reports`` (one column each), as benchmarks/README.md quotes it."""
+    head = [f"{reports[0]['date']}, {reports[0]['cores']}-core VM"] + [f"{r['students']} students" for r in reports]
+    lines = ["| " + " | ".join(head) + " |", "|---" * len(head) + "|"]
+    lines += ["| " + " | ".join([name] + [cell(r) for r in reports]) + " |" for name, cell in ROWS]
+    return "\n".join(lines)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--students", type=int, default=5)
+    parser.add_argument("--save", action="store_true", help="also write the report to benchmarks/hub_load_<students>.json")
     parser.add_argument("--chapter", type=Path, default=ROOT / "notebooks" / "00_getting_started.ipynb")
     parser.add_argument("--chp", default=str(ROOT / ".hub-deps" / "node_modules" / ".bin" / "configurable-http-proxy"))
     args = parser.parse_args()
     bin_dir = Path(sys.executable).parent
+    load_before = [round(x, 1) for x in os.getloadavg()]  # what else the machine ran: the figures depend on it
     port, token = free_port(), secrets.token_hex(32)
     with tempfile.TemporaryDirectory(prefix="mechlab-hub-") as tmp:
         config = Path(tmp) / "jupyterhub_config.py"
@@ -228,12 +256,16 @@ def main() -> None:
                 proxy.terminate()
                 proxy.wait(timeout=30)
     report = {"students": args.students, "succeeded": len(results), "errors": errors, "wall_s": round(wall, 1),
-              "hub_and_proxy_cpu_s": round(hub_cpu, 2), "cores": os.cpu_count()}
+              "hub_and_proxy_cpu_s": round(hub_cpu, 2), "cores": os.cpu_count(),
+              "date": time.strftime("%Y-%m-%d", time.gmtime()), "load_average_before": load_before,
+              "load_average_after": [round(x, 1) for x in os.getloadavg()]}
     for key in ("server", "kernel", "cells", "slider", "pss_mb"):
         values = [r[key] for r in results]
         if values:
             report[key] = {"p50": round(percentile(values, 50), 2), "p95": round(percentile(values, 95), 2)}
     print(json.dumps(report))
+    if args.save:
+        results_file(args.students).write_text(json.dumps(report, indent=1) + "\n")
 
 
 if __name__ == "__main__":

@@ -17,3 +17,13 @@ def test_five_students_run_a_chapter_and_move_a_slider():
     assert report["succeeded"] == 5, report["errors"]
     assert 0 < report["slider"]["p95"] < report["cells"]["p50"]  # a slider move is far cheaper than a chapter
     assert 50 < report["pss_mb"]["p50"] < 2000  # a server and its kernel, not nothing and not a leak
+
+
+def test_the_capacity_table_quotes_the_saved_runs():
+    """benchmarks/README.md's table of a class on one hub is the JSON of the runs `make bench-hub STUDENTS=N`
+    saved (benchmarks/hub_load_N.json), not figures copied by hand that go stale."""
+    sys.path.insert(0, str(HERE))
+    import hub_load
+
+    runs = [json.loads(hub_load.results_file(n).read_text()) for n in (10, 20)]
+    assert hub_load.table(runs) in (HERE.parent / "benchmarks" / "README.md").read_text()
