@@ -48,6 +48,7 @@ extensions = [
     "sphinx_copybutton",
     "sphinx-mathjax-offline",  # MathJax 3 served from _static/mathjax, not from a CDN
     "mechbook",  # _ext/mechbook.py: cell anchors, offline checks, animation controls
+    "alttext",  # _ext/alttext.py: a figure's alt text from its output metadata; a page's image without one fails
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.napoleon",  # numpydoc sections in docstrings
