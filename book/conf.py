@@ -99,6 +99,7 @@ html_theme = "sphinx_book_theme"
 html_title = "mechlab"
 html_static_path = ["_static"]
 html_css_files = ["mechbook.css"]
+html_js_files = ["a11y.js"]  # fixes of the theme's markup that axe-core found (tests_browser/test_a11y_book.py)
 html_last_updated_fmt = ""
 html_theme_options = {
     "home_page_in_toc": True,

@@ -45,6 +45,10 @@ def test_an_animation_carries_its_alt_text_in_the_page():
     assert "external geneva" in alt and "Animation of 8 frames" in alt
     assert f"a stroke of {stroke:.3g}" in alt   # a Geneva of 4 slots turns its wheel by 90°
     assert round(stroke) == 90
+    # its frame slider has an accessible name (axe-core's "label" rule), given once
+    assert html.count('aria-label="Frame of the animation"') == 1 == html.count('class="anim-slider"')
+    from mechlab.draw import local_animation_controls
+    assert local_animation_controls(html).count('aria-label="Frame of the animation"') == 1
 
 
 def test_a_law_plot_states_its_ranges():
@@ -86,6 +90,8 @@ def test_a_figure_that_names_nothing_has_no_alt_text_and_one_that_does_is_compos
     ax.plot([0, 1], [1, 0], label="cycloidal")
     ax.legend()
     assert alt_text(fig) == "Figure: lift, s (mm) against φ (deg), legend: cycloidal."
+    ax.set_xlabel(r"x (units of $l_{OB}$)")   # mathtext is read as plain words
+    assert "s (mm) against x (units of l_OB)" in alt_text(fig)
     assert alt_text(set_alt(fig, "  Lift  of a cam. ")) == "Lift of a cam."
     with pytest.raises(MechanismError, match="non-empty"):
         set_alt(fig, " ")

@@ -71,9 +71,15 @@ _ICON_STYLE = ("<style>.animation .mechlab-icon{font-style:normal;font-family:'D
                + "</style>\n")
 
 
+# the frame slider has no label of its own: a screen reader would announce a bare "slider"
+_UNLABELLED_SLIDER = re.compile(r'<input (?![^>]*aria-label)([^>]*class="anim-slider")')
+
+
 def local_animation_controls(html: str) -> str:
     """matplotlib's animation HTML without the remote Font Awesome stylesheet: the buttons'
-    icons become ``mechlab-icon mechlab-<name>`` classes drawn by an inline style."""
+    icons become ``mechlab-icon mechlab-<name>`` classes drawn by an inline style, and the
+    frame slider gets an accessible name."""
+    html = _UNLABELLED_SLIDER.sub(r'<input aria-label="Frame of the animation" \1', html)
     if not _REMOTE_FONT_AWESOME.search(html) and not _FA_CLASS.search(html):
         return html
 

@@ -16,6 +16,8 @@
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 from matplotlib.colors import to_rgb
 from matplotlib.figure import Figure
@@ -88,16 +90,21 @@ def set_alt(fig, text: str):
     return fig
 
 
+def plain(text: str) -> str:
+    """A label's mathtext read as plain words: ``$l_{OB}$`` → ``l_OB``, ``$\\alpha$`` → ``alpha``."""
+    return re.sub(r"\\([A-Za-z]+)", r"\1", text.replace("$", "")).replace("{", "").replace("}", "")
+
+
 def _axes_words(ax) -> str:
     words = []
     if ax.get_title():
-        words.append(ax.get_title())
-    labels = [label for label in (ax.get_xlabel(), ax.get_ylabel()) if label]
+        words.append(plain(ax.get_title()))
+    labels = [plain(label) for label in (ax.get_xlabel(), ax.get_ylabel()) if label]
     if labels:
         words.append(" against ".join(reversed(labels)) if len(labels) == 2 else labels[0])
     legend = ax.get_legend()
     if legend is not None:
-        entries = [t.get_text() for t in legend.get_texts() if t.get_text()]
+        entries = [plain(t.get_text()) for t in legend.get_texts() if t.get_text()]
         if entries:
             words.append("legend: " + "; ".join(entries))
     return ", ".join(words)
@@ -125,7 +132,7 @@ def alt_text(fig) -> str:
     parts = []
     suptitle = getattr(fig, "_suptitle", None)
     if suptitle is not None and suptitle.get_text():
-        parts.append(suptitle.get_text())
+        parts.append(plain(suptitle.get_text()))
     panels = [words for words in (_axes_words(ax) for ax in fig.axes if ax.get_visible()) if words]
     if len(panels) == 1:
         parts.append(panels[0])
