@@ -125,6 +125,13 @@ def test_the_simulation_matches_machado_et_al():
     assert np.allclose(simulate_cvd("#777777", "protanopia"), matplotlib.colors.to_rgb("#777777"), atol=1e-3)
 
 
+def _contrast(a, b):
+    """WCAG 2.1's contrast ratio of two colours."""
+    lum = [float(np.array([0.2126, 0.7152, 0.0722]) @ np.where(
+        (c := np.asarray(matplotlib.colors.to_rgb(x))) <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)) for x in (a, b)]
+    return (max(lum) + 0.05) / (min(lum) + 0.05)
+
+
 def _worst_pair(colours):
     return min((delta_e(simulate_cvd(a, kind), simulate_cvd(b, kind)), a, b, kind)
                for a, b in itertools.combinations(colours, 2) for kind in ("protanopia", "deuteranopia"))
@@ -151,6 +158,10 @@ def test_chapter_12_families_differ_by_dash_and_marker_and_colour():
     assert len({s["color"] for s in STYLES.values()}) == len({str(s["ls"]) for s in STYLES.values()}) \
         == len({s["marker"] for s in STYLES.values()}) == len(STYLES) == len(D.FAMILIES)
     assert _worst_pair([s["color"] for s in STYLES.values()])[0] >= MIN_DELTA_E
+    # none is yellow (1.2:1 on white); Okabe-Ito's orange and sky blue stay below WCAG 1.4.11's 3:1 for
+    # graphics (about 2:1), which is why each family's marker and dash carry it too
+    assert all(_contrast(s["color"], "white") >= 1.9 for s in STYLES.values()), \
+        {f: round(_contrast(s["color"], "white"), 2) for f, s in STYLES.items()}
     comp = D.candidates(D.Specification("swing", 40 / 360, amplitude=np.radians(40),
                                         max_pressure_angle=np.radians(60)))
     fig = comparison_figure(comp)

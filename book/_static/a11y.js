@@ -14,6 +14,10 @@ document.addEventListener("DOMContentLoaded", () => {
     const text = button.textContent.replace(/\s+/g, " ").trim();
     if (text) button.setAttribute("aria-label", text);
   }
+  // a folded check cell's toggle says "Show code cell source": that text, not "Toggle hidden content", is its name
+  for (const summary of document.querySelectorAll("summary[aria-label]")) {
+    if (summary.textContent.trim()) summary.removeAttribute("aria-label");
+  }
   for (const icon of document.querySelectorAll(".theme-switch-button i[title]")) {
     icon.removeAttribute("title");
     icon.setAttribute("aria-hidden", "true");
