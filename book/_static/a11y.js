@@ -1,7 +1,7 @@
 // Accessibility fixes of the theme's markup (issue 29), each one a violation axe-core found in the book
 // (tests_browser/test_a11y_book.py): the sidebar's section toggles, buttons whose label hides their
 // visible text, and tables that scroll sideways but cannot be reached with the keyboard.
-document.addEventListener("DOMContentLoaded", () => {
+function mechbookA11y() {
   // axe "summary-name": a <summary> that only holds an icon gets the name of the section it opens
   for (const summary of document.querySelectorAll("summary")) {
     if (summary.textContent.trim() || summary.getAttribute("aria-label")) continue;
@@ -18,12 +18,20 @@ document.addEventListener("DOMContentLoaded", () => {
   for (const summary of document.querySelectorAll("summary[aria-label]")) {
     if (summary.textContent.trim()) summary.removeAttribute("aria-label");
   }
-  for (const icon of document.querySelectorAll(".theme-switch-button i[title]")) {
-    icon.removeAttribute("title");
-    icon.setAttribute("aria-hidden", "true");
+  for (const button of document.querySelectorAll(".theme-switch-button")) {
+    const quiet = () => button.querySelectorAll("i[title]").forEach(icon => {
+      icon.removeAttribute("title");
+      icon.setAttribute("aria-hidden", "true");
+    });
+    quiet();
+    // the theme's scripts set the icons' titles again when they start: keep them quiet
+    new MutationObserver(quiet).observe(button, {subtree: true, attributes: true, attributeFilter: ["title"]});
   }
   // axe "scrollable-region-focusable": a table wider than the column scrolls, so the keyboard must reach it
   for (const table of document.querySelectorAll(".cell_output table, .mechbook-widget-text table")) {
     if (table.scrollWidth > table.clientWidth + 1 && !table.hasAttribute("tabindex")) table.tabIndex = 0;
   }
-});
+}
+// again once everything has loaded: the theme's own scripts may set their markup after the DOM is parsed
+document.addEventListener("DOMContentLoaded", mechbookA11y);
+window.addEventListener("load", mechbookA11y);
