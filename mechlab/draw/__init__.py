@@ -17,11 +17,13 @@ family adds); no family registers a drawing.
 from __future__ import annotations
 
 import base64
+import html
 import io
 import re
 from pathlib import Path
 from tempfile import TemporaryDirectory
 
+import matplotlib as mpl
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.animation import FuncAnimation, HTMLWriter
@@ -31,6 +33,10 @@ from PIL import Image
 from ..errors import MechanismError
 from ..mechanisms.base import FRAME, Mechanism
 from ..motion import Motion
+from .access import CATEGORY_COLOURS, OKABE_ITO, alt_text, category_style, install_alt_text, set_alt
+
+# Okabe and Ito's colour-blind-safe colours for every "C0", "C1", ... and every default line colour
+mpl.rcParams["axes.prop_cycle"] = mpl.cycler(color=list(CATEGORY_COLOURS))
 
 LINK_STYLE = dict(color="#1f4e79", lw=3, solid_capstyle="round", zorder=3)
 JOINT_STYLE = dict(ls="none", marker="o", ms=6, mfc="white", mec="#1f4e79", mew=1.5, zorder=4)
@@ -45,7 +51,7 @@ READOUT_STYLE = dict(fontsize=11, ha="right", va="bottom", zorder=7,
                      bbox=dict(boxstyle="round,pad=0.25", fc="white", ec="0.7", alpha=0.85))
 LETTER_OFFSET = 11.0   # points from the joint to the centre of its letter
 NUMBER_OFFSET = 10.0   # points from a link's middle to its number
-TRACE_STYLE = dict(color="#d62728", lw=1, alpha=0.8, zorder=1)
+TRACE_STYLE = dict(color=OKABE_ITO["vermillion"], lw=1, alpha=0.8, zorder=1)
 EXTRA_STYLE = dict(color="#2a7f62", lw=2.5, zorder=2)
 # a moving output drawn as an extra (a slotted bar, a block), a fixed guide, and the output
 # re-drawn over itself while it dwells: green then means "standing still"
@@ -66,9 +72,15 @@ _ICON_STYLE = ("<style>.animation .mechlab-icon{font-style:normal;font-family:'D
                + "</style>\n")
 
 
+# the frame slider has no label of its own: a screen reader would announce a bare "slider"
+_UNLABELLED_SLIDER = re.compile(r'<input (?![^>]*aria-label)([^>]*class="anim-slider")')
+
+
 def local_animation_controls(html: str) -> str:
     """matplotlib's animation HTML without the remote Font Awesome stylesheet: the buttons'
-    icons become ``mechlab-icon mechlab-<name>`` classes drawn by an inline style."""
+    icons become ``mechlab-icon mechlab-<name>`` classes drawn by an inline style, and the
+    frame slider gets an accessible name."""
+    html = _UNLABELLED_SLIDER.sub(r'<input aria-label="Frame of the animation" \1', html)
     if not _REMOTE_FONT_AWESOME.search(html) and not _FA_CLASS.search(html):
         return html
 
@@ -127,7 +139,11 @@ class Animation(FuncAnimation):
                 writer.setup(self._fig, path, dpi=frame_dpi(self._fig))
                 self._blit_frames(writer)
                 writer.finish()
-                self._html_representation = local_animation_controls(path.read_text())
+                text = local_animation_controls(path.read_text())
+                # the figure's alternative text on the frames' <img>: the book's pages and the PDF carry it
+                alt = html.escape(f"{alt_text(self._fig)} Animation of {self._n_frames} frames; the buttons "
+                                  "below it play, pause and step it.".strip(), quote=True)
+                self._html_representation = text.replace('<img id="_anim_img', f'<img alt="{alt}" id="_anim_img', 1)
         return self._html_representation
 
     def _blit_frames(self, writer: PaletteHTMLWriter):
@@ -136,6 +152,7 @@ class Animation(FuncAnimation):
         canvas = FigureCanvasAgg(fig)   # off screen, whatever the backend (an ipympl canvas would send it)
         fig.set_dpi(writer.dpi)
         frames = list(self.new_saved_frame_seq())
+        self._n_frames = len(frames)
         moving = list(dict.fromkeys(self._func(frames[0], *self._args)))
         animated = [artist.get_animated() for artist in moving]
         try:
@@ -473,16 +490,43 @@ def draw(mechanism, phi: float = 0.0, ax=None, trace: str | None = None, *, labe
     letters and link numbers (``labels``), hatched fixed pivots (``ground``), and with
     ``dimensions`` the links' lengths; ``trace`` names a joint whose whole path is drawn.
     Returns the drawing."""
-    if ax is None:
+    own = ax is None
+    if own:
         _, ax = plt.subplots(figsize=(6.5, 5))
     drawing = drawing_class(mechanism)(ax, mechanism, trace=trace, labels=labels, ground=ground,
                                        dimensions=dimensions)
     drawing.autoscale()
-    drawing.set_motion(mechanism, mechanism.motion(np.atleast_1d(phi)))
+    motion = mechanism.motion(np.atleast_1d(phi))
+    drawing.set_motion(mechanism, motion)
+    if own:   # a figure of the caller's may hold more than this diagram: its caller describes it
+        set_alt(ax.figure, diagram_alt(mechanism, motion)
+                + (f" The path of joint {trace} over the cycle is traced." if trace else ""))
     if trace:   # the path over the whole cycle, not just the one position drawn
         drawing.trace_line.set_data(*mechanism.motion(mechanism.cycle(361)).points[trace].p.T)
     _diagram_axes(ax)
     return drawing
+
+
+def _kind_words(mechanism) -> str:
+    """A mechanism's class name as words: ``RollerCam`` → "roller cam"."""
+    return re.sub(r"(?<=[a-z])(?=[A-Z])", " ", type(mechanism).__name__).lower()
+
+
+def diagram_alt(mechanism, motion, law: bool = False) -> str:
+    """The alternative text of a kinematic diagram of ``mechanism`` drawn over ``motion``: what it is,
+    its joints, the crank angle (or the cycle) and the output's range (the law beside it with ``law``)."""
+    deg = np.degrees(np.atleast_1d(np.asarray(motion.phi, float)))
+    points = getattr(motion, "points", None)
+    joints = f" with joints {', '.join(points)}" if points else ""
+    kind = _kind_words(mechanism)
+    text = f"Kinematic diagram of {'an' if kind[:1] in 'aeiou' else 'a'} {kind}{joints}"
+    text += (f", drawn at crank angle φ = {deg[0]:.0f}°." if deg.size == 1
+             else f", moving over one cycle, crank angle φ from {deg[0]:.0f}° to {deg[-1]:.0f}°.")
+    if getattr(motion, "output", None) is not None and deg.size > 1:
+        y, label = law_of(motion)
+        text += (f"{' Beside it, the' if law else ' The'} {label} against φ: from {np.min(y):.3g} to {np.max(y):.3g},"
+                 f" a stroke of {np.ptp(y):.3g}.")
+    return text
 
 
 def law_of(motion: Motion) -> tuple[np.ndarray, str]:
@@ -499,7 +543,8 @@ def animate(mechanism, n: int = 48, interval: int = 80, trace: str | None = None
     a corner; with ``law`` the output law ψ(φ) (or s(φ)) beside it, a marker running along
     it in step. The figure is closed, so only the animation is shown: play it in a page with
     ``HTML(anim.to_jshtml())`` (frames 640-784 px wide whatever ``figsize``)."""
-    if ax is None:
+    own = ax is None
+    if own:
         if law:
             fig, (ax, ax_law) = plt.subplots(1, 2, figsize=(max(figsize[0], 9.0), figsize[1]),
                                              gridspec_kw={"width_ratios": [1.2, 1]})
@@ -518,7 +563,7 @@ def animate(mechanism, n: int = 48, interval: int = 80, trace: str | None = None
         deg = np.degrees(drawing.motion.phi)
         dense, _ = law_of(mechanism.motion(mechanism.cycle(361)))   # the curve smooth, the marker on it
         ax_law.plot(np.degrees(mechanism.cycle(361)), dense + (y[0] - dense[0]), color="#1f4e79", lw=1.8)
-        (marker,) = ax_law.plot([], [], "o", ms=8, color="#d62728", zorder=5)
+        (marker,) = ax_law.plot([], [], "o", ms=8, color=OKABE_ITO["vermillion"], zorder=5)
         ax_law.set_xlabel("crank angle φ (degrees)")
         ax_law.set_ylabel(label)
         ax_law.grid(True, alpha=0.3)
@@ -527,6 +572,8 @@ def animate(mechanism, n: int = 48, interval: int = 80, trace: str | None = None
         def step(i):
             marker.set_data([deg[i]], [y[i]])
             return [*drawing.set_frame(i), marker]
+    if own:
+        set_alt(fig, diagram_alt(mechanism, drawing.motion, law=law))
     anim = Animation(fig, step, frames=n, interval=interval, blit=False)
     anim.drawing = drawing
     anim.marker = marker
@@ -555,6 +602,9 @@ def animate_together(mechanisms, titles=(), n: int = 24, interval: int = 150, tr
     def frame(i):
         return [artist for drawing in drawings for artist in drawing.set_frame(i)]
 
+    names = [title or _kind_words(mech) for mech, title in zip(mechanisms, list(titles) + [None] * len(mechanisms))]
+    set_alt(fig, f"{len(mechanisms)} kinematic diagrams side by side, moving in step over one cycle: "
+            + "; ".join(names) + ".")
     anim = Animation(fig, frame, frames=n, interval=interval, blit=False)
     anim.drawings = drawings
     plt.close(fig)
@@ -565,7 +615,8 @@ def plot_law(motion: Motion, axes=None, label: str | None = None, **style):
     """Plot the output law and its two analogs against φ in degrees on three axes: ψ in
     degrees, ψ′ = dψ/dφ (dimensionless) and ψ″ = d²ψ/dφ² (per radian); for a translating
     output s, s′ and s″ in the mechanism's length unit (per radian, per radian²)."""
-    if axes is None:
+    own = axes is None
+    if own:
         _, axes = plt.subplots(3, 1, sharex=True, figsize=(7, 6))
     out = motion.output
     sym = out.name
@@ -582,6 +633,10 @@ def plot_law(motion: Motion, axes=None, label: str | None = None, **style):
         ax.set_ylabel(name)
         ax.grid(True, alpha=0.3)
     axes[-1].set_xlabel("crank angle φ (degrees)")
+    if own:
+        set_alt(axes[0].figure, f"Output law and its two analogs against crank angle φ, three panels: {names[0]} from "
+                f"{np.min(law[0]):.3g} to {np.max(law[0]):.3g}; {names[1]} from {np.min(law[1]):.3g} to "
+                f"{np.max(law[1]):.3g}; {names[2]} from {np.min(law[2]):.3g} to {np.max(law[2]):.3g}.")
     return lines
 
 
@@ -713,11 +768,15 @@ def plot_cam_undercut(cams: dict, folded, n: int = 1441):
     return fig
 
 
-OUTCOME_STYLE = {  # kind → (marker, colour, legend)
-    "design": ("o", "#2a7f62", "equal-ripple design"), "frame": ("s", "0.75", "outside the span of a"),
-    "resolution": ("v", "#8fb3d9", "ripple below resolution (< 10⁻⁹ l)"),
-    "rotation": ("^", "#d98f3f", "beyond the rotation limit"), "fold": ("D", "#a879c9", "shorter than the fold"),
-    "whole turn": ("P", "0.45", "2α = 360° off the whole-turn line"), "unresolved": ("x", "C3", "unresolved")}
+# kind → (marker, colour, legend): a marker shape per kind, so that no reader depends on the colour alone
+OUTCOME_STYLE = {
+    "design": ("o", OKABE_ITO["bluish green"], "equal-ripple design"), "frame": ("s", "0.75", "outside the span of a"),
+    "resolution": ("v", OKABE_ITO["sky blue"], "ripple below resolution (< 10⁻⁹ l)"),
+    "rotation": ("^", OKABE_ITO["orange"], "beyond the rotation limit"),
+    "fold": ("D", OKABE_ITO["reddish purple"], "shorter than the fold"),
+    "whole turn": ("P", OKABE_ITO["black"], "2α = 360° off the whole-turn line"),
+    "unresolved": ("x", OKABE_ITO["vermillion"], "unresolved")}
+SPAN_STYLE = dict(color=OKABE_ITO["vermillion"], ls="--", lw=1)
 
 
 def plot_design_outcomes(maps):
@@ -747,7 +806,7 @@ def plot_design_outcomes(maps):
                 marker, colour, _ = OUTCOME_STYLE[m.kind[i, j]]
                 ax.plot(a, dw, marker, color=colour, ms=5, mfc=colour if m.kind[i, j] == "design" else "none")
         for edge in m.span:
-            ax.axvline(edge, color="C3", ls="--", lw=1)
+            ax.axvline(edge, **SPAN_STYLE)
         ax.set_title(f"δ = {np.degrees(m.delta):.0f}°")
         ax.set_xlabel("frame a (units of l)")
         ax.set_ylabel("dwell 2α (degrees)")
@@ -755,16 +814,22 @@ def plot_design_outcomes(maps):
         ax.set_yticks(range(0, 361, 60))
     handles = [plt.Line2D([], [], marker=marker, ls="", color=colour, mfc=colour if kind == "design" else "none",
                           label=label) for kind, (marker, colour, label) in OUTCOME_STYLE.items()]
-    handles.append(plt.Line2D([], [], color="C3", ls="--", label="ends of the span of a"))
+    handles.append(plt.Line2D([], [], **SPAN_STYLE, label="ends of the span of a"))
     if spare.size:
         spare[0].legend(handles=handles, loc="center", fontsize=10, title="each marker: one request")
     else:
         axes[-1].legend(handles=handles, fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5))
     fig.tight_layout()
-    return fig
+    panels = []
+    for m in maps:
+        kinds, counts = np.unique(m.kind, return_counts=True)
+        tally = ", ".join(f"{c} {OUTCOME_STYLE[k][2]}" for k, c in sorted(zip(kinds, counts), key=lambda kc: -kc[1]))
+        panels.append(f"δ = {np.degrees(m.delta):.0f}°: {tally}")
+    return set_alt(fig, f"Outcome map of {m.kind.size} design requests per panel, frame a against dwell 2α, each "
+                   f"marked by what the design returned (a marker shape per kind). {'; '.join(panels)}.")
 
 
-ISO_DWELL_COLOURS = ("C0", "C2", "C4", "C5", "C6", "C8", "C9")
+ISO_DWELL_STYLES = tuple(category_style(i) for i in (0, 2, 3, 5, 6, 4, 7))   # vermillion, orange: the lines
 COURSE_TRANSMISSION = (np.radians(40), np.radians(140))   # the course's limits of μ (chapter 0)
 
 
@@ -779,10 +844,10 @@ def plot_existence_map(em, delta: float, course=COURSE_TRANSMISSION):
     fig, ax = plt.subplots(figsize=(9, 6.5))
     ax.fill(*em.region, color="#2a7f62", alpha=0.12, label="existence region")
     ax.plot(*em.rotation, "k", label="r = a, r + a = 2")
-    ax.plot(*em.whole, "C1", lw=2, label="2α = 360° (whole curve)")
-    ax.plot(*em.fifth, "C3", label="fifth-order contact")
-    for (key, curve), colour in zip(em.iso_dwell.items(), ISO_DWELL_COLOURS):
-        ax.plot(*curve, "o-", color=colour, ms=3, label=f"2α = {key}°")
+    ax.plot(*em.whole, color=OKABE_ITO["vermillion"], lw=2.5, label="2α = 360° (whole curve)")
+    ax.plot(*em.fifth, color=OKABE_ITO["orange"], lw=1.5, ls=(0, (6, 2)), label="fifth-order contact")
+    for (key, curve), style in zip(em.iso_dwell.items(), ISO_DWELL_STYLES):
+        ax.plot(*curve, **{**style, "ls": "-"}, ms=4, lw=1, label=f"2α = {key}°")
     ax.plot(*em.mu_min, "0.5", ls=":", label="μ = 30°, 150°")
     ax.plot(*em.mu_max, "0.5", ls=":")
     if course is not None:
@@ -793,4 +858,7 @@ def plot_existence_map(em, delta: float, course=COURSE_TRANSMISSION):
     ax.set(xlim=(0, 1), ylim=(0, 2), xlabel="r = l_OA / l", ylabel="a = l_OC / l",
            title=f"existence map, δ = {np.degrees(delta):.0f}° (after Kinitsky, 1994, Fig. 2a)")
     ax.legend(fontsize=9)
-    return fig
+    return set_alt(fig, f"Existence map for break angle δ = {np.degrees(delta):.0f}° in the plane of crank r against "
+                   f"frame a (units of l): the shaded existence region bounded by the rotation limits, the whole-turn "
+                   f"line and the fifth-order-contact line, with curves of equal dwell 2α = "
+                   f"{', '.join(f'{k}°' for k in em.iso_dwell)} inside it and the transmission-angle limits dotted.")

@@ -12,11 +12,14 @@ import matplotlib.pyplot as plt
 from matplotlib.figure import Figure
 
 from ..design import FAMILIES, Comparison
+from .access import category_style, set_alt
 
 # radar spokes: (criterion, label); each is scaled by the largest among the candidates (smaller is better)
 SPOKES = (("B", "peak velocity B"), ("C", "peak acceleration C"), ("pressure_angle", "pressure angle"),
           ("size", "size"), ("motor_power", "motor power"), ("parts", "parts and pairs"))
-COLOURS = {f: plt.get_cmap("tab10")(i % 10) for i, f in enumerate(FAMILIES)}
+# a family's colour (Okabe-Ito), dash on the laws and marker on the radar's spokes: told apart without colour too
+STYLES = {f: category_style(i) for i, f in enumerate(FAMILIES)}
+COLOURS = {f: style["color"] for f, style in STYLES.items()}
 
 
 def _spoke(c, key):
@@ -46,8 +49,10 @@ class ComparisonFigure:
         self.laws.set_xticks(np.arange(0, 361, 60))
         self.laws.grid(True, alpha=0.3)
         self.laws.set_title("output laws over one crank turn", fontsize=10)
-        self.spokes = {f: self.radar.plot([], [], color=COLOURS[f], lw=2, label=f)[0] for f in FAMILIES}
-        self.curves = {f: self.laws.plot([], [], color=COLOURS[f], lw=2, label=f)[0] for f in FAMILIES}
+        self.spokes = {f: self.radar.plot([], [], color=COLOURS[f], ls=STYLES[f]["ls"], marker=STYLES[f]["marker"],
+                                          ms=6, lw=2, label=f)[0] for f in FAMILIES}
+        self.curves = {f: self.laws.plot([], [], color=COLOURS[f], ls=STYLES[f]["ls"], marker=STYLES[f]["marker"],
+                                         markevery=60, ms=6, lw=2, label=f)[0] for f in FAMILIES}
         self.update(comparison)
 
     def update(self, comparison: Comparison) -> None:
@@ -80,6 +85,17 @@ class ComparisonFigure:
             legend.remove()
         if handles:
             self.laws.legend(handles=handles, loc="best", fontsize=8)
+        set_alt(self.fig, self.describe(shown))
+
+    @staticmethod
+    def describe(shown: dict) -> str:
+        """The alternative text for candidates ``shown`` (family → candidate): who is best on each criterion."""
+        if not shown:
+            return "Comparison of candidate mechanisms: no family meets the specification, nothing is drawn."
+        best = [f"{label}: {min(shown, key=lambda f, k=key: _spoke(shown[f], k))}" for key, label in SPOKES]
+        return (f"Comparison of {len(shown)} candidate mechanisms ({', '.join(shown)}). Left, a radar of six criteria, "
+                f"each divided by the largest, smaller is better; right, each candidate's output law over one crank "
+                f"turn. Smallest on each criterion: {'; '.join(best)}.")
 
 
 def comparison_figure(comparison: Comparison, fig: Figure | None = None) -> Figure:

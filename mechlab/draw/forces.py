@@ -14,8 +14,9 @@ import numpy as np
 
 from ..kinetostatics.machines import Kinetostatics
 from . import drawing_class, fill_axes
+from .access import CATEGORY_COLOURS
 
-ARROW_COLOURS = ("#d62728", "#9467bd", "#ff7f0e", "#2ca02c", "#8c564b", "#e377c2", "#17becf", "#bcbd22")
+ARROW_COLOURS = CATEGORY_COLOURS[:-1]   # colour-blind safe (mechlab.draw.access); yellow is too light
 
 
 class ForcePlanDrawing:

@@ -1,0 +1,171 @@
+"""Figures every student can read (issue 29): alternative text made where the figure is made and
+true to its numbers; categorical colours that stay apart for protanopes and deuteranopes, with a
+second channel (marker, dash) wherever colour separates categories."""
+
+import itertools
+import re
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+
+import mechlab.design as D
+from mechlab import ExternalGeneva, FourBar
+from mechlab.draw import OUTCOME_STYLE, alt_text, animate, draw, plot_design_outcomes, plot_law
+from mechlab.draw.access import (CATEGORY_COLOURS, CVD_MATRICES, delta_e, install_alt_text, set_alt, simulate_cvd)
+from mechlab.draw.design import STYLES, comparison_figure
+from mechlab.errors import MechanismError
+from mechlab.synthesis.lambda_guiding import design_outcomes
+
+DEG = np.pi / 180
+# CIE76 ΔE between two categories' colours as a protanope or deuteranope sees them; matplotlib's old
+# tab10 falls to 4.6 (orange and green, protan), Okabe-Ito keeps above 17
+MIN_DELTA_E = 15.0
+
+
+def test_a_diagram_says_what_it_shows_and_follows_the_numbers():
+    fb = FourBar(1, 3, 3, 4, 1)
+    first, second = draw(fb, 0.3, trace="B"), draw(fb, 1.2)
+    text = alt_text(first.ax.figure)
+    assert text.startswith("Kinematic diagram of a four bar with joints O, A, B")
+    assert f"φ = {np.degrees(0.3):.0f}°" in text and "path of joint B" in text
+    assert f"φ = {np.degrees(1.2):.0f}°" in alt_text(second.ax.figure)
+    plt.close("all")
+
+
+def test_an_animation_carries_its_alt_text_in_the_page():
+    geneva = ExternalGeneva(4, 1.0)
+    html = animate(geneva, n=8, law=True).to_jshtml()
+    alt = re.search(r'<img alt="([^"]+)" id="_anim_img', html).group(1)
+    stroke = np.ptp(np.degrees(np.unwrap(geneva.motion(geneva.cycle(361)).output.value)))
+    assert "external geneva" in alt and "Animation of 8 frames" in alt
+    assert f"a stroke of {stroke:.3g}" in alt   # a Geneva of 4 slots turns its wheel by 90°
+    assert round(stroke) == 90
+    # its frame slider has an accessible name (axe-core's "label" rule), given once
+    assert html.count('aria-label="Frame of the animation"') == 1 == html.count('class="anim-slider"')
+    from mechlab.draw import local_animation_controls
+    assert local_animation_controls(html).count('aria-label="Frame of the animation"') == 1
+
+
+def test_a_law_plot_states_its_ranges():
+    fb = FourBar(1, 3, 3, 4, 1)
+    mo = fb.motion(np.linspace(0, 2 * np.pi, 200))
+    lines = plot_law(mo)
+    psi = np.degrees(np.unwrap(mo.output.value))
+    assert f"from {psi.min():.3g} to {psi.max():.3g}" in alt_text(lines[0].figure)
+    plt.close("all")
+
+
+def test_the_outcome_map_counts_its_kinds():
+    m = design_outcomes(150 * DEG, fractions=(0.0, 0.5, 1.0), dwells=(60 * DEG, 180 * DEG, 2 * np.pi))
+    fig = plot_design_outcomes(m)
+    text = alt_text(fig)
+    # 3 × 3 requests: six frames off the span, two designs, one whole turn (test_design_outcomes)
+    assert "δ = 150°: 6 outside the span of a, 2 equal-ripple design, 1 2α = 360° off the whole-turn line" in text
+    plt.close(fig)
+
+
+def test_the_comparison_names_its_candidates_and_who_is_best():
+    comp = D.candidates(D.Specification("swing", 40 / 360, amplitude=np.radians(40),
+                                        max_pressure_angle=np.radians(60)))
+    fig = comparison_figure(comp)
+    text = alt_text(fig)
+    assert comp.candidates and f"Comparison of {len(comp.candidates)} candidate mechanisms" in text
+    for c in comp.candidates:
+        assert c.family in text
+    smallest = min(comp.candidates, key=lambda c: c.criteria.size).family
+    assert f"size: {smallest}" in text
+    plt.close(fig)
+
+
+def test_a_figure_that_names_nothing_has_no_alt_text_and_one_that_does_is_composed():
+    fig, ax = plt.subplots()
+    ax.plot([0, 1], [0, 1])
+    assert alt_text(fig) == ""   # what the book's check refuses (tests/test_a11y_book.py)
+    ax.set(title="lift", xlabel="φ (deg)", ylabel="s (mm)")
+    ax.plot([0, 1], [1, 0], label="cycloidal")
+    ax.legend()
+    assert alt_text(fig) == "Figure: lift, s (mm) against φ (deg), legend: cycloidal."
+    ax.set_xlabel(r"x (units of $l_{OB}$)")   # mathtext is read as plain words
+    assert "s (mm) against x (units of l_OB)" in alt_text(fig)
+    assert alt_text(set_alt(fig, "  Lift  of a cam. ")) == "Lift of a cam."
+    with pytest.raises(MechanismError, match="non-empty"):
+        set_alt(fig, " ")
+    with pytest.raises(MechanismError, match="needs a matplotlib Figure"):
+        set_alt(ax, "an axes")
+    plt.close(fig)
+
+
+def test_a_kernel_publishes_the_alt_text_with_the_image():
+    from IPython.core.interactiveshell import InteractiveShell
+    from IPython.core.pylabtools import select_figure_formats
+
+    ip = InteractiveShell.instance()
+    select_figure_formats(ip, {"png"})   # what the inline backend registers
+    install_alt_text(ip)
+    install_alt_text(ip)   # twice: still one wrapper
+    fig, _ = plt.subplots(figsize=(2, 2))
+    data, metadata = ip.display_formatter.format(set_alt(fig, "A square."))
+    assert "image/png" in data and metadata["image/png"]["alt"] == "A square."
+    data, metadata = ip.display_formatter.format(plt.subplots(figsize=(2, 2))[0])   # nothing to say: no alt
+    assert "image/png" in data and "alt" not in metadata.get("image/png", {})
+    plt.close("all")
+
+
+def test_the_simulation_matches_machado_et_al():
+    # the matrices preserve white (each row sums to 1) and a deuteranope sees pure red and green alike
+    for matrix in CVD_MATRICES.values():
+        assert np.allclose(matrix.sum(axis=1), 1.0, atol=2e-6)
+    assert delta_e(simulate_cvd("#ff0000", "deuteranopia"), simulate_cvd("#00ff00", "deuteranopia")) < \
+        0.35 * delta_e("#ff0000", "#00ff00")
+    assert np.allclose(simulate_cvd("#777777", "protanopia"), matplotlib.colors.to_rgb("#777777"), atol=1e-3)
+
+
+def _contrast(a, b):
+    """WCAG 2.1's contrast ratio of two colours."""
+    lum = [float(np.array([0.2126, 0.7152, 0.0722]) @ np.where(
+        (c := np.asarray(matplotlib.colors.to_rgb(x))) <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)) for x in (a, b)]
+    return (max(lum) + 0.05) / (min(lum) + 0.05)
+
+
+def _worst_pair(colours):
+    return min((delta_e(simulate_cvd(a, kind), simulate_cvd(b, kind)), a, b, kind)
+               for a, b in itertools.combinations(colours, 2) for kind in ("protanopia", "deuteranopia"))
+
+
+def test_the_category_colours_stay_apart_for_protanopes_and_deuteranopes():
+    assert len(set(CATEGORY_COLOURS)) == len(CATEGORY_COLOURS) >= 9
+    assert _worst_pair(CATEGORY_COLOURS)[0] >= MIN_DELTA_E, _worst_pair(CATEGORY_COLOURS)
+    tab10 = [plt.get_cmap("tab10")(i) for i in range(10)]   # the old palette: the check would refuse it
+    assert _worst_pair(tab10)[0] < MIN_DELTA_E
+    # every default line colour ("C0", "C1", …) is one of them
+    assert [c.upper() for c in matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]] == \
+        [c.upper() for c in CATEGORY_COLOURS]
+
+
+def test_chapter_6_outcome_kinds_differ_by_marker_and_colour():
+    markers = [marker for marker, _, _ in OUTCOME_STYLE.values()]
+    assert len(set(markers)) == len(markers)
+    colours = [colour for _, colour, _ in OUTCOME_STYLE.values()]
+    assert _worst_pair(colours)[0] >= MIN_DELTA_E, _worst_pair(colours)
+
+
+def test_chapter_12_families_differ_by_dash_and_marker_and_colour():
+    assert len({s["color"] for s in STYLES.values()}) == len({str(s["ls"]) for s in STYLES.values()}) \
+        == len({s["marker"] for s in STYLES.values()}) == len(STYLES) == len(D.FAMILIES)
+    assert _worst_pair([s["color"] for s in STYLES.values()])[0] >= MIN_DELTA_E
+    # none is yellow (1.2:1 on white); Okabe-Ito's orange and sky blue stay below WCAG 1.4.11's 3:1 for
+    # graphics (about 2:1), which is why each family's marker and dash carry it too
+    assert all(_contrast(s["color"], "white") >= 1.9 for s in STYLES.values()), \
+        {f: round(_contrast(s["color"], "white"), 2) for f, s in STYLES.items()}
+    comp = D.candidates(D.Specification("swing", 40 / 360, amplitude=np.radians(40),
+                                        max_pressure_angle=np.radians(60)))
+    fig = comparison_figure(comp)
+    laws = [line for line in fig.axes[1].get_lines() if line.get_visible()]
+    assert len(laws) == len(comp.candidates) >= 2
+    assert len({(line.get_linestyle(), line.get_marker()) for line in laws}) == len(laws)
+    plt.close(fig)
