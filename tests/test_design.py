@@ -319,3 +319,17 @@ def test_the_cam_candidate_carries_its_law_and_exports_its_profile(motion, ampli
     assert cam.undercut() is None
     cand.design.export(tmp_path / "cam.dxf")
     assert (tmp_path / "cam.dxf").stat().st_size > 1000 and (tmp_path / "cam.csv").exists()
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.floats(-3, 3), min_size=1, max_size=40), st.sampled_from([0.0, 0.5, 7.0]),
+       st.sampled_from([0.0, 0.1, 0.5, 2.0, 100.0]))
+def test_longest_still_is_the_first_longest_run_in_the_band(values, shift, band):
+    # against brute force over every start and length of the periodic samples (one turn at most)
+    from mechlab.design.criteria import longest_still
+
+    x = np.array(values)
+    n, ext = len(x), np.concatenate([x, x + shift])
+    best = max((length, -s) for s in range(2 * n) for length in range(1, min(n, 2 * n - s) + 1)
+               if np.ptp(ext[s:s + length]) <= band)
+    assert longest_still(x, shift, band) == (-best[1] % n, best[0])

@@ -16,11 +16,11 @@ approximates a dwell (Chebyshev's six-bars) has a dwell fraction of 0 and a near
 
 from __future__ import annotations
 
-from collections import deque
 from dataclasses import dataclass
 from typing import Annotated, Protocol, runtime_checkable
 
 import numpy as np
+from scipy.ndimage import maximum_filter1d, minimum_filter1d
 
 from ..analysis.motion_laws import rise_invariants
 from ..errors import DimensionError
@@ -152,30 +152,24 @@ def longest_still(x: np.ndarray, shift: float, band: float) -> tuple[int, int]:
     """Longest run (start, length in samples) of the periodic samples ``x`` whose range stays ≤ band.
 
     ``x`` holds one turn without its end point; the next turn is ``x + shift`` (the index
-    angle of a unidirectional output, 0 for a rocking one). Two pointers with monotone
-    queues of the running maximum and minimum: O(n).
+    angle of a unidirectional output, 0 for a rocking one). A window that fits the band has every
+    shorter window inside it fit too, so the longest length is bisected, each trial one vectorised
+    sliding maximum and minimum (scipy.ndimage): O(n log n). Of the longest runs, the first.
     """
     n = len(x)
     ext = np.concatenate([x, x + shift])
-    hi, lo = deque(), deque()
-    best, start, i = (0, 0), 0, 0
-    for j in range(2 * n):
-        while hi and ext[hi[-1]] <= ext[j]:
-            hi.pop()
-        hi.append(j)
-        while lo and ext[lo[-1]] >= ext[j]:
-            lo.pop()
-        lo.append(j)
-        while ext[hi[0]] - ext[lo[0]] > band or j - i + 1 > n:
-            i += 1
-            if hi[0] < i:
-                hi.popleft()
-            if lo[0] < i:
-                lo.popleft()
-        if j - i + 1 > best[1]:
-            best = (i, j - i + 1)
-            start = i
-    return start % n, best[1]
+
+    def starts(length: int) -> np.ndarray:
+        # window k covers ext[k : k + length] with this origin
+        hi = maximum_filter1d(ext, length, origin=-(length // 2))[: 2 * n - length + 1]
+        lo = minimum_filter1d(ext, length, origin=-(length // 2))[: 2 * n - length + 1]
+        return np.flatnonzero(hi - lo <= band)
+
+    fits, too_long = 1, n + 1
+    while too_long - fits > 1:
+        mid = (fits + too_long) // 2
+        fits, too_long = (mid, too_long) if starts(mid).size else (fits, mid)
+    return int(starts(fits)[0]) % n, fits
 
 
 def longest_true(still: np.ndarray) -> tuple[int, int]:
