@@ -200,9 +200,6 @@ def _notebooks():
 # issue 25's kinds; a "code" exercise (write a function) is allowed but does not count among the four
 COUNTED = {"predict", "compute", "explain", "debug", "design", "graphical"}
 KINDS = COUNTED | {"code"}
-# the assignments not yet rewritten to issue 25's standard (five exercises of four kinds, explain and debug
-# among them); each entry fails the test below strictly once it is rewritten, so the list only shrinks
-NOT_YET = {"base_mechanism", "equivalence", "instant_centres", "symmetry"}
 
 
 def _kinds(path) -> list[str]:
@@ -217,13 +214,10 @@ def test_every_chapter_has_an_assignment():
     pointed = {m for nb in (SOURCE.parents[1] / "notebooks").glob("*.ipynb")
                for m in re.findall(r"assignments/release/(\w+)/", nb.read_text())}
     assert pointed <= ids and len(ids) >= 11, pointed - ids      # every chapter's pointer has its assignment
-    assert NOT_YET <= ids
 
 
 @pytest.mark.parametrize("path", _notebooks(), ids=lambda p: p.stem)
-def test_an_assignment_has_five_exercises_of_four_kinds(path, request):
-    if path.stem in NOT_YET:
-        request.applymarker(pytest.mark.xfail(strict=True, reason="not yet rewritten for issue 25"))
+def test_an_assignment_has_five_exercises_of_four_kinds(path):
     kinds = _kinds(path)
     assert set(kinds) <= KINDS, (path.stem, kinds)
     assert len(kinds) >= 5 and len(set(kinds) & COUNTED) >= 4, (path.stem, kinds)
@@ -264,7 +258,7 @@ def test_the_audit_finds_a_one_call_answer():
     assert audit.answered_by(ml.ExternalGeneva(8, 150.0).crank_radius * 1.001, found) is None
 
 
-@pytest.mark.parametrize("aid", sorted({p.stem for p in _notebooks()} - NOT_YET))
+@pytest.mark.parametrize("aid", sorted(p.stem for p in _notebooks()))
 def test_no_graded_answer_is_one_public_call_away(aid):
     audit = _audit()
     rows = audit.audit(aid, audit.public_callables())

@@ -26,6 +26,7 @@ write.
 
 from __future__ import annotations
 
+import argparse
 import importlib
 import inspect
 import itertools
@@ -212,8 +213,14 @@ def audit(aid: str, calls: dict[str, object]) -> list[tuple[str, str, str | None
 
 
 def main(argv=None) -> int:
-    ids = (argv if argv else sys.argv[1:]) or sorted(p.name for p in (ROOT / "assignments" / "source").iterdir()
-                                                     if (p / f"{p.name}.ipynb").is_file())
+    known = sorted(p.name for p in (ROOT / "assignments" / "source").iterdir() if (p / f"{p.name}.ipynb").is_file())
+    parser = argparse.ArgumentParser(description="List, for each graded answer, whether one public mechlab call "
+                                                 "returns it from the prompt's inputs (exit 1 if any does).")
+    parser.add_argument("ids", nargs="*", metavar="assignment", help=f"assignment ids (default: all of {known})")
+    ids = parser.parse_args(argv).ids or known
+    unknown = sorted(set(ids) - set(known))
+    if unknown:
+        parser.error(f"no assignment {', '.join(unknown)}; known: {', '.join(known)}")
     calls = public_callables()
     found = 0
     for aid in ids:
