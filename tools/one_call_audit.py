@@ -4,8 +4,8 @@
 
 Method. For each auto-graded number of each assignment (the shared variant, rendered as the student sees
 it) the expected value is taken from the hidden test's own ``check`` call (recorded, as ``make student``
-does). The prompt's inputs are the numbers of the exercise's text (and the student's numbers ``V``), each
-also in radians when it could be degrees. Then every public callable of mechlab and of its sub-modules
+does). The prompt's inputs are the numbers of the exercise's text (and those of the student's numbers ``V`` it
+names without stating them), each angle given in degrees also in radians. Then every public callable of mechlab and of its sub-modules
 (course, widgets and drawing left out) is tried on them:
 
 * functions and classes with k required positional parameters: called on every ordered choice of k
@@ -48,6 +48,7 @@ import variants  # noqa: E402
 
 SKIP = ("mechlab.course", "mechlab.widgets", "mechlab.draw")
 NUMBER = re.compile(r"(?<![\w.])-?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?![\w])")
+DEGREES = re.compile(r"(?<![\w.])(-?\d+(?:\.\d+)?)\s*(?:°|deg)")
 UNITS = {"as is": 1.0, "in degrees": 180 / math.pi, "in radians": math.pi / 180, "×1000": 1e3, "÷1000": 1e-3}
 
 
@@ -182,11 +183,14 @@ def _exercise_texts(nb) -> dict[int, str]:
 
 def _inputs(text: str, values: dict) -> list[float]:
     """The prompt's numbers in order (the title, points and "3 significant figures" left out), then the
-    student's numbers, then, if the prompt speaks of degrees, each plausible angle in radians."""
+    student's numbers the prompt names (``V["a"]``) without stating them, then each angle the prompt gives in
+    degrees ("60°") in radians. The student's other numbers belong to other exercises: trying them too
+    multiplies the search (a cube in the number of inputs) and finds only chance hits."""
     body = re.sub(r"\d+ significant figures|\(\d+ points?[^)]*\)", "", text.split("\n", 1)[-1])
-    nums = list(dict.fromkeys([float(s) for s in NUMBER.findall(body)] + [float(v) for v in values.values()]))
-    if "°" in body or "degree" in body:
-        nums += [math.radians(x) for x in nums if 1 < abs(x) <= 360]
+    named = [float(v) for k, v in values.items() if re.search(rf"V\[[\"']{re.escape(k)}[\"']\]", body)]
+    nums = list(dict.fromkeys([float(s) for s in NUMBER.findall(body)] + named))
+    degrees = {float(s) for s in DEGREES.findall(body)}
+    nums += [math.radians(x) for x in nums if x in degrees and x != 0]
     return nums
 
 
