@@ -411,7 +411,7 @@ def test_force_drawing_and_explorer_move_in_place():
     anim = animate(k, n=3)
     assert "<script" in anim.to_jshtml() and anim.drawing.result.residual < 1e-12
     e = press_explorer()
-    assert e.message == "" and "groups vs power balance" in e.status.value
+    assert e.message == "" and "by the power balance: the same M_b ✓" in e.status.value
     e.sliders["rod"].value = 0.08
     assert "crank cannot turn fully" in e.message
     e.sliders["rod"].value = 0.40
@@ -567,6 +567,8 @@ def test_verify_and_explorer_messages():
     assert e.message == ""
     r = rocker_explorer()
     assert r.message == "" and "cycle efficiency" in r.status.value
+    # the status reads in units and a verdict, never a residual
+    assert "the same M_b ✓" in r.status.value and "N·m" in r.status.value and "e-" not in r.status.value
     r.sliders["ground"].value = 0.55
     assert "Grashof" in r.message
 
