@@ -560,13 +560,14 @@ def test_circle_guiding_over_the_whole_region(delta, f, dwell):
 # Requests the previous solver left unsettled (plain SynthesisError): near point A the forward-difference
 # Jacobian drowned in rounding and ρ, a small radius, kept few digits through ρ² = P − 2X/k + 1/k²; near a → 0
 # the band's centre sits next to C (|k| up to 1e8); at 2α → 360° the crank meets the rotation limit. Each is
-# now a verified design or a verified refusal of the kind named.
+# now a verified design or a verified refusal of the kind named. Within rounding of the span's end (f = 1 − 2⁻⁵², found
+# by hypothesis) no start exists: the crank of the frame 1e-12 inside, scaled down, is held below resolution.
 @pytest.mark.parametrize("delta, f, dwell, kind", [
     (135, 0.999, 90, "design"), (135, 0.999, 240, "design"), (225, 0.999, 180, "design"),
     (270, 0.997, 120, "design"), (180, 0.001, 359.64, "design"), (90, 0.001, 359, "design"),
     (270, 0.999, 90, "design"), (255, 5.960464477539063e-08, 1.0, "resolution"), (150, 0.9999, 180, "design"),
     (180, 1e-4, 359.9, "design"), (255, 0.9999, 270, "design"),
-    (240, 0.01, 359.64, "rotation")])
+    (240, 0.01, 359.64, "rotation"), (150, 0.9999999999999998, 1.0, "resolution")])
 def test_circle_guiding_where_the_solve_was_lost(delta, f, dwell, kind):
     _warm([delta])
     lo, hi = _frames(delta)

@@ -596,6 +596,25 @@ def _below_resolution(where, delta, a, alpha, cranks) -> NoDesignError | None:
     return None
 
 
+def _crank_inside(delta, a, dwell, lo, hi, depth):
+    """Within rounding of the span's end (|a − end| ≤ 1e-13) no start exists, as the crank r vanishes with the
+    distance to the end: the (r, k) of the frame 1e-12 inside, r scaled down by the distances, or None."""
+    end = hi if hi - a <= a - lo else lo
+    if abs(a - end) > 1e-13 * max(1.0, abs(end)):
+        return None
+    inner = end - np.sign(end - a) * 1e-12 * max(1.0, abs(end))
+    try:
+        g = _circle(delta, inner, dwell, None, False, depth + 1)
+        r, k = g.r, g.k
+    except NoDesignError as err:
+        if err.kind != "resolution":
+            return None
+        r, k = err.evidence["r"], err.evidence["k"]
+    except SynthesisError:
+        return None
+    return r * abs(a - end) / abs(inner - end), k
+
+
 def _circle(delta, a, dwell, guess, minimax, depth=0):
     """circle_guiding after its input checks; ``depth`` counts the nested solves of :func:`_from_inside`."""
     alpha = dwell / 2
@@ -661,6 +680,8 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
     # of a continuation that reached the dwell was tried above)
     last = None if reach is None or reach.dwell == dwell else reach.x
     cranks = [x[:2] for x in (start, last) if x is not None]
+    if not cranks and depth < 3 and (inside := _crank_inside(delta, a, dwell, lo, hi, depth)) is not None:
+        cranks = [inside]
     if (err := _below_resolution(where, delta, a, alpha, cranks)) is not None:
         raise err
     got = "no start" if reach is None else f"the continuation stops at 2α = {np.degrees(reach.dwell):.6g}°"
