@@ -225,3 +225,24 @@ def test_whose_flags_edited_and_copied_numbers():
     cell = variants.variant_cell(edited)
     cell.source = re.sub(r"'rpm': \d+", "'rpm': 41", cell.source)
     assert variants.whose(edited, "geneva_spherical", "ann", masters) == "variant numbers edited by hand"
+
+
+def test_the_class_report_names_the_choice_made(tmp_path, monkeypatch):
+    """A wrong multiple-choice answer reads as the option chosen (which distractor), never as "not a number"."""
+    import report
+    log = tmp_path / "log.jsonl"
+    monkeypatch.setenv("MECHLAB_GRADE_LOG", str(log))
+    options = {"a": "faster", "b": "slower", "c": "the same"}
+    subs = []
+    for who, answer in (("ann", "a"), ("bob", "B "), ("cy", "b"), ("dee", "z"), ("eve", 2.5)):
+        log.write_text("")
+        check_choice(answer, "a", options, name="prediction")
+        if answer == 2.5:
+            check(answer, 2.5, name="speed")
+        verdicts = [json.loads(line) for line in log.read_text().splitlines()]
+        subs.append(report.Submission(who, "geneva", verdicts))
+    table = {r["outcome"]: r["students"] for r in report.rows(subs, {"geneva": ["prediction"]})}
+    assert table == {"right": 1, "chose (b)": 2, "chose 'z', not one of the options": 1,
+                     "chose '2.5', not one of the options": 1}
+    speed = report.rows(subs, {"geneva": ["speed"]})
+    assert {r["outcome"] for r in speed} >= {"right"}                   # numbers keep their own labels

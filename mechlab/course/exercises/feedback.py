@@ -213,7 +213,7 @@ def recording():
 def _log(call: dict, verdict: Verdict, answer, slip: str = "") -> None:
     """The grader's verdict, for the class report (only while ``make grade`` names a log file)."""
     number = _number(answer) if call["kind"] == "number" else None
-    selfcheck.record({"name": call["name"], "kind": verdict.kind, "ok": verdict.ok, "slip": slip,
+    selfcheck.record({"name": call["name"], "check": call["kind"], "kind": verdict.kind, "ok": verdict.ok, "slip": slip,
                       "answer": number if number is not None else (None if answer in (None, Ellipsis)
                                                                       else str(answer)[:40])})
 
