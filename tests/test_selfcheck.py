@@ -246,3 +246,15 @@ def test_the_class_report_names_the_choice_made(tmp_path, monkeypatch):
                      "chose '2.5', not one of the options": 1}
     speed = report.rows(subs, {"geneva": ["speed"]})
     assert {r["outcome"] for r in speed} >= {"right"}                   # numbers keep their own labels
+
+
+@pytest.mark.parametrize("student", ["", "ada", "bo", "cy"])
+def test_geneva_names_degrees_fed_to_sin(student):
+    """Exercise 3 of geneva: λ = np.sin(180 / z) (degrees into np.sin) is named as that slip, not "not yet"."""
+    nb = variants.render(_source("geneva"), "geneva", student)
+    V, _ = variants.numbers(nb)
+    token = next(t for t, answer in _tokens(nb) if answer == "omega_max")
+    lam = np.sin(180 / V["z"])
+    verdict, printed = _said(token, lam / (1 - lam) * V["rpm"] * np.pi / 30)
+    assert verdict.kind == "alternative" and "degrees where np.sin takes radians" in printed
+    assert _said(token, lam)[0].kind == "wrong"                         # λ alone is not that slip
