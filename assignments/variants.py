@@ -9,8 +9,9 @@ holds the shared numbers as ``V = {...}``; markdown cells say ``{{R}}`` where a 
 :func:`render` writes one student's master: that cell with the student's numbers and id, the
 placeholders filled, every check cell's visible line replaced by ``self_check(CHECKS[key], answer);``
 (for a code exercise ``self_check(CHECKS[key], the_function);``, its token holding the hidden cases'
-inputs and the digests of the reference's outputs) and a cell ``CHECKS = {key: token}`` (source hidden in JupyterLab) after the numbers, each token sealed (:mod:`mechlab.course.exercises.selfcheck`) from the very call its hidden test makes
-(run here with :func:`~mechlab.course.exercises.recording`). ``make student`` releases each student's
+inputs and the digests of the reference's outputs) and a cell ``CHECKS = {key: token}`` (source hidden in
+JupyterLab) after the numbers, each token sealed (:mod:`mechlab.course.exercises.selfcheck`) from the very
+call its hidden test makes (run here with :func:`~mechlab.course.exercises.recording`). ``make student`` releases each student's
 master; ``make grade`` releases the master of the student id nbgrader files the submission under, so
 nbgrader's own OverwriteCells puts that student's numbers back in the locked cells and the hidden
 tests grade against them, whatever the submitted notebook says (a hand-edited or another student's

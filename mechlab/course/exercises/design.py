@@ -353,9 +353,10 @@ def function_check(fn: Callable, reference: Callable, cases: Iterable[tuple], *,
         feedback._RECORDING.append(dict(kind="function", name=name, cases=cases, outputs=outputs, rtol=rtol,
                                         atol=atol, hint=hint))
         return DesignReport(f"function {name}", problem="")
-    verdict = feedback.function_verdict(fn, name, cases, outputs, rtol=rtol, atol=atol, hint=hint)
+    verdict, agreed = feedback.function_outcome(fn, name, cases, outputs, rtol=rtol, atol=atol, hint=hint)
     title = f"function {name}"
     if verdict.ok:
         return DesignReport(title, (Spec(f"cases that agree with the reference (rtol {rtol:g})", len(cases), "≥",
                                          len(cases)),))
-    return DesignReport(title, problem=verdict.message.removeprefix("✗ "))
+    agree = (Spec("cases that agree with the reference", agreed, "≥", len(cases)),) if verdict.kind == "wrong" else ()
+    return DesignReport(title, agree, problem=verdict.message.removeprefix("✗ "))

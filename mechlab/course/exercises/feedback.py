@@ -226,7 +226,8 @@ def self_check(token: str, answer) -> Verdict:
     right value and each named slip only as keyed digests of the bins the grader accepts, so the same
     verdict — right, close, the unit or sign slip, the named alternative, or not yet with the hint — is
     shown without the expected value being anywhere in the notebook. A code exercise's token holds the
-    hidden cases' inputs and the digests of the bins of the reference's outputs (:func:`function_verdict`). Prints the verdict and returns it;
+    hidden cases' inputs and the digests of the bins of the reference's outputs (:func:`function_verdict`).
+    Prints the verdict and returns it;
     inside nbgrader's autograde it returns quietly (the hidden test prints the grade's own verdict).
 
     Examples
@@ -278,36 +279,43 @@ def function_verdict(fn, name: str, cases: list, expected: list, *, rtol: float,
     keyed hash for a token. The first case whose call raises, whose shape differs or which has an element
     in no bin near the reference's is named, with its inputs and never the reference's value.
     """
+    return function_outcome(fn, name, cases, expected, rtol=rtol, atol=atol, hint=hint, hashed=hashed)[0]
+
+
+def function_outcome(fn, name: str, cases: list, expected: list, *, rtol: float, atol: float, hint: str = "",
+                     hashed=None) -> tuple[Verdict, int]:
+    """:func:`function_verdict` and the number of cases that agree before the first that does not."""
     n = len(cases)
     if fn is None or fn is Ellipsis:
-        return Verdict(False, "missing", f"✗ {name}: no answer yet — define the function {name}.")
+        return Verdict(False, "missing", f"✗ {name}: no answer yet — define the function {name}."), 0
     if not callable(fn):
-        return Verdict(False, "form", f"✗ {name}: expected a function, got {type(fn).__name__}.")
+        return Verdict(False, "form", f"✗ {name}: expected a function, got {type(fn).__name__}."), 0
     for k, (case, (shape, stored)) in enumerate(zip(cases, expected)):
         where = f"case {k + 1} of {n}: {name}{_args(case)}"
         try:
             out = fn(*case)
         except NotImplementedError:
             return Verdict(False, "missing", f"✗ {name}: no answer yet — replace `raise NotImplementedError` "
-                                             f"with your code.")
+                                             f"with your code."), k
         except Exception as err:  # the student's code: any failure is reported, not raised
-            return Verdict(False, "raised", f"✗ {where} raised {type(err).__name__}: {err}.")
+            return Verdict(False, "raised", f"✗ {where} raised {type(err).__name__}: {err}."), k
         if out is None or out is Ellipsis:
-            return Verdict(False, "missing", f"✗ {where} returned {out!r}: no answer yet — write its body.")
+            return Verdict(False, "missing", f"✗ {where} returned {out!r}: no answer yet — write its body."), k
         try:
             got = np.asarray(out, dtype=float)
         except (TypeError, ValueError):
-            return Verdict(False, "form", f"✗ {where} returned {type(out).__name__}, not numbers.")
+            return Verdict(False, "form", f"✗ {where} returned {type(out).__name__}, not numbers."), k
         if got.shape != tuple(shape):
-            return Verdict(False, "shape", f"✗ {where} returned shape {got.shape}, expected {tuple(shape)}.")
+            return Verdict(False, "shape", f"✗ {where} returned shape {got.shape}, expected {tuple(shape)}."), k
         i = selfcheck.first_disagreement(got, k, stored, rtol, atol, hashed)
         if i is not None:
             element = f"element {i + 1} of {got.size} of its output differs" if got.size > 1 else "it differs"
             before = f"; the {k} case{'s' if k != 1 else ''} before it agree" if k else ""
             more = f" Hint: {hint}" if hint else ""
             return Verdict(False, "wrong", f"✗ {where} is not what the reference gives ({element} by more than "
-                                           f"rtol {rtol:g}){before}.{more}")
-    return Verdict(True, "correct", f"✓ {name} passes all {n} cases (it agrees with the reference to rtol {rtol:g}).")
+                                           f"rtol {rtol:g}){before}.{more}"), k
+    return Verdict(True, "correct", f"✓ {name} passes all {n} cases (it agrees with the reference to rtol "
+                                    f"{rtol:g})."), n
 
 
 def _args(case: tuple) -> str:
