@@ -337,7 +337,8 @@ def function_check(fn: Callable, reference: Callable, cases: Iterable[tuple], *,
     logarithmic grid of step ``rtol`` (|x| ≤ ``atol`` is one bin): the rule of
     :func:`.selfcheck.first_disagreement`, which the student edition's :func:`.self_check` applies to keyed
     digests of the same bins, so the notebook's verdict is the grader's. While :func:`.recording`, the
-    call records the cases and the reference's bins (for ``make student`` to seal) and passes.
+    call records the cases and the reference's bins (for ``make student`` to seal) and passes. ``hint`` is
+    added to the message on a case that disagrees.
 
     Examples
     --------
