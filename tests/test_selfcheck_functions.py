@@ -14,6 +14,7 @@ import io
 import json
 import re
 import sys
+import tempfile
 from pathlib import Path
 
 import nbformat
@@ -65,10 +66,11 @@ def _plants(nb, name: str, env: dict) -> dict:
     """right: the worked solution; given: the code the student starts from; raises: a TypeError."""
     cell = next(c for c in nb.cells if re.search(rf"def {name}\(", c.source) and "BEGIN SOLUTION" in c.source)
     env = dict(env)
-    for c in nb.cells[:nb.cells.index(cell)]:           # the worked solutions before it (helpers it may use)
-        if "### BEGIN SOLUTION" in c.source:
-            with contextlib.redirect_stdout(io.StringIO()), contextlib.suppress(Exception):
-                exec(c.source.split("### BEGIN SOLUTION\n")[1].split("### END SOLUTION")[0], env)
+    with tempfile.TemporaryDirectory() as tmp, contextlib.chdir(tmp):   # a design may write its DXF
+        for c in nb.cells[:nb.cells.index(cell)]:       # the worked solutions before it (helpers it may use)
+            if "### BEGIN SOLUTION" in c.source:
+                with contextlib.redirect_stdout(io.StringIO()), contextlib.suppress(Exception):
+                    exec(c.source.split("### BEGIN SOLUTION\n")[1].split("### END SOLUTION")[0], env)
     given, solution = cell.source.split("### BEGIN SOLUTION\n")
     out = {}
     for label, code in (("given", given), ("right", given + solution.split("### END SOLUTION")[0])):
