@@ -73,6 +73,9 @@ def _label(v: dict) -> str:
     kind = v.get("kind", "")
     if kind == "design":
         return v.get("outcome", "design")
+    if v.get("check") == "choice" and kind in ("choice", "form"):     # which distractor, not "not a number"
+        key = str(v.get("answer", "")).strip().lower()
+        return f"chose ({key})" if kind == "choice" else f"chose {v.get('answer')!r}, not one of the options"
     return v.get("slip") or OUTCOMES.get(kind, kind)
 
 

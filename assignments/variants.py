@@ -8,8 +8,10 @@ a template. Its cell tagged ``metadata.mechlab.variant`` (``{"R": [40, 80, 5], â
 holds the shared numbers as ``V = {...}``; markdown cells say ``{{R}}`` where a number goes.
 :func:`render` writes one student's master: that cell with the student's numbers and id, the
 placeholders filled, every check cell's visible line replaced by ``self_check(CHECKS[key], answer);``
-and a cell ``CHECKS = {key: token}`` (source hidden in JupyterLab) after the numbers, each token sealed (:mod:`mechlab.course.exercises.selfcheck`) from the very call its hidden test makes
-(run here with :func:`~mechlab.course.exercises.recording`). ``make student`` releases each student's
+(for a code exercise ``self_check(CHECKS[key], the_function);``, its token holding the hidden cases'
+inputs and the digests of the reference's outputs) and a cell ``CHECKS = {key: token}`` (source hidden in
+JupyterLab) after the numbers, each token sealed (:mod:`mechlab.course.exercises.selfcheck`) from the very
+call its hidden test makes (run here with :func:`~mechlab.course.exercises.recording`). ``make student`` releases each student's
 master; ``make grade`` releases the master of the student id nbgrader files the submission under, so
 nbgrader's own OverwriteCells puts that student's numbers back in the locked cells and the hidden
 tests grade against them, whatever the submitted notebook says (a hand-edited or another student's
@@ -32,12 +34,14 @@ import re
 
 import nbformat
 
-from mechlab.course.exercises import feedback
+from mechlab.course.exercises import feedback, function_check
 from mechlab.course.exercises.selfcheck import seal
 
 HIDDEN = re.compile(r"### BEGIN HIDDEN TESTS\n(.*?)### END HIDDEN TESTS\n?", re.S)
 SOLUTION = re.compile(r"### BEGIN SOLUTION\n.*?### END SOLUTION\n?", re.S)
 SHARED = ""   # the student id of the shared edition (no class list)
+CHECKERS = ("check", "check_choice", "function_check")   # the calls a hidden test grades with
+CALL = re.compile(r"\b(?:check|check_choice|function_check)\(")
 
 
 def variant_cell(nb):
@@ -104,21 +108,35 @@ def _checks(nb) -> list[tuple[int, list[dict]]]:
                 exec(compile(cell.source, f"<cell {cell.get('id')}>", "exec"), env)
             continue
         hidden = "".join(HIDDEN.findall(cell.source))
-        if re.search(r"\bcheck(_choice)?\(", hidden):
-            with feedback.recording() as calls, contextlib.redirect_stdout(io.StringIO()):
-                exec(compile(hidden, f"<hidden {cell.get('id')}>", "exec"), env, _Unanswered(env))
-            found.append((k, calls))
+        if not re.search(CALL, hidden):
+            continue
+        with feedback.recording() as calls, contextlib.redirect_stdout(io.StringIO()):
+            code = compile(hidden, f"<hidden {cell.get('id')}>", "exec")
+            if "function_check(" in hidden:
+                # one namespace, so the test's comprehensions see its own names; the student's function
+                # (not defined here) reads as None, and the test's names stay out of ``env``
+                exec(code, {**env, "function_check": function_check,
+                            **{name: None for name in _answers(hidden) if name.isidentifier()}})
+            else:
+                exec(code, env, _Unanswered(env))
+        found.append((k, calls))
     return found
 
 
-def _answer(hidden: str, n: int) -> list[str]:
+def _answers(hidden: str) -> list[str]:
     """The answer expressions (first argument) of the hidden test's check calls, in order."""
     calls = [node for node in ast.walk(ast.parse(hidden)) if isinstance(node, ast.Call)
-             and getattr(node.func, "id", "") in ("check", "check_choice")]
+             and getattr(node.func, "id", "") in CHECKERS]
     calls.sort(key=lambda c: (c.lineno, c.col_offset))
-    if len(calls) != n:
-        raise ValueError(f"{len(calls)} check calls in the hidden test, {n} recorded")
     return [ast.unparse(c.args[0]) for c in calls]
+
+
+def _answer(hidden: str, n: int) -> list[str]:
+    """:func:`_answers`, which must be one per recorded call."""
+    found = _answers(hidden)
+    if len(found) != n:
+        raise ValueError(f"{len(found)} check calls in the hidden test, {n} recorded")
+    return found
 
 
 def salt(aid: str, student: str, cell_id: str, k: int) -> str:
@@ -161,8 +179,14 @@ def render(src, aid: str, student: str = SHARED, values: dict | None = None):
         gid = c.metadata.get("nbgrader", {}).get("grade_id", c.get("id", str(k)))
         lines = []
         for j, (call, answer) in enumerate(zip(calls, _answer(hidden, len(calls)))):
-            sealed[f"{gid}:{j}"] = seal(call, salt(aid, student, gid, j))
+            try:
+                sealed[f"{gid}:{j}"] = seal(call, salt(aid, student, gid, j))
+            except TypeError:            # a case the token cannot carry: this one is checked at submission only
+                lines.append(f"# {call['name']}: checked when you submit")
+                continue
             lines.append(f'self_check(CHECKS["{gid}:{j}"], {answer});')
+        if any(call["kind"] == "function" for call in calls):     # the hidden test's own check, for autograde
+            lines.insert(0, "from mechlab.course.exercises import function_check")
         c.source = "\n".join(lines) + "\n" + HIDDEN.search(c.source).group(0)
     if sealed:
         at = nb.cells.index(variant_cell(nb) or next(c for c in nb.cells if c.cell_type == "code")) + 1

@@ -187,7 +187,7 @@ def test_function_check():
     good = lambda z: np.sin(np.pi / z) / (1 - np.sin(np.pi / z))
     assert function_check(good, ref, cases, name="peak", rtol=1e-9)
     wrong = function_check(lambda z: np.sin(np.pi / z), ref, cases, name="peak")
-    assert not wrong and "peak(3) = 0.86603, the reference gives 6.4641" in repr(wrong)
+    assert not wrong and "peak(3) is not what the reference gives" in repr(wrong) and "6.464" not in repr(wrong)
     assert "raised ZeroDivisionError" in function_check(lambda z: 1 / 0, ref, cases, name="peak").problem
     assert "returned shape (2,)" in function_check(lambda z: (1, 2), ref, cases, name="peak").problem
 

@@ -39,12 +39,14 @@ def _source(aid):
 
 
 def _tokens(nb) -> list[tuple[str, str]]:
-    """(token, answer expression) of every self_check line of a rendered notebook, in order."""
+    """(token, answer expression) of every number or choice self_check line of a rendered notebook, in order
+    (a code exercise's, ``self_check(token, fn)``, is tested in test_selfcheck_functions.py)."""
     sealed = next(c for c in nb.cells if c.get("id") == "sealed-checks")
     env: dict = {}
     exec(sealed.source, env)
     return [(env["CHECKS"][m.group(1)], m.group(2)) for c in nb.cells
-            for m in re.finditer(r'self_check\(CHECKS\["([^"]+)"\], (.+)\);', c.source)]
+            for m in re.finditer(r'self_check\(CHECKS\["([^"]+)"\], (.+)\);', c.source)
+            if json.loads(base64.b64decode(env["CHECKS"][m.group(1)]))["t"] != "f"]
 
 
 def _said(token, answer) -> tuple[object, str]:
@@ -87,7 +89,7 @@ def _leaks(text: str, expected: float, own: float | None) -> list[str]:
 @pytest.mark.parametrize("student", ["", "ada"])
 def test_self_check_names_what_the_grader_names_and_reveals_nothing(aid, student):
     nb = variants.render(_source(aid), aid, student)
-    checks = [call for _, calls in variants._checks(nb) for call in calls]
+    checks = [call for _, calls in variants._checks(nb) for call in calls if call["kind"] != "function"]
     tokens = _tokens(nb)
     assert len(tokens) == len(checks) >= 2, aid
     for (token, _), call in zip(tokens, checks):
@@ -122,14 +124,15 @@ def test_the_editions_check_cells_run_on_their_own(aid):
     """The rendered check cells, run as the student runs them (set-up, numbers, sealed checks, then each check
     cell's visible line with the right answer bound): every one says ✓."""
     nb = variants.render(_source(aid), aid, "ada")
-    calls = [call for _, cs in variants._checks(nb) for call in cs]
+    calls = [call for _, cs in variants._checks(nb) for call in cs if call["kind"] != "function"]
+    functions = {call["name"] for _, cs in variants._checks(nb) for call in cs if call["kind"] == "function"}
     env: dict = {}
     for c in nb.cells:
         role = c.metadata.get("nbgrader", {})
         if c.cell_type == "code" and role.get("locked") and not role.get("points") and "HIDDEN" not in c.source:
             exec(c.source, env)
     lines = [line for c in nb.cells for line in variants.HIDDEN.sub("", c.source).splitlines()
-             if line.startswith("self_check(")]
+             if line.startswith("self_check(") and line.split("], ")[1].rstrip(");") not in functions]
     assert len(lines) == len(calls)
     for line, call in zip(lines, calls):
         answer = re.search(r"\], (.+)\);$", line).group(1)
@@ -222,3 +225,36 @@ def test_whose_flags_edited_and_copied_numbers():
     cell = variants.variant_cell(edited)
     cell.source = re.sub(r"'rpm': \d+", "'rpm': 41", cell.source)
     assert variants.whose(edited, "geneva_spherical", "ann", masters) == "variant numbers edited by hand"
+
+
+def test_the_class_report_names_the_choice_made(tmp_path, monkeypatch):
+    """A wrong multiple-choice answer reads as the option chosen (which distractor), never as "not a number"."""
+    import report
+    log = tmp_path / "log.jsonl"
+    monkeypatch.setenv("MECHLAB_GRADE_LOG", str(log))
+    options = {"a": "faster", "b": "slower", "c": "the same"}
+    subs = []
+    for who, answer in (("ann", "a"), ("bob", "B "), ("cy", "b"), ("dee", "z"), ("eve", 2.5)):
+        log.write_text("")
+        check_choice(answer, "a", options, name="prediction")
+        if answer == 2.5:
+            check(answer, 2.5, name="speed")
+        verdicts = [json.loads(line) for line in log.read_text().splitlines()]
+        subs.append(report.Submission(who, "geneva", verdicts))
+    table = {r["outcome"]: r["students"] for r in report.rows(subs, {"geneva": ["prediction"]})}
+    assert table == {"right": 1, "chose (b)": 2, "chose 'z', not one of the options": 1,
+                     "chose '2.5', not one of the options": 1}
+    speed = report.rows(subs, {"geneva": ["speed"]})
+    assert {r["outcome"] for r in speed} >= {"right"}                   # numbers keep their own labels
+
+
+@pytest.mark.parametrize("student", ["", "ada", "bo", "cy"])
+def test_geneva_names_degrees_fed_to_sin(student):
+    """Exercise 3 of geneva: λ = np.sin(180 / z) (degrees into np.sin) is named as that slip, not "not yet"."""
+    nb = variants.render(_source("geneva"), "geneva", student)
+    V, _ = variants.numbers(nb)
+    token = next(t for t, answer in _tokens(nb) if answer == "omega_max")
+    lam = np.sin(180 / V["z"])
+    verdict, printed = _said(token, lam / (1 - lam) * V["rpm"] * np.pi / 30)
+    assert verdict.kind == "alternative" and "degrees where np.sin takes radians" in printed
+    assert _said(token, lam)[0].kind == "wrong"                         # λ alone is not that slip

@@ -8,6 +8,7 @@ grader's feedback never shows the test's source (where the expected value is com
 
 from __future__ import annotations
 
+import base64
 import contextlib
 import math
 import textwrap
@@ -212,18 +213,21 @@ def recording():
 def _log(call: dict, verdict: Verdict, answer, slip: str = "") -> None:
     """The grader's verdict, for the class report (only while ``make grade`` names a log file)."""
     number = _number(answer) if call["kind"] == "number" else None
-    selfcheck.record({"name": call["name"], "kind": verdict.kind, "ok": verdict.ok, "slip": slip,
+    selfcheck.record({"name": call["name"], "check": call["kind"], "kind": verdict.kind, "ok": verdict.ok, "slip": slip,
                       "answer": number if number is not None else (None if answer in (None, Ellipsis)
                                                                       else str(answer)[:40])})
 
 
 def self_check(token: str, answer) -> Verdict:
-    """The grader's verdict on ``answer``, at once, from the ``token`` the student edition holds.
+    """The grader's verdict on ``answer`` (a number, a choice or, for a code exercise, the function), at once,
+    from the ``token`` the student edition holds.
 
     The token (made by ``make student`` from the hidden test's own call, see :mod:`.selfcheck`) holds the
     right value and each named slip only as keyed digests of the bins the grader accepts, so the same
     verdict — right, close, the unit or sign slip, the named alternative, or not yet with the hint — is
-    shown without the expected value being anywhere in the notebook. Prints the verdict and returns it;
+    shown without the expected value being anywhere in the notebook. A code exercise's token holds the
+    hidden cases' inputs and the digests of the bins of the reference's outputs (:func:`function_verdict`).
+    Prints the verdict and returns it;
     inside nbgrader's autograde it returns quietly (the hidden test prints the grade's own verdict).
 
     Examples
@@ -237,7 +241,14 @@ def self_check(token: str, answer) -> Verdict:
     """
     body = selfcheck.unseal(token)
     name, unit, hint = body["name"], body["unit"], body["hint"]
-    if body["t"] == "c":
+    if body["t"] == "f":
+        salt = body["s"].encode()
+        expected = [(shape, [raw[i:i + selfcheck.DIGEST] for i in range(0, len(raw), selfcheck.DIGEST)])
+                    for shape, raw in ((s, base64.b64decode(p)) for s, p in body["rows"])]
+        verdict = function_verdict(answer, name, [selfcheck.decode_case(c) for c in body["cases"]], expected,
+                                   rtol=body["rtol"], atol=body["atol"], hint=hint,
+                                   hashed=lambda b: selfcheck.digest(salt, b))
+    elif body["t"] == "c":
         opts = body["options"]
         if answer is None or answer is Ellipsis or str(answer).strip().lower() not in opts:
             verdict = _choice_verdict(answer, None, opts, name, None)
@@ -257,3 +268,55 @@ def self_check(token: str, answer) -> Verdict:
     if not selfcheck.grading():
         print("\n".join(_wrapped(verdict.message)))
     return verdict
+
+
+def function_verdict(fn, name: str, cases: list, expected: list, *, rtol: float, atol: float, hint: str = "",
+                     hashed=None) -> Verdict:
+    """The verdict on a student's function ``fn`` over ``cases``, the grader's and the self-check's alike.
+
+    ``expected[n]`` is (shape, stored bins) of the reference's output on case n: its element bins
+    (:func:`.selfcheck.value_bin`) in clear for the grader, or their keyed digests with ``hashed`` the
+    keyed hash for a token. The first case whose call raises, whose shape differs or which has an element
+    in no bin near the reference's is named, with its inputs and never the reference's value.
+    """
+    return function_outcome(fn, name, cases, expected, rtol=rtol, atol=atol, hint=hint, hashed=hashed)[0]
+
+
+def function_outcome(fn, name: str, cases: list, expected: list, *, rtol: float, atol: float, hint: str = "",
+                     hashed=None) -> tuple[Verdict, int]:
+    """:func:`function_verdict` and the number of cases that agree before the first that does not."""
+    n = len(cases)
+    if fn is None or fn is Ellipsis:
+        return Verdict(False, "missing", f"✗ {name}: no answer yet — define the function {name}."), 0
+    if not callable(fn):
+        return Verdict(False, "form", f"✗ {name}: expected a function, got {type(fn).__name__}."), 0
+    for k, (case, (shape, stored)) in enumerate(zip(cases, expected)):
+        where = f"case {k + 1} of {n}: {name}{_args(case)}"
+        try:
+            out = fn(*case)
+        except NotImplementedError:
+            return Verdict(False, "missing", f"✗ {name}: no answer yet — replace `raise NotImplementedError` "
+                                             f"with your code."), k
+        except Exception as err:  # the student's code: any failure is reported, not raised
+            return Verdict(False, "raised", f"✗ {where} raised {type(err).__name__}: {err}."), k
+        if out is None or out is Ellipsis:
+            return Verdict(False, "missing", f"✗ {where} returned {out!r}: no answer yet — write its body."), k
+        try:
+            got = np.asarray(out, dtype=float)
+        except (TypeError, ValueError):
+            return Verdict(False, "form", f"✗ {where} returned {type(out).__name__}, not numbers."), k
+        if got.shape != tuple(shape):
+            return Verdict(False, "shape", f"✗ {where} returned shape {got.shape}, expected {tuple(shape)}."), k
+        i = selfcheck.first_disagreement(got, k, stored, rtol, atol, hashed)
+        if i is not None:
+            element = f"element {i + 1} of {got.size} of its output differs" if got.size > 1 else "it differs"
+            before = f"; the {k} case{'s' if k != 1 else ''} before it agree" if k else ""
+            more = f" Hint: {hint}" if hint else ""
+            return Verdict(False, "wrong", f"✗ {where} is not what the reference gives ({element} by more than "
+                                           f"rtol {rtol:g}){before}.{more}"), k
+    return Verdict(True, "correct", f"✓ {name} passes all {n} cases (it agrees with the reference to rtol "
+                                    f"{rtol:g})."), n
+
+
+def _args(case: tuple) -> str:
+    return "(" + ", ".join(f"{c:.4g}" if isinstance(c, float) else repr(c) for c in case) + ")"

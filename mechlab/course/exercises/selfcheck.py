@@ -16,7 +16,9 @@ no number: reading a token gives the salt, the slips' names and bin digests. Lim
 that answers "right" at once is an oracle, so a student who loops over the ~9000 bins of a decade can
 find the right bin (as with any immediate feedback; the hidden tests still decide the grade, and a
 variant per student makes the value useless to anyone else). The token reveals how many bins each slip
-window has, hence roughly the slip's decade; it reveals neither the value nor its sign.
+window has, hence roughly the slip's decade; it reveals neither the value nor its sign. Code exercises
+(a function checked on hidden cases) are sealed the same way, per case and output element: see
+:func:`seal_function`.
 """
 
 from __future__ import annotations
@@ -24,10 +26,13 @@ from __future__ import annotations
 import base64
 import hashlib
 import hmac
+import importlib
 import json
 import math
 import os
 from typing import Iterable
+
+import numpy as np
 
 #: bytes of each digest kept (false match ≈ bins looked up × bins stored / 2³²)
 DIGEST = 4
@@ -106,6 +111,8 @@ def digest(salt: bytes, item: str) -> bytes:
 def seal(check: dict, salt: str) -> str:
     """A check recorded from the grader's call (``{"kind": "number"|"choice", …}``) as an opaque token."""
     key = salt.encode()
+    if check["kind"] == "function":
+        return seal_function(check, salt)
     if check["kind"] == "number":
         rows = candidates(check["expected"], check["unit_slips"], check["alternatives"], check["significant"])
         body = {"t": "n", "sig": check["significant"], "rows": [
@@ -179,3 +186,92 @@ def record(entry: dict) -> None:
         with open(path, "a", encoding="utf-8") as f:
             f.write(json.dumps(entry, ensure_ascii=False) + "\n")
 
+
+
+# --- code exercises: the reference's outputs as keyed digests of bins, per case and element -------------------
+#
+# A function check (:func:`mechlab.course.exercises.function_check`) agrees with the reference when every
+# element of every case's output lies in the reference's bin or a neighbouring one on a logarithmic grid of
+# step ``rtol`` (sign apart; |x| ≤ atol is the one bin "z"). The grader applies this rule in clear, the
+# token holds only digest(salt, "case|element|bin") of the reference's bins, and the self-check hashes
+# the student's three candidate bins: the same verdict, and no output value in the notebook.
+
+def value_bin(x: float, rtol: float, atol: float) -> str:
+    """The bin of one output value on a function check's grid: "z" for |x| ≤ atol, "n" for a non-finite x,
+    else ``±k`` with k = round(ln|x| / ln(1 + rtol))."""
+    if not math.isfinite(x):
+        return "n"
+    if abs(x) <= atol:
+        return "z"
+    return f"{'+' if x > 0 else '-'}{round(math.log(abs(x)) / math.log1p(rtol))}"
+
+
+def near_bins(b: str) -> set[str]:
+    """The bins a value in bin ``b`` agrees with: itself and, off zero, the two next to it."""
+    if b in ("z", "n"):
+        return {b}
+    k = int(b[1:])
+    return {f"{b[0]}{k + d}" for d in (-1, 0, 1)}
+
+
+def first_disagreement(got, case: int, stored, rtol: float, atol: float, hashed=None) -> int | None:
+    """The first element of ``got`` (flattened) that is in no bin near the stored one, or None when all agree.
+    ``stored[i]`` is the reference element's bin (in clear for the grader) or its digest under ``hashed``."""
+    for i, x in enumerate(np.asarray(got, dtype=float).ravel()):
+        near = near_bins(value_bin(float(x), rtol, atol))
+        if not any((hashed(f"{case}|{i}|{b}") if hashed else b) == stored[i] for b in near):
+            return i
+    return None
+
+
+def encode_case(x):
+    """A case's inputs as JSON (floats exactly): numbers, strings, tuples, lists, arrays and objects of an
+    importable class (their attributes). Raises TypeError for anything else (a class the hidden test defines)."""
+    if x is None or isinstance(x, (bool, int, float, str)):
+        return x
+    if isinstance(x, np.generic):
+        return x.item()
+    if isinstance(x, (tuple, list)):
+        return {"t" if isinstance(x, tuple) else "l": [encode_case(v) for v in x]}
+    if isinstance(x, np.ndarray):
+        return {"a": x.tolist(), "dt": x.dtype.str}
+    cls = type(x)
+    if hasattr(x, "__dict__") and _importable(cls.__module__):
+        return {"o": [cls.__module__, cls.__qualname__], "d": {k: encode_case(v) for k, v in vars(x).items()}}
+    raise TypeError(f"a case input of type {cls.__qualname__} cannot be carried in a token")
+
+
+def _importable(module: str) -> bool:
+    try:
+        importlib.import_module(module)
+    except ImportError:
+        return False
+    return True
+
+
+def decode_case(x):
+    """The inverse of :func:`encode_case`."""
+    if not isinstance(x, dict):
+        return x
+    if "t" in x or "l" in x:
+        items = [decode_case(v) for v in x.get("t", x.get("l"))]
+        return tuple(items) if "t" in x else items
+    if "a" in x:
+        return np.array(x["a"], dtype=x["dt"])
+    module, qualname = x["o"]
+    cls = importlib.import_module(module)
+    for part in qualname.split("."):
+        cls = getattr(cls, part)
+    obj = cls.__new__(cls)
+    obj.__dict__.update({k: decode_case(v) for k, v in x["d"].items()})
+    return obj
+
+
+def seal_function(check: dict, salt: str) -> str:
+    """A recorded function check (cases, each reference output's shape and element bins) as a token."""
+    key = salt.encode()
+    rows = [[list(shape), base64.b64encode(b"".join(digest(key, f"{n}|{i}|{b}") for i, b in enumerate(bins)))
+             .decode()] for n, (shape, bins) in enumerate(check["outputs"])]
+    body = {"t": "f", "rtol": check["rtol"], "atol": check["atol"], "cases": [encode_case(c) for c in check["cases"]],
+            "rows": rows, "s": salt, "name": check["name"], "unit": "", "hint": check.get("hint", "")}
+    return base64.b64encode(json.dumps(body, ensure_ascii=False, separators=(",", ":")).encode()).decode()
