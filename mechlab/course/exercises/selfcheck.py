@@ -15,10 +15,9 @@ verdicts are the same function of the answer; they could differ only on a 32-bit
 no number: reading a token gives the salt, the slips' names and bin digests. Limits, said plainly: a check
 that answers "right" at once is an oracle, so a student who loops over the ~9000 bins of a decade can
 find the right bin (as with any immediate feedback; the hidden tests still decide the grade, and a
-variant per student makes the value useless to anyone else). The token reveals how many bins each slip
-window has, hence roughly the slip's decade; it reveals neither the value nor its sign. Code exercises
-(a function checked on hidden cases) are sealed the same way, per case and output element: see
-:func:`seal_function`.
+variant per student makes the value useless to anyone else). The token reveals how many bins each slip window
+has, hence roughly the slip's decade; it reveals neither the value nor its sign. Code exercises (a function
+checked on hidden cases) are sealed the same way, per case and output element: see :func:`seal_function`.
 """
 
 from __future__ import annotations
