@@ -89,8 +89,9 @@ def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
     phi = phase + np.linspace(0.0, TWO_PI, n)
     mo = mechanism.motion(phi)
     vmax = float(np.max(np.abs(mo.dpsi)))
-    dwell = float(np.mean(np.abs(mo.dpsi[:-1]) <= DWELL_TOL * vmax))
-    standstill = float(np.mean(np.abs(mo.dpsi[:-1]) <= max(dwell_tol, DWELL_TOL) * vmax))
+    speed = np.abs(mo.dpsi[:-1])
+    dwell = float(np.mean(speed <= DWELL_TOL * vmax))
+    standstill = float(np.mean(speed <= max(dwell_tol, DWELL_TOL) * vmax))
     dpsi_turn = float(mo.psi[-1] - mo.psi[0])
     if abs(dpsi_turn) <= 1e-9:
         raise DimensionError(f"the output does not advance over a crank turn (Δψ = {dpsi_turn:.3g} rad): "
