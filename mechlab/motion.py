@@ -23,6 +23,11 @@ from .errors import DimensionError, SingularityError
 from .geometry import AnglePath, PointPath, as_angles, relative, vector_angle
 from .validate import Reals, validated
 
+# |x′| ≤ STILL·max|x′| over a turn: the output stands exactly still, up to rounding; small enough that a dwell
+# which ends smoothly (|x′| ~ Δφ²) ends within ~1e-6 rad. The one threshold of "still": the dwell fraction,
+# the dwell's ends and the still output of the inverse problem.
+STILL = 1e-12
+
 
 @dataclass(frozen=True, eq=False)
 class Law:

@@ -143,3 +143,16 @@ def test_an_approximate_dwell_has_no_exact_dwell_in_the_analysis_layer():
     six = mchv3_half_turn(straight_guiding(np.pi, 0.8, np.pi))
     row = ml.intermittency(six, n=3601, phase=1e-3, dwell_tol=1e-2)
     assert row.dwell_fraction == 0.0 and row.standstill_fraction > 0.5
+
+
+def test_one_threshold_of_still():
+    """The dwell fraction, the dwell's ends (design criteria) and the still output of the inverse problem use
+    the one threshold mechlab.motion.STILL: a second constant would let the table and the chart disagree."""
+    import mechlab.analysis.intermittency as intermittency
+    import mechlab.design.criteria as criteria
+    import mechlab.kinetostatics.inverse as inverse
+    from mechlab.motion import STILL
+
+    assert criteria.STILL is STILL and inverse.STILL is STILL and intermittency.STILL is STILL
+    assert intermittency.DWELL_TOL == STILL
+

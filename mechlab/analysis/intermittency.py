@@ -11,7 +11,7 @@ import numpy as np
 from ..errors import DimensionError
 from ..mechanisms.base import Mechanism
 from ..mechanisms.geneva import TWO_PI
-from ..motion import Table
+from ..motion import STILL, Table
 from ..validate import MAX_SAMPLES, Angle, check, count, number, validated
 from ..validate import mechanism as mechanism_of
 from .motion_laws import invariants
@@ -63,8 +63,8 @@ class Intermittency:
     impact: str = field(metadata={"label": "impact"})
 
 
-# |ψ'| at most this share of its peak counts as dwell: an exact dwell's numerical zero
-DWELL_TOL = 1e-9
+# the default near-standstill tolerance is the exact dwell's own threshold (mechlab.motion.STILL)
+DWELL_TOL = STILL
 # a dwell tolerance: a share of the peak |ψ'|, in (0, 1)
 DWELL_TOL_RANGE = number(0.0, 1.0, open=True)
 DwellTol = Annotated[float, DWELL_TOL_RANGE]
@@ -90,8 +90,8 @@ def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
     mo = mechanism.motion(phi)
     vmax = float(np.max(np.abs(mo.dpsi)))
     speed = np.abs(mo.dpsi[:-1])
-    dwell = float(np.mean(speed <= DWELL_TOL * vmax))
-    standstill = float(np.mean(speed <= max(dwell_tol, DWELL_TOL) * vmax))
+    dwell = float(np.mean(speed <= STILL * vmax))
+    standstill = float(np.mean(speed <= max(dwell_tol, STILL) * vmax))
     dpsi_turn = float(mo.psi[-1] - mo.psi[0])
     if abs(dpsi_turn) <= 1e-9:
         raise DimensionError(f"the output does not advance over a crank turn (Δψ = {dpsi_turn:.3g} rad): "

@@ -26,6 +26,7 @@ from ..analysis.motion_laws import rise_invariants
 from ..errors import DimensionError
 from ..kinetostatics.drive import drive
 from ..mechanisms.base import TWO_PI
+from ..motion import STILL
 from ..validate import Checked, Length, Spec, angle, check, count, length, validated
 from ..validate import mechanism as instance_of
 from .spec import AnySpecification
@@ -43,7 +44,6 @@ class Movable(Protocol):
 AnyMovable = Annotated[Movable, instance_of(Movable, why="an object with motion(phi), e.g. a mechlab mechanism")]
 
 SAMPLES = 2880  # crank angles per turn (1/8°): the near-standstill is found to this resolution
-STILL = 1e-12  # |x′| ≤ STILL·max|x′|: the output stands exactly still, up to rounding
 REFINE = 513  # crank angles per refinement of a dwell's end (two refinements: ends to ~1e-8 rad)
 
 

@@ -18,7 +18,7 @@ import numpy as np
 
 from ..errors import FrictionlessOnlyError
 from ..mechanisms.base import Mechanism
-from ..motion import AngularMotion, LinearMotion
+from ..motion import STILL, AngularMotion, LinearMotion
 from ..validate import Point, Spec, check, mechanism as instance_of, number, validated
 from .model import G, Force, ForceModel, LoadError, Torque, model_for
 from .solve import _frames, virtual_work_torque
@@ -30,8 +30,6 @@ Loads = Annotated[tuple, Spec("items", expected=(Force, Torque))]
 Model = Annotated[ForceModel | None, instance_of(ForceModel, optional=True)]
 Omega = Annotated[float, number()]
 Values = Annotated[float | np.ndarray, Spec("reals")]
-# below this |q′|/|θ′| (per unit of the output's largest |q′|) the output stands still: no load is balanced
-_STILL = 1e-9
 
 
 def _setup(mech, phi, model, loads, omega1, eps1, gravity):
@@ -93,7 +91,8 @@ def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model 
     """
     motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
     M = np.broadcast_to(np.asarray(torque, dtype=float), dq.shape)
-    still = np.abs(dq) <= _STILL * max(float(np.max(np.abs(dq))), 1.0) * np.abs(dth)
+    # a still output (mechlab.motion.STILL) balances no load: masked, not infinite
+    still = np.abs(dq) <= STILL * max(float(np.max(np.abs(dq))), 1.0) * np.abs(dth)
     with np.errstate(divide="ignore", invalid="ignore"):
         Q = np.ma.masked_array(np.where(still, 0.0, (M0 - M) * dth / np.where(still, 1.0, dq)), mask=still)
     return _shaped(Q, phi)
