@@ -49,8 +49,9 @@ poppler:
 pdf: chromium poppler
 	SPHINXOPTS="$(SPHINXOPTS)" $(COURSE) pdf
 
+# With two cores every chapter in JupyterLab (tests_browser/test_lab.py) is tested beside the book and the PDF.
 test-browser: book pdf chromium venv-browser axe-deps
-	CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -q -p no:cacheprovider tests_browser
+	CHROMIUM=$(CHROMIUM) $(COURSE) test-browser
 
 # axe-core (the accessibility audit tests_browser/test_a11y_book.py injects into every page) from npm, at a pin,
 # into .axe-deps/; npm runs on the Node.js of .hub-deps/ (below), whatever node the machine has or lacks
