@@ -5,6 +5,7 @@
     python course.py test                the library's tests, then every notebook and assignment (nbval)
     python course.py book                the static HTML book in book/_build/html
     python course.py pdf                 the whole book as one PDF (printed by Chromium)
+    python course.py test-browser        tests_browser/: the built book, the PDF, every chapter in JupyterLab
     python course.py execute NB... --output-dir DIR   notebooks executed by nbconvert (as the book's kernels)
     python course.py venv PART           only install a part: lab, test, book, browser, hub, hubtest, all
 
