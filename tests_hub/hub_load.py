@@ -182,7 +182,8 @@ def open_assignment(base: str, api: requests.Session, name: str, repo: str, path
     """`name` follows the assignment link a lecturer hands out (nbgitpuller: the git repository `repo` of
     student editions, opened at `path` in it), as their browser would, then runs the edition's code cells in
     order on their server's kernel. Returns where the link landed, the notebook found in their home at the
-    link's path, and each code cell's printed text and error name (None when it ran cleanly)."""
+    link's path, and for each code cell its error's name (None when it ran cleanly) and what it said (its printed
+    text and its error's message)."""
     web, user, token = log_in(base, api, name)
     folder = repo.rstrip("/").split("/")[-1]  # nbgitpuller's default target: the repository's name
     query = {"repo": repo, "branch": "main", "urlpath": f"lab/tree/{folder}/{path}"}
@@ -217,11 +218,12 @@ def open_assignment(base: str, api: requests.Session, name: str, repo: str, path
                 continue
             msgs = kernel.run(cell["source"], errors_fail=False)
             text = "".join(m["content"].get("text", "") for m in msgs if m["header"]["msg_type"] == "stream")
-            error = next((m["content"]["ename"] for m in msgs if m["header"]["msg_type"] == "error"), None)
-            cells.append({"id": cell["metadata"].get("nbgrader", {}).get("grade_id"), "text": text, "error": error})
+            error = next((m["content"] for m in msgs if m["header"]["msg_type"] == "error"), {})
+            cells.append({"id": cell["metadata"].get("nbgrader", {}).get("grade_id"), "error": error.get("ename"),
+                          "said": text + error.get("evalue", "")})
     finally:
         kernel.ws.close()
-    return {"landed": landed.url, "page": landed.text, "phases": phases, "notebook": nb, "cells": cells}
+    return {"landed": landed.url, "phases": phases, "notebook": nb, "cells": cells}
 
 
 def percentile(values: list[float], q: float) -> float:
@@ -259,13 +261,12 @@ def running_hub(chp: str):
     session with the load test's admin token, and the hub's and the proxy's processes. Both are stopped by PID."""
     bin_dir = Path(sys.executable).parent
     port, token = free_port(), secrets.token_hex(32)
-    with tempfile.TemporaryDirectory(prefix="mechlab-hub-") as tmp:
+    with tempfile.TemporaryDirectory(prefix="mechlab-hub-") as tmp, open(Path(tmp) / "hub.log", "w") as log:
         config = Path(tmp) / "jupyterhub_config.py"
         root_flag = ["--allow-root"] if os.geteuid() == 0 else []  # the single-user servers run as this user
         config.write_text(CONFIG.format(port=port, hub_port=free_port(), api_port=free_port(), chp=chp, tmp=tmp,
                                         password=PASSWORD, singleuser=str(bin_dir / "jupyterhub-singleuser"),
                                         args=root_flag, timeout=TIMEOUT, token=token))
-        log = open(Path(tmp) / "hub.log", "w")
         hub = subprocess.Popen([str(bin_dir / "jupyterhub"), "-f", str(config)], cwd=tmp, stdout=log,
                                stderr=subprocess.STDOUT, env={**os.environ, "PATH": f"{bin_dir}:{os.environ['PATH']}"})
         base, proxy = f"http://127.0.0.1:{port}", None
@@ -294,13 +295,13 @@ def running_hub(chp: str):
             if proxy is not None and proxy.is_running():
                 proxy.terminate()
                 proxy.wait(timeout=30)
-            log.close()
 
 
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--students", type=int, default=5)
-    parser.add_argument("--save", action="store_true", help="also write the report to benchmarks/hub_load_<students>.json")
+    parser.add_argument("--save", action="store_true",
+                        help="also write the report to benchmarks/hub_load_<students>.json")
     parser.add_argument("--chapter", type=Path, default=ROOT / "notebooks" / "00_getting_started.ipynb")
     parser.add_argument("--chp", default=str(CHP))
     args = parser.parse_args()
