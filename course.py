@@ -5,6 +5,7 @@
     python course.py test                the library's tests, then every notebook and assignment (nbval)
     python course.py book                the static HTML book in book/_build/html
     python course.py pdf                 the whole book as one PDF (printed by Chromium)
+    python course.py test-browser        tests_browser/: the built book, the PDF, every chapter in JupyterLab
     python course.py execute NB... --output-dir DIR   notebooks executed by nbconvert (as the book's kernels)
     python course.py venv PART           only install a part: lab, test, book, browser, hub, hubtest, all
 
@@ -382,6 +383,30 @@ def cmd_lab(args) -> None:
             pass  # Ctrl-C reaches JupyterLab too, which asks whether to stop
 
 
+def pytest_beside(python: Path, beside: list[str], chain: list[list[str]]) -> None:
+    """pytest on `beside` in a second process while the commands of `chain` run one after another, its report
+    printed after theirs; exits with the first failure's code. On one core: all in sequence."""
+    if (os.cpu_count() or 1) < 2:
+        for cmd in [*chain, ["-m", "pytest", "-q", "-p", "no:cacheprovider", *beside]]:
+            run(python, *cmd)
+        return
+    with tempfile.TemporaryFile("w+", encoding="utf-8") as log:
+        process = subprocess.Popen([str(python), "-m", "pytest", "-q", "-p", "no:cacheprovider", *beside], cwd=ROOT,
+                                   env=tools_env(), stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            codes = [subprocess.run([str(python), *cmd], cwd=ROOT, env=tools_env()).returncode for cmd in chain]
+            codes.append(process.wait())
+        finally:
+            if process.poll() is None:  # interrupted: nothing is left running (its kernels, servers, browsers)
+                os.killpg(process.pid, signal.SIGTERM) if hasattr(os, "killpg") else process.kill()
+                process.wait()
+        log.seek(0)
+        say(f"{', '.join(beside)} (run beside the others):")
+        print(log.read(), flush=True)
+    if any(codes):
+        sys.exit(next(c for c in codes if c))
+
+
 # The grading tests (nbgrader executes every planted submission, one after another), the one-call audit of the
 # exercises and the many-kernels test take about as long as all the other tests and the notebooks together, on
 # about one core: with two cores they run beside them, their report after.
@@ -390,27 +415,19 @@ BESIDE = ["tests/test_grading.py", "tests/test_exercises.py", "tests/test_kernel
 
 def cmd_test(args) -> None:
     python = ensure_venv(Path(args.venv), "test")
-    if (os.cpu_count() or 1) < 2:
-        run(python, "-m", "pytest", "tests", "-q")
-        run(python, "-m", "pytest", *NBVAL_ARGS, "-q", "notebooks", "assignments/source")
-        return
-    with tempfile.TemporaryFile("w+", encoding="utf-8") as log:
-        beside = subprocess.Popen([str(python), "-m", "pytest", "-q", "-p", "no:cacheprovider", *BESIDE], cwd=ROOT,
-                                  env=tools_env(), stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
-        try:
-            codes = [subprocess.run([str(python), *cmd], cwd=ROOT, env=tools_env()).returncode for cmd in (
-                ["-m", "pytest", "tests", "-q", *(f"--ignore={path}" for path in BESIDE)],
-                ["-m", "pytest", *NBVAL_ARGS, "-q", "notebooks", "assignments/source"])]
-            codes.append(beside.wait())
-        finally:
-            if beside.poll() is None:  # interrupted: nothing is left running (its nbgrader runs too)
-                os.killpg(beside.pid, signal.SIGTERM) if hasattr(os, "killpg") else beside.kill()
-                beside.wait()
-        log.seek(0)
-        say(f"{', '.join(BESIDE)} (run beside the others):")
-        print(log.read(), flush=True)
-    if any(codes):
-        sys.exit(next(c for c in codes if c))
+    pytest_beside(python, BESIDE, [["-m", "pytest", "tests", "-q", *(f"--ignore={path}" for path in BESIDE)],
+                                   ["-m", "pytest", *NBVAL_ARGS, "-q", "notebooks", "assignments/source"]])
+
+
+# Every chapter in JupyterLab (a server, a kernel, the browser) and the book's pages and PDF (the browser on files)
+# each keep about one core busy, with waits: with two cores they run beside each other.
+BROWSER_BESIDE = ["tests_browser/test_lab.py"]
+
+
+def cmd_test_browser(args) -> None:
+    python = ensure_venv(Path(args.venv), "browser")
+    pytest_beside(python, BROWSER_BESIDE, [["-m", "pytest", "-q", "-p", "no:cacheprovider", "tests_browser",
+                                            *(f"--ignore={path}" for path in BROWSER_BESIDE)]])
 
 
 def cmd_book(args) -> None:
@@ -426,7 +443,18 @@ def cmd_pdf(args) -> None:
     # the notebooks' outputs come from the HTML build's execution cache when it is current
     run(python, "-m", "sphinx", *opts, "-b", "singlehtml", "-d", "book/_build/doctrees-single", "book",
         "book/_build/singlehtml")
+    # printed before from the same page and images (their names are not all content hashes) by the same print
+    # tool (CI builds the book beside `make test`, then `make test-browser` asks again): not printed twice
+    single, stamp = ROOT / "book/_build/singlehtml", ROOT / (PDF + ".from")
+    sources = [single / "intro.html", *sorted((single / "_images").iterdir()), ROOT / "tools/print_pdf.py",
+               ROOT / "tools/chromium.py"]
+    printed_from = "\n".join(f"{digest(path)} {path.relative_to(ROOT)}" for path in sources)
+    if (ROOT / PDF).is_file() and stamp.is_file() and stamp.read_text() == printed_from:
+        say(f"the PDF is current (printed from this same page): {PDF}")
+        return
+    stamp.unlink(missing_ok=True)
     run(python, "tools/print_pdf.py", "book/_build/singlehtml/intro.html", PDF, "--quote-pages")
+    stamp.write_text(printed_from)
 
 
 def cmd_execute(args) -> None:
@@ -448,6 +476,8 @@ def main(argv: list[str] | None = None) -> None:
         p.set_defaults(func=func or run_sync)
     sub.choices["lab"].add_argument("--port", type=int, default=8888)
     sub.add_parser("test", help="library tests, then every notebook").set_defaults(func=cmd_test)
+    sub.add_parser("test-browser", help="tests_browser/: the built book, the PDF, every chapter in JupyterLab "
+                   "(needs Chromium)").set_defaults(func=cmd_test_browser)
     sub.add_parser("book", help="the HTML book").set_defaults(func=cmd_book)
     sub.add_parser("pdf", help=f"the whole book as one PDF, {PDF} (needs Chromium)").set_defaults(func=cmd_pdf)
     p = sub.add_parser("execute", help="execute notebooks with nbconvert (IPC kernels, 60 s per cell)")

@@ -45,8 +45,9 @@ def structure(pdf: Path) -> dict:
             "alts": [a for a in alts if a not in (b"()", b"<>", b"<FEFF>", b"<feff>")]}
 
 
-@pytest.mark.xfail(reason='sync Playwright inside a running asyncio loop when run after the other browser tests (CI 2026-12-02)', strict=False)
-def test_a_small_page_prints_tagged_with_its_figures_described(tmp_path):
+def test_a_small_page_prints_tagged_with_its_figures_described(browser, tmp_path):
+    """print_pdf in the session's Chromium (a second sync Playwright cannot start inside the first one's loop,
+    whichever browser test ran before)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -66,7 +67,7 @@ def test_a_small_page_prints_tagged_with_its_figures_described(tmp_path):
         f"<img alt='{alt}' src='data:image/png;base64,{base64.b64encode(png.read_bytes()).decode()}'>"
         f"{animate(ExternalGeneva(4, 1.0), n=4).to_jshtml()}</body></html>", encoding="utf-8")
     pdf = tmp_path / "page.pdf"
-    assert print_pdf.print_pdf(page, pdf) == 1   # the animation became a strip
+    assert print_pdf.print_pdf(page, pdf, browser) == 1   # the animation became a strip
     found = structure(pdf)
     assert found["tagged"] and found["headings"] >= 2
     # the figure and the strip's frames: each a Figure with a non-empty /Alt

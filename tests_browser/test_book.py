@@ -2,9 +2,11 @@
 
 Serves book/_build/html (built by `make book`) on 127.0.0.1 and visits every page with
 Chromium. A request to any other host is aborted and reported. A screenshot of each
-page is saved under book/_build/screenshots/, and what is measured on the way (every
-animation's width on screen, every page's size, the widest table against the column)
-goes to book/_build/screenshots/book.json.
+page is saved under book/_build/screenshots/ (the whole page; its first screen only with
+MECHLAB_SCREENSHOTS=screen, as CI sets it: a whole chapter is some 10,000 px tall and its
+picture took three times as long as loading the page, for a file nobody sees there), and what is
+measured on the way (every animation's width on screen, every page's size, the widest table
+against the column) goes to book/_build/screenshots/book.json.
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ from __future__ import annotations
 import functools
 import http.server
 import json
+import os
 import re
 import threading
 from urllib.parse import urlparse
@@ -27,6 +30,7 @@ PAGES = sorted(p.relative_to(HTML).as_posix() for p in HTML.rglob("*.html")
 MIN_ANIMATION_PX = 600            # an animation frame on screen, in the 784 px column
 MAX_PAGE_BYTES = 5 * 1024 * 1024  # a page: its HTML (frames embedded) and the images it loads from the book
 MEASURED: dict[str, dict] = {}
+FULL_PAGE_SHOTS = os.environ.get("MECHLAB_SCREENSHOTS", "full") != "screen"
 
 
 def page_bytes(page_path: str) -> int:
@@ -165,7 +169,7 @@ def test_page(browser, server, page_path):
         assert size < MAX_PAGE_BYTES, f"{page_path}: {size / 2**20:.2f} MB"
         page.evaluate("() => { if (document.activeElement) document.activeElement.blur(); window.scrollTo(0, 0); }")
         page.screenshot(path=str(SHOTS / (page_path.replace("/", "__").removesuffix(".html") + ".png")),
-                        full_page=True)
+                        full_page=FULL_PAGE_SHOTS)
         assert not remote, f"{page_path}: requests to another host: {remote}"
         assert not failed, f"{page_path}: failed requests: {failed}"
         assert not errors, f"{page_path}: {errors}"

@@ -17,6 +17,7 @@ the server and its kernel), the CPU the hub and the proxy used, the machine's lo
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import os
 import secrets
@@ -37,6 +38,7 @@ import websocket
 ROOT = Path(__file__).resolve().parent.parent
 TIMEOUT = 120  # seconds for any one step of a student
 PASSWORD = "class-of-2026"
+CHP = ROOT / ".hub-deps" / "node_modules" / ".bin" / "configurable-http-proxy"  # `make hub-deps` puts it there
 
 CONFIG = """
 c.JupyterHub.ip = "127.0.0.1"
@@ -85,8 +87,9 @@ class Kernel:
                                  "buffers": []}))
         return msg_id
 
-    def until_idle(self, msg_id: str) -> list[dict]:
-        """The iopub messages caused by `msg_id`, up to the kernel's idle status; fails on an error."""
+    def until_idle(self, msg_id: str, errors_fail: bool = True) -> list[dict]:
+        """The iopub messages caused by `msg_id`, up to the kernel's idle status; fails on an error unless
+        `errors_fail` is false (the error is then one of the messages)."""
         seen, deadline = [], time.monotonic() + TIMEOUT
         while time.monotonic() < deadline:
             raw = self.ws.recv()
@@ -96,7 +99,7 @@ class Kernel:
             if msg["parent_header"].get("msg_id") != msg_id:
                 continue
             kind = msg["header"]["msg_type"]
-            if kind == "error":
+            if kind == "error" and errors_fail:
                 raise RuntimeError(f"{msg['content']['ename']}: {msg['content']['evalue']}")
             if kind == "comm_open" and msg["content"]["data"].get("state", {}).get("_model_name", "").endswith(
                     "SliderModel"):
@@ -106,13 +109,15 @@ class Kernel:
             seen.append(msg)
         raise TimeoutError(f"no idle status for {msg_id} within {TIMEOUT} s")
 
-    def run(self, code: str) -> list[dict]:
+    def run(self, code: str, errors_fail: bool = True) -> list[dict]:
         return self.until_idle(self.send("execute_request", {"code": code, "silent": False, "store_history": True,
                                                              "user_expressions": {}, "allow_stdin": False,
-                                                             "stop_on_error": True}))
+                                                             "stop_on_error": True}), errors_fail)
 
 
-def student(base: str, api: requests.Session, name: str, chapter: Path) -> dict:
+def log_in(base: str, api: requests.Session, name: str) -> tuple[requests.Session, requests.Session, str]:
+    """`name` logs in through the hub's form and gets a running server: their browser's session (the hub's
+    cookies), an API session with a token of theirs, and their server's token."""
     t0 = time.monotonic()
     web = requests.Session()
     web.get(f"{base}/hub/login", timeout=TIMEOUT).raise_for_status()
@@ -126,11 +131,17 @@ def student(base: str, api: requests.Session, name: str, chapter: Path) -> dict:
         if time.monotonic() - t0 > TIMEOUT:
             raise TimeoutError(f"{name}'s server did not start")
         time.sleep(0.25)
-    t_server = time.monotonic() - t0
     token = api.post(f"{base}/hub/api/users/{name}/tokens", json={"expires_in": 3600},
                      timeout=TIMEOUT).json()["token"]
     user = requests.Session()
     user.headers["Authorization"] = f"token {token}"
+    return web, user, token
+
+
+def student(base: str, api: requests.Session, name: str, chapter: Path) -> dict:
+    t0 = time.monotonic()
+    _, user, token = log_in(base, api, name)
+    t_server = time.monotonic() - t0
     prefix = f"{base}/user/{name}"
     nb = json.loads(chapter.read_text())
     user.put(f"{prefix}/api/contents/{chapter.name}", json={"type": "notebook", "format": "json", "content": nb},
@@ -167,6 +178,54 @@ def student(base: str, api: requests.Session, name: str, chapter: Path) -> dict:
     return {"server": t_server, "kernel": t_kernel, "cells": t_cells, "slider": t_slider, "pss_mb": memory / 2**20}
 
 
+def open_assignment(base: str, api: requests.Session, name: str, repo: str, path: str) -> dict:
+    """`name` follows the assignment link a lecturer hands out (nbgitpuller: the git repository `repo` of
+    student editions, opened at `path` in it), as their browser would, then runs the edition's code cells in
+    order on their server's kernel. Returns where the link landed, the notebook found in their home at the
+    link's path, and for each code cell its error's name (None when it ran cleanly) and what it said (its printed
+    text and its error's message)."""
+    web, user, token = log_in(base, api, name)
+    folder = repo.rstrip("/").split("/")[-1]  # nbgitpuller's default target: the repository's name
+    query = {"repo": repo, "branch": "main", "urlpath": f"lab/tree/{folder}/{path}"}
+    # through the hub (user-redirect, the hub's OAuth to the student's server) to nbgitpuller's page
+    landed = web.get(f"{base}/hub/user-redirect/git-pull", params=query, timeout=TIMEOUT)
+    landed.raise_for_status()
+    prefix = f"{base}/user/{name}"
+    # what that page's script does next: the pull, reported as server-sent events, with the browser's cookies
+    phases = []
+    with web.get(f"{prefix}/git-pull/api", params={"repo": repo, "branch": "main", "targetpath": folder},
+                 stream=True, timeout=TIMEOUT) as events:
+        events.raise_for_status()
+        for line in events.iter_lines(decode_unicode=True):
+            if line and line.startswith("data:"):
+                event = json.loads(line[5:])
+                phases.append(event.get("phase"))
+                if event.get("phase") in ("finished", "error"):
+                    if event["phase"] == "error":
+                        raise RuntimeError(f"nbgitpuller: {event.get('message')} {event.get('output', '')}")
+                    break
+    got = user.get(f"{prefix}/api/contents/{folder}/{path}", timeout=TIMEOUT)
+    got.raise_for_status()
+    nb = got.json()["content"]
+    session = user.post(f"{prefix}/api/sessions", json={"path": f"{folder}/{path}", "type": "notebook",
+                                                        "kernel": {"name": "python3"}}, timeout=TIMEOUT).json()
+    kernel = Kernel(f"{prefix.replace('http', 'ws', 1)}/api/kernels/{session['kernel']['id']}/channels", token)
+    cells = []
+    try:
+        kernel.until_idle(kernel.send("kernel_info_request", {}))
+        for cell in nb["cells"]:
+            if cell["cell_type"] != "code":
+                continue
+            msgs = kernel.run(cell["source"], errors_fail=False)
+            text = "".join(m["content"].get("text", "") for m in msgs if m["header"]["msg_type"] == "stream")
+            error = next((m["content"] for m in msgs if m["header"]["msg_type"] == "error"), {})
+            cells.append({"id": cell["metadata"].get("nbgrader", {}).get("grade_id"), "error": error.get("ename"),
+                          "said": text + error.get("evalue", "")})
+    finally:
+        kernel.ws.close()
+    return {"landed": landed.url, "phases": phases, "notebook": nb, "cells": cells}
+
+
 def percentile(values: list[float], q: float) -> float:
     return statistics.quantiles(values, n=100, method="inclusive")[q - 1] if len(values) > 1 else values[0]
 
@@ -196,23 +255,18 @@ def table(reports: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--students", type=int, default=5)
-    parser.add_argument("--save", action="store_true", help="also write the report to benchmarks/hub_load_<students>.json")
-    parser.add_argument("--chapter", type=Path, default=ROOT / "notebooks" / "00_getting_started.ipynb")
-    parser.add_argument("--chp", default=str(ROOT / ".hub-deps" / "node_modules" / ".bin" / "configurable-http-proxy"))
-    args = parser.parse_args()
+@contextlib.contextmanager
+def running_hub(chp: str):
+    """JupyterHub (CONFIG) on 127.0.0.1 in a temporary folder, until the block ends: yields its address, an API
+    session with the load test's admin token, and the hub's and the proxy's processes. Both are stopped by PID."""
     bin_dir = Path(sys.executable).parent
-    load_before = [round(x, 1) for x in os.getloadavg()]  # what else the machine ran: the figures depend on it
     port, token = free_port(), secrets.token_hex(32)
-    with tempfile.TemporaryDirectory(prefix="mechlab-hub-") as tmp:
+    with tempfile.TemporaryDirectory(prefix="mechlab-hub-") as tmp, open(Path(tmp) / "hub.log", "w") as log:
         config = Path(tmp) / "jupyterhub_config.py"
         root_flag = ["--allow-root"] if os.geteuid() == 0 else []  # the single-user servers run as this user
-        config.write_text(CONFIG.format(port=port, hub_port=free_port(), api_port=free_port(), chp=args.chp, tmp=tmp,
+        config.write_text(CONFIG.format(port=port, hub_port=free_port(), api_port=free_port(), chp=chp, tmp=tmp,
                                         password=PASSWORD, singleuser=str(bin_dir / "jupyterhub-singleuser"),
                                         args=root_flag, timeout=TIMEOUT, token=token))
-        log = open(Path(tmp) / "hub.log", "w")
         hub = subprocess.Popen([str(bin_dir / "jupyterhub"), "-f", str(config)], cwd=tmp, stdout=log,
                                stderr=subprocess.STDOUT, env={**os.environ, "PATH": f"{bin_dir}:{os.environ['PATH']}"})
         base, proxy = f"http://127.0.0.1:{port}", None
@@ -231,21 +285,7 @@ def main() -> None:
                 time.sleep(0.5)
             hub_ps = psutil.Process(hub.pid)
             proxy = next(p for p in hub_ps.children() if "configurable-http-proxy" in " ".join(p.cmdline()))
-            cpu0 = sum(hub_ps.cpu_times()[:2]) + sum(proxy.cpu_times()[:2])
-            start = time.monotonic()
-            names = [f"student{i:03d}" for i in range(args.students)]
-            with ThreadPoolExecutor(args.students) as pool:
-                futures = [pool.submit(student, base, api, n, args.chapter) for n in names]
-            results, errors = [], []
-            for f in futures:
-                try:
-                    results.append(f.result())
-                except Exception as e:  # a student's failure is a figure of the run, not its end
-                    errors.append(f"{type(e).__name__}: {e}")
-            wall = time.monotonic() - start
-            hub_cpu = sum(hub_ps.cpu_times()[:2]) + sum(proxy.cpu_times()[:2]) - cpu0
-            for n in names:
-                api.delete(f"{base}/hub/api/users/{n}/server", timeout=TIMEOUT)
+            yield base, api, hub_ps, proxy
         finally:
             hub.terminate()
             try:
@@ -255,6 +295,33 @@ def main() -> None:
             if proxy is not None and proxy.is_running():
                 proxy.terminate()
                 proxy.wait(timeout=30)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--students", type=int, default=5)
+    parser.add_argument("--save", action="store_true",
+                        help="also write the report to benchmarks/hub_load_<students>.json")
+    parser.add_argument("--chapter", type=Path, default=ROOT / "notebooks" / "00_getting_started.ipynb")
+    parser.add_argument("--chp", default=str(CHP))
+    args = parser.parse_args()
+    load_before = [round(x, 1) for x in os.getloadavg()]  # what else the machine ran: the figures depend on it
+    with running_hub(args.chp) as (base, api, hub_ps, proxy):
+        cpu0 = sum(hub_ps.cpu_times()[:2]) + sum(proxy.cpu_times()[:2])
+        start = time.monotonic()
+        names = [f"student{i:03d}" for i in range(args.students)]
+        with ThreadPoolExecutor(args.students) as pool:
+            futures = [pool.submit(student, base, api, n, args.chapter) for n in names]
+        results, errors = [], []
+        for f in futures:
+            try:
+                results.append(f.result())
+            except Exception as e:  # a student's failure is a figure of the run, not its end
+                errors.append(f"{type(e).__name__}: {e}")
+        wall = time.monotonic() - start
+        hub_cpu = sum(hub_ps.cpu_times()[:2]) + sum(proxy.cpu_times()[:2]) - cpu0
+        for n in names:
+            api.delete(f"{base}/hub/api/users/{n}/server", timeout=TIMEOUT)
     report = {"students": args.students, "succeeded": len(results), "errors": errors, "wall_s": round(wall, 1),
               "hub_and_proxy_cpu_s": round(hub_cpu, 2), "cores": os.cpu_count(),
               "date": time.strftime("%Y-%m-%d", time.gmtime()), "load_average_before": load_before,

@@ -180,46 +180,60 @@ def quote_page_count(count: int, teaching: Path = TEACHING) -> bool:
     return new != text
 
 
-def print_pdf(html: Path, pdf: Path) -> int:
+def print_pdf(html: Path, pdf: Path, browser=None) -> int:
     """Print `html` to `pdf`, twice (the contents get the pages the first print found); returns the number
-    of animations turned into strips."""
+    of animations turned into strips.
+
+    `browser`: a Playwright Chromium already running (the browser tests' session browser: a second sync
+    Playwright cannot start inside the first one's event loop); without it, Chromium is launched here.
+    """
     pdf.parent.mkdir(parents=True, exist_ok=True)
+    if browser is not None:
+        return _print(browser, html, pdf)
     with sync_playwright() as pw:
         browser = pw.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
         try:
-            page = browser.new_page()
-            remote = block_remote(page)
-            page.goto(html.resolve().as_uri(), wait_until="load", timeout=120_000)
-            page.wait_for_function("() => window.MathJax && MathJax.startup && MathJax.startup.promise",
-                                   timeout=60_000)
-            page.evaluate("() => MathJax.startup.promise")
-            page.wait_for_function("() => typeof Animation === 'undefined' || "
-                                   "[...document.querySelectorAll('div.animation img[id^=_anim_img]')]"
-                                   ".every(i => window['anim' + i.id.slice(9)])", timeout=60_000)
-            strips = page.evaluate(STRIPS_JS, FRAMES)
-            page.evaluate(CODE_LINES_JS, CODE_HANG_CH)
-            page.add_style_tag(content=PRINT_CSS)
-            page.emulate_media(media="print")
-            # lay the page out at the printed column's width (A4 less the margins, 96 px per inch)
-            page.set_viewport_size({"width": round((210 - 2 * MARGIN_MM) / 25.4 * 96), "height": 1100})
-            page.evaluate(FIT_MATH_JS)
-            margin = f"{MARGIN_MM}mm"
-            # tagged: a structure tree (headings, paragraphs, figures with their alt text) for screen readers
-            options = dict(format="A4", print_background=True, display_header_footer=True, tagged=True, outline=True,
-                           header_template="<span></span>", footer_template=FOOTER,
-                           margin={"top": margin, "bottom": margin, "left": margin, "right": margin})
-            entries = page.evaluate(TOC_JS)
-            with tempfile.TemporaryDirectory(prefix="mechlab-pdf-") as tmp:
-                draft = Path(tmp) / "draft.pdf"
-                page.pdf(path=str(draft), **options)
-                found = first_pages([text for _, text in entries], page_texts(draft))
-            page.evaluate(SET_PAGES_JS, [[i, found[text]] for i, text in entries if text in found])
-            page.pdf(path=str(pdf), **options)
-            if remote:
-                sys.exit(f"the book asked for other hosts while printing: {remote}")
-            return strips
+            return _print(browser, html, pdf)
         finally:
             browser.close()
+
+
+def _print(browser, html: Path, pdf: Path) -> int:
+    """print_pdf's work, in a new page of `browser` (closed after)."""
+    page = browser.new_page()
+    try:
+        remote = block_remote(page)
+        page.goto(html.resolve().as_uri(), wait_until="load", timeout=120_000)
+        page.wait_for_function("() => window.MathJax && MathJax.startup && MathJax.startup.promise",
+                               timeout=60_000)
+        page.evaluate("() => MathJax.startup.promise")
+        page.wait_for_function("() => typeof Animation === 'undefined' || "
+                               "[...document.querySelectorAll('div.animation img[id^=_anim_img]')]"
+                               ".every(i => window['anim' + i.id.slice(9)])", timeout=60_000)
+        strips = page.evaluate(STRIPS_JS, FRAMES)
+        page.evaluate(CODE_LINES_JS, CODE_HANG_CH)
+        page.add_style_tag(content=PRINT_CSS)
+        page.emulate_media(media="print")
+        # lay the page out at the printed column's width (A4 less the margins, 96 px per inch)
+        page.set_viewport_size({"width": round((210 - 2 * MARGIN_MM) / 25.4 * 96), "height": 1100})
+        page.evaluate(FIT_MATH_JS)
+        margin = f"{MARGIN_MM}mm"
+        # tagged: a structure tree (headings, paragraphs, figures with their alt text) for screen readers
+        options = dict(format="A4", print_background=True, display_header_footer=True, tagged=True, outline=True,
+                       header_template="<span></span>", footer_template=FOOTER,
+                       margin={"top": margin, "bottom": margin, "left": margin, "right": margin})
+        entries = page.evaluate(TOC_JS)
+        with tempfile.TemporaryDirectory(prefix="mechlab-pdf-") as tmp:
+            draft = Path(tmp) / "draft.pdf"
+            page.pdf(path=str(draft), **options)
+            found = first_pages([text for _, text in entries], page_texts(draft))
+        page.evaluate(SET_PAGES_JS, [[i, found[text]] for i, text in entries if text in found])
+        page.pdf(path=str(pdf), **options)
+        if remote:
+            sys.exit(f"the book asked for other hosts while printing: {remote}")
+        return strips
+    finally:
+        page.close()
 
 
 if __name__ == "__main__":
