@@ -23,6 +23,7 @@ from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, wrap
 from ..mechanisms.base import FULL_TURN, AnyMechanism, Mechanism, Structure
 from ..mechanisms.curved_slot import pin_relative_path, slot_sketch
+from ..mechanisms.fourbar import FourBar
 from ..mechanisms.slotted import SineMechanism, SlottedLink
 from ..motion import AngularMotion, LinearMotion, Motion, scalar_law
 from ..validate import Angles, validated
@@ -79,6 +80,11 @@ class EquivalentSlot(Mechanism):
     lies on +x, 0 for the slider-crank), and its link angle is the linkage's minus ``phase``.
     Points: O, A and the pivot E (angular) or C = (s, 0) (translating).
     """
+
+    @classmethod
+    def example(cls) -> EquivalentSlot:
+        """The curved-slot twin of ``FourBar.example()``."""
+        return equivalent_slot(FourBar.example())
 
     linkage: Mechanism
     slot_mechanism: Mechanism

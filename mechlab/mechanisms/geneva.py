@@ -346,6 +346,13 @@ class ExternalGeneva(PlanarGeneva):
     Dwell fraction 1/2 + 1/z; max |ψ'| = λ/(1 - λ); |ψ''| jumps by tan(π/z) at entry.
     """
 
+    title = "external Geneva"
+
+    @classmethod
+    def example(cls) -> ExternalGeneva:
+        """Four slots, centres 1 apart."""
+        return cls(4, 1.0, roller_radius=0.1)
+
     kappa = -1
 
     @property
@@ -388,6 +395,13 @@ class InternalGeneva(PlanarGeneva):
     fraction 1/2 - 1/z; max |ψ'| = λ/(1 + λ) at mid-motion; |ψ''| is largest at entry
     and exit, tan(π/z).
     """
+
+    title = "internal Geneva"
+
+    @classmethod
+    def example(cls) -> InternalGeneva:
+        """Six slots, centres 1 apart."""
+        return cls(6, 1.0)
 
     kappa = +1
 
