@@ -26,7 +26,7 @@ from ..mechanisms.curved_slot import pin_relative_path, slot_sketch
 from ..mechanisms.fourbar import FourBar
 from ..mechanisms.slotted import SineMechanism, SlottedLink
 from ..motion import AngularMotion, LinearMotion, Motion, scalar_law
-from ..validate import Angles, validated
+from ..validate import Angles, Real, validated
 from ..validate import mechanism as instance_of
 
 AnyMotion = Annotated[Motion, instance_of(Motion)]
@@ -86,10 +86,9 @@ class EquivalentSlot(Mechanism):
         """The curved-slot twin of ``FourBar.example()``."""
         return equivalent_slot(FourBar.example())
 
-    linkage: Mechanism
-    slot_mechanism: Mechanism
-    phase: float = 0.0
-
+    linkage: AnyMechanism
+    slot_mechanism: AnyMechanism
+    phase: Real = 0.0
 
     @property
     def crank(self) -> float:
