@@ -53,6 +53,13 @@ def _shaped(value, phi):
     return value[0] if np.ndim(phi) == 0 else value
 
 
+def _per_angle(name: str, values, shape) -> np.ndarray:
+    """``values`` (one number, or one per crank angle) over the crank angles; LoadError naming ``name`` otherwise."""
+    if np.ndim(values) and np.shape(values) != shape:
+        raise LoadError(f"{name} must be one number or one per crank angle ({shape[0]}), got {np.size(values)} values")
+    return np.broadcast_to(np.asarray(values, dtype=float), shape)
+
+
 @validated
 def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model = None, loads: Loads = (), omega1: Omega = 1.0,
                   eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ma.MaskedArray:
@@ -92,7 +99,7 @@ def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model 
     100.0
     """
     motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
-    M = np.broadcast_to(np.asarray(torque, dtype=float), dq.shape)
+    M = _per_angle("torque", torque, dq.shape)
     still = np.abs(dq) <= _STILL * max(float(np.max(np.abs(dq))), 1.0) * np.abs(dth)
     with np.errstate(divide="ignore", invalid="ignore"):
         Q = np.ma.masked_array(np.where(still, 0.0, (M0 - M) * dth / np.where(still, 1.0, dq)), mask=still)
@@ -129,5 +136,5 @@ def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model 
     10.0
     """
     motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
-    Q = np.broadcast_to(np.asarray(load, dtype=float), dq.shape)
+    Q = _per_angle("load", load, dq.shape)
     return _shaped(M0 - Q * dq / dth, phi)

@@ -289,6 +289,10 @@ class Mechanism(Checked):
     output: ClassVar[str] = "angle"
     # the family's name in words (default: its class name, "SliderCrank" → "slider crank")
     title: ClassVar[str] = "mechanism"
+    # what the kinematic structure leaves out and the design layer counts: rollers (each a part on its own pin)
+    # and passive higher pairs (a Geneva drive's locking arcs)
+    rollers: ClassVar[int] = 0
+    locks: ClassVar[int] = 0
 
     def __init_subclass__(cls, **kwargs):
         # every family's motion(phi): a scalar φ in, a motion of scalars out

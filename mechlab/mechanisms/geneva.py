@@ -83,6 +83,8 @@ class PlanarGeneva(Mechanism):
     :meth:`_check_roller`).
     """
 
+    locks = 1   # the crank's locking disc on the wheel's arcs
+
     z: Slots
     centre_distance: Length
     roller_radius: Annotated[float | None, length(optional=True)] = None

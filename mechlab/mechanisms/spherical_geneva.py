@@ -60,6 +60,8 @@ class SphericalGeneva(Mechanism):
 
     title = "spherical Geneva"
 
+    locks = 1   # the crank's locking disc on the wheel's arcs
+
     @classmethod
     def example(cls) -> SphericalGeneva:
         """Sphere 40 mm, offset 15 mm, four slots."""

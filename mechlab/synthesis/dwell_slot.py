@@ -502,6 +502,8 @@ class DwellSlotMechanism(Mechanism):
     concave side) sets the slot's flanks for drawing and export.
     """
 
+    rollers = 1   # the roller in the slot
+
     @classmethod
     def example(cls) -> DwellSlotMechanism:
         """λ = 0.5, a dwell from φ = 60° to 150° (``curved_slot_dwell``)."""
