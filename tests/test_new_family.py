@@ -6,6 +6,7 @@ checked with numbers: its motion (against a closed form written here, differenti
 force model (the balancing torque by virtual power), validation (named errors for a bad instance), a design-layer
 count (equal to the mobility count) and fuzz coverage (the fuzz test finds it)."""
 
+import re
 from dataclasses import dataclass, replace
 
 import matplotlib.pyplot as plt
@@ -22,7 +23,7 @@ from test_structures import test_mobility_is_one_and_each_group_zero as groups_a
 import mechlab as ml
 from mechlab import design as D
 from mechlab.design.criteria import counted
-from mechlab.draw import draw
+from mechlab.draw import animate, draw
 from mechlab.errors import AssemblyError, DimensionError
 from mechlab.kinetostatics.model import Force, model_for
 from mechlab.kinetostatics.solve import solve
@@ -110,6 +111,9 @@ def test_drawing_and_one_numbering():
     d = draw(RAM, 0.4)
     assert [t.get_text() for t in d.numbers if t.get_visible()] == ["1", "2", "3", "4", "5", "6"]
     assert RAM.structure().numbers() == {"crank": 1, "coupler": 2, "rocker": 3, "rod": 4, "ram": 5, "frame": 6}
+    # animated with its law: the page describes it by its class name, its joints and the stroke of its frames
+    alt = re.search(r'<img alt="([^"]+)"', animate(RAM, n=6, law=True).to_jshtml()).group(1)
+    assert "rocker ram with joints O, E, G, A, B, C, D" in alt and "Animation of 6 frames" in alt
     plt.close("all")
 
 
