@@ -53,11 +53,11 @@ def _shaped(value, phi):
     return value[0] if np.ndim(phi) == 0 else value
 
 
-def _per_angle(name: str, values, shape) -> np.ndarray:
-    """``values`` (one number, or one per crank angle) over the crank angles; LoadError naming ``name`` otherwise."""
-    if np.ndim(values) and np.shape(values) != shape:
-        raise LoadError(f"{name} must be one number or one per crank angle ({shape[0]}), got {np.size(values)} values")
-    return np.broadcast_to(np.asarray(values, dtype=float), shape)
+def _per_angle(name: str, values, phi) -> None:
+    """LoadError naming ``name`` unless ``values`` is one number or one per crank angle of ``phi``."""
+    if np.ndim(values) and np.shape(values) != (np.size(phi),):
+        raise LoadError(f"{name} must be one number or one per crank angle ({np.size(phi)}), got {np.size(values)} "
+                        f"values")
 
 
 @validated
@@ -98,8 +98,9 @@ def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model 
     >>> round(float(Q), 6)                                # the force on the slider along +s (s′ = −0.1)
     100.0
     """
+    _per_angle("torque", torque, phi)
     motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
-    M = _per_angle("torque", torque, dq.shape)
+    M = np.broadcast_to(np.asarray(torque, dtype=float), dq.shape)
     still = np.abs(dq) <= _STILL * max(float(np.max(np.abs(dq))), 1.0) * np.abs(dth)
     with np.errstate(divide="ignore", invalid="ignore"):
         Q = np.ma.masked_array(np.where(still, 0.0, (M0 - M) * dth / np.where(still, 1.0, dq)), mask=still)
@@ -135,6 +136,7 @@ def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model 
     >>> round(float(torque_for_load(sc, 100.0, np.pi / 2)), 6)
     10.0
     """
+    _per_angle("load", load, phi)
     motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
-    Q = _per_angle("load", load, dq.shape)
+    Q = np.broadcast_to(np.asarray(load, dtype=float), dq.shape)
     return _shaped(M0 - Q * dq / dth, phi)
