@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from examples import designs, guides
+from examples import designs, example_of, families, guides
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -37,7 +37,6 @@ from mechlab import design as D
 from mechlab import forces as F
 from mechlab import motion_laws as ML
 from mechlab.kinetostatics import drive as force_drive
-from mechlab.mechanisms.sixbar_iv import example as sixbar_example
 from mechlab.validate import _spec_of
 
 DEG = np.pi / 180
@@ -105,29 +104,24 @@ fb = ml.FourBar(1.0, 3.0, 3.0, 4.0)
 PHI = np.linspace(0.1, 6.0, 7)
 TURN = np.linspace(0.0, 2 * np.pi, 9)
 
-# name: (callable, args, kwargs, examples)
+
+def family_case(cls):
+    """A family's case, found not listed: its class called with the fields of its example, each replaced in turn."""
+    return lambda: (cls, tuple(fields_of(example_of(cls))), {})
+
+
+def case_name(cls) -> str:
+    """A family's case name: its class name (with its module for one defined outside mechlab)."""
+    return cls.__name__ if cls.__module__.startswith("mechlab.") else f"{cls.__module__}.{cls.__qualname__}"
+
+
+# name: (callable, args, kwargs); every family of mechlab (tests/examples.families) first
 CASES = {
-    "FourBar": lambda: (ml.FourBar, (1.0, 3.0, 3.0, 4.0), {"assembly": 1}),
-    "SliderCrank": lambda: (ml.SliderCrank, (1.0, 3.0), {"offset": 0.2, "assembly": -1}),
-    "SlottedLink": lambda: (ml.SlottedLink, (0.5, 1.0), {}),
-    "SineMechanism": lambda: (ml.SineMechanism, (1.0,), {}),
+    **{case_name(cls): family_case(cls) for cls in families() if cls.__module__.startswith("mechlab.")},
     "CircleSlot": lambda: (ml.CircleSlot, ((1.0, 0.0), 3.0), {}),
     "ParametricSlot": lambda: (ml.ParametricSlot, tuple(fields_of(wavy())[:5]), {"periodic": False}),
     "SampledSlot": lambda: (ml.SampledSlot, (np.c_[np.ones(9), np.linspace(-0.8, 0.8, 9)],), {"closed": False}),
-    "CurvedSlotLink": lambda: (ml.CurvedSlotLink, (1.0, 4.0, ml.CircleSlot((3.0, 0.0), 3.0)), {"start": 1.0}),
-    "TranslatingCurvedSlot": lambda: (ml.TranslatingCurvedSlot, (1.0, ml.CircleSlot((0.0, 0.2), 3.0)),
-                                      {"start": 0.0}),
-    "SixBarIV": lambda: (ml.SixBarIV, tuple(fields_of(sixbar_example())), {}),
-    "EllipticTrammel": lambda: (ml.EllipticTrammel, (1.0,), {"beta": 1.2}),
-    "Antiparallelogram": lambda: (ml.Antiparallelogram, (1.0, 2.0), {}),
-    "LambdaMechanism": lambda: (ml.LambdaMechanism, (0.4, 0.8, np.pi), {"assembly": 1}),
-    "ExternalGeneva": lambda: (ml.ExternalGeneva, (4, 1.0), {"roller_radius": 0.1}),
-    "InternalGeneva": lambda: (ml.InternalGeneva, (6, 1.0), {}),
-    "SphericalGeneva": lambda: (ml.SphericalGeneva, (40.0, 15.0, 4), {"pin_diameter": 10.0}),
-    # build your own linkage: the pieces and a whole six-bar (a shaper) with every field replaced in turn
-    "Linkage": lambda: (ml.Linkage, ({"O": (0.0, 0.0), "P": (0.0, -2.0), "G": (0.0, 2.2)}, ml.Crank("O", "A", 1.0)),
-                        {"groups": (ml.RPR("A", "P", 4.0), ml.Point("C", "PA", (4.0, 0.0)),
-                                    ml.RRP("C", "D", 1.5, ml.Guide("G"))), "output_link": "slider D"}),
+    # build your own linkage: the pieces (the whole linkage is a family, its example a shaper)
     "Crank": lambda: (ml.Crank, ("O", "A", 1.0), {"name": "crank"}),
     "RRR": lambda: (ml.RRR, ("A", "E", "B", 3.0, 3.0), {"assembly": -1, "links": ("coupler", "rocker")}),
     "RRP": lambda: (ml.RRP, ("A", "B", 3.0, ml.Guide("G", 0.2)), {"assembly": 1, "links": ("rod", "slider")}),
@@ -177,10 +171,6 @@ CASES = {
     "slot_residual_first_order": lambda: (ml.slot_residual_first_order, (designs()[2], guides()[1], PHI), {}),
     "slider_report": lambda: (ml.slider_report, (designs()[1],), {"dwell": 120 * DEG}),
     "slider_invariants": lambda: (ml.slider_invariants, (designs()[3],), {"dwell": np.pi}),
-    "LambdaRockerSixBar": lambda: (ml.LambdaRockerSixBar, tuple(fields_of(designs()[0])), {}),
-    "LambdaSliderSixBar": lambda: (ml.LambdaSliderSixBar, tuple(fields_of(designs()[1])), {}),
-    "LambdaSlottedSixBar": lambda: (ml.LambdaSlottedSixBar, tuple(fields_of(designs()[2])), {}),
-    "LambdaTranslatingSlot": lambda: (ml.LambdaTranslatingSlot, tuple(fields_of(designs()[3])), {}),
     "spherical_table": lambda: (ml.spherical_table, (40.0, 15.0, [3, 4]), {"pin_diameter": 10.0}),
     "intermittency": lambda: (ml.intermittency, (ml.ExternalGeneva(4, 1.0),),
                               {"n": 721, "dwell_tol": 1e-9, "phase": 0.1}),
@@ -213,7 +203,6 @@ CASES = {
     "crank_ranges_degrees": lambda: (ml.crank_ranges_degrees, (fb,), {}),
     "table1_comparison": lambda: (ml.table1_comparison, (), {"R": 40.0, "e": 15.0}),
     "table1_review": lambda: (ml.table1_review, (), {}),
-    "DwellSlotMechanism": lambda: (ml.DwellSlotMechanism, (0.5, 60 * DEG, 150 * DEG), {"transition": "sextic"}),
     "write_dxf": lambda: (ml.write_dxf, (ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"),
                                          scratch() / "slot.dxf"),
                           {"roller_radius": 0.01, "n": 41}),
@@ -232,9 +221,6 @@ CASES = {
     "time_ratio_far_angle": lambda: (ml.time_ratio_far_angle, (1.2, 120 * DEG), {}),
     "CamProgramme": lambda: (ml.CamProgramme, (10.0, 100 * DEG, 100 * DEG),
                              {"outer_dwell": 40 * DEG, "law": "cycloidal (sine)", "return_law": "3-4-5 polynomial"}),
-    "TranslatingRollerCam": lambda: (ml.TranslatingRollerCam, (cams()[0], 40.0, 8.0), {"offset": 2.0, "samples": 720}),
-    "OscillatingRollerCam": lambda: (ml.OscillatingRollerCam, (cams()[2], 40.0, 8.0, float(np.hypot(100.0, 48.0)),
-                                                               100.0), {"samples": 720}),
     "write_cam_csv": lambda: (ml.write_cam_csv, (cams()[1],), {"path": None, "n": 73}),
     "write_cam_dxf": lambda: (ml.write_cam_dxf, (cams()[3], scratch() / "cam.dxf"), {"n": 73}),
     # the Chebyshev guiding solvers
@@ -367,8 +353,8 @@ def well_typed(value) -> bool:
     return isinstance(value, numbers.Real) and bool(np.isfinite(value))
 
 
-def run_case(name, replace):
-    fn, args, kwargs = CASES[name]()
+def run_case(name, replace, case=None):
+    fn, args, kwargs = (case or CASES[name])()
     args, kwargs = list(args), dict(kwargs)
     param, index, bad = replace(parameters(fn, args, kwargs), args, kwargs)
     if index is None:
@@ -396,10 +382,9 @@ def test_valid_call(name):
     check_result(fn(*args, **kwargs))
 
 
-@pytest.mark.parametrize("name", sorted(n for n in CASES if CASES[n]()[1] or CASES[n]()[2]))  # with parameters
-def test_every_parameter_replaced(name):
-    @settings(max_examples=BUDGET.get(name, 40), deadline=None, database=None,
-              suppress_health_check=list(HealthCheck))
+def fuzz(name, case, examples: int) -> None:
+    """``examples`` calls of ``case`` with one parameter replaced by a nearby valid or an adversarial value."""
+    @settings(max_examples=examples, deadline=None, database=None, suppress_health_check=list(HealthCheck))
     @given(st.data())
     def replaced(data):
         def replace(params, args, kwargs):
@@ -409,9 +394,34 @@ def test_every_parameter_replaced(name):
             if isinstance(valid, float) and not isinstance(valid, bool):
                 choices.append(valid * data.draw(st.floats(0.5, 2.0), label="scale"))
             return param, index, data.draw(st.sampled_from(choices), label="value")
-        run_case(name, replace)
+        run_case(name, replace, case)
 
     replaced()
+
+
+@pytest.mark.parametrize("name", sorted(n for n in CASES if CASES[n]()[1] or CASES[n]()[2]))  # with parameters
+def test_every_parameter_replaced(name):
+    fuzz(name, CASES[name], BUDGET.get(name, 40))
+
+
+def fuzz_family(cls, examples: int = 20) -> None:
+    """Fuzz a family found at run time (e.g. one a test module defines) as the cases above: its example's
+    fields each replaced in turn."""
+    case = family_case(cls)
+    fn, args, kwargs = case()
+    check_result(fn(*args, **kwargs))
+    fuzz(case_name(cls), case, examples)
+
+
+def test_every_family_found_is_fuzzed():
+    """Each family found at run time has its case: mechlab's above, one defined elsewhere (a test module's) here."""
+    found = families()
+    assert {ml.FourBar, ml.Linkage, ml.TranslatingRollerCam} <= set(found)
+    for cls in found:
+        if case_name(cls) in CASES:
+            assert CASES[case_name(cls)]()[0] is cls
+        else:
+            fuzz_family(cls, examples=10)
 
 
 # Exported classes whose instances are results, built by the library and never from user input (a Motion is

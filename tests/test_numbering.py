@@ -1,4 +1,4 @@
-"""One numbering of the links: every mechanism family (found as a subclass of Mechanism, not listed by hand) is
+"""One numbering of the links: every mechanism family (found by ``Mechanism.families()``, not listed by hand) is
 numbered by its structure alone, and the drawing, the instantaneous centres and the force model give each link the
 same number (each moving link but the blocks once, the frame its own); the design layer's counts of parts and pairs
 come from the structure too (with the rollers and locking arcs the kinematic structure leaves out)."""
@@ -9,7 +9,8 @@ import pkgutil
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
-from examples import designs
+from examples import designs, example_of
+from examples import families as found_families
 
 import mechlab as ml
 from mechlab.design import FAMILIES, Specification
@@ -19,31 +20,20 @@ from mechlab.errors import SpatialMechanismError, StructureError
 from mechlab.kinetostatics.machines import Kinetostatics
 from mechlab.kinetostatics.model import model_for
 from mechlab.mechanisms.base import FRAME, Mechanism
-from mechlab.mechanisms.sixbar_iv import example as sixbar_example
+from mechlab.mechanisms.linkage import LinkageFamily
 
 DEG = np.pi / 180
 
-# Mechanism subclasses that are no family: a mechanism with its loads (drawn as its mechanism)
-NOT_FAMILIES = {Kinetostatics}
+# Mechanism subclasses that are no family: a mechanism with its loads (drawn as its mechanism); the base of the
+# families a dataclass of dimensions builds as a Linkage (a family subclasses it; tests/test_new_family.py)
+NOT_FAMILIES = {Kinetostatics, LinkageFamily}
 # families whose input is no crank on a frame pivot: no force model (model_for says so, StructureError)
 NO_CRANK = {ml.EllipticTrammel}
 
 
 def families():
-    lift = ml.CamProgramme(10.0, 100 * DEG, 100 * DEG, 40 * DEG)
-    swing = ml.CamProgramme(20 * DEG, 100 * DEG, 100 * DEG)
-    return [ml.FourBar(1, 3, 3, 4), ml.SliderCrank(1, 3, 0.2), ml.SlottedLink(0.5, 1.0), ml.SineMechanism(1.0),
-            ml.CurvedSlotLink(1.0, 4.0, ml.CircleSlot((3.0, 0.0), 3.0), start=1.0),
-            ml.TranslatingCurvedSlot(1.0, ml.CircleSlot((0.0, 0.2), 3.0)), sixbar_example(),
-            ml.EllipticTrammel(1.0, 1.2), ml.Antiparallelogram(1.0, 2.0), ml.LambdaMechanism(0.4, 0.8, np.pi),
-            ml.circle_guiding(150 * DEG, 0.9, 120 * DEG).guided,
-            *designs(), ml.ExternalGeneva(4, 1.0), ml.InternalGeneva(6, 1.0),
-            ml.TranslatingRollerCam(lift, 40.0, 8.0, offset=2.0),
-            ml.OscillatingRollerCam(swing, 40.0, 8.0, float(np.hypot(100.0, 48.0)), 100.0),
-            ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG), ml.equivalent_slot(ml.FourBar(1, 3, 3, 4)),
-            ml.SphericalGeneva(40.0, 15.0, 5),
-            ml.Linkage({"O": (0, 0), "P": (0, -2), "G": (0, 2.2)}, ml.Crank("O", "A", 1.0))
-            .rpr("A", "P", 4.0).point("C", "PA", (4.0, 0.0)).rrp("C", "D", 1.5, "G")]
+    """One example of every family of mechlab, found (``Mechanism.families()``), not listed here."""
+    return [example_of(cls) for cls in found_families() if cls.__module__.startswith("mechlab.")]
 
 
 def mechanism_classes():
@@ -59,11 +49,12 @@ def mechanism_classes():
     return {c for c in below(Mechanism) if c.__module__.startswith("mechlab.")}
 
 
-def test_every_family_is_numbered_here():
-    # a family added to mechlab without an example here fails: only a class with subclasses (a base) may lack one
+def test_every_family_is_found():
+    # a class of mechlab that defines no example() is found by no service: only a base (with subclasses) may lack one
     covered = {type(m) for m in families()}
     missing = {c for c in mechanism_classes() - covered - NOT_FAMILIES if not c.__subclasses__()}
-    assert not missing, f"families with no example in test_numbering.families(): {sorted(c.__name__ for c in missing)}"
+    assert not missing, f"families with no example(): {sorted(c.__name__ for c in missing)}"
+    assert ml.Linkage in covered and ml.SixBarIV in covered and ml.TranslatingRollerCam in covered
 
 
 def _id(m):
@@ -72,6 +63,11 @@ def _id(m):
 
 @pytest.mark.parametrize("mech", families(), ids=_id)
 def test_drawing_centres_and_forces_number_each_link_alike(mech):
+    check_numbering(mech)
+
+
+def check_numbering(mech):
+    """The drawing, the centres and the force model of ``mech`` give each link the same number."""
     st = mech.structure()
     if st.spatial:   # drawn in 3-D; the planar centres and forces refuse it, naming why
         for ask in (lambda: ml.instant_centres(mech, [0.1]), lambda: model_for(mech)):
@@ -114,7 +110,7 @@ def test_a_sketch_numbering_no_link_of_the_structure_is_refused():
 
 def test_the_numbering_is_the_structures_own():
     # a structure's explicit numbering (Kozhevnikov's for the six-bar: the output 4, link 5 last) reaches all three
-    six = sixbar_example()
+    six = ml.SixBarIV.example()
     assert six.structure().numbers() == {"crank": 1, "coupler": 2, "link 3": 3, "output": 4, "link 5": 5, "frame": 6}
     assert model_for(six).numbering == ("crank", "coupler", "link 3", "output", "link 5", FRAME)
     with pytest.raises(ml.MechanismError, match="numbering"):
@@ -130,7 +126,11 @@ def test_design_counts_come_from_the_structure():
     for name, family in FAMILIES.items():
         for spec in specs:
             try:
-                seen[name] = family(spec).structure
+                design = family(spec)
+                # a designed mechanism is of a found family, counted as check_design counts it (the class's own)
+                assert type(design.mechanism) in found_families(), name
+                assert design.structure == counted(design.mechanism), name
+                seen[name] = design.structure
                 break
             except ml.MechanismError:
                 continue

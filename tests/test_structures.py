@@ -4,6 +4,8 @@ kinetostatics built from it balance the load by virtual work. The spherical Gene
 
 import numpy as np
 import pytest
+from examples import example_of
+from examples import families as found_families
 
 import mechlab as ml
 from mechlab.analysis.centres import instant_centres
@@ -11,7 +13,6 @@ from mechlab.geometry import perp
 from mechlab.kinetostatics.model import Force, Torque, model_for
 from mechlab.kinetostatics.solve import solve
 from mechlab.mechanisms.base import FRAME, Link, Pair, Structure
-from mechlab.mechanisms.sixbar_iv import example as sixbar_iv
 from mechlab.mechanisms.spherical_geneva import SpatialMechanismError
 from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
 from mechlab.synthesis.lambda_sixbars import mchv1, mchv3_full_turn, mchv3_half_turn
@@ -20,17 +21,27 @@ from mechlab.synthesis.lambda_sliders import mchv2, mchv5
 DEG = np.pi / 180
 
 
-def families():
+# found families left out here, each with its reason: the spherical Geneva is spatial (its own test below); the
+# trammel's input slides on a guide, it is no crank turning on the frame (no force model: StructureError)
+NOT_PLANAR_CRANK = {ml.SphericalGeneva: "spatial", ml.EllipticTrammel: "no crank on a frame pivot"}
+
+
+def variants():
+    """Dimensions and designs beside the families' own examples: other proportions and the other synthesis routes."""
     guide = circle_guiding(150 * DEG, 0.9, 120 * DEG)
     line = straight_guiding(np.pi, 0.8, np.pi)
-    return [ml.FourBar(1, 3, 3, 4), ml.SliderCrank(1, 3, 0.4), ml.SlottedLink(0.5, 1.0), ml.SineMechanism(1.0),
-            ml.classic_lambda(), guide.guided, mchv1(guide, 1.0, 20 * DEG), mchv3_half_turn(line),
+    return [ml.SliderCrank(1, 3, 0.4), ml.classic_lambda(), mchv1(guide, 1.0, 20 * DEG), mchv3_half_turn(line),
             mchv3_full_turn(line, 0.06, 0.05, side=1), mchv2(guide, 1.25, mu_min=None), mchv5(line, guide_angle=0.3),
-            sixbar_iv(), ml.CurvedSlotLink(0.4, 1.0, ml.CircleSlot((1.0, 0.0), 0.9), start=1.0),
+            ml.CurvedSlotLink(0.4, 1.0, ml.CircleSlot((1.0, 0.0), 0.9), start=1.0),
             ml.TranslatingCurvedSlot(1.0, ml.CircleSlot((0.0, 0.3), 2.0), start=np.pi),
             ml.curved_slot_dwell(0.5, 60 * DEG, 150 * DEG, transition="quintic"),
-            ml.ExternalGeneva(4, 100.0), ml.InternalGeneva(6, 100.0), ml.equivalent_slot(ml.FourBar(1, 3, 3, 4)),
-            ml.equivalent_slot(ml.SliderCrank(1, 3, 0.4))]
+            ml.ExternalGeneva(4, 100.0), ml.InternalGeneva(6, 100.0), ml.equivalent_slot(ml.SliderCrank(1, 3, 0.4))]
+
+
+def families():
+    """Every planar family driven by a crank (found, with its example: tests/examples.py) and the variants."""
+    return [example_of(c) for c in found_families() if c.__module__.startswith("mechlab.")
+            and c not in NOT_PLANAR_CRANK] + variants()
 
 
 def _name(m):

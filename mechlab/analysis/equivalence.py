@@ -23,9 +23,10 @@ from ..errors import DimensionError
 from ..geometry import AnglePath, PointPath, as_angles, wrap
 from ..mechanisms.base import FULL_TURN, AnyMechanism, Mechanism, Structure
 from ..mechanisms.curved_slot import pin_relative_path, slot_sketch
+from ..mechanisms.fourbar import FourBar
 from ..mechanisms.slotted import SineMechanism, SlottedLink
 from ..motion import AngularMotion, LinearMotion, Motion, scalar_law
-from ..validate import Angles, validated
+from ..validate import Angles, Real, validated
 from ..validate import mechanism as instance_of
 
 AnyMotion = Annotated[Motion, instance_of(Motion)]
@@ -80,10 +81,14 @@ class EquivalentSlot(Mechanism):
     Points: O, A and the pivot E (angular) or C = (s, 0) (translating).
     """
 
-    linkage: Mechanism
-    slot_mechanism: Mechanism
-    phase: float = 0.0
+    @classmethod
+    def example(cls) -> EquivalentSlot:
+        """The curved-slot twin of ``FourBar.example()``."""
+        return equivalent_slot(FourBar.example())
 
+    linkage: AnyMechanism
+    slot_mechanism: AnyMechanism
+    phase: Real = 0.0
 
     @property
     def crank(self) -> float:

@@ -65,19 +65,20 @@ class Counts(Checked):
         return f"{self.parts} parts, {self.lower_pairs} lower{higher} pairs"
 
 
-def counted(mechanism, *, rollers: int = 0, locks: int = 0) -> Counts:
+def counted(mechanism, *, rollers: int | None = None, locks: int | None = None) -> Counts:
     """The parts and pairs of a design, counted from ``mechanism.structure()``.
 
     The kinematic structure leaves out what does not change the motion: a roller (a part on its own
     pin, replaced by a higher pair at its centre) and a Geneva drive's locking arcs (a second, passive
-    higher pair). Each of ``rollers`` adds a part and a lower pair; each of ``locks`` a higher pair.
+    higher pair). Each of ``rollers`` adds a part and a lower pair; each of ``locks`` a higher pair; by
+    default the family's own (its class's ``rollers`` and ``locks``).
 
     Parameters
     ----------
     mechanism : Mechanism
         A mechanism with a ``structure()`` (a spatial one's links and pairs count alike).
-    rollers, locks : int
-        Rollers and locking pairs the structure leaves out.
+    rollers, locks : int, optional
+        Rollers and locking pairs the structure leaves out (default: the mechanism's class's).
 
     Returns
     -------
@@ -91,6 +92,8 @@ def counted(mechanism, *, rollers: int = 0, locks: int = 0) -> Counts:
     '3 parts, 4 lower pairs'
     """
     st = mechanism.structure()
+    rollers = getattr(mechanism, "rollers", 0) if rollers is None else rollers
+    locks = getattr(mechanism, "locks", 0) if locks is None else locks
     higher = sum(p.kind == "higher" for p in st.pairs)
     return Counts(len(st.links) + rollers, len(st.pairs) - higher + rollers, higher + locks)
 

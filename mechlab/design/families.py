@@ -69,8 +69,8 @@ def _geneva(cls, family: str, spec: Specification) -> Design:
     _dwell_matches(spec, g.dwell_fraction, f"{z} stations")
     wheel = ((g.centre_distance, 0.0), g.outer_radius)
     crank = ((0.0, 0.0), g.crank_radius + g.roller_radius)
-    # parts: crank with pin and locking disc, wheel; pairs: two pivots, pin in slot, and the locking arcs
-    return Design(family, g, spec.crank_radius / g.crank_radius, counted(g, locks=1), circles=(wheel, crank),
+    # parts: crank with pin and locking disc, wheel; pairs: two pivots, pin in slot, and the locking arcs (locks)
+    return Design(family, g, spec.crank_radius / g.crank_radius, counted(g), circles=(wheel, crank),
                   pressure_angle=0.0, note="radial slot: the pin pushes along the wheel's tangent")
 
 
@@ -106,7 +106,7 @@ def spherical_geneva(spec: Specification) -> Design:
                xtol=1e-9) if d_min < want < d_max else (0.0 if want <= d_min else e_max)
     g = SphericalGeneva(R, e, z)
     # the crank's locking disc and the wheel's arcs: a second, passive higher pair
-    return Design("spherical Geneva", g, 1.0, counted(g, locks=1),
+    return Design("spherical Geneva", g, 1.0, counted(g),
                   circles=(((0.0, 0.0), R),), note=f"offset e = {e:.4g} mm sets the dwell (sphere R = {R:g} mm)")
 
 
@@ -149,7 +149,7 @@ def curved_slot(spec: Specification) -> Design:
         write_csv(mm, str(path).rsplit(".", 1)[0] + ".csv")
         return path
 
-    return Design("curved slot", m, scale, counted(m, rollers=1),
+    return Design("curved slot", m, scale, counted(m),
                   pressure_angle=theta, export=export, note=f"λ = {lam:.4f}, dwell from φ = {np.degrees(phi1):.1f}°")
 
 
@@ -261,7 +261,7 @@ def disc_cam(spec: Specification) -> Design:
             return path
 
         follower = "translating" if spec.motion == "stroke" else "oscillating"
-        return Design("disc cam", cam, 1.0, counted(cam, rollers=1),
+        return Design("disc cam", cam, 1.0, counted(cam),
                       circles=(((0.0, 0.0), float(np.max(np.hypot(*cam.profile().surface.T)))),), export=export,
                       note=f"{follower} roller follower, base radius {rb:.4g} mm, roller {roller * rb:.3g} mm, "
                            f"{CAM_LAW} law")

@@ -51,6 +51,13 @@ def _shaped(value, phi):
     return value[0] if np.ndim(phi) == 0 else value
 
 
+def _per_angle(name: str, values, phi) -> None:
+    """LoadError naming ``name`` unless ``values`` is one number or one per crank angle of ``phi``."""
+    if np.ndim(values) and np.shape(values) != (np.size(phi),):
+        raise LoadError(f"{name} must be one number or one per crank angle ({np.size(phi)}), got {np.size(values)} "
+                        f"values")
+
+
 @validated
 def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model = None, loads: Loads = (), omega1: Omega = 1.0,
                   eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ma.MaskedArray:
@@ -89,6 +96,7 @@ def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model 
     >>> round(float(Q), 6)                                # the force on the slider along +s (s′ = −0.1)
     100.0
     """
+    _per_angle("torque", torque, phi)
     motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
     M = np.broadcast_to(np.asarray(torque, dtype=float), dq.shape)
     # a still output (mechlab.motion.STILL) balances no load: masked, not infinite
@@ -127,6 +135,7 @@ def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model 
     >>> round(float(torque_for_load(sc, 100.0, np.pi / 2)), 6)
     10.0
     """
+    _per_angle("load", load, phi)
     motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
     Q = np.broadcast_to(np.asarray(load, dtype=float), dq.shape)
     return _shaped(M0 - Q * dq / dth, phi)

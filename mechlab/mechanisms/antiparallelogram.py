@@ -32,6 +32,11 @@ class Antiparallelogram(Mechanism):
     ground > crank (k < -1): both short links turn fully in opposite senses (long frame).
     """
 
+    @classmethod
+    def example(cls) -> Antiparallelogram:
+        """Crank 1, ground 2."""
+        return cls(1.0, 2.0)
+
     crank: Length
     ground: Length
 

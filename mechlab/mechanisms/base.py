@@ -4,6 +4,7 @@ and the curved-slot equivalence are derived, and its sketch, from which it is dr
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Annotated, Any, ClassVar
@@ -286,12 +287,68 @@ class Mechanism(Checked):
 
     pivots: ClassVar[tuple[str, ...]] = ("O",)
     output: ClassVar[str] = "angle"
+    # the family's name in words (default: its class name, "SliderCrank" → "slider crank")
+    title: ClassVar[str] = "mechanism"
+    # what the kinematic structure leaves out and the design layer counts: rollers (each a part on its own pin)
+    # and passive higher pairs (a Geneva drive's locking arcs)
+    rollers: ClassVar[int] = 0
+    locks: ClassVar[int] = 0
 
     def __init_subclass__(cls, **kwargs):
         # every family's motion(phi): a scalar φ in, a motion of scalars out
         super().__init_subclass__(**kwargs)
         if "motion" in cls.__dict__:
             cls.motion = scalar_in_scalar_out(cls.__dict__["motion"])
+        if "title" not in cls.__dict__:
+            cls.title = re.sub(r"(?<=[a-z])(?=[A-Z])", " ", cls.__name__.lstrip("_")).lower()
+
+    @classmethod
+    def example(cls) -> Mechanism:
+        """A valid instance of the family, built from its own dimensions: what the services that find the
+        families themselves (:meth:`families`) draw, move, count and fuzz.
+
+        A family defines it on its class (a subclass that only changes a method inherits none of its own and
+        is no family of its own).
+
+        Raises
+        ------
+        MechanismError
+            The class defines no example.
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> ml.FourBar.example().can_turn
+        True
+        """
+        raise MechanismError(f"{cls.__name__} defines no example(): give the family a classmethod example() "
+                             f"that builds one valid instance")
+
+    @classmethod
+    def families(cls) -> tuple[type[Mechanism], ...]:
+        """Every family at or below this class: the subclasses that define their own :meth:`example`.
+
+        Found at call time by walking ``__subclasses__()``, so a family defined anywhere (a notebook cell, a
+        test module) is found as soon as its class exists; nothing is registered. Ordered by module and name.
+
+        Returns
+        -------
+        tuple of type
+            The family classes.
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> ml.FourBar in ml.Mechanism.families()
+        True
+        """
+        found, todo = {}, [cls]
+        while todo:
+            c = todo.pop()
+            if "example" in c.__dict__ and c is not Mechanism:
+                found[c] = None
+            todo += c.__subclasses__()
+        return tuple(sorted(found, key=lambda c: (c.__module__, c.__qualname__)))
 
     def crank_ranges(self) -> tuple[tuple[float, float], ...]:
         """Open intervals of crank angles (radians) where the mechanism assembles."""

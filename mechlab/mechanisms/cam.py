@@ -122,6 +122,8 @@ class RollerCam(Mechanism):
     spline goes through.
     """
 
+    rollers = 1   # the follower's roller
+
     pivots = ("O",)
 
     # -- the follower (subclasses) ------------------------------------------------------------

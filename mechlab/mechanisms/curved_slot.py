@@ -289,6 +289,11 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
     angle (formula (18)) and β the polar angle of the pin in the link frame.
     """
 
+    @classmethod
+    def example(cls) -> CurvedSlotLink:
+        """Crank 1, pivots 4 apart, a circular slot of radius 3."""
+        return cls(1.0, 4.0, CircleSlot((3.0, 0.0), 3.0), start=1.0)
+
     crank: Length
     pivot_distance: Length
     slot: Slot
@@ -609,6 +614,11 @@ class TranslatingCurvedSlot(Mechanism):
     the pin satisfies A = (s + x_α, y_α), so s = x_K - x_α with x_K = crank·cos φ the sine
     mechanism's law (formulas (1), (2)).
     """
+
+    @classmethod
+    def example(cls) -> TranslatingCurvedSlot:
+        """Crank 1, a circular slot of radius 3."""
+        return cls(1.0, CircleSlot((0.0, 0.2), 3.0))
 
     crank: Length
     slot: Slot

@@ -101,6 +101,13 @@ class FourBar(Mechanism):
     linkage closes at no crank angle.
     """
 
+    title = "four-bar"
+
+    @classmethod
+    def example(cls) -> FourBar:
+        """A crank-rocker (crank 1, coupler 3, rocker 3, ground 4)."""
+        return cls(1.0, 3.0, 3.0, 4.0)
+
     crank: Length
     coupler: Length
     rocker: Length

@@ -83,6 +83,8 @@ class PlanarGeneva(Mechanism):
     :meth:`_check_roller`).
     """
 
+    locks = 1   # the crank's locking disc on the wheel's arcs
+
     z: Slots
     centre_distance: Length
     roller_radius: Annotated[float | None, length(optional=True)] = None
@@ -346,6 +348,13 @@ class ExternalGeneva(PlanarGeneva):
     Dwell fraction 1/2 + 1/z; max |ψ'| = λ/(1 - λ); |ψ''| jumps by tan(π/z) at entry.
     """
 
+    title = "external Geneva"
+
+    @classmethod
+    def example(cls) -> ExternalGeneva:
+        """Four slots, centres 1 apart."""
+        return cls(4, 1.0, roller_radius=0.1)
+
     kappa = -1
 
     @property
@@ -388,6 +397,13 @@ class InternalGeneva(PlanarGeneva):
     fraction 1/2 - 1/z; max |ψ'| = λ/(1 + λ) at mid-motion; |ψ''| is largest at entry
     and exit, tan(π/z).
     """
+
+    title = "internal Geneva"
+
+    @classmethod
+    def example(cls) -> InternalGeneva:
+        """Six slots, centres 1 apart."""
+        return cls(6, 1.0)
 
     kappa = +1
 

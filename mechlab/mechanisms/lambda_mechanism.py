@@ -44,6 +44,11 @@ class LambdaMechanism(Mechanism):
     r > a: see the errata.)
     """
 
+    @classmethod
+    def example(cls) -> LambdaMechanism:
+        """Chebyshev's straight-line proportions (r 0.4, a 0.8, δ = 180°)."""
+        return cls(0.4, 0.8, np.pi)
+
     r: Length
     a: Length
     delta: Delta
@@ -160,6 +165,12 @@ class LambdaMechanism(Mechanism):
 class GuidedLambda(LambdaMechanism):
     """A lambda mechanism with its guiding band: arc centre Q = (qx, qy), radii R0, R1 and the
     dwell 2α (for drawings and widgets; the kinematics are those of LambdaMechanism)."""
+
+    @classmethod
+    def example(cls) -> GuidedLambda:
+        """The circle-guiding design for δ = 150°, a = 0.9, a 120° dwell (``circle_guiding``)."""
+        return cls(0.21448157412574897, 0.9, 2.6179938779914944, 1, 1.3973785525129392, 1.8562420285733539,
+                   0.6060573531852789, 0.6059055628051808, 2.0943951023931953)
 
     qx: Coordinate = 0.0
     qy: Coordinate = 0.0

@@ -26,6 +26,14 @@ class LambdaRockerSixBar(Mechanism):
     pivoted at F = (``fx``, ``fy``). ``assembly`` puts E on the left (+1) or right (−1) of
     the directed line D→F. Output ψ: angle of the rocker F→E."""
 
+    title = "lambda six-bar, type 1 (rocker dwell)"
+
+    @classmethod
+    def example(cls) -> LambdaRockerSixBar:
+        """МЧВ1 on the circle-guiding design for δ = 150°, a = 0.9, a 120° dwell, a 20° swing (``mchv1``)."""
+        return cls(0.21448157412574897, 0.9, 2.6179938779914944, 0.6059814579952297, 0.9261816628317386,
+                   0.5579728992779812, 2.247663312975413, -1, 2.0943951023931953)
+
     r: Length
     a: Length
     delta: Delta
@@ -119,6 +127,13 @@ class LambdaSlottedSixBar(Mechanism):
     Output ψ: the slot's direction (continuous, so a link that turns fully gains 2π, or π for
     a slot through a pivot on the path, per turn).
     """
+
+    title = "lambda six-bar, type 3 (slotted link)"
+
+    @classmethod
+    def example(cls) -> LambdaSlottedSixBar:
+        """МЧВ3 (full turn) on the straight-guiding design for δ = 180°, a = 0.8 (``mchv3_full_turn``)."""
+        return cls(0.4000000000000008, 0.8, np.pi, -0.06000000000000105, 1.6519507466172711, -0.05, np.pi)
 
     r: Length
     a: Length

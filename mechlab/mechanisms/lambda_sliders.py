@@ -44,6 +44,14 @@ class LambdaSliderSixBar(_OnLambda):
     (the rod would stand across the guide: a dead point, or no assembly at all).
     """
 
+    title = "lambda six-bar, type 2 (slider dwell)"
+
+    @classmethod
+    def example(cls) -> LambdaSliderSixBar:
+        """МЧВ2 on the circle-guiding design for δ = 150°, a = 0.9, a 120° dwell (``mchv2``)."""
+        return cls(0.21448157412574897, 0.9, 2.6179938779914944, 0.6059814579952297, 1.3973785525129392,
+                   1.8562420285733539, 1.3089969389957479, 1, 2.0943951023931953)
+
     r: Length
     a: Length
     delta: Delta
@@ -140,6 +148,13 @@ class LambdaTranslatingSlot(_OnLambda):
     point. Transmission angle: the acute angle between slot and guide (constant; 90° ideal: the
     pressure angle is the angle between the slot's normal, along which the block pushes, and w).
     """
+
+    title = "lambda six-bar, type 5 (translating-slot dwell)"
+
+    @classmethod
+    def example(cls) -> LambdaTranslatingSlot:
+        """МЧВ5 on the straight-guiding design for δ = 180°, a = 0.8 (``mchv5``)."""
+        return cls(0.4000000000000008, 0.8, np.pi, 0.8000000000000002, 1.601950746617271, np.pi, np.pi / 2, np.pi)
 
     r: Length
     a: Length

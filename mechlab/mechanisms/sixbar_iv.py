@@ -52,6 +52,20 @@ class SixBarIV(Mechanism):
     reaches a dead position), with the numbers.
     """
 
+    title = "class-IV six-bar"
+
+    @classmethod
+    def example(cls) -> SixBarIV:
+        """The course's class-IV six-bar (lengths in units of about the ground O-E).
+
+        Output link 4 pivoted at E carries R and T; the inner four-bar R-Q-P-T (ground
+        |RT| ≈ 0.85, crank R-Q 0.25, coupler Q-P 0.9, rocker P-T 0.85) is a crank-rocker,
+        so its coupler curve (the slot of the equivalent slotted link) is a closed oval.
+        Of the two assemblies at φ = 180° the one with R→Q at ≈ 1° is taken.
+        """
+        return cls(crank=0.25, ground=1.04, r_joint=(0.55, 0.45), t_joint=(1.35, 0.15), link3=0.25,
+                   link5=0.85, qp=0.9, coupler_point=(0.2, -0.55), inner_assembly=1, start=0.0)
+
     crank: Length
     ground: Length
     r_joint: Point
@@ -309,12 +323,5 @@ class SixBarIV(Mechanism):
 
 
 def example() -> SixBarIV:
-    """The course's class-IV six-bar (lengths in units of about the ground O-E).
-
-    Output link 4 pivoted at E carries R and T; the inner four-bar R-Q-P-T (ground
-    |RT| ≈ 0.85, crank R-Q 0.25, coupler Q-P 0.9, rocker P-T 0.85) is a crank-rocker,
-    so its coupler curve (the slot of the equivalent slotted link) is a closed oval.
-    Of the two assemblies at φ = 180° the one with R→Q at ≈ 1° is taken.
-    """
-    return SixBarIV(crank=0.25, ground=1.04, r_joint=(0.55, 0.45), t_joint=(1.35, 0.15), link3=0.25,
-                    link5=0.85, qp=0.9, coupler_point=(0.2, -0.55), inner_assembly=1, start=0.0)
+    """The course's class-IV six-bar: :meth:`SixBarIV.example`."""
+    return SixBarIV.example()

@@ -30,6 +30,11 @@ class SliderCrank(Mechanism):
     lengths, AssemblyError if it closes at no crank angle.
     """
 
+    @classmethod
+    def example(cls) -> SliderCrank:
+        """Crank 1, rod 3, offset 0.2."""
+        return cls(1.0, 3.0, 0.2)
+
     crank: Length
     rod: Length
     offset: Coordinate = 0.0

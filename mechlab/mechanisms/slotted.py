@@ -55,6 +55,11 @@ class SlottedLink(PivotedSlot, Mechanism):
     where the pin passes through the pivot and the slot's direction is undefined.
     """
 
+    @classmethod
+    def example(cls) -> SlottedLink:
+        """Crank 0.5, pivots 1 apart (λ = 0.5)."""
+        return cls(0.5, 1.0)
+
     crank: Length
     pivot_distance: Length
 
@@ -96,6 +101,11 @@ class SineMechanism(Mechanism):
     The output s is the yoke's x coordinate, s = crank·cos φ; joint K = (s, 0) is where
     the slot's centre line crosses the guide.
     """
+
+    @classmethod
+    def example(cls) -> SineMechanism:
+        """Crank 1."""
+        return cls(1.0)
 
     crank: Length
 

@@ -58,6 +58,15 @@ class SphericalGeneva(Mechanism):
     while |α| ≤ α0.
     """
 
+    title = "spherical Geneva"
+
+    locks = 1   # the crank's locking disc on the wheel's arcs
+
+    @classmethod
+    def example(cls) -> SphericalGeneva:
+        """Sphere 40 mm, offset 15 mm, four slots."""
+        return cls(40.0, 15.0, 4, pin_diameter=10.0)
+
     R: Length
     e: Annotated[float, length(zero=True, error=OffsetError)]
     z: Slots

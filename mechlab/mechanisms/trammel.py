@@ -42,6 +42,11 @@ class EllipticTrammel(Mechanism):
     one and turns backwards at the crank's rate). Output: s = x_A = 2r cos φ.
     """
 
+    @classmethod
+    def example(cls) -> EllipticTrammel:
+        """Rod 1, guides 1.2 rad apart."""
+        return cls(1.0, 1.2)
+
     rod: Length
     beta: Annotated[float, angle(_MIN_GUIDE_ANGLE, np.pi - _MIN_GUIDE_ANGLE, open=True,
                                  why="0 < β < 180°: parallel guides leave no room for the rod to turn")] = np.pi / 2

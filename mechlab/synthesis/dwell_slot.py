@@ -502,6 +502,13 @@ class DwellSlotMechanism(Mechanism):
     concave side) sets the slot's flanks for drawing and export.
     """
 
+    rollers = 1   # the roller in the slot
+
+    @classmethod
+    def example(cls) -> DwellSlotMechanism:
+        """λ = 0.5, a dwell from φ = 60° to 150° (``curved_slot_dwell``)."""
+        return curved_slot_dwell(0.5, np.pi / 3, 5 * np.pi / 6)
+
     lam: float
     phi1: float
     phi2: float

@@ -14,7 +14,7 @@ from typing import Annotated, Any
 
 import numpy as np
 
-from ...errors import AssemblyError, DimensionError, JointError, MobilityError, SingularityError
+from ...errors import AssemblyError, DimensionError, JointError, MechanismError, MobilityError, SingularityError
 from ...geometry import AnglePath, as_angles
 from ...motion import AngularMotion, LinearMotion, Motion
 from ...validate import Spec, check, mechanism
@@ -111,6 +111,25 @@ class Linkage(Mechanism):
         if not self.crank_ranges():
             self._place(np.array([0.0]), strict=True)   # raises, naming the group that fails at φ = 0
             raise AssemblyError("the linkage closes at no crank angle")   # pragma: no cover - closed at 0 only
+
+    title = "linkage built from its groups"
+
+    @classmethod
+    def example(cls) -> Linkage:
+        """A crank-shaper: the crank drives a slotted lever (RPR), whose end C pushes the ram D (RRP).
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> ml.Linkage.example().formula()
+        'I(crank) → II₂(block A, PA) → II₂(CD, slider D)'
+        """
+        return cls({"O": (0.0, 0.0), "P": (0.0, -2.0), "G": (0.0, 2.2)}, Crank("O", "A", 1.0),
+                   (RPR("A", "P", 4.0), Point("C", "PA", (4.0, 0.0)), RRP("C", "D", 1.5, Guide("G"))))
 
     # -- building -----------------------------------------------------------------------------------------
     def then(self, group) -> Linkage:
@@ -613,6 +632,89 @@ class Linkage(Mechanism):
                 at, axis = pts[link.origin].p, link.angle(motion).theta
                 parts.append(Part("extra", lambda i, p=at, a=axis: block_outline(p[i], _dir(a[i]), 2 * size, size)))
         return Sketch(tuple(parts), self.pivots)
+
+
+class LinkageFamily(Mechanism):
+    """A family of linkages: a frozen dataclass of its dimensions whose :meth:`linkage` builds it from a crank and
+    Assur groups; everything else is the built linkage's.
+
+    Its motion, reachable crank angles, structure and drawing are those of the :class:`Linkage` built, so the
+    instantaneous centres, the force model and the design layer's counts (all read from the structure) follow;
+    an instance is refused where it is made, by its fields' declarations (DimensionError naming the field) and
+    by the groups' own checks (AssemblyError naming the group that closes at no crank angle, JointError,
+    MobilityError). A family defines its fields, :meth:`linkage` and :meth:`~Mechanism.example`, nothing else.
+
+    Examples
+    --------
+    >>> from dataclasses import dataclass
+    >>> import mechlab as ml
+    >>> from mechlab.validate import Length
+    >>> @dataclass(frozen=True)
+    ... class Press(LinkageFamily):
+    ...     crank: Length
+    ...     rod: Length
+    ...     def linkage(self):
+    ...         return ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", self.crank)).rrp("A", "B", self.rod, "O")
+    ...     @classmethod
+    ...     def example(cls):
+    ...         return cls(1.0, 3.0)
+    >>> round(float(Press.example().motion(0.0).s), 12), Press.title
+    (4.0, 'press')
+    """
+
+    def __post_init__(self):
+        super().__post_init__()
+        self._built   # noqa: B018 - built now, so a bad instance is refused where it is made
+
+    def linkage(self) -> Linkage:
+        """The linkage these dimensions build (a family defines it).
+
+        Returns
+        -------
+        Linkage
+
+        Raises
+        ------
+        MechanismError
+            The family defines no linkage().
+        """
+        raise MechanismError(f"{type(self).__name__} defines no linkage(): build its crank and groups there")
+
+    @cached_property
+    def _built(self) -> Linkage:
+        built = self.linkage()
+        if not isinstance(built, Linkage):
+            raise TypeError(f"{type(self).__name__}.linkage() must return a Linkage, got {type(built).__name__}")
+        return built
+
+    @property
+    def pivots(self) -> tuple[str, ...]:
+        """The built linkage's frame pivots."""
+        return self._built.pivots
+
+    @property
+    def output(self) -> str:
+        """``"position"`` or ``"angle"``: the built linkage's output."""
+        return self._built.output
+
+    def structure(self) -> Structure:
+        """The built linkage's structure (:meth:`Linkage.structure`)."""
+        return self._built.structure()
+
+    def crank_ranges(self):
+        """The built linkage's reachable crank angles (:meth:`Linkage.crank_ranges`)."""
+        return self._built.crank_ranges()
+
+    def assembly_failure(self, phi: float) -> str:
+        return self._built.assembly_failure(phi)
+
+    def motion(self, phi) -> Motion:
+        """The built linkage's motion (:meth:`Linkage.motion`)."""
+        return self._built.motion(phi)
+
+    def sketch(self, motion: Motion) -> Sketch:
+        """The built linkage's kinematic diagram (:meth:`Linkage.sketch`)."""
+        return self._built.sketch(motion)
 
 
 def _dir(angle):
