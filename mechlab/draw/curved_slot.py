@@ -4,13 +4,14 @@ four-bar's two assemblies as the pin's two arcs in the rocker's frame."""
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import replace
 
 import matplotlib.pyplot as plt
 import numpy as np
 
 from ..analysis.equivalence import base_law, equivalent_slot, relative_path
-from . import ROLE_STYLES, Animation, drawing_class
+from . import ROLE_STYLES, Animation, drawing_class, mechanism_name
 
 SLOT_STYLE = ROLE_STYLES["slot"]
 
@@ -22,9 +23,9 @@ def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9,
     fig, axes = plt.subplots(1, 3, figsize=figsize, dpi=dpi)
     left = drawing_class(mechanism)(axes[0], mechanism, trace="A", n=n, readout=True)
     right = drawing_class(twin)(axes[1], twin, trace="A", n=n)
-    for d, title in ((left, type(mechanism).__name__), (right, "curved-slot twin")):
+    for d, title in ((left, mechanism_name(mechanism)), (right, "its curved-slot twin")):
         d.autoscale()
-        d.ax.set_title(title, fontsize=10)
+        d.ax.set_title(textwrap.fill(title, 24), fontsize=12)   # a long name on two lines: legible in a frame
     x0, x1, y0, y1 = left.bounds()
     x2, x3, y2, y3 = right.bounds()
     for d in (left, right):
@@ -42,7 +43,7 @@ def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9,
     ax.plot(*dense.T, color="#d62728", lw=1)
     ax.plot([0], [0], marker="o", ms=7, mfc="white", mec="#333333", ls="none")
     (pin,) = ax.plot([], [], "o", mfc="white", mec="#1f4e79", ms=7)
-    ax.set_title("pin A in the output link's frame", fontsize=10)
+    ax.set_title("pin A in the output\nlink's frame", fontsize=12)
     for a in axes:   # diagrams: no ticks (they cost most of each frame's rendering)
         a.set_axis_off()
 
@@ -74,12 +75,14 @@ def plot_against_base(mechanism, phi=None, axes=None):
         if angular and name.startswith("ψ "):   # continuous, in degrees, the base law on the same branch
             y, yk = np.unwrap(y), np.unwrap(yk)
             y, yk = np.degrees(y), np.degrees(yk + 2 * np.pi * np.round((y[0] - yk[0]) / (2 * np.pi)))
-        ax.plot(deg, y, label=type(mechanism).__name__)
+        ax.plot(deg, y, label=mechanism_name(mechanism))
         ax.plot(deg, yk, "--", label="base mechanism")
         ax.set_ylabel(name)
         ax.set_xlabel("crank angle φ (degrees)")
         ax.grid(True, alpha=0.3)
-    axes[0].legend(fontsize=8)
+    # above the first panel, outside it: the two laws end where a legend in a corner would sit
+    axes[0].legend(fontsize=8, loc="lower left", bbox_to_anchor=(0.0, 1.01), ncols=2, frameon=False,
+                   borderaxespad=0.1)
     return axes
 
 

@@ -16,6 +16,7 @@ figure is re-shown as an image in an Output widget.
 
 from __future__ import annotations
 
+import base64
 import html
 import os
 import struct
@@ -126,9 +127,16 @@ def _ipympl_canvas(fig):
         return None
     canvas = Canvas(fig)
     FigureManager(canvas, 0)
-    canvas.header_visible = canvas.footer_visible = canvas.resizable = False
-    canvas.toolbar_visible = False
+    bare_canvas(canvas)
     return canvas
+
+
+def bare_canvas(canvas) -> None:
+    """An ipympl canvas without its "Figure 1" header, status footer, toolbar and resize handle: the
+    explorer's own title and status line say what it shows. Any other canvas is left as it is."""
+    for trait in ("header_visible", "footer_visible", "toolbar_visible", "resizable"):
+        if hasattr(canvas, trait):
+            setattr(canvas, trait, False)
 
 
 def png_rgba(rgba) -> bytes:
@@ -225,6 +233,7 @@ class Explorer:
             with plt.ioff():
                 self.fig = plt.figure(figsize=figsize, dpi=dpi)
             canvas = self.fig.canvas
+            bare_canvas(canvas)
         else:
             # not managed by pyplot (so the inline backend shows it only through the Output widget)
             self.fig = Figure(figsize=figsize, dpi=dpi)
@@ -253,6 +262,21 @@ class Explorer:
                                       W.VBox([self.angle, *side_widgets, self.status], **SIDE_COLUMN)]),
                               self._canvas_widget])
         self.rebuild()
+        self._first_picture()
+
+    def _first_picture(self):
+        """Draw a live web canvas now and hand its picture to the widget's state: the browser shows the
+        plot with the controls, instead of a blank canvas until the kernel, still busy with the next
+        cells of a run-all, answers the browser's first request for a drawing (ipympl's model shows a
+        ``_data_url`` it is created with)."""
+        canvas = self.fig.canvas
+        if not (self.live and hasattr(canvas, "_data_url") and hasattr(canvas, "_size")):
+            return
+        canvas.draw()   # the draw event saves the blitting background and draws the moving artists
+        png = png_rgba(np.asarray(canvas.buffer_rgba()))
+        canvas._data_url = "data:image/png;base64," + base64.b64encode(png).decode("ascii")
+        canvas._size = tuple(float(v) for v in self.fig.bbox.size)
+        canvas._force_full = True   # the browser's first frame is a whole image, as after its "refresh"
 
     def values(self) -> dict:
         """Current control values as the factory receives them (radians for "deg")."""
@@ -361,6 +385,14 @@ class Explorer:
         display(self.widget)
 
 
+def legend_above(ax, handles=None, **kwargs):
+    """The legend of ``ax`` in one row just above its top edge, right-aligned and frameless: outside
+    the data, so that no curve hides under it whatever the sliders make of the curves."""
+    extra = {} if handles is None else {"handles": handles}
+    return ax.legend(**extra, **{"loc": "lower right", "bbox_to_anchor": (1.0, 1.0), "ncols": 4,
+                                 "frameon": False, "borderaxespad": 0.1, "fontsize": 8, **kwargs})
+
+
 def law_labels(output: str, length_unit: str) -> tuple[str, str, tuple[str, str]]:
     """Axis labels of an output law and its analogs: angles in degrees, ψ′ dimensionless,
     ψ″ per radian; a translating output s in the mechanism's length unit ("mm", or
@@ -399,7 +431,7 @@ class MechanismExplorer(Explorer):
         self.play = self._play()
         grid = self.fig.add_gridspec(2, 2, width_ratios=[mechanism_width, 1], left=0.01, right=0.98,
                                      bottom=0.12 * 4.4 / figsize[1], top=1 - (0.1 if title else 0.03) * 4.4 / figsize[1],
-                                     wspace=0.28, hspace=0.12)
+                                     wspace=0.28, hspace=0.2)
         self.ax_mech = self.fig.add_subplot(grid[:, 0])
         self.ax_law = self.fig.add_subplot(grid[0, 1])
         self.ax_rate = self.fig.add_subplot(grid[1, 1], sharex=self.ax_law)
@@ -453,7 +485,7 @@ class MechanismExplorer(Explorer):
             self.ax_rate.set_ylabel(rate_label)
             for line, name in zip((self.law_lines["first"], self.law_lines["second"]), names):
                 line.set_label(name)
-            self.ax_rate.legend(loc="upper right", fontsize=8)
+            legend_above(self.ax_rate, fontsize=8)
         pad = 0.05 * float(np.ptp(y0)) + 1e-9
         lo = min(float(np.min(law[1])), float(np.min(law[2])))
         hi = max(float(np.max(law[1])), float(np.max(law[2])))
