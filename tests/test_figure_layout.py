@@ -233,3 +233,13 @@ def test_mechanism_explorer_keeps_its_legend_when_rebuilt():
     ex.sliders["crank"].value = 1.2
     _legends_clear(ex.fig)
     plt.close("all")
+
+
+def test_comparison_table_and_rank_use_the_glossary_symbols(choosing):
+    """Kinitsky's invariants B, C, D reach the student as the glossary's C_v, C_a, C_p."""
+    head = choosing.comparison.rows()[0]
+    assert {"C_v", "C_a", "C_p"} <= set(head) and not {"B", "C", "D"} & set(head)
+    labels = [label for label, _ in choosing.rank.options]
+    assert {"C_v", "C_a", "C_p"} <= set(labels) and "B" not in labels
+    choosing.rank.value = "B"   # the key stays the library's: the table is ranked by C_v
+    assert [c.criteria.B for c in choosing.comparison.candidates] == sorted(c.criteria.B for c in choosing.comparison.candidates)

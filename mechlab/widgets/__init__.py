@@ -272,7 +272,9 @@ class Explorer:
         canvas = self.fig.canvas
         if not (self.live and hasattr(canvas, "_data_url") and hasattr(canvas, "_size")):
             return
-        canvas.draw()   # the draw event saves the blitting background and draws the moving artists
+        # drawn off the wire (Agg's draw, not the web canvas's, which would send a frame before the browser
+        # has the widget); the draw event saves the blitting background and draws the moving artists
+        FigureCanvasAgg.draw(canvas)
         png = png_rgba(np.asarray(canvas.buffer_rgba()))
         canvas._data_url = "data:image/png;base64," + base64.b64encode(png).decode("ascii")
         canvas._size = tuple(float(v) for v in self.fig.bbox.size)

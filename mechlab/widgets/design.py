@@ -59,7 +59,8 @@ class ChoosingExplorer:
                                            continuous_update=False)
         self.sliders = s
         self._opening = {k: w.value for k, w in s.items()}
-        keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure", "J")]
+        # the criteria by the table's headings (C_v, not the library's B), each handing its key to ranked()
+        keys = [(head, k) for k, head, *_ in COLUMNS if k not in ("impact", "structure", "J")]
         self.rank = W.Dropdown(options=keys, value="motor_power", description="rank by", style=_STYLE,
                                layout=_LAYOUT)
         self.table = W.HTML()

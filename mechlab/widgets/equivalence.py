@@ -101,7 +101,7 @@ class EquivalenceExplorer(Explorer):
             ax.plot(deg, y, label=sym + mark)
             ax.plot(deg, yk, "--", label="base " + base_sym + mark)
             ax.grid(True, alpha=0.3)
-            legend_above(ax, fontsize=7)
+            legend_above(ax, fontsize=8)
             ax.set_xlabel("crank angle φ (degrees)")
             ax.set_ylabel(f"{sym}{mark} ({unit})")
             ax.set_xticks(np.arange(0, 361, 90))
