@@ -243,3 +243,19 @@ def test_comparison_table_and_rank_use_the_glossary_symbols(choosing):
     assert {"C_v", "C_a", "C_p"} <= set(labels) and "B" not in labels
     choosing.rank.value = "B"   # the key stays the library's: the table is ranked by C_v
     assert [c.criteria.B for c in choosing.comparison.candidates] == sorted(c.criteria.B for c in choosing.comparison.candidates)
+
+
+def test_frames_are_whole_until_a_browser_shows_the_canvas():
+    """Before JupyterLab's view of the canvas exists a frame may be lost: a diff over it would leave holes."""
+    pytest.importorskip("ipympl")
+    ex = fourbar_explorer(live=True)
+    canvas = ex.fig.canvas
+    sent = []
+    canvas.send_binary = sent.append
+    for value in (10.0, 12.0):
+        ex.angle.value = value
+        assert canvas._current_image_mode == "full"
+    canvas.syncing_data_url = False   # the browser said "initialized"
+    ex.angle.value = 14.0
+    assert canvas._current_image_mode == "diff" and len(sent) == 3
+    plt.close("all")

@@ -163,7 +163,10 @@ def diff_image(canvas):
         return None
     pixels = np.asarray(canvas.get_renderer().buffer_rgba())
     buff = pixels.view(np.uint32).squeeze(2)   # one uint32 per pixel: compared in one pass
-    if canvas._force_full or buff.shape != canvas._last_buff.shape or (pixels[:, :, 3] != 255).any():
+    # whole images until a browser has said it shows the canvas (ipympl then stops syncing the data URL): a
+    # frame sent before its view existed may be lost, and a diff over nothing leaves holes in the plot
+    unseen = getattr(canvas, "syncing_data_url", False)
+    if canvas._force_full or unseen or buff.shape != canvas._last_buff.shape or (pixels[:, :, 3] != 255).any():
         canvas.set_image_mode("full")   # a diff cannot make a pixel transparent again
         output = buff
     else:
