@@ -1,7 +1,6 @@
 """What a student sees in the explorers and animations: legends off the data, no ipympl caption, figures that
 fit the notebook's output area, titles and legends in words, readouts with units, labels that do not pile up."""
 
-import base64
 import io
 
 import matplotlib.pyplot as plt
@@ -106,18 +105,12 @@ def test_every_registered_name_is_words_not_a_class_name():
         assert name != cls and (" " in name or "-" in name), (cls, name)
 
 
-def test_explorer_canvas_has_no_figure_caption_and_shows_its_plot_at_once():
+def test_explorer_canvas_has_no_figure_caption():
     pytest.importorskip("ipympl")
     ex = fourbar_explorer(live=True)
     canvas = ex.fig.canvas
     assert not (canvas.header_visible or canvas.footer_visible or canvas.toolbar_visible or canvas.resizable)
-    # the first picture travels with the widget's state: the browser does not wait for a busy kernel
-    head = "data:image/png;base64,"
-    assert canvas._data_url.startswith(head)
-    image = Image.open(io.BytesIO(base64.b64decode(canvas._data_url[len(head):])))
-    assert image.size == tuple(int(v) for v in ex.fig.bbox.size) and tuple(canvas._size) == image.size
-    pixels = np.asarray(image)
-    assert (pixels[..., :3] < 100).any()   # drawn (dark links and text), not a blank canvas
+    assert all(float(v).is_integer() for v in ex.fig.bbox.size)   # whole pixels, as the browser sizes the canvas
     plt.close("all")
 
 
@@ -252,10 +245,11 @@ def test_frames_are_whole_until_a_browser_shows_the_canvas():
     canvas = ex.fig.canvas
     sent = []
     canvas.send_binary = sent.append
+    canvas.draw()   # the first drawing, no browser there yet
     for value in (10.0, 12.0):
         ex.angle.value = value
         assert canvas._current_image_mode == "full"
     canvas.syncing_data_url = False   # the browser said "initialized"
     ex.angle.value = 14.0
-    assert canvas._current_image_mode == "diff" and len(sent) == 3
+    assert canvas._current_image_mode == "diff" and len(sent) == 4
     plt.close("all")

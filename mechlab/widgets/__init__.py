@@ -16,7 +16,6 @@ figure is re-shown as an image in an Output widget.
 
 from __future__ import annotations
 
-import base64
 import html
 import os
 import struct
@@ -232,6 +231,8 @@ class Explorer:
         self._background = None
         self._player = None
         canvas = None
+        # whole pixels: a web canvas is sized in them, and the browser's size sent back must not resize the figure
+        figsize = tuple(round(v * dpi) / dpi for v in figsize)
         if _uses_ipympl():
             with plt.ioff():
                 self.fig = plt.figure(figsize=figsize, dpi=dpi)
@@ -265,23 +266,6 @@ class Explorer:
                                       W.VBox([self.angle, *side_widgets, self.status], **SIDE_COLUMN)]),
                               self._canvas_widget])
         self.rebuild()
-        self._first_picture()
-
-    def _first_picture(self):
-        """Draw a live web canvas now and hand its picture to the widget's state: the browser shows the
-        plot with the controls, instead of a blank canvas until the kernel, still busy with the next
-        cells of a run-all, answers the browser's first request for a drawing (ipympl's model shows a
-        ``_data_url`` it is created with)."""
-        canvas = self.fig.canvas
-        if not (self.live and hasattr(canvas, "_data_url") and hasattr(canvas, "_size")):
-            return
-        # drawn off the wire (Agg's draw, not the web canvas's, which would send a frame before the browser
-        # has the widget); the draw event saves the blitting background and draws the moving artists
-        FigureCanvasAgg.draw(canvas)
-        png = png_rgba(np.asarray(canvas.buffer_rgba()))
-        canvas._data_url = "data:image/png;base64," + base64.b64encode(png).decode("ascii")
-        canvas._size = tuple(float(v) for v in self.fig.bbox.size)
-        canvas._force_full = True   # the browser's first frame is a whole image, as after its "refresh"
 
     def values(self) -> dict:
         """Current control values as the factory receives them (radians for "deg")."""
