@@ -95,7 +95,7 @@ def test_equivalence_animation_titles_say_what_is_drawn():
     from mechlab.mechanisms.sixbar_iv import example
     for mech in (FourBar(0.3, 0.8, 1.0, 1.0), example()):
         anim = animate_equivalence(mech, n=4)
-        title = anim._fig.axes[0].get_title()
+        title = anim._fig.axes[0].get_title(loc="left")
         assert title.replace("\n", " ") == mechanism_name(mech) and type(mech).__name__ not in title
         plt.close(anim._fig)
 

@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from ..analysis.equivalence import base_law, equivalent_slot, relative_path
-from . import ROLE_STYLES, Animation, drawing_class, mechanism_name
+from . import ROLE_STYLES, Animation, drawing_class, fill_axes, mechanism_name
 
 SLOT_STYLE = ROLE_STYLES["slot"]
 
@@ -21,16 +21,20 @@ def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9,
     and the pin's relative path in the output link's frame with the pin on it."""
     twin = equivalent_slot(mechanism)
     fig, axes = plt.subplots(1, 3, figsize=figsize, dpi=dpi)
+    fig.subplots_adjust(left=0.02, right=0.98, top=0.8, bottom=0.08, wspace=0.1)   # room for two-line titles
     left = drawing_class(mechanism)(axes[0], mechanism, trace="A", n=n, readout=True)
     right = drawing_class(twin)(axes[1], twin, trace="A", n=n)
     for d, title in ((left, mechanism_name(mechanism)), (right, "its curved-slot twin")):
         d.autoscale()
-        d.ax.set_title(textwrap.fill(title, 24), fontsize=12)   # a long name on two lines: legible in a frame
+        # a long name on two lines, from the left edge: legible in a frame, clear of the φ readout at the right
+        d.ax.set_title(textwrap.fill(title, 24), fontsize=12, loc="left")
     x0, x1, y0, y1 = left.bounds()
     x2, x3, y2, y3 = right.bounds()
-    for d in (left, right):
-        d.ax.set_xlim(min(x0, x2), max(x1, x3))
-        d.ax.set_ylim(min(y0, y2), max(y1, y3))
+    for d in (left, right):   # one scale for both, each filling its panel
+        fill_axes(d.ax, (min(x0, x2), max(x1, x3), min(y0, y2), max(y1, y3)))
+    # the crank angle in the figure's lower right corner, clear of the titles
+    left.readout.set_transform(fig.transFigure)
+    left.readout.set_position((0.99, 0.02))
     phi = mechanism.cycle(n)
     rel = relative_path(mechanism, phi).p
     dense = relative_path(mechanism, mechanism.cycle(361)).p
