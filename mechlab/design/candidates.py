@@ -44,9 +44,9 @@ COLUMNS = (
     ("dwell_fraction", "dwell", "of turn", "{:.3f}"),
     ("standstill_fraction", "near-standstill", "of turn", "{:.3f}"),
     ("dwell_residual", "dwell residual", "of amplitude", "{:.2e}"),
-    ("B", "B", "", "{:.3f}"),
-    ("C", "C", "", "{:.3f}"),
-    ("D", "D", "", "{:.3f}"),
+    ("B", "C_v", "", "{:.3f}"),   # Kinitsky's invariants B, C, D in the glossary's symbols
+    ("C", "C_a", "", "{:.3f}"),
+    ("D", "C_p", "", "{:.3f}"),
     ("J", "jerk J", "", "{:.3g}"),
     ("impact", "impact", "", "{}"),
     ("pressure_angle", "pressure angle", "deg", "{:.1f}"),

@@ -51,6 +51,7 @@ READOUT_STYLE = dict(fontsize=11, ha="right", va="bottom", zorder=7,
                      bbox=dict(boxstyle="round,pad=0.25", fc="white", ec="0.7", alpha=0.85))
 LETTER_OFFSET = 11.0   # points from the joint to the centre of its letter
 NUMBER_OFFSET = 10.0   # points from a link's middle to its number
+LABEL_GAP = 14.0       # points between the centres of two labels at least (a circled number is about 13 wide)
 TRACE_STYLE = dict(color=OKABE_ITO["vermillion"], lw=1, alpha=0.8, zorder=1)
 EXTRA_STYLE = dict(color="#2a7f62", lw=2.5, zorder=2)
 # a moving output drawn as an extra (a slotted bar, a block), a fixed guide, and the output
@@ -379,6 +380,27 @@ class LinkageDrawing:
             frame.xy = far + np.array([-1.9, -1.7]) * self._ground_size
             frame.set_position((0.0, 0.0))
         frame.set_visible(bool(len(piv)))
+        self._separate_numbers()
+
+    def _separate_numbers(self):
+        """Move each link number that would sit on a joint letter or on a number placed before it further
+        out, along its own side of its link (the frame's number: down and left, away from its pivot), so
+        that the frame's and the crank's numbers at O, or the numbers of a small drawing, stay apart."""
+        to_px, scale = self.ax.transData.transform, self.ax.figure.dpi / 72.0
+        taken = [to_px(t.xy) + scale * np.asarray(t.get_position(), float)
+                 for t in self.letters.values() if t.get_visible() and np.all(np.isfinite(t.xy))]
+        for text in self.numbers:
+            if not text.get_visible() or not np.all(np.isfinite(text.xy)):
+                continue
+            anchor, offset = to_px(text.xy), np.asarray(text.get_position(), float)
+            step = 0.5 * LABEL_GAP * _unit(offset, fallback=(-0.7, -0.7))
+            for _ in range(8):   # a few steps out at most: a label never wanders far from its link
+                where = anchor + scale * offset
+                if all(np.hypot(*(where - other)) >= scale * LABEL_GAP for other in taken):
+                    break
+                offset = offset + step
+            text.set_position(tuple(offset))
+            taken.append(anchor + scale * offset)
 
     def _place_lengths(self, pts):
         for text, bar in zip(self.lengths, self.bars):
@@ -512,6 +534,50 @@ def _kind_words(mechanism) -> str:
     return re.sub(r"(?<=[a-z])(?=[A-Z])", " ", type(mechanism).__name__).lower()
 
 
+# what a student reads above a mechanism's drawing, by the name of its class (the course's words, its sources cited)
+MECHANISM_NAMES = {
+    "FourBar": "Four-bar linkage",
+    "SliderCrank": "Slider-crank",
+    "SixBarIV": "Six-bar of type IV (Zinchenko et al., 2013)",
+    "SineMechanism": "Sine mechanism (slotted yoke)",
+    "SlottedLink": "Slotted link",
+    "EllipticTrammel": "Elliptic trammel",
+    "Antiparallelogram": "Crossed antiparallelogram",
+    "CurvedSlotLink": "Curved-slot link",
+    "TranslatingCurvedSlot": "Translating curved slot",
+    "DwellSlotMechanism": "Curved-slot dwell mechanism",
+    "ExternalGeneva": "External Geneva drive",
+    "InternalGeneva": "Internal Geneva drive",
+    "SphericalGeneva": "Spherical Geneva drive",
+    "GuidedLambda": "Chebyshev lambda mechanism",
+    "LambdaRockerSixBar": "Lambda six-bar with rocker output",
+    "LambdaSlottedSixBar": "Lambda six-bar with slotted output",
+    "LambdaSliderSixBar": "Lambda six-bar with slider output",
+    "LambdaTranslatingSlot": "Lambda six-bar with translating slot",
+}
+
+
+def mechanism_name(mechanism) -> str:
+    """What to call ``mechanism`` above its drawing or in a legend, in words ("Four-bar linkage"): its own
+    ``display_name`` if it has one, else the course's name of its family (:data:`MECHANISM_NAMES`), else its
+    class name as words, capitalised — never a bare class name such as ``SixBarIV``.
+
+    Examples
+    --------
+    >>> from mechlab.mechanisms.fourbar import FourBar
+    >>> mechanism_name(FourBar(0.3, 0.8, 1.0, 1.0))
+    'Four-bar linkage'
+    """
+    own = getattr(mechanism, "display_name", None)
+    if isinstance(own, str) and own:
+        return own
+    name = MECHANISM_NAMES.get(type(mechanism).__name__)
+    if name is None:
+        words = _kind_words(mechanism)
+        name = words[:1].upper() + words[1:]
+    return name
+
+
 def diagram_alt(mechanism, motion, law: bool = False) -> str:
     """The alternative text of a kinematic diagram of ``mechanism`` drawn over ``motion``: what it is,
     its joints, the crank angle (or the cycle) and the output's range (the law beside it with ``law``)."""
@@ -582,22 +648,35 @@ def animate(mechanism, n: int = 48, interval: int = 80, trace: str | None = None
 
 
 def animate_together(mechanisms, titles=(), n: int = 24, interval: int = 150, trace: str | None = None,
-                     figsize=None, dpi: int = 80, *, labels: bool = True) -> Animation:
+                     figsize=None, dpi: int = 80, *, labels: bool = True, same_scale: bool = True) -> Animation:
     """One animation of several mechanisms side by side, frame i of each at the same fraction
     of its cycle (the same crank angle for mechanisms whose crank turns fully), so that their
     motions can be compared; one panel per mechanism, ``titles`` above them, each with its
-    crank angle."""
+    crank angle. With ``same_scale`` every panel draws at one scale, each as wide as its mechanism
+    sweeps: a mechanism whose output swings far gets the room it needs instead of shrinking in a
+    panel of the others' width."""
     mechanisms = list(mechanisms)
     fig, axes = plt.subplots(1, len(mechanisms), figsize=figsize or (3.2 * len(mechanisms), 3.2), dpi=dpi,
                              squeeze=False)
     drawings = []
     for ax, mech, title in zip(axes[0], mechanisms, list(titles) + [None] * len(mechanisms)):
         drawing = drawing_class(mech)(ax, mech, trace=trace, n=n, labels=labels, readout=True)
-        drawing.autoscale()
         _diagram_axes(ax)
         if title:
             ax.set_title(title, fontsize=11)
         drawings.append(drawing)
+    boxes = np.array([d.bounds() for d in drawings])
+    if same_scale and len(drawings) > 1 and np.all(np.isfinite(boxes)):
+        # one height for all (the tallest), each panel's width in proportion to its mechanism's
+        half = (boxes[:, 3] - boxes[:, 2]).max() / 2
+        middle = (boxes[:, 2] + boxes[:, 3]) / 2
+        boxes[:, 2], boxes[:, 3] = middle - half, middle + half
+        grid = axes[0, 0].get_subplotspec().get_gridspec()
+        grid.set_width_ratios(boxes[:, 1] - boxes[:, 0])
+        for ax in axes[0]:
+            ax.set_position(ax.get_subplotspec().get_position(fig))
+    for drawing, box in zip(drawings, boxes):
+        fill_axes(drawing.ax, box)
 
     def frame(i):
         return [artist for drawing in drawings for artist in drawing.set_frame(i)]
@@ -700,7 +779,7 @@ def plot_cam_laws(names=None, n: int = 401):
     if unknown or not names:
         raise MechanismError(f"law names = {unknown or names!r}: not among {', '.join(LAWS)}")
     x = np.linspace(0.0, 1.0, check("n", n, count(2)))
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.9), layout="constrained")
     for name in names:
         for ax, y in zip(axes, LAWS[name](x)):
             ax.plot(x, y, label=name)
@@ -708,8 +787,9 @@ def plot_cam_laws(names=None, n: int = 401):
         ax.set_xlabel("x = φ / Φ (fraction of the rise)")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
-    axes[2].legend(fontsize=7)
-    fig.tight_layout()
+    # one legend for the three panels, above them: no curve of any panel under it
+    fig.legend(handles=axes[0].lines, loc="outside upper center", ncols=min(len(names), 6), fontsize=9,
+               frameon=False)
     return fig
 
 

@@ -4,13 +4,14 @@ four-bar's two assemblies as the pin's two arcs in the rocker's frame."""
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import replace
 
 import matplotlib.pyplot as plt
 import numpy as np
 
 from ..analysis.equivalence import base_law, equivalent_slot, relative_path
-from . import ROLE_STYLES, Animation, drawing_class
+from . import ROLE_STYLES, Animation, drawing_class, fill_axes, mechanism_name
 
 SLOT_STYLE = ROLE_STYLES["slot"]
 
@@ -20,16 +21,20 @@ def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9,
     and the pin's relative path in the output link's frame with the pin on it."""
     twin = equivalent_slot(mechanism)
     fig, axes = plt.subplots(1, 3, figsize=figsize, dpi=dpi)
+    fig.subplots_adjust(left=0.02, right=0.98, top=0.8, bottom=0.08, wspace=0.1)   # room for two-line titles
     left = drawing_class(mechanism)(axes[0], mechanism, trace="A", n=n, readout=True)
     right = drawing_class(twin)(axes[1], twin, trace="A", n=n)
-    for d, title in ((left, type(mechanism).__name__), (right, "curved-slot twin")):
+    for d, title in ((left, mechanism_name(mechanism)), (right, "its curved-slot twin")):
         d.autoscale()
-        d.ax.set_title(title, fontsize=10)
+        # a long name on two lines, from the left edge: legible in a frame, clear of the φ readout at the right
+        d.ax.set_title(textwrap.fill(title, 24), fontsize=12, loc="left")
     x0, x1, y0, y1 = left.bounds()
     x2, x3, y2, y3 = right.bounds()
-    for d in (left, right):
-        d.ax.set_xlim(min(x0, x2), max(x1, x3))
-        d.ax.set_ylim(min(y0, y2), max(y1, y3))
+    for d in (left, right):   # one scale for both, each filling its panel
+        fill_axes(d.ax, (min(x0, x2), max(x1, x3), min(y0, y2), max(y1, y3)))
+    # the crank angle in the figure's lower right corner, clear of the titles
+    left.readout.set_transform(fig.transFigure)
+    left.readout.set_position((0.99, 0.02))
     phi = mechanism.cycle(n)
     rel = relative_path(mechanism, phi).p
     dense = relative_path(mechanism, mechanism.cycle(361)).p
@@ -42,7 +47,7 @@ def animate_equivalence(mechanism, n: int = 30, interval: int = 100, figsize=(9,
     ax.plot(*dense.T, color="#d62728", lw=1)
     ax.plot([0], [0], marker="o", ms=7, mfc="white", mec="#333333", ls="none")
     (pin,) = ax.plot([], [], "o", mfc="white", mec="#1f4e79", ms=7)
-    ax.set_title("pin A in the output link's frame", fontsize=10)
+    ax.set_title("pin A in the output\nlink's frame", fontsize=12)
     for a in axes:   # diagrams: no ticks (they cost most of each frame's rendering)
         a.set_axis_off()
 
@@ -74,12 +79,14 @@ def plot_against_base(mechanism, phi=None, axes=None):
         if angular and name.startswith("ψ "):   # continuous, in degrees, the base law on the same branch
             y, yk = np.unwrap(y), np.unwrap(yk)
             y, yk = np.degrees(y), np.degrees(yk + 2 * np.pi * np.round((y[0] - yk[0]) / (2 * np.pi)))
-        ax.plot(deg, y, label=type(mechanism).__name__)
+        ax.plot(deg, y, label=mechanism_name(mechanism))
         ax.plot(deg, yk, "--", label="base mechanism")
         ax.set_ylabel(name)
         ax.set_xlabel("crank angle φ (degrees)")
         ax.grid(True, alpha=0.3)
-    axes[0].legend(fontsize=8)
+    # above the first panel, outside it: the two laws end where a legend in a corner would sit
+    axes[0].legend(fontsize=8, loc="lower left", bbox_to_anchor=(0.0, 1.01), ncols=2, frameon=False,
+                   borderaxespad=0.1)
     return axes
 
 

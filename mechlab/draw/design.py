@@ -15,8 +15,10 @@ from ..design import FAMILIES, Comparison
 from .access import category_style, set_alt
 
 # radar spokes: (criterion, label); each is scaled by the largest among the candidates (smaller is better)
-SPOKES = (("B", "peak velocity B"), ("C", "peak acceleration C"), ("pressure_angle", "pressure angle"),
-          ("size", "size"), ("motor_power", "motor power"), ("parts", "parts and pairs"))
+# (the invariants in the glossary's symbols: the library's B and C are C_v and C_a)
+SPOKES = (("B", "peak velocity\n$C_v$"), ("C", "peak\nacceleration $C_a$"), ("pressure_angle", "pressure\nangle"),
+          ("size", "size"), ("motor_power", "motor\npower"), ("parts", "parts and\npairs"))
+FIGSIZE = (8.8, 4.4)   # inches: 880 px at 100 dpi, inside a notebook's output area (about 912 px)
 # a family's colour (Okabe-Ito), dash on the laws and marker on the radar's spokes: told apart without colour too
 STYLES = {f: category_style(i) for i, f in enumerate(FAMILIES)}
 COLOURS = {f: style["color"] for f, style in STYLES.items()}
@@ -33,12 +35,16 @@ class ComparisonFigure:
     """A radar of the criteria (left) and every candidate's output law over the crank turn (right)."""
 
     def __init__(self, comparison: Comparison, fig: Figure | None = None):
-        self.fig = fig if fig is not None else plt.figure(figsize=(11.0, 4.8), layout="constrained")
+        self.fig = fig if fig is not None else plt.figure(figsize=FIGSIZE, layout="constrained")
         self.radar = self.fig.add_subplot(1, 2, 1, projection="polar")
         self.laws = self.fig.add_subplot(1, 2, 2)
         angles = np.linspace(0.0, 2 * np.pi, len(SPOKES), endpoint=False)
         self._angles = np.append(angles, angles[0])
         self.radar.set_xticks(angles, [label for _, label in SPOKES], fontsize=9)
+        self.radar.tick_params(axis="x", pad=10)
+        for text, angle in zip(self.radar.get_xticklabels(), angles):   # each label outward of its spoke's end
+            c = np.cos(angle)
+            text.set_horizontalalignment("left" if c > 0.2 else "right" if c < -0.2 else "center")
         self.radar.set_ylim(0.0, 1.05)
         self.radar.set_yticks([0.25, 0.5, 0.75, 1.0], ["", "0.5", "", "1"], fontsize=8)
         self.radar.set_rlabel_position(120.0)

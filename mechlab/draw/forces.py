@@ -23,13 +23,15 @@ class ForcePlanDrawing:
     """The mechanism (its own drawing) plus reaction arrows and the balancing torque.
 
     ``pairs`` restricts the arrows to some pairs; ``length`` is the drawn length of the
-    largest reaction over the cycle, as a fraction of the mechanism's size.
+    largest reaction over the cycle, as a fraction of the mechanism's size; ``force_unit`` names the
+    forces' unit in the readout (torques in it times metres).
     """
 
     def __init__(self, ax, mechanism: Kinetostatics, trace: str | None = None, n: int = 361,
                  pairs=None, length: float = 0.45, *, labels: bool = True, ground: bool = True,
-                 dimensions: bool = False, readout: bool = False):
+                 dimensions: bool = False, readout: bool = False, force_unit: str = "N"):
         self.ax = ax
+        self.force_unit = force_unit   # the model's units are SI (mechlab.kinetostatics.model): N, and N·m
         self.n = n
         self.pair_names = pairs
         self.length = length
@@ -78,8 +80,9 @@ class ForcePlanDrawing:
         self.quiver.set_offsets(np.array([r.point[i] for r in R]))
         uv = np.array([r.force[i] for r in R]) * self.scale
         self.quiver.set_UVC(uv[:, 0], uv[:, 1])
-        self.text.set_text(f"φ = {np.degrees(self.result.phi[i]):.0f}°   M_b = {self.result.torque[i]:.3g}\n"
-                           + "  ".join(f"|R {k}| = {r.magnitude[i]:.3g}" for k, r in zip(self.names, R)))
+        u = self.force_unit
+        self.text.set_text(f"φ = {np.degrees(self.result.phi[i]):.0f}°   M_b = {self.result.torque[i]:.3g} {u}·m\n"
+                           + "  ".join(f"|R {k}| = {r.magnitude[i]:.3g} {u}" for k, r in zip(self.names, R)))
         return self.artists
 
     @property

@@ -14,7 +14,7 @@ import numpy as np
 from ..mechanisms.geneva import wheel_outline  # noqa: F401 - where the course's readers look for it
 from ..mechanisms.spherical_geneva import SphericalGeneva
 from ..analysis.intermittency import DWELL_TOL, compare
-from . import JOINT_STYLE, LETTER_STYLE, LINK_STYLE, READOUT_STYLE, TRACE_STYLE
+from . import JOINT_STYLE, LETTER_STYLE, LINK_STYLE, NUMBER_STYLE, READOUT_STYLE, TRACE_STYLE
 
 # ----------------------------------------------------------------------------------
 # spherical Geneva in 3-D
@@ -23,7 +23,8 @@ class SphericalGenevaDrawing:
     """The hemisphere (equator and two parallels), its z meridian slots turning with the
     wheel, the crank axis, the crank arm and the pin on its cone, and the contact point
     A while the pin is in a slot, with the letters of the points (O, O1, P, B, and A while
-    engaged) and, with ``readout``, the crank angle. A 2-D ``ax`` is replaced by a 3-D one in
+    engaged), the links' numbers of its structure (crank, wheel, frame, circled as in the planar
+    drawings) and, with ``readout``, the crank angle. A 2-D ``ax`` is replaced by a 3-D one in
     its place."""
 
     def __init__(self, ax, mechanism: SphericalGeneva, trace: str | None = None, n: int = 73, *,
@@ -49,6 +50,9 @@ class SphericalGenevaDrawing:
                             for name in ("O", "O1", "P", "B", "A")}
             for text in self.letters.values():
                 text.set_ha("left")
+        # circled link numbers (crank, wheel, frame), numbered as the mechanism's structure numbers them
+        self.numbers = {link: ax.text(0.0, 0.0, 0.0, "", **NUMBER_STYLE) for link in ("crank", "wheel", "frame")} \
+            if labels else {}
         self.readout = ax.text2D(0.98, 0.98, "", transform=ax.transAxes, **READOUT_STYLE) if readout else None
         self.set_mechanism(mechanism)
 
@@ -73,6 +77,13 @@ class SphericalGenevaDrawing:
         for line in self.slot_lines[mechanism.z:]:
             line.set_data_3d([], [], [])
         self.mechanism, self.motion = mechanism, motion
+        numbers = mechanism.structure().numbers()
+        for link, text in self.numbers.items():
+            text.set_text(str(numbers[link]))
+        if self.numbers:   # the wheel's on its rim facing the viewer, the frame's beside the wheel's bearing
+            front = np.radians(-75.0)
+            self.numbers["wheel"].set_position_3d((1.12 * R * np.cos(front), 1.12 * R * np.sin(front), 0.0))
+            self.numbers["frame"].set_position_3d((0.12 * R, -0.12 * R, -e - 0.3 * R))
         g = mechanism
         self._elev = np.linspace(0.0, np.arccos(g.r_H / R) + 0.5 * g.pin_diameter / R, 16)
         self._engaged = g.engaged(motion.phi)
@@ -103,6 +114,8 @@ class SphericalGenevaDrawing:
         else:
             self.contact.set_data_3d([], [], [])
         self.joints.set_data_3d([foot[0], 0.0], [foot[1], 0.0], [foot[2], 0.0])
+        if self.numbers:   # the crank's number beside the middle of its arm
+            self.numbers["crank"].set_position_3d((foot + base) / 2 + np.array([0.0, -0.1 * R, 0.0]))
         for name, text in self.letters.items():
             text.set_position_3d(mo.points[name].p[i])
             text.set_visible(name != "A" or bool(self._engaged[i]))
@@ -118,7 +131,7 @@ class SphericalGenevaDrawing:
     @property
     def artists(self):
         return [*self.slot_lines, self.pin_line, self.arm_line, self.contact, self.trace_line, self.joints,
-                *self.letters.values(), *([self.readout] if self.readout is not None else [])]
+                *self.letters.values(), *self.numbers.values(), *([self.readout] if self.readout is not None else [])]
 
     def autoscale(self):
         R = self.mechanism.R

@@ -126,9 +126,16 @@ def _ipympl_canvas(fig):
         return None
     canvas = Canvas(fig)
     FigureManager(canvas, 0)
-    canvas.header_visible = canvas.footer_visible = canvas.resizable = False
-    canvas.toolbar_visible = False
+    bare_canvas(canvas)
     return canvas
+
+
+def bare_canvas(canvas) -> None:
+    """An ipympl canvas without its "Figure 1" header, status footer, toolbar and resize handle: the
+    explorer's own title and status line say what it shows. Any other canvas is left as it is."""
+    for trait in ("header_visible", "footer_visible", "toolbar_visible", "resizable"):
+        if hasattr(canvas, trait):
+            setattr(canvas, trait, False)
 
 
 def png_rgba(rgba) -> bytes:
@@ -155,7 +162,10 @@ def diff_image(canvas):
         return None
     pixels = np.asarray(canvas.get_renderer().buffer_rgba())
     buff = pixels.view(np.uint32).squeeze(2)   # one uint32 per pixel: compared in one pass
-    if canvas._force_full or buff.shape != canvas._last_buff.shape or (pixels[:, :, 3] != 255).any():
+    # whole images until a browser has said it shows the canvas (ipympl then stops syncing the data URL): a
+    # frame sent before its view existed may be lost, and a diff over nothing leaves holes in the plot
+    unseen = getattr(canvas, "syncing_data_url", False)
+    if canvas._force_full or unseen or buff.shape != canvas._last_buff.shape or (pixels[:, :, 3] != 255).any():
         canvas.set_image_mode("full")   # a diff cannot make a pixel transparent again
         output = buff
     else:
@@ -221,10 +231,13 @@ class Explorer:
         self._background = None
         self._player = None
         canvas = None
+        # whole pixels: a web canvas is sized in them, and the browser's size sent back must not resize the figure
+        figsize = tuple(round(v * dpi) / dpi for v in figsize)
         if _uses_ipympl():
             with plt.ioff():
                 self.fig = plt.figure(figsize=figsize, dpi=dpi)
             canvas = self.fig.canvas
+            bare_canvas(canvas)
         else:
             # not managed by pyplot (so the inline backend shows it only through the Output widget)
             self.fig = Figure(figsize=figsize, dpi=dpi)
@@ -361,6 +374,14 @@ class Explorer:
         display(self.widget)
 
 
+def legend_above(ax, handles=None, **kwargs):
+    """The legend of ``ax`` in one row just above its top edge, right-aligned and frameless: outside
+    the data, so that no curve hides under it whatever the sliders make of the curves."""
+    extra = {} if handles is None else {"handles": handles}
+    return ax.legend(**extra, **{"loc": "lower right", "bbox_to_anchor": (1.0, 1.0), "ncols": 4,
+                                 "frameon": False, "borderaxespad": 0.1, "fontsize": 8, **kwargs})
+
+
 def law_labels(output: str, length_unit: str) -> tuple[str, str, tuple[str, str]]:
     """Axis labels of an output law and its analogs: angles in degrees, ψ′ dimensionless,
     ψ″ per radian; a translating output s in the mechanism's length unit ("mm", or
@@ -399,7 +420,7 @@ class MechanismExplorer(Explorer):
         self.play = self._play()
         grid = self.fig.add_gridspec(2, 2, width_ratios=[mechanism_width, 1], left=0.01, right=0.98,
                                      bottom=0.12 * 4.4 / figsize[1], top=1 - (0.1 if title else 0.03) * 4.4 / figsize[1],
-                                     wspace=0.28, hspace=0.12)
+                                     wspace=0.28, hspace=0.2)
         self.ax_mech = self.fig.add_subplot(grid[:, 0])
         self.ax_law = self.fig.add_subplot(grid[0, 1])
         self.ax_rate = self.fig.add_subplot(grid[1, 1], sharex=self.ax_law)
@@ -453,7 +474,7 @@ class MechanismExplorer(Explorer):
             self.ax_rate.set_ylabel(rate_label)
             for line, name in zip((self.law_lines["first"], self.law_lines["second"]), names):
                 line.set_label(name)
-            self.ax_rate.legend(loc="upper right", fontsize=8)
+            legend_above(self.ax_rate, fontsize=8)
         pad = 0.05 * float(np.ptp(y0)) + 1e-9
         lo = min(float(np.min(law[1])), float(np.min(law[2])))
         hi = max(float(np.max(law[1])), float(np.max(law[2])))

@@ -40,7 +40,9 @@ class CentrodeExplorer(MechanismExplorer):
         if self.overlay is None or self.overlay.fixed_line.axes is not self.ax_mech:
             self.overlay = CentrodeOverlay(self.ax_mech, cd)
             self._animate_moving()
-            self.ax_mech.legend(loc="lower right", fontsize=8)
+            # below the drawing, outside it: the centrodes run anywhere in the axes
+            self.ax_mech.legend(loc="upper left", bbox_to_anchor=(0.0, 0.0), ncols=3, fontsize=8, frameon=False,
+                                borderaxespad=0.2)
         else:
             self.overlay.cd = cd
         self._select_frame()

@@ -15,9 +15,9 @@ from PIL import Image
 
 from ..design import Specification, candidates
 from ..design.candidates import COLUMNS
-from ..draw.design import ComparisonFigure
+from ..draw.design import FIGSIZE, ComparisonFigure
 from ..errors import MechanismError
-from . import _uses_ipympl
+from . import _uses_ipympl, bare_canvas
 
 _STYLE = {"description_width": "150px"}
 _LAYOUT = W.Layout(width="420px")
@@ -59,15 +59,17 @@ class ChoosingExplorer:
                                            continuous_update=False)
         self.sliders = s
         self._opening = {k: w.value for k, w in s.items()}
-        keys = [k for k, *_ in COLUMNS if k not in ("impact", "structure", "J")]
+        # the criteria by the table's headings (C_v, not the library's B), each handing its key to ranked()
+        keys = [(head, k) for k, head, *_ in COLUMNS if k not in ("impact", "structure", "J")]
         self.rank = W.Dropdown(options=keys, value="motor_power", description="rank by", style=_STYLE,
                                layout=_LAYOUT)
         self.table = W.HTML()
         if self.live:
             with plt.ioff():
-                fig = plt.figure(figsize=(11.0, 4.8), layout="constrained")
+                fig = plt.figure(figsize=FIGSIZE, dpi=100, layout="constrained")
+            bare_canvas(fig.canvas)
         else:
-            fig = Figure(figsize=(11.0, 4.8), dpi=80, layout="constrained")
+            fig = Figure(figsize=FIGSIZE, dpi=100, layout="constrained")
             FigureCanvasAgg(fig)
         self.comparison = None
         self._background = None   # (the laws' y-limits, the pixels of everything but the data) once drawn

@@ -14,14 +14,14 @@ from typing import Callable
 import ipywidgets as W
 import numpy as np
 
-from ..draw import drawing_class, fill_axes
+from ..draw import drawing_class, fill_axes, mechanism_name
 from ..draw.curved_slot import SLOT_STYLE
 from ..analysis.equivalence import base_law, equivalent_slot, law_difference, relative_path
 from ..errors import MechanismError
 from ..analysis.half_turn import limit_theorem
 from ..mechanisms.fourbar import FourBar
 from ..mechanisms.slider_crank import SliderCrank
-from . import Control, Explorer
+from . import Control, Explorer, legend_above
 
 
 class EquivalenceExplorer(Explorer):
@@ -43,7 +43,7 @@ class EquivalenceExplorer(Explorer):
                                                        description="assembly")
         self.play = self._play(interval=120)
         grid = self.fig.add_gridspec(2, 3, height_ratios=[1.2, 1], left=0.06, right=0.99, bottom=0.09,
-                                     top=0.93 if title else 0.96, wspace=0.32, hspace=0.22)
+                                     top=0.93 if title else 0.96, wspace=0.32, hspace=0.3)
         self.ax_link, self.ax_twin, self.ax_rel = (self.fig.add_subplot(grid[0, j]) for j in range(3))
         self.ax_d0, self.ax_d1, self.ax_d2 = (self.fig.add_subplot(grid[1, j]) for j in range(3))
         self._finish([self.play])
@@ -71,7 +71,7 @@ class EquivalenceExplorer(Explorer):
         self.d_twin.set_motion(twin, tm)
         boxes = np.array([self.d_link.bounds(), self.d_twin.bounds()])
         common = (boxes[:, 0].min(), boxes[:, 1].max(), boxes[:, 2].min(), boxes[:, 3].max())
-        for d, title in ((self.d_link, type(mech).__name__), (self.d_twin, "its curved-slot twin")):
+        for d, title in ((self.d_link, mechanism_name(mech)), (self.d_twin, "its curved-slot twin")):
             fill_axes(d.ax, common)
             d.ax.set_axis_off()
             d.ax.set_title(title, fontsize=10)
@@ -101,7 +101,7 @@ class EquivalenceExplorer(Explorer):
             ax.plot(deg, y, label=sym + mark)
             ax.plot(deg, yk, "--", label="base " + base_sym + mark)
             ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=7, loc="upper right")
+            legend_above(ax, fontsize=8)
             ax.set_xlabel("crank angle φ (degrees)")
             ax.set_ylabel(f"{sym}{mark} ({unit})")
             ax.set_xticks(np.arange(0, 361, 90))

@@ -21,7 +21,7 @@ from ..draw.forces import shade_undefined
 from ..errors import MechanismError
 from ..kinetostatics.drive import drive
 from ..kinetostatics.machines import press, rocker_drive
-from . import Control, Explorer
+from . import Control, Explorer, legend_above
 
 
 class ForceExplorer(Explorer):
@@ -50,7 +50,7 @@ class ForceExplorer(Explorer):
         (self.e_marker,) = self.ax_eta.plot([], [], "ko", ms=5)
         self.ax_torque.axhline(0.0, color="0.6", lw=0.8)
         self.ax_torque.set_ylabel("balancing torque M_b (N·m)")
-        self.ax_torque.legend(loc="upper right", fontsize=7)
+        legend_above(self.ax_torque, fontsize=7)
         self.ax_eta.set_ylabel("efficiency η (–)")
         self.ax_eta.set_xlabel("crank angle φ (degrees)")
         self.ax_eta.set_xticks(np.arange(0, 361, 90))
