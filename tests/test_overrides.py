@@ -118,7 +118,8 @@ def compare(fam, built, phi, mu=True, tol=TOL):
     a, b = fam.motion(phi), built.motion(phi)
     worst = 0.0
     if fam.output == "angle":
-        laws = zip(("ψ", "ψ′", "ψ″"), (a.psi, a.dpsi, a.ddpsi), (b.psi, b.dpsi, b.ddpsi), (True, False, False), strict=True)
+        laws = zip(("ψ", "ψ′", "ψ″"), (a.psi, a.dpsi, a.ddpsi), (b.psi, b.dpsi, b.ddpsi), (True, False, False),
+                   strict=True)
     else:
         laws = zip(("s", "s′", "s″"), (a.s, a.ds, a.dds), (b.s, b.ds, b.dds), (False, False, False), strict=True)
     for name, x, y, angle in laws:
