@@ -3,7 +3,9 @@ group by group through its Assur groups (``ml.Linkage``: a crank and RRR/RRP/RPR
 
 The overrides are discovered, not listed: every Mechanism subclass of mechlab that defines ``motion`` (or
 ``curved_slot_twin``, which the base class derives from ``structure()``) must either be rebuilt here from its own
-dimensions (BUILT) or be named in NOT_BUILT with the reason the builder cannot express it. A rebuilt family is
+dimensions (BUILT) or be named in NOT_BUILT with the reason the builder cannot express it (the curved slots
+are rebuilt where the slot is a circle: an RRR or RRP dyad; the closed-form curved-slot twins of FourBar and
+SliderCrank are compared with the twin derived from the structure). A rebuilt family is
 compared on a dense grid of crank angles over several geometries (hypothesis for the four-bar and the
 slider-crank): ψ (or s), its first and second analogs, the transmission angle and every joint both name, positions
 and analogs. Tolerance 1e-12 relative to the quantity's largest value on the grid (lengths here are of order 1 to
@@ -81,8 +83,10 @@ NOT_BUILT = {
     "LambdaTranslatingSlot": "its group is an RPP dyad (block at D in a translating slotted link)",
     "SixBarIV": "a class-IV group (the builder has dyads only)",
     "EllipticTrammel": "no crank on a frame pivot (the input slides): the builder starts from a crank",
-    "CurvedSlotLink": "a higher pair (the pin in a curved slot); the builder has lower pairs only",
-    "TranslatingCurvedSlot": "a higher pair (the pin in a curved slot)",
+    "CurvedSlotLink": "a higher pair (the pin in a curved slot; the builder has lower pairs only): only the "
+                      "circular slot is rebuilt, as an RRR dyad (test_circular_slots_equal_their_dyads)",
+    "TranslatingCurvedSlot": "a higher pair (the pin in a curved slot): only the circular slot is rebuilt, as an RRP "
+                             "dyad",
     "DwellSlotMechanism": "a higher pair (the pin in a designed curved slot)",
     "EquivalentSlot": "a higher pair (the pin in the sampled slot of the equivalence)",
     "PlanarGeneva": "a higher pair and an intermittent drive (the pin enters and leaves the slots)",
@@ -229,6 +233,51 @@ def test_antiparallelogram_equals_its_groups_on_each_half_turn(k):
         compare(m, fourbar(m.as_fourbar(fits[0])), phi)
 
 
+def one_assembly(fam, builds, phi):
+    """The one of ``builds`` (a linkage per assembly sign) that starts where the family does."""
+    def same(b):
+        a, b = fam.motion(phi[:3]), b.motion(phi[:3])
+        return np.allclose(a.points["A"].p, b.points["A"].p) and (
+            np.allclose(np.cos(a.psi - b.psi), np.cos(a.psi - b.psi)[0]) if fam.output == "angle"
+            else np.allclose(a.s - b.s, (a.s - b.s)[0]))
+    fits = [b for b in builds if same(b)]
+    assert len(fits) == 1
+    return fits[0]
+
+
+@pytest.mark.parametrize("a, d, centre, radius, start", [(1.0, 4.0, (3.0, 0.0), 3.0, 1.0),
+                                                         (1.0, 4.0, (3.0, 0.0), 3.0, -1.0),
+                                                         (0.5, 1.2, (0.8, 0.3), 1.0, None),
+                                                         (2.0, 1.0, (1.5, -0.5), 2.5, None)])
+def test_circular_slot_link_equals_its_dyad(a, d, centre, radius, start):
+    """A pin in a circular slot of radius R about C (fixed on the link pivoted at B) keeps |AC| = R: the link is
+    the rocker B-C of an RRR dyad, ψ = angle(B→C) − the polar angle of C in the link frame."""
+    m = ml.CurvedSlotLink(a, d, ml.CircleSlot(centre, radius), start=start)
+    phi = m.cycle(1441)
+    built = one_assembly(m, [ml.Linkage({"O": (0, 0), "B": (-d, 0)}, ml.Crank("O", "A", a)).rrr(
+        "A", "B", "K", radius, float(np.hypot(*centre)), sign) for sign in (1, -1)], phi)
+    got, want = built.motion(phi), m.motion(phi)
+    assert_close(got.psi - np.arctan2(centre[1], centre[0]), want.psi, "ψ", angle=True)
+    for name, x, y in (("ψ′", got.dpsi, want.dpsi), ("ψ″", got.ddpsi, want.ddpsi)):
+        assert_close(x, y, name)
+    for k, x, y in zip(("A", "A′", "A″"), got.points["A"], want.points["A"], strict=True):
+        assert_close(x, y, k)
+
+
+@pytest.mark.parametrize("a, centre, radius, start", [(1.0, (0.0, 0.2), 3.0, None), (1.0, (0.5, -0.3), 2.0, 0.0),
+                                                      (0.7, (0.0, -0.3), 2.0, np.pi)])
+def test_circular_translating_slot_equals_its_dyad(a, centre, radius, start):
+    """A translating link whose slot is a circle of radius R about (s + cx, cy): the centre is the slider K of an
+    RRP dyad on the line y = cy, s = x_K − cx."""
+    m = ml.TranslatingCurvedSlot(a, ml.CircleSlot(centre, radius), start=start)
+    phi = m.cycle(1441)
+    builds = [ml.Linkage({"O": (0, 0), "G": (0, centre[1])}, ml.Crank("O", "A", a)).rrp("A", "K", radius, "G", sign)
+              for sign in (1, -1)]
+    got, want = one_assembly(m, builds, phi).motion(phi), m.motion(phi)
+    for name, x, y in (("s", got.s - centre[0], want.s), ("s′", got.ds, want.ds), ("s″", got.dds, want.dds)):
+        assert_close(x, y, name)
+
+
 @pytest.mark.parametrize("m", [ml.FourBar(1, 3, 3, 4), ml.FourBar(1.0, 2.5, 2.0, 3.0, -1),
                                ml.SliderCrank(1.0, 3.0, 0.4), ml.SliderCrank(0.7, 2.0, -0.3, -1)],
                          ids=lambda m: type(m).__name__)
@@ -241,6 +290,8 @@ def test_closed_form_twin_equals_the_structural_twin(m):
     if m.output == "angle":
         assert_close(b.psi - b.psi[0], a.psi - a.psi[0], "twin ψ", angle=True)
         assert_close(b.dpsi, a.dpsi, "twin ψ′")
+        assert_close(b.ddpsi, a.ddpsi, "twin ψ″")
     else:
         assert_close(b.s - b.s[0], a.s - a.s[0], "twin s")
         assert_close(b.ds, a.ds, "twin s′")
+        assert_close(b.dds, a.dds, "twin s″")
