@@ -34,7 +34,7 @@ from .mechanisms.lambda_mechanism import classic_lambda
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
 from .synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
                                    DwellSlotMechanism, best_placement, compare_transitions, cubic_dwell_window,
-                                   curved_slot_dwell, dwell_limit, two_branch_slot)
+                                   curved_slot_dwell, dwell_limit, slotted_link_law, two_branch_slot)
 from .synthesis.geneva import TABLE1_PRINTED, spherical_table, table1_comparison, table1_review
 from .synthesis.lambda_guiding import (DesignOutcomes, band_touches, circle_guiding, design_outcomes, existence_map,
                                        existence_region,
@@ -70,6 +70,7 @@ __all__ = [
     "rolling_speeds", "five_link_higher_pair",
     # dwell synthesis
     "curved_slot_dwell", "DwellSlotMechanism", "DwellLaw", "TRANSITIONS", "compare_transitions", "dwell_limit",
+    "slotted_link_law",
     "cubic_dwell_window",
     "two_branch_slot", "best_placement", "DwellError", "DwellIntervalError", "DwellRatioError",
     "slot_profile", "write_csv", "write_dxf", "read_csv", "read_dxf",

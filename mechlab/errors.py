@@ -5,6 +5,8 @@ Every error is a :class:`MechanismError`, itself a :class:`ValueError`, so calle
 violated condition and shows the numbers.
 """
 
+import warnings
+
 
 class MechanismError(ValueError):
     """A mechanism's dimensions or requested motion are not admissible."""
@@ -142,3 +144,39 @@ class IndeterminateCentre(SingularityError):
 # -- raised by design.families
 class Unsuitable(MechanismError):
     """The family cannot meet the specification; the message says why, with the numbers."""
+
+
+def renamed(module: str, **old):
+    """A module ``__getattr__`` that still serves renamed names for one release, with a DeprecationWarning.
+
+    Parameters
+    ----------
+    module : str
+        The module's name (``__name__``).
+    **old
+        Each old name → (the object, its new dotted name).
+
+    Returns
+    -------
+    callable
+        ``__getattr__(name)``: the object under its old name (warning which name replaces it), else
+        AttributeError.
+
+    Examples
+    --------
+    >>> __getattr__ = renamed("mymodule", twice=(print, "builtins.print"))
+    >>> import warnings
+    >>> with warnings.catch_warnings(record=True) as seen:
+    ...     warnings.simplefilter("always")
+    ...     __getattr__("twice") is print, "builtins.print" in str(seen[0].message)
+    (True, True)
+    """
+    def __getattr__(name):
+        if name in old:
+            obj, new = old[name]
+            warnings.warn(f"{module}.{name} is now {new}; the old name goes in the next release",
+                          DeprecationWarning, stacklevel=2)
+            return obj
+        raise AttributeError(f"module {module!r} has no attribute {name!r}")
+    return __getattr__
+

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import AssemblyError, DimensionError, SingularityError
-from .validate import Spec, check, length, number
+from .validate import Spec, check_value, length, number
 
 # Relative tolerance under which a dyad counts as stretched or folded (a dead point).
 DEAD_POINT_TOL = 1e-12
@@ -109,7 +109,7 @@ def as_angles(phi, name: str = "phi") -> np.ndarray:
     Refuses by ``name`` (DimensionError) complex values, strings, None, NaN, ±inf,
     magnitudes over 1e100 and multi-dimensional arrays (an empty array gives empty results).
     """
-    return check(name, phi, _ANGLES)
+    return check_value(name, phi, _ANGLES)
 
 
 REAL, _LENGTH, _DISTANCE, _SIGN, _ANGLES = number(), length(), length(zero=True), Spec("sign"), Spec("angles", lo=0)
@@ -117,17 +117,17 @@ REAL, _LENGTH, _DISTANCE, _SIGN, _ANGLES = number(), length(), length(zero=True)
 
 def check_number(name: str, value) -> float:
     """``value`` as a finite float of magnitude ≤ 1e100 (:mod:`mechlab.validate`), else DimensionError."""
-    return check(name, value, REAL)
+    return check_value(name, value, REAL)
 
 
 def check_length(name: str, value, *, allow_zero: bool = False) -> float:
     """``value`` as a float, raising DimensionError if it is not a positive (or zero) finite number."""
-    return check(name, value, _DISTANCE if allow_zero else _LENGTH)
+    return check_value(name, value, _DISTANCE if allow_zero else _LENGTH)
 
 
 def check_sign(name: str, value) -> int:
     """An assembly sign: +1 or -1."""
-    return check(name, value, _SIGN)
+    return check_value(name, value, _SIGN)
 
 
 def as_complex(a):

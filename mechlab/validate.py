@@ -30,6 +30,7 @@ from typing import Annotated, Any, get_args, get_origin
 import numpy as np
 
 from .errors import DimensionError
+from .errors import renamed
 
 # Lengths and other magnitudes beyond these overflow or underflow in the solvers' squares and products.
 MAGNITUDE = (1e-100, 1e100)
@@ -479,6 +480,10 @@ def validated(fn):
     return wrapper
 
 
-def check(name: str, value, spec: Spec):
+def check_value(name: str, value, spec: Spec):
     """One value against a Spec (for values that are not parameters, e.g. a derived default)."""
     return spec.check(name, value)
+
+
+# the old name (feedback.check is the students' check; this one validates a value)
+__getattr__ = renamed(__name__, check=(check_value, "mechlab.validate.check_value"))

@@ -291,11 +291,11 @@ def test_check_design_reports_each_limit_with_numbers():
 
 @pytest.mark.parametrize("z", [4, 6])
 def test_geneva_torque_and_motor_agree_with_the_geneva_chapter(z):
-    # the comparison samples the turn uniformly; kinetostatics.geneva.drive resolves the engagement ends
-    from mechlab.kinetostatics.geneva import drive
+    # the comparison samples the turn uniformly; kinetostatics.geneva.geneva_drive resolves the engagement ends
+    from mechlab.kinetostatics.geneva import geneva_drive
     spec = D.Specification("index", (z + 2) / (2 * z), stations=z, inertia=2.4, rpm=40)
     cand = D.candidates(spec, ["external Geneva"]).candidates[0]
-    ref = drive(cand.design.mechanism, inertia=2.4, omega1=spec.omega1)
+    ref = geneva_drive(cand.design.mechanism, inertia=2.4, omega1=spec.omega1)
     assert cand.criteria.peak_torque == pytest.approx(ref.peak_torque, rel=2e-3)
     assert cand.criteria.rms_torque == pytest.approx(ref.rms_torque, rel=2e-3)
     assert cand.criteria.motor_power == pytest.approx(ref.nominal_power, rel=2e-3)

@@ -5,7 +5,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError, base_law,
+from mechlab.synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
+                                          slotted_link_law,
                                           compare_transitions, cubic_dwell_window, curved_slot_dwell, dwell_limit,
                                           two_branch_slot)
 from mechlab.errors import DimensionError, MechanismError, SingularityError
@@ -27,12 +28,12 @@ def designs():
 def test_base_law_matches_slotted_link_and_differences():
     for lam in (0.3, 0.7, 1.6, 3.0):
         phi = np.linspace(-2 * np.pi, 2 * np.pi, 1001)
-        K = base_law(lam, phi)
+        K = slotted_link_law(lam, phi)
         mo = SlottedLink(lam, 1.0).motion(phi)
         assert np.allclose(K.psi, mo.psi, atol=1e-12) and np.allclose(K.d, mo.dpsi, atol=1e-12)
         assert np.allclose(K.dd, mo.ddpsi, atol=1e-12)
         h = 1e-5
-        up, dn = base_law(lam, phi + h), base_law(lam, phi - h)
+        up, dn = slotted_link_law(lam, phi + h), slotted_link_law(lam, phi - h)
         assert np.abs((up.dd - dn.dd) / (2 * h) - K.ddd).max() < 1e-6 * max(1, np.abs(K.ddd).max())
 
 
@@ -111,7 +112,7 @@ def test_random_designs_dwell_and_half_turn_relation_through_the_slot(design):
     assert np.abs(m.motion(full).psi - m.law(full).psi).max() < 1e-11
     # half-turn relation (Table 2) on the solved motion: same slot point at φ and -φ
     phi = np.linspace(0.02, np.pi - 0.02, 97)
-    plus, minus, K = m.motion(phi), m.motion(-phi), base_law(lam, phi)
+    plus, minus, K = m.motion(phi), m.motion(-phi), slotted_link_law(lam, phi)
     turn = 2 * np.pi if lam > 1 else 0.0
     assert np.allclose(minus.psi, plus.psi - 2 * K.psi, atol=1e-10) or \
         np.allclose(minus.psi + turn, plus.psi - 2 * K.psi + turn, atol=1e-10)
@@ -152,7 +153,7 @@ def test_pressure_angle_closed_form_agrees_with_solver(tr):
     assert np.abs(m.motion(phi).pressure_angle - m.law.pressure_angle(phi)).max() < 1e-7
     # on the dwell: θ = |π/2 - (φ - ψ_K)|, zero where cos φ = -λ
     dw = np.linspace(m.phi1, m.phi2, 50)
-    K = base_law(0.5, dw)
+    K = slotted_link_law(0.5, dw)
     assert np.allclose(m.motion(dw).pressure_angle, np.abs(np.pi / 2 - (dw - K.psi)), atol=1e-12)
 
 

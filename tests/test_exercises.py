@@ -145,10 +145,10 @@ def test_sixbar_design():
 
 
 def test_geneva_design():
-    from mechlab.kinetostatics.geneva import drive
+    from mechlab.kinetostatics.geneva import geneva_drive
 
     g = ml.ExternalGeneva(6, 0.2)
-    need = drive(g, inertia=0.8, omega1=85 * np.pi / 30, n=2001).nominal_power
+    need = geneva_drive(g, inertia=0.8, omega1=85 * np.pi / 30, n=2001).nominal_power
     motor = min(p for p in CAT if p >= need)
     assert geneva_design(g, rpm=85, inertia=0.8, index_time=0.25, motor_power=motor, min_rpm=60, catalogue=CAT)
     slow = geneva_design(g, rpm=70, inertia=0.8, index_time=0.25, motor_power=max(CAT), min_rpm=60, catalogue=CAT)

@@ -142,6 +142,7 @@ CASES = {
     "other_half": lambda: (ml.other_half, (fb, PHI), {}),
     "limit_theorem": lambda: (ml.limit_theorem, (fb,), {"n": 73}),
     "base_peaks": lambda: (ml.base_peaks, (0.5,), {}),
+    "slotted_link_law": lambda: (ml.slotted_link_law, (0.5, PHI), {}),
     "instant_centres": lambda: (ml.instant_centres, (fb, PHI), {"method": "kennedy"}),
     "centrodes": lambda: (ml.centrodes, (fb, "coupler"), {"reference": "frame", "phi": PHI, "method": "kennedy"}),
     "curved_slot_dwell": lambda: (ml.curved_slot_dwell, (0.5, 60 * DEG, 150 * DEG),
@@ -429,8 +430,8 @@ def test_every_family_found_is_fuzzed():
 RESULTS = {"DesignOutcomes", "Mechanism", "Grashof", "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
            "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive", "motion_laws.Invariants", "motion_laws.PrintedInvariants",
            "motion_laws.LawRow",
-           "design.Comparison", "design.Candidate", "design.Refusal", "design.DesignReport", "design.Verdict",
-           "design.Criteria", "design.Design"}
+           "design.Comparison", "design.Candidate", "design.Refusal",
+           "design.SpecificationReport", "design.LimitVerdict", "design.Criteria", "design.Design"}
 def exported_callables() -> dict[str, object]:
     """Every callable that ``mechlab.__all__`` exports, and those of the modules it exports (``mechlab.forces``,
     ``mechlab.design``, …) as "module.name": functions and classes, not exceptions, constants or modules."""

@@ -16,7 +16,7 @@ from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetErro
 from mechlab.mechanisms.spherical_geneva import SphericalGeneva
 from mechlab.analysis.intermittency import compare, detect_impacts, intermittency
 from mechlab.analysis.motion_laws import invariants, rise_invariants
-from mechlab.kinetostatics.geneva import crank_torque, drive, drive_angles
+from mechlab.kinetostatics.geneva import crank_torque, geneva_drive, drive_angles
 from mechlab.kinetostatics.drive import drive as fdrive
 from mechlab.mechanisms.fourbar import FourBar
 from mechlab.mechanisms.slotted import SlottedLink
@@ -413,7 +413,7 @@ GENEVAS = [ExternalGeneva(4, 100.0), ExternalGeneva(6, 0.1), InternalGeneva(6, 1
                                            (0.02, 1.5, 0.85, 8.0)])
 def test_drive_is_the_one_rule_against_quad(g, J, Mr, eta, k):
     w = 2 * np.pi
-    d = drive(g, inertia=J, omega1=w, resisting_torque=Mr, efficiency=eta, overload=k)
+    d = geneva_drive(g, inertia=J, omega1=w, resisting_torque=Mr, efficiency=eta, overload=k)
     mean, rms, peak, M1, s0 = _reference_drive(g, J, w, Mr, eta, k)
     scale = max(abs(mean), rms)
     assert d.mean_torque == pytest.approx(mean, rel=1e-6, abs=1e-9 * scale)
@@ -445,25 +445,25 @@ def test_drive_closed_form_integrals(g):
     d1 = sp.lambdify(s, sp.diff(beta, s), "numpy")
     vmax, vend = d1(0.0), d1(s0)
     w, eta = 3.0, 0.8
-    d = drive(g, inertia=0.0, omega1=w, resisting_torque=2.0, efficiency=eta)
+    d = geneva_drive(g, inertia=0.0, omega1=w, resisting_torque=2.0, efficiency=eta)
     assert d.mean_torque == pytest.approx(2.0 / (g.z * eta), rel=1e-6)
     assert d.peak_torque == pytest.approx(2.0 * vmax / eta, rel=1e-6)
     J = 0.5
-    d = drive(g, inertia=J, omega1=w, efficiency=eta)
+    d = geneva_drive(g, inertia=J, omega1=w, efficiency=eta)
     assert d.mean_torque == pytest.approx(J * w**2 * (vmax**2 - vend**2) * (1 / eta - eta) / (4 * np.pi), rel=1e-5)
-    d = drive(g, inertia=J, omega1=w)
+    d = geneva_drive(g, inertia=J, omega1=w)
     assert abs(d.mean_torque) <= 1e-9 * d.peak_torque and d.rms_torque > 0.1 * d.peak_torque
     # efficiency costs where the motor drives; η = 1 is the power balance itself
-    d1_, d0_ = (drive(g, inertia=J, omega1=w, resisting_torque=1.0, efficiency=e) for e in (0.8, 1.0))
+    d1_, d0_ = (geneva_drive(g, inertia=J, omega1=w, resisting_torque=1.0, efficiency=e) for e in (0.8, 1.0))
     assert d1_.mean_torque > d0_.mean_torque and d1_.peak_torque > d0_.peak_torque
     with pytest.raises(DriveError, match="efficiency"):
-        drive(g, inertia=1.0, omega1=1.0, efficiency=1.5)
+        geneva_drive(g, inertia=1.0, omega1=1.0, efficiency=1.5)
     with pytest.raises(DriveError, match="overload"):
-        drive(g, inertia=1.0, omega1=1.0, overload=0.5)
+        geneva_drive(g, inertia=1.0, omega1=1.0, overload=0.5)
     with pytest.raises(DimensionError, match="inertia"):
-        drive(g, inertia=-1.0, omega1=1.0)
+        geneva_drive(g, inertia=-1.0, omega1=1.0)
     with pytest.raises(DimensionError, match="n must be"):
-        drive(g, inertia=1.0, omega1=1.0, n=5)
+        geneva_drive(g, inertia=1.0, omega1=1.0, n=5)
 
 
 def test_drive_resolves_the_hard_impact_jump():
@@ -478,7 +478,8 @@ def test_drive_resolves_the_hard_impact_jump():
     plain = fdrive(crank_torque(g, uniform, inertia=0.0, omega1=1.0, resisting_torque=2.0), uniform, 1.0,
                    efficiency=0.8)
     assert abs(fine.mean_torque / mean - 1) < 1e-5 < abs(plain.mean_torque / mean - 1)
-    assert drive(g, inertia=0.0, omega1=1.0, resisting_torque=2.0, efficiency=0.8, n=721).mean_torque == fine.mean_torque
+    coarse = geneva_drive(g, inertia=0.0, omega1=1.0, resisting_torque=2.0, efficiency=0.8, n=721)
+    assert coarse.mean_torque == fine.mean_torque
 
 
 # -- comparison ---------------------------------------------------------------------------------

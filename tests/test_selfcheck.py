@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from mechlab.course.exercises import check, check_choice, self_check, tolerance
-from mechlab.course.exercises.selfcheck import classify, candidates, lookups, seal, windows
+from mechlab.course.exercises.selfcheck import classify, slip_candidates, lookups, seal, windows
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCE = ROOT / "assignments" / "source"
@@ -145,7 +145,7 @@ def test_the_editions_check_cells_run_on_their_own(aid):
 
 def _near_other(value, plant, call) -> bool:
     """True when the planted slip also falls in the window of a row tried before it (e.g. −e = an alternative)."""
-    table = candidates(call["expected"], call["unit_slips"], call["alternatives"], call["significant"])
+    table = slip_candidates(call["expected"], call["unit_slips"], call["alternatives"], call["significant"])
     order = [("units:" + label if kind == "units" else kind if kind != "alternative" else "alternative:" + label)
              for kind, label, _, _ in table]
     mine = plant if plant in order else None
@@ -176,7 +176,7 @@ def test_bins_agree_with_the_textbook_tolerance_up_to_a_tenth_of_it():
     rng = np.random.default_rng(1)
     for e in np.concatenate([rng.uniform(-1e3, 1e3, 200), 10.0 ** rng.uniform(-4, 4, 200), [9.996, 1.0, 0.0]]):
         tol = tolerance(e)
-        table = candidates(e, [], {})
+        table = slip_candidates(e, [], {})
         for a in (e + 0.8 * tol, e - 0.8 * tol, e):
             assert classify(a, table)[0] == "correct", (e, a)
         for a in (e + 1.3 * tol, e - 1.3 * tol):

@@ -380,7 +380,7 @@ def test_a_triple_rocker_refuses_to_turn_naming_non_grashof():
 
 def test_base_laws_take_a_scalar_and_give_scalars():
     """ψ_K(φ) = atan2(λ sin φ, 1 + λ cos φ) (the base mechanism, Zinchenko et al., 2013, (18)), λ = 0.5 here."""
-    from mechlab.synthesis.dwell_slot import base_law as dwell_base_law
+    from mechlab.synthesis.dwell_slot import slotted_link_law as dwell_base_law
     lam, x = 0.5, 0.7
     expected = np.arctan2(lam * np.sin(x), 1 + lam * np.cos(x))
     for law in (dwell_base_law(lam, x), ml.formula_18(lam, x)):

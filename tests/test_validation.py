@@ -21,7 +21,7 @@ import mechlab as ml
 from mechlab import DimensionError, MechanismError
 from mechlab.mechanisms.sixbar_iv import example as sixbar_example
 from mechlab.synthesis.dwell_slot import LAMBDA_RANGE, LAMBDA_TOL, MIN_TRANSITION, DwellError
-from mechlab.validate import MAX_SAMPLES, Checked, Length, Sign, Spec, check, count, validated
+from mechlab.validate import MAX_SAMPLES, Checked, Length, Sign, Spec, check_value, count, validated
 
 DEG = np.pi / 180
 
@@ -80,9 +80,9 @@ def test_a_count_past_its_limit_is_refused_before_any_work():
 
 
 def test_one_spec_per_kind_refuses_by_name():
-    assert check("p", (1, np.float32(2)), Spec("point")) == (1.0, 2.0)
+    assert check_value("p", (1, np.float32(2)), Spec("point")) == (1.0, 2.0)
     with pytest.raises(DimensionError, match=r"p\[1\] must be a number, got 'x'"):
-        check("p", (1, "x"), Spec("point"))
+        check_value("p", (1, "x"), Spec("point"))
     with pytest.raises(TypeError, match="guide must be a CircleGuide, got str"):
         ml.mchv1("circle", 1.0, 20 * DEG)
     with pytest.raises(TypeError, match="mechanism must be a Mechanism, got float"):
@@ -91,24 +91,24 @@ def test_one_spec_per_kind_refuses_by_name():
 
 def test_an_array_spec_bounds_every_value_and_shows_those_outside():
     fractions = Spec("reals", 0.0, 1.0, why="fractions of the span")
-    inside = check("fractions", [0, 0.25, 1], fractions)
+    inside = check_value("fractions", [0, 0.25, 1], fractions)
     assert isinstance(inside, np.ndarray) and inside.tolist() == [0.0, 0.25, 1.0]
-    assert check("fractions", np.int64(1), fractions) == 1.0  # a scalar stays a scalar
+    assert check_value("fractions", np.int64(1), fractions) == 1.0  # a scalar stays a scalar
     with pytest.raises(DimensionError, match=r"^fractions must be ≤ 1, got 1.5, 2 \(2 of 4 values\) "
                                              r"\(fractions of the span\)$"):
-        check("fractions", np.array([0.5, 1.5, 1.0, 2.0]), fractions)
+        check_value("fractions", np.array([0.5, 1.5, 1.0, 2.0]), fractions)
     with pytest.raises(DimensionError, match=r"^fractions must be ≥ 0, got -0.25 \(fractions"):
-        check("fractions", [-0.25], fractions)
+        check_value("fractions", [-0.25], fractions)
     with pytest.raises(DimensionError, match=r"^fractions must be ≥ 0, got -1 \(fractions"):
-        check("fractions", -1, fractions)
+        check_value("fractions", -1, fractions)
     with pytest.raises(DimensionError, match=r"fractions must be finite, of magnitude ≤ 1e\+100, got nan"):
-        check("fractions", np.array([0.5, np.nan]), fractions)  # NaN compares False with both bounds
+        check_value("fractions", np.array([0.5, np.nan]), fractions)  # NaN compares False with both bounds
     with pytest.raises(DimensionError, match=r"x must be > 0, got 0 \(1 of 2 values\)"):
-        check("x", [0, 1], Spec("reals", 0.0, open_lo=True))
+        check_value("x", [0, 1], Spec("reals", 0.0, open_lo=True))
     # angles: the bounds also in degrees; a long list of offenders is cut
     with pytest.raises(DimensionError, match=r"dwells must be ≤ 6.28319 rad \(360°\), got 7, 8, 9, 10, … "
                                              r"\(6 of 7 values\)"):
-        check("dwells", np.arange(6.0, 13.0), Spec("radians", 0.0, 2 * np.pi))
+        check_value("dwells", np.arange(6.0, 13.0), Spec("radians", 0.0, 2 * np.pi))
 
 
 def test_array_bounds_declared_by_the_library():

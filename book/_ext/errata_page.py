@@ -87,7 +87,7 @@ def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = 
     cell that shows it, then printed, correct and the evidence returned by
     ``Erratum.evidence()`` (which raises if the claim stopped being true, failing the build).
     """
-    from mechlab.course.errata import KINDS, SOURCES, collect, count
+    from mechlab.course.errata import KINDS, SOURCES, collect, count_by_kind
 
     rows = collect() if errata is None else list(errata)
     if not rows:
@@ -95,7 +95,7 @@ def errata_markdown(errata=None, notebooks_dir: Path = NOTEBOOKS, prefix: str = 
     for e in rows:
         if e.source not in SOURCES:
             raise ValueError(f"erratum cites source {e.source!r}; known: {', '.join(SOURCES)}")
-    n = count(rows)
+    n = count_by_kind(rows)
     sources = sorted({e.source for e in rows})
     out = [f"{_plural(n['mistake'], 'printed mistake', 'printed mistakes')}, "
            f"{_plural(n['remark'], 'remark', 'remarks')} and "

@@ -12,7 +12,7 @@ from ..errors import DimensionError
 from ..mechanisms.base import Mechanism
 from ..mechanisms.geneva import TWO_PI
 from ..motion import STILL, Table
-from ..validate import MAX_SAMPLES, Angle, check, count, number, validated
+from ..validate import MAX_SAMPLES, Angle, check_value, count, number, validated
 from ..validate import mechanism as mechanism_of
 from .motion_laws import invariants
 
@@ -129,9 +129,9 @@ def compare(mechanisms: dict, *, dwell_tol: float | dict = DWELL_TOL, **kw) -> T
         if unknown:
             raise DimensionError(f"dwell_tol names no mechanism compared: {', '.join(unknown)} "
                                  f"(the mechanisms: {', '.join(map(repr, mechanisms))})")
-        tols = {name: check(f"dwell_tol[{name!r}]", dwell_tol.get(name, DWELL_TOL), DWELL_TOL_RANGE)
+        tols = {name: check_value(f"dwell_tol[{name!r}]", dwell_tol.get(name, DWELL_TOL), DWELL_TOL_RANGE)
                 for name in mechanisms}
     else:
-        tols = dict.fromkeys(mechanisms, check("dwell_tol", dwell_tol, DWELL_TOL_RANGE))
+        tols = dict.fromkeys(mechanisms, check_value("dwell_tol", dwell_tol, DWELL_TOL_RANGE))
     return Table(intermittency(m, name=name, dwell_tol=tols[name], **kw) for name, m in mechanisms.items())
 

@@ -37,7 +37,7 @@ from ..validate import (
     Name,
     Real,
     Spec,
-    check,
+    check_value,
     choice,
     count,
     number,
@@ -95,12 +95,12 @@ class RiseLaw(Checked):
         super().__post_init__()
         if isinstance(self.knots, str) or np.ndim(self.knots) != 1:
             raise DimensionError(f"knots must be a sequence of x in (0, 1), got {self.knots!r:.60}")
-        object.__setattr__(self, "knots", tuple(check(f"knots[{i}]", v, number(0.0, 1.0, open=True))
+        object.__setattr__(self, "knots", tuple(check_value(f"knots[{i}]", v, number(0.0, 1.0, open=True))
                                                 for i, v in enumerate(self.knots)))
         if isinstance(self.closed, str) or np.ndim(self.closed) != 1 or len(self.closed) not in (3, 4):
             raise DimensionError(f"closed must be the closed forms (B, C, D) or (B, C, D, C_j), "
                                  f"got {self.closed!r:.60}")
-        object.__setattr__(self, "closed", tuple(None if v is None else check(f"closed[{i}]", v, number())
+        object.__setattr__(self, "closed", tuple(None if v is None else check_value(f"closed[{i}]", v, number())
                                                  for i, v in enumerate(self.closed)))
 
     def __call__(self, x):
@@ -264,7 +264,7 @@ def named_law(law, name: str = "law") -> RiseLaw:
     """
     if isinstance(law, RiseLaw):
         return law
-    law = check(name, law, choice(*LAWS, *ALIASES))
+    law = check_value(name, law, choice(*LAWS, *ALIASES))
     return LAWS[ALIASES.get(law, law)]
 
 
@@ -460,7 +460,7 @@ def law_table(names=None, n: Annotated[int, count(3)] = 20001) -> Table:
     if names is not None and (not isinstance(names, list | tuple) or not names):
         raise DimensionError(f"names must be a non-empty list of law names (or None: all), got {names!r}")
     names = list(LAWS) if names is None else [named_law(name, "names").name for name in names]
-    n = check("n", n, count(3))
+    n = check_value("n", n, count(3))
     rows = []
     for name in names:
         inv = law_invariants(name, n)

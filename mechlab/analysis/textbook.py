@@ -16,7 +16,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from ..errors import DimensionError
 from ..mechanisms.base import AnyMechanism
-from ..validate import Angle, Spec, check, count, validated
+from ..validate import Angle, Spec, check_value, count, validated
 
 
 @validated
@@ -31,7 +31,8 @@ def nearest_assembly(mechanism: AnyMechanism, phi: Angle, **joints):
         raise DimensionError(f"{type(mechanism).__name__} has no assembly to choose")
     if not joints:
         raise DimensionError("nearest_assembly needs at least one joint and its sketched point, e.g. B=(x, y)")
-    points = {name: np.array(check(f"the sketched point {name}", xy, Spec("point"))) for name, xy in joints.items()}
+    points = {name: np.array(check_value(f"the sketched point {name}", xy, Spec("point")))
+              for name, xy in joints.items()}
     best = None
     for sign in (1, -1):
         candidate = dataclasses.replace(mechanism, assembly=sign)

@@ -6,22 +6,21 @@ synthesis), simulates each design and compares them on the same criteria
 (:class:`~mechlab.design.criteria.Criteria`); the families that cannot are refused with the reason.
 """
 
-import warnings
-
-from .candidates import Candidate, Comparison, DesignReport, Refusal, Verdict, candidates, check_design
+from ..errors import renamed
+from .candidates import (Candidate, Comparison, LimitVerdict, Refusal, SpecificationReport, candidates,
+                         check_design)
 from .criteria import Counts, Criteria, evaluate
 from .families import FAMILIES, Design, Unsuitable
 from .spec import Specification, SpecificationError
 
 __all__ = ["Specification", "SpecificationError", "candidates", "Comparison", "Candidate", "Refusal", "check_design",
-           "DesignReport", "Verdict", "Criteria",
+           "SpecificationReport", "LimitVerdict", "Criteria",
            "Counts", "evaluate", "FAMILIES", "Design", "Unsuitable"]
 
 
-def __getattr__(name):
-    # the counts' old name, kept for a release: one Structure (mechlab.mechanisms.base) describes a mechanism
-    if name == "Structure":
-        warnings.warn("mechlab.design.Structure is now mechlab.design.Counts (the parts and pairs counted from a "
-                      "mechanism's structure()); the old name goes in the next release", DeprecationWarning, stacklevel=2)
-        return Counts
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+# old names kept for a release: one Structure (mechlab.mechanisms.base) describes a mechanism, and the exercises'
+# Verdict and DesignReport are the course's
+__getattr__ = renamed(__name__, Structure=(Counts, "mechlab.design.Counts (the parts and pairs counted from a "
+                                                     "mechanism's structure())"),
+                      Verdict=(LimitVerdict, "mechlab.design.LimitVerdict"),
+                      DesignReport=(SpecificationReport, "mechlab.design.SpecificationReport"))

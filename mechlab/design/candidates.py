@@ -9,7 +9,7 @@ from typing import Annotated
 
 import numpy as np
 
-from ..errors import MechanismError
+from ..errors import MechanismError, renamed
 from ..validate import Length, Spec, choice, validated
 from .criteria import AnyMovable, Counts, Criteria, Phase, counted, evaluate
 from .families import FAMILIES, Design, Unsuitable
@@ -67,7 +67,7 @@ def _value(c: Criteria, key: str):
 
 
 @dataclass(frozen=True)
-class Verdict:
+class LimitVerdict:
     """One limit of a specification: met or missed, in words with the numbers."""
 
     criterion: str
@@ -83,7 +83,7 @@ class Verdict:
         return f"{'✓' if self.met else '✗'} {self.reason}"
 
 
-def limits(spec: Specification, c: Criteria) -> list[Verdict]:
+def limits(spec: Specification, c: Criteria) -> list[LimitVerdict]:
     """The specification's limits on a simulated design (dwell, pressure angle, size, impacts), each
     met or missed with its numbers: :func:`check_design` reports them, :func:`candidates` refuses on them."""
     # the specification's dwell is a near-standstill (within its dwell_precision): a longer one than asked
@@ -93,14 +93,14 @@ def limits(spec: Specification, c: Criteria) -> list[Verdict]:
     size_ok = c.size <= spec.max_size
     impact_ok = IMPACTS.index(c.impact) <= IMPACTS.index(spec.impacts)
     return [
-        Verdict("dwell", dwell_ok, f"near-standstill {c.standstill_fraction:.3f} of the turn (output within "
+        LimitVerdict("dwell", dwell_ok, f"near-standstill {c.standstill_fraction:.3f} of the turn (output within "
                                    f"± {spec.dwell_precision:g} of its amplitude; exact dwell {c.dwell_fraction:.3f}) "
                                    f"{'≥' if dwell_ok else '<'} {spec.dwell_fraction:.3f} − {spec.dwell_tolerance:.3f} "
                                    f"asked"),
-        Verdict("pressure angle", pa_ok, f"worst {np.degrees(c.pressure_angle):.1f}° {'≤' if pa_ok else '>'} "
+        LimitVerdict("pressure angle", pa_ok, f"worst {np.degrees(c.pressure_angle):.1f}° {'≤' if pa_ok else '>'} "
                                          f"{np.degrees(spec.max_pressure_angle):.1f}°"),
-        Verdict("size", size_ok, f"{c.size:.0f} mm {'≤' if size_ok else '>'} {spec.max_size:.0f} mm"),
-        Verdict("impacts", impact_ok, f"{c.impact}, {spec.impacts} at worst admitted" if impact_ok
+        LimitVerdict("size", size_ok, f"{c.size:.0f} mm {'≤' if size_ok else '>'} {spec.max_size:.0f} mm"),
+        LimitVerdict("impacts", impact_ok, f"{c.impact}, {spec.impacts} at worst admitted" if impact_ok
                 else f"{c.impact} where {spec.impacts} at worst are admitted"),
     ]
 
@@ -200,12 +200,12 @@ def candidates(spec: AnySpecification, families: Annotated[tuple | None, Spec("i
 
 
 @dataclass(frozen=True)
-class DesignReport:
+class SpecificationReport:
     """A student's (or anyone's) design run against a specification: each limit met or missed."""
 
     spec: Specification
     criteria: Criteria
-    verdicts: tuple[Verdict, ...]
+    verdicts: tuple[LimitVerdict, ...]
 
     @property
     def met(self) -> bool:
@@ -230,7 +230,8 @@ def _counts(mechanism) -> Counts:
 
 
 @validated
-def check_design(spec: AnySpecification, mechanism: AnyMovable, *, scale: Length = 1.0, phase: Phase = 0.0) -> DesignReport:
+def check_design(spec: AnySpecification, mechanism: AnyMovable, *, scale: Length = 1.0,
+                 phase: Phase = 0.0) -> SpecificationReport:
     """Run ``mechanism`` (its lengths × ``scale`` = mm) against ``spec``: amplitude, dwell, pressure
     angle, size and impacts, each met or missed with the numbers, from its simulated motion."""
     c = evaluate(mechanism, spec, scale=scale, structure=_counts(mechanism), phase=phase)
@@ -239,6 +240,11 @@ def check_design(spec: AnySpecification, mechanism: AnyMovable, *, scale: Length
     reached = abs(x[-1] - x[0]) if spec.motion == "index" else float(np.ptp(x))
     unit, shown = ("deg", np.degrees) if spec.rotary else ("mm", lambda v: v)
     amp_ok = abs(reached - spec.amplitude) <= 0.01 * spec.amplitude
-    v = [Verdict("amplitude", amp_ok, f"{shown(reached):.4g} {unit} reached, {shown(spec.amplitude):.4g} {unit} "
+    v = [LimitVerdict("amplitude", amp_ok, f"{shown(reached):.4g} {unit} reached, {shown(spec.amplitude):.4g} {unit} "
                                       f"asked (± 1 %)")]
-    return DesignReport(spec, c, tuple(v + limits(spec, c)))
+    return SpecificationReport(spec, c, tuple(v + limits(spec, c)))
+
+
+# the old names (the exercises' Verdict and DesignReport are the course's)
+__getattr__ = renamed(__name__, Verdict=(LimitVerdict, "mechlab.design.LimitVerdict"),
+                      DesignReport=(SpecificationReport, "mechlab.design.SpecificationReport"))

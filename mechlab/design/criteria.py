@@ -27,7 +27,7 @@ from ..errors import DimensionError
 from ..kinetostatics.drive import drive
 from ..mechanisms.base import TWO_PI
 from ..motion import STILL
-from ..validate import Checked, Length, Spec, angle, check, count, length, validated
+from ..validate import Checked, Length, Spec, angle, check_value, count, length, validated
 from ..validate import mechanism as instance_of
 from .spec import AnySpecification
 
@@ -241,7 +241,8 @@ def _jumps(mechanism, phase: float, d1: np.ndarray, d2: np.ndarray) -> tuple[flo
 def _circle(i: int, circle: tuple) -> tuple[tuple, float]:
     if len(circle) != 2:
         raise DimensionError(f"circles[{i}] must be a (centre, radius) pair, got {circle!r:.60}")
-    return check(f"circles[{i}] centre", circle[0], Spec("point")), check(f"circles[{i}] radius", circle[1], length())
+    return (check_value(f"circles[{i}] centre", circle[0], Spec("point")),
+            check_value(f"circles[{i}] radius", circle[1], length()))
 
 
 @validated

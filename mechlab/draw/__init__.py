@@ -772,13 +772,13 @@ def plot_cam_laws(names=None, n: int = 401):
     """
     from ..analysis.motion_laws import LAWS
     from ..errors import MechanismError
-    from ..validate import check, count
+    from ..validate import check_value, count
 
     names = list(LAWS) if names is None else list(names)
     unknown = [name for name in names if name not in LAWS]
     if unknown or not names:
         raise MechanismError(f"law names = {unknown or names!r}: not among {', '.join(LAWS)}")
-    x = np.linspace(0.0, 1.0, check("n", n, count(2)))
+    x = np.linspace(0.0, 1.0, check_value("n", n, count(2)))
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.9), layout="constrained")
     for name in names:
         for ax, y in zip(axes, LAWS[name](x)):
@@ -807,14 +807,14 @@ def plot_cam_undercut(cams: dict, folded, n: int = 1441):
     """
     from ..errors import MechanismError
     from ..mechanisms.cam import RollerCam
-    from ..validate import check, count, mechanism
+    from ..validate import check_value, count, mechanism
 
-    n = check("n", n, count(3))
-    folded = check("folded", folded, mechanism(RollerCam))
+    n = check_value("n", n, count(3))
+    folded = check_value("folded", folded, mechanism(RollerCam))
     if not isinstance(cams, dict) or not cams:
         raise MechanismError(f"cams must be a non-empty dict of name → roller cam, got {cams!r}")
     for name, cam in cams.items():
-        check(f"cams[{name!r}]", cam, mechanism(RollerCam))
+        check_value(f"cams[{name!r}]", cam, mechanism(RollerCam))
     cut = folded.undercut()
     if cut is None:
         raise MechanismError("folded: its roller fits the pitch curve everywhere, there is no fold to show")
@@ -866,13 +866,13 @@ def plot_design_outcomes(maps):
     """
     from ..errors import MechanismError
     from ..synthesis.lambda_guiding import DesignOutcomes
-    from ..validate import check, mechanism
+    from ..validate import check_value, mechanism
 
     maps = list(maps) if isinstance(maps, list | tuple) else [maps]
     if not maps:
         raise MechanismError("maps must hold at least one DesignOutcomes")
     for i, m in enumerate(maps):
-        check(f"maps[{i}]", m, mechanism(DesignOutcomes))
+        check_value(f"maps[{i}]", m, mechanism(DesignOutcomes))
     # two panels a row and the legend in the next free cell, so each panel keeps half the column's width
     cols = 1 if len(maps) == 1 else 2
     rows = -(-(len(maps) + (cols == 2)) // cols)

@@ -126,11 +126,11 @@ def draw_centrodes(cd: Centrodes, i: int = 0, ax=None, clip: float | None = None
     angles, the fixed centrode (on the reference link), the moving one (carried by the link) touching it
     at the pole ★, the curves cut ``clip`` from the reference's origin (default: 3 × the mechanism's size)
     where they run off to infinity. Returns the axes."""
-    from ..validate import check, count
+    from ..validate import check_value, count
 
     if not isinstance(cd, Centrodes):
         raise TypeError(f"cd must be the Centrodes of mechlab.analysis.centres.centrodes, got {type(cd).__name__}")
-    i = check("i", i, count(0, len(cd.centres.phi) - 1))
+    i = check_value("i", i, count(0, len(cd.centres.phi) - 1))
     if ax is None:
         _, ax = plt.subplots(figsize=(6, 5))
     mechanism = cd.centres.mechanism

@@ -99,10 +99,10 @@ def plot_assembly_arcs(fourbar, n: int = 721, ax=None):
     k_c = ±1: two arcs of the circle of radius l_AB about B (dashed), mirror images in the rocker's axis E→B
     (after Zinchenko et al., 2013, Fig. 2). Lengths in units of the frame OE; returns the Figure."""
     from ..mechanisms.fourbar import FourBar
-    from ..validate import check, count, mechanism
+    from ..validate import check_value, count, mechanism
 
-    fourbar = check("fourbar", fourbar, mechanism(FourBar))
-    n = check("n", n, count(2))
+    fourbar = check_value("fourbar", fourbar, mechanism(FourBar))
+    n = check_value("n", n, count(2))
     if ax is None:
         _, ax = plt.subplots(figsize=(7, 5))
     phi = fourbar.cycle(n)

@@ -84,7 +84,7 @@ def drive(torque: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)]
     """The one rule of the course for sizing a motor that drives a crank without a flywheel.
 
     ``torque`` is the crank torque M(φ) at the crank angles ``phi`` over one cycle (e.g.
-    ``ForceResult.torque``; :func:`mechlab.kinetostatics.geneva.drive` builds the Geneva's); ``omega1``
+    ``ForceResult.torque``; :func:`mechlab.kinetostatics.geneva.geneva_drive` builds the Geneva's); ``omega1``
     the constant crank speed (either sign); ``efficiency`` η of the transmission between
     motor and crank (0 < η ≤ 1); ``overload`` the motor's admissible ratio k of peak to
     nominal torque (k ≥ 1). Returns a :class:`Drive`.
@@ -123,7 +123,7 @@ def drive(torque: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)]
     Integration: the trapezoidal rule over the samples (any spacing). Where the torque
     jumps (a hard impact, a load switching on), give both one-sided values at the same
     or nearly the same φ: each smooth piece is then integrated on its own to the
-    accuracy of its sampling, as :func:`mechlab.kinetostatics.geneva.drive` does at the engagement
+    accuracy of its sampling, as :func:`mechlab.kinetostatics.geneva.geneva_drive` does at the engagement
     ends. The peak is the largest sample.
     """
     M = torque

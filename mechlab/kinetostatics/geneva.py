@@ -48,7 +48,7 @@ def drive_angles(mechanism, n: int = 7201) -> np.ndarray:
     return np.concatenate([before, on, after])
 
 
-def drive(mechanism, *, inertia: float, omega1: float, resisting_torque: float = 0.0,
+def geneva_drive(mechanism, *, inertia: float, omega1: float, resisting_torque: float = 0.0,
           efficiency: float = 1.0, overload: float = 2.0, n: int = 7201) -> Drive:
     """The motor of a Geneva drive: :func:`crank_torque` sampled by :func:`drive_angles`
     (n samples while the wheel moves, the engagement ends resolved), then the course's one rule,
@@ -58,3 +58,6 @@ def drive(mechanism, *, inertia: float, omega1: float, resisting_torque: float =
     M1 = crank_torque(mechanism, phi, inertia=inertia, omega1=omega1, resisting_torque=resisting_torque)
     return _drive(M1, phi, omega1, overload=overload, efficiency=efficiency)
 
+
+# the old name, for the geneva and geneva_spherical assignments (kinetostatics.drive.drive is the motor rule)
+drive = geneva_drive

@@ -19,7 +19,7 @@ import numpy as np
 from ..errors import FrictionlessOnlyError
 from ..mechanisms.base import Mechanism
 from ..motion import STILL, AngularMotion, LinearMotion
-from ..validate import Point, Spec, check, mechanism as instance_of, number, validated
+from ..validate import Point, Spec, check_value, mechanism as instance_of, number, validated
 from .model import G, Force, ForceModel, LoadError, Torque, model_for
 from .solve import _frames, virtual_work_torque
 
@@ -34,7 +34,7 @@ Values = Annotated[float | np.ndarray, Spec("reals")]
 
 def _setup(mech, phi, model, loads, omega1, eps1, gravity):
     """The motion at φ, the model (frictionless), the torque for the other loads, q′ and θ′."""
-    motion = mech.motion(np.atleast_1d(check("phi", phi, Spec("angles", lo=1))))
+    motion = mech.motion(np.atleast_1d(check_value("phi", phi, Spec("angles", lo=1))))
     if not isinstance(motion, AngularMotion | LinearMotion):
         raise LoadError(f"{type(mech).__name__} reports no output law: no load on its output")
     model = model_for(mech) if model is None else model

@@ -23,7 +23,7 @@ import numpy as np
 from ..errors import (DimensionError, FrictionError, LoadError, MassError, MechanismError, SelfLockingError,
                       StructureError)
 from ..mechanisms.base import FRAME
-from ..validate import (Angle, Checked, Distance, Name, Point, Spec, angle, check, number, or_function)
+from ..validate import (Angle, Checked, Distance, Name, Point, Spec, angle, check_value, number, or_function)
 
 __all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque", "model_for",
            "slender_bar", "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"]
@@ -34,7 +34,7 @@ G = 9.81
 
 
 def _nonneg(name: str, value, exc) -> float:
-    return check(name, value, number(0.0, error=exc))
+    return check_value(name, value, number(0.0, error=exc))
 
 
 # Crank speeds beyond this (rad/s, ≈ 10⁷ rpm) overflow the inertia forces' squares.
@@ -82,7 +82,7 @@ class Body(_Labelled):
         if self.name == FRAME:
             raise StructureError(f"a body may not be called {FRAME!r} (reserved for the frame)")
         if not isinstance(self.axis, tuple):
-            object.__setattr__(self, "axis", check(f"axis of {self.name}", self.axis, or_function(angle())))
+            object.__setattr__(self, "axis", check_value(f"axis of {self.name}", self.axis, or_function(angle())))
         elif len(self.axis) != 2 or not all(isinstance(j, str) for j in self.axis):
             raise StructureError(f"axis of {self.name} must be (P, Q) joint names or an angle, got {self.axis!r}")
 
@@ -251,11 +251,11 @@ class Force(Checked):
     def __post_init__(self):
         super().__post_init__()
         if not isinstance(self.at, str):
-            object.__setattr__(self, "at", check("at", self.at, Spec("point")))
+            object.__setattr__(self, "at", check_value("at", self.at, Spec("point")))
         if not callable(self.value):  # one vector, or one per crank angle
             one = np.ndim(self.value) <= 1
             spec = Spec("point" if one else "points", lo=1, error=LoadError)
-            object.__setattr__(self, "value", check("value", self.value, spec))
+            object.__setattr__(self, "value", check_value("value", self.value, spec))
 
 
 @dataclass(frozen=True)

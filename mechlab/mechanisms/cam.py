@@ -27,7 +27,7 @@ from scipy.optimize import brentq
 from ..errors import CamUndercutError, DimensionError, MechanismError, SingularityError
 from ..geometry import AnglePath, PointPath, as_angles, check_length, check_number, cross, dot, fixed_point, perp
 from ..motion import AngularMotion, LinearMotion, scalar_law
-from ..validate import check, count
+from ..validate import check_value, count
 from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars
 
 __all__ = ["TranslatingRollerCam", "OscillatingRollerCam", "CamProfile", "Undercut", "CamUndercutError", "CamPeak",
@@ -753,4 +753,4 @@ def _check_common(cam) -> None:
                              f"got {type(cam.programme).__name__}")
     object.__setattr__(cam, "base_radius", check_length("base radius", cam.base_radius))
     object.__setattr__(cam, "roller_radius", check_length("roller radius", cam.roller_radius, allow_zero=True))
-    object.__setattr__(cam, "samples", check("samples", cam.samples, count(720, why="profile nodes per turn")))
+    object.__setattr__(cam, "samples", check_value("samples", cam.samples, count(720, why="profile nodes per turn")))

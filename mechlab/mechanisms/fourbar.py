@@ -27,7 +27,7 @@ import numpy as np
 from ..errors import AssemblyError, RotationError
 from ..geometry import _re_conj, as_angles, as_complex, circle_circle, crank_point, fixed_point, rocker_dyad
 from ..motion import AngularMotion, Extremes, limit_positions
-from ..validate import Length, Spec, check
+from ..validate import Length, Spec, check_value
 from .base import FRAME, Link, Mechanism, Pair, Structure, arc_set, branch_references, fmt_ranges, lift_on_ranges
 from .curved_slot import CircleSlot, CurvedSlotLink
 
@@ -43,7 +43,7 @@ Assembly = Annotated[int | str, Spec("sign", options=tuple(ASSEMBLY_NAMES.items(
 
 def assembly_sign(value) -> int:
     """The assembly sign from +1, -1 or a name in ``ASSEMBLY_NAMES`` ("open" = +1, "crossed" = -1)."""
-    return check("assembly", value, Assembly.__metadata__[0])
+    return check_value("assembly", value, Assembly.__metadata__[0])
 
 
 def circle_pair(r1: float, centre2, r2: float) -> tuple[np.ndarray, np.ndarray]:

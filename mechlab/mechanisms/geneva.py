@@ -20,7 +20,7 @@ from ..errors import DimensionError, OffsetError, SlotCountError
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
 from ..motion import AngularMotion, Quantity, Table, scalar_law
-from ..validate import MAX_SLOTS, Length, check, choice, count, length, number
+from ..validate import MAX_SLOTS, Length, check_value, choice, count, length, number
 
 LENGTH_UNITS = ("mm", "cm", "m", "in")   # the units a design table may name
 
@@ -35,7 +35,7 @@ Slots = Annotated[int, count(3, MAX_SLOTS, error=SlotCountError,
 
 def check_slots(z) -> int:
     """z as an int, raising SlotCountError unless it is a whole number ≥ 3."""
-    return check("z", z, Slots.__metadata__[0])
+    return check_value("z", z, Slots.__metadata__[0])
 
 
 def mid_motion_angle(phi) -> np.ndarray:
@@ -164,7 +164,7 @@ class PlanarGeneva(Mechanism):
         >>> round(g.dwell_fraction, 4), round(g.standstill_fraction(0.001), 4)
         (0.6667, 0.6801)
         """
-        precision = check("precision", precision, number(0.0, 1.0, open=True))
+        precision = check_value("precision", precision, number(0.0, 1.0, open=True))
         s0 = self.engagement_half_angle
         end = self.closed_form(s0).theta
         half = precision * abs(self.index_angle) / 2
@@ -288,7 +288,7 @@ class PlanarGeneva(Mechanism):
         unit : the unit of C, which every length shares: "mm" (the default), "cm", "m" or "in".
             Angles are in degrees; ψ' and ψ'' (derivatives in the crank angle φ) have no unit.
         """
-        unit = check("unit", unit, choice(*LENGTH_UNITS))
+        unit = check_value("unit", unit, choice(*LENGTH_UNITS))
         lengths = (("C", self.centre_distance), ("crank radius a", self.crank_radius),
                    ("pin radius at entry |WA|", self.entry_radius), ("roller radius", self.roller_radius),
                    ("slot bottom from W", self.slot_bottom), ("slot centre length", self.slot_centre_length),

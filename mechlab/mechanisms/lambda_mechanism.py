@@ -12,7 +12,7 @@ from ..geometry import PointPath, as_angles, dot, perp, unit
 from .fourbar import FourBar
 from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure
 from ..motion import AngularMotion, scalar_law
-from ..validate import Coordinate, Distance, Length, Sign, Spec, angle, check
+from ..validate import Coordinate, Distance, Length, Sign, Spec, angle, check_value
 
 __all__ = ["LambdaMechanism", "GuidedLambda", "classic_lambda"]
 
@@ -23,7 +23,7 @@ Dwell = Annotated[float, angle(0.0, 2 * np.pi)]
 
 def _angle(name: str, value, lo: float, hi: float, *, closed_hi: bool = True) -> float:
     """An angle (radians) in (lo, hi] (or (lo, hi)), checked by :mod:`mechlab.validate`."""
-    return check(name, value, Spec("angle", lo, hi, open_lo=True, open_hi=not closed_hi))
+    return check_value(name, value, Spec("angle", lo, hi, open_lo=True, open_hi=not closed_hi))
 
 
 # --------------------------------------------------------------------------------------------

@@ -20,7 +20,7 @@ from ..geometry import AnglePath, PointPath, as_angles, vector_angle
 from .base import FRAME, Link, Mechanism, Pair, Structure
 from .geneva import LENGTH_UNITS
 from ..motion import AngularMotion, Quantity, Table, scalar_law
-from ..validate import Length, check, choice, length, number, validated
+from ..validate import Length, check_value, choice, length, number, validated
 from .geneva import Impact, OffsetError, Slots, TWO_PI, mid_motion_angle
 
 
@@ -327,7 +327,7 @@ class SphericalGeneva(Mechanism):
         unit : the unit of R, which every length shares: "mm" (the default), "cm", "m" or "in".
             Angles are in degrees.
         """
-        unit = check("unit", unit, choice(*LENGTH_UNITS))
+        unit = check_value("unit", unit, choice(*LENGTH_UNITS))
         mm = f" ({unit})"
         return Table(Quantity(k, v) for k, v in (
             ("R" + mm, self.R), ("e" + mm, self.e), ("z", self.z), ("α0 (deg)", np.degrees(self.alpha0)),

@@ -2,7 +2,7 @@
 
 Frame of §2 (as :class:`~mechlab.mechanisms.slotted.SlottedLink`): O at the origin, the link's pivot
 B at (-d, 0), crank r = λd, φ = 0 where A is farthest from B. The base mechanism's law
-ψ_K = atan2(λ sin φ, 1 + λ cos φ) and its analogs are formulas (18)-(20) (:func:`base_law`).
+ψ_K = atan2(λ sin φ, 1 + λ cos φ) and its analogs are formulas (18)-(20) (:func:`slotted_link_law`).
 In the link's frame the pin sits at (S, β) with S(φ) = d·sqrt(1 + λ² + 2λ cos φ) and β = ψ_K - ψ
 (formula (12); the printed S has a wrong sign, :mod:`mechlab.course.errata.seed000_dwell`).
 S(-φ) = S(φ) gives the half-turn relation (Table 2): a law chosen on [0, π] fixes the slot and
@@ -25,10 +25,11 @@ from typing import Annotated, Callable
 import numpy as np
 from numpy.polynomial import Polynomial
 from ..errors import DimensionError, DwellError, DwellIntervalError, DwellRatioError, MechanismError
+from ..errors import renamed
 from ..geometry import as_angles, wrap
 from ..mechanisms.base import Mechanism, Part, Sketch
 from ..motion import Table, scalar_law
-from ..validate import MAX_GRID, Checked, Distance, Length, Spec, angle, check, choice, count, number, validated
+from ..validate import MAX_GRID, Checked, Distance, Length, Spec, angle, check_value, choice, count, number, validated
 
 
 TRANSITIONS = ("cubic", "quintic", "sextic")
@@ -53,7 +54,7 @@ _HALF_TURN = Spec("radians", 0.0, np.pi, error=DwellError, why="half() takes the
 
 def check_lambda(lam) -> float:
     """λ as a float; DwellRatioError unless 1e-6 ≤ λ ≤ 1e6 and |λ - 1| > 1e-4."""
-    lam = check("lam", lam, Ratio.__metadata__[0])
+    lam = check_value("lam", lam, Ratio.__metadata__[0])
     if abs(lam - 1.0) <= LAMBDA_TOL:
         raise DwellRatioError(
             f"λ = l_OA / l_OB = {lam:g}, but λ ≠ 1 is needed (|λ - 1| > {LAMBDA_TOL:g}): the pin passes through "
@@ -73,7 +74,7 @@ class BaseLaw:
 
 
 @scalar_law
-def base_law(lam: float, phi) -> BaseLaw:
+def slotted_link_law(lam: float, phi) -> BaseLaw:
     """The base mechanism's law ψ_K(φ) with ψ_K', ψ_K'', ψ_K''' (Zinchenko et al. (2013), (18)-(20)).
 
     ψ_K is continuous in φ: principal for λ < 1, ψ_K - φ ∈ (-π/2, π/2) for λ > 1 (the link turns).
@@ -100,7 +101,7 @@ def arc_pressure_angle(lam, phi) -> np.ndarray:
     at a pressure angle of at least that much.
     """
     phi = as_angles(phi)
-    return np.abs(np.pi / 2 - (phi - base_law(lam, phi).psi))
+    return np.abs(np.pi / 2 - (phi - slotted_link_law(lam, phi).psi))
 
 
 def _end_values(lam: float):
@@ -161,7 +162,7 @@ def _x_over_sin(x: np.ndarray):
 
 def check_interval(phi1, phi2) -> tuple[float, float]:
     """(φ1, φ2) as floats; DwellIntervalError unless 0 < φ1 < φ2 < π with transitions ≥ MIN_TRANSITION."""
-    phi1, phi2 = (check(k, v, DwellAngle.__metadata__[0]) for k, v in (("phi1", phi1), ("phi2", phi2)))
+    phi1, phi2 = (check_value(k, v, DwellAngle.__metadata__[0]) for k, v in (("phi1", phi1), ("phi2", phi2)))
     deg = f"[φ1, φ2] = [{np.degrees(phi1):.2f}°, {np.degrees(phi2):.2f}°]"
     if phi1 >= phi2:
         raise DwellIntervalError(f"the dwell needs φ1 < φ2, got {deg}")
@@ -265,7 +266,7 @@ class DwellLaw(Checked):
     @scalar_law
     def half(self, phi) -> BaseLaw:
         """ψ, ψ', ψ'', ψ''' for φ in [0, π] (the designed half)."""
-        phi = check("phi", as_angles(phi), _HALF_TURN)
+        phi = check_value("phi", as_angles(phi), _HALF_TURN)
         L, R = self._pieces(phi)
         out = [np.zeros_like(phi) for _ in range(4)]
         out[0][:] = self.psi_dwell
@@ -286,7 +287,7 @@ class DwellLaw(Checked):
         neg = red < 0
         a = np.abs(red)
         h = self.half(a)
-        K = base_law(self.lam, a)
+        K = slotted_link_law(self.lam, a)
         sign = np.where(neg, -1.0, 1.0)
         psi = h.psi - 2.0 * neg * K.psi
         d1 = np.where(neg, 2.0 * K.d - h.d, h.d)
@@ -316,7 +317,7 @@ class DwellLaw(Checked):
     @scalar_law
     def beta(self, phi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """β = ψ_K - ψ (polar angle of the pin in the link's frame) and β', β'' for φ in [0, π]."""
-        h, K = self.half(phi), base_law(self.lam, phi)
+        h, K = self.half(phi), slotted_link_law(self.lam, phi)
         return K.psi - h.psi, K.d - h.d, K.dd - h.dd
 
     @scalar_law
@@ -345,7 +346,7 @@ class DwellLaw(Checked):
         L, R = self._pieces(phi)
         M = ~(L | R)
         x = phi[M]
-        K = base_law(lam, x)
+        K = slotted_link_law(lam, x)
         sx, cx = np.sin(x), np.cos(x)
         g[M] = K.d / sx
         G[M] = (K.dd * sx - K.d * cx) / sx**3
@@ -820,10 +821,13 @@ def two_branch_slot(lam: Ratio, phi2: Annotated[float, angle(0.0, np.pi, open=Tr
         return CurvedSlotLink(r, d, CircleSlot((d, 0.0), r), start=0.0)
 
     after = float(link().motion(np.array([0.5 * phi2])).dpsi[0])   # the link dwells on (0, φ2)
-    before = float(2 * base_law(lam, 0.0).d - after)
+    before = float(2 * slotted_link_law(lam, 0.0).d - after)
     # at E the slot point is c(0) = (d + r, 0) in the link frame (= B→E); θ = angle(tangent, radius)
     E = link().slot.evaluate(np.array([0.0]))
     cos_t = abs(float(E.p[0] @ E.d[0])) / (np.hypot(*E.p[0]) * np.hypot(*E.d[0]))
     return TwoBranchSlot(pressure_angle_at_E=float(np.arccos(cos_t)), dpsi_after=after,
                          dpsi_before=before, velocity_jump=before - after, link=link)
 
+
+# the old name (analysis.equivalence.base_law is the law of any mechanism's base mechanism)
+__getattr__ = renamed(__name__, base_law=(slotted_link_law, "mechlab.synthesis.dwell_slot.slotted_link_law"))

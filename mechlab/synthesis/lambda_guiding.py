@@ -27,7 +27,7 @@ from scipy.optimize import brentq, least_squares, minimize, minimize_scalar, roo
 from ..errors import DimensionError, MechanismError, NoDesignError, SynthesisError
 from ..geometry import check_length, check_number
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
-from ..validate import Flag, Spec, angle, check, count, mechanism, number, validated
+from ..validate import Flag, Spec, angle, check_value, count, mechanism, number, validated
 
 __all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "ThesisIteration",
            "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches",
@@ -528,11 +528,11 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     ``r`` holds D: the ripple is below what double precision resolves), ``"whole turn"``.
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
-    minimax = check("minimax", minimax, Flag.__metadata__[0])
+    minimax = check_value("minimax", minimax, Flag.__metadata__[0])
     if guess is not None:
         if isinstance(guess, str) or np.ndim(guess) != 1 or len(guess) != 4:
             raise DimensionError(f"guess must be (r, k, t3, t2), got {guess!r:.60}")
-        guess = tuple(check(f"guess[{i}]", v, number()) for i, v in enumerate(guess))
+        guess = tuple(check_value(f"guess[{i}]", v, number()) for i, v in enumerate(guess))
     return _circle(delta, a, dwell, guess, minimax)
 
 
@@ -561,8 +561,9 @@ def design_outcomes(delta: float, fractions=OUTCOME_FRACTIONS, dwells=OUTCOME_DW
     of the existence region's span and every dwell 2α in ``dwells`` (rad): a map of where designs exist
     and why the rest are refused (at most MAX_OUTCOMES requests)."""
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
-    fractions = np.atleast_1d(check("fractions", fractions, Spec("reals", 0.0, 1.0, why="fractions of the span")))
-    dwells = np.atleast_1d(check("dwells", dwells, Spec("radians", 0.0, 2 * np.pi, why="dwells 2α, up to a turn")))
+    fractions = np.atleast_1d(check_value("fractions", fractions, Spec("reals", 0.0, 1.0, why="fractions of the span")))
+    dwells = np.atleast_1d(check_value("dwells", dwells,
+                                       Spec("radians", 0.0, 2 * np.pi, why="dwells 2α, up to a turn")))
     if fractions.size == 0 or dwells.size == 0:
         raise DimensionError("design_outcomes: fractions and dwells must each hold at least one value")
     if fractions.size * dwells.size > MAX_OUTCOMES:
@@ -1051,7 +1052,7 @@ def whole_turn_guiding(delta: float, a: float, line: WholeTurnLine | None = None
     the whole turn (checked on 4001 points). SynthesisError if the line misses a. ``line``: the
     already traced :func:`whole_turn_line` of this δ (saves tracing it again)."""
     delta, a, _ = _check_inputs(delta, a, 2 * np.pi, "whole-turn circle guiding")
-    line = whole_turn_line(delta) if line is None else check("line", line, mechanism(WholeTurnLine))
+    line = whole_turn_line(delta) if line is None else check_value("line", line, mechanism(WholeTurnLine))
     i = np.nonzero(np.sign(line.a[1:] - a) * np.sign(line.a[:-1] - a) <= 0)[0]
     if len(i) == 0:
         raise SynthesisError(
@@ -1080,7 +1081,7 @@ def existence_region(delta: float, line: WholeTurnLine | None = None) -> tuple[n
     (0, a_lo); a_lo = 2 sin((δ − π)/2) for δ > π (where the fifth-order line leaves r = 0), else 0.
     Checked by designs of :func:`circle_guiding` inside it and refusals outside (tests, δ = 150°, 240°)."""
     r5, a5 = fifth_order_line(delta, 200)[:2]
-    wt = whole_turn_line(delta) if line is None else check("line", line, mechanism(WholeTurnLine))
+    wt = whole_turn_line(delta) if line is None else check_value("line", line, mechanism(WholeTurnLine))
     a_lo = _frame_span(delta)[0]
     down = np.linspace(wt.a[-1], a_lo, 60)[1:]
     down = np.sort(np.r_[down, [1.0] if a_lo < 1 < wt.a[-1] else []])[::-1]  # keep the corner (1, 1)
@@ -1114,7 +1115,8 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
     :func:`existence_region`; ``n`` frames a per iso-dwell curve (at most MAX_ISO_POINTS)."""
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     n = int(_bounded("n", n, 2, MAX_ISO_POINTS))
-    dwells = [_angle("dwell 2α", w, 0.0, 2 * np.pi) for w in np.atleast_1d(check("dwells", dwells, Spec("reals")))]
+    dwells = [_angle("dwell 2α", w, 0.0, 2 * np.pi)
+              for w in np.atleast_1d(check_value("dwells", dwells, Spec("reals")))]
     line = whole_turn_line(delta)
     mu = transmission_lines()
     iso = {int(round(np.degrees(w))): _iso_dwell(delta, w, n) for w in dwells}

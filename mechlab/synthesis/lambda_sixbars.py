@@ -29,7 +29,7 @@ from .lambda_guiding import CircleGuide, StraightGuide, straight_guiding
 from ..errors import InfeasibleDesignError, TransmissionAngleError
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
 from ..motion import Table, scalar_law
-from ..validate import (MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check, count, mechanism, number,
+from ..validate import (MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check_value, count, mechanism, number,
                         validated)
 
 # A time ratio K (> 0), the working limit μ_min of a transmission angle (None: no limit), the guides
@@ -92,7 +92,7 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
     [μ_min, 180° − μ_min] over the turn (Kinitsky (1994), §1.8: 30° ≤ μ ≤ 150°, the figure "cnm" of
     Fig. 2a); pass ``mu_min=None`` to get such a design anyway.
     """
-    swing = check("swing", swing, Spec("angle", MIN_SWING, np.pi, open_hi=True))
+    swing = check_value("swing", swing, Spec("angle", MIN_SWING, np.pi, open_hi=True))
     m, alpha, R, Q = guide.mechanism, guide.alpha, guide.R, guide.centre
     phi_far = np.pi + alpha + time_ratio_far_angle(K, guide.dwell)
     D1 = m.motion(np.array([phi_far])).points["D"]

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import CentreAtInfinity, DimensionError, IndeterminateCentre, SingularityError
-from ...validate import Checked, Name, Spec, check
+from ...validate import Checked, Name, Spec, check_value
 
 ROWS = Spec("points", lo=0, width=3)  # homogeneous rows (x, y, w)
 
@@ -50,7 +50,7 @@ class Centre(Checked):
     def __post_init__(self):
         super().__post_init__()
         one = np.ndim(self.h) == 1  # one row, at a scalar crank angle
-        rows = check("h", np.atleast_2d(self.h) if one else self.h, ROWS)
+        rows = check_value("h", np.atleast_2d(self.h) if one else self.h, ROWS)
         w, r = rows[:, 2], np.hypot(rows[:, 0], rows[:, 1])
         bad = ~((w == 1.0) | ((w == 0.0) & (np.abs(r - 1.0) <= 1e-9)))
         if np.any(bad):

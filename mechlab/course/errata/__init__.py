@@ -21,6 +21,8 @@ from typing import Callable
 
 import numpy as np
 
+from ...errors import renamed
+
 SOURCES = {
     "000": "Zinchenko et al. (2013), slotted-link mechanisms with a curved slot",
     "001": "Kinitsky (1994), Chebyshev hinged mechanisms with a dwell (thesis abstract)",
@@ -120,7 +122,7 @@ class Erratum:
         return out
 
 
-def count(errata: list[Erratum] | None = None) -> dict[str, int]:
+def count_by_kind(errata: list[Erratum] | None = None) -> dict[str, int]:
     """How many errata of each kind (all of :data:`KINDS`, zeros included)."""
     rows = collect() if errata is None else errata
     return {k: sum(e.kind == k for e in rows) for k in KINDS}
@@ -145,3 +147,7 @@ def table(errata: list[Erratum] | None = None, *, notebook: str | None = None) -
         cells = (f"{e.source}", e.kind, e.where, e.printed, e.correct, e.evidence())
         lines.append("| " + " | ".join(c.replace("|", "\\|").replace("\n", " ") for c in cells) + " |")
     return "\n".join(lines)
+
+
+# the old name (validate.count is the whole-number spec)
+__getattr__ = renamed(__name__, count=(count_by_kind, "mechlab.course.errata.count_by_kind"))

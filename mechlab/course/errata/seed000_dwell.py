@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...synthesis.dwell_slot import DwellLaw, base_law, curved_slot_dwell
+from ...synthesis.dwell_slot import DwellLaw, slotted_link_law, curved_slot_dwell
 from . import Claim, Erratum
 
 NB = "05_dwell_curved_slot.ipynb"
@@ -35,7 +35,7 @@ def _a2():
     W = np.pi - P2
     printed = LAM / (3 * (1 - LAM) * W**2)
     correct = LAM / (3 * (LAM - 1) * W**2)
-    target = base_law(LAM, np.pi).d                     # (25): ψ_K'(π) = λ/(λ - 1)
+    target = slotted_link_law(LAM, np.pi).d                     # (25): ψ_K'(π) = λ/(λ - 1)
     assert abs(_law().right.coef[3] - correct) < 1e-12
     return Claim(target, 3 * printed * W**2, 3 * correct * W**2, 1e-12,
                  f"λ = 0.5, φ2 = 150°: ψ'(π) = 3a2(π - φ2)² is {3 * printed * W**2:+.3f} with the printed a2 = "
@@ -44,7 +44,7 @@ def _a2():
 
 def _beta_left():
     law = _law()
-    K0 = base_law(LAM, np.array([0.0, P1]))
+    K0 = slotted_link_law(LAM, np.array([0.0, P1]))
     c = LAM * P1 / (3 * (LAM + 1))
     k = LAM / (3 * (LAM + 1) * P1**2)
     # printed: β = atan(...) + c + k (φ1 - φ)        correct: β = atan(...) - c + k (φ1 - φ)³
@@ -60,7 +60,7 @@ def _beta_left():
 def _beta_right():
     law = _law()
     W = np.pi - P2
-    Kpi = base_law(LAM, np.pi)
+    Kpi = slotted_link_law(LAM, np.pi)
     printed_dbeta_pi = Kpi.d - LAM / ((1 - LAM) * W**2) * W**2   # derivative of the printed cubic term at π
     psi_d_printed = Kpi.d - printed_dbeta_pi
     correct = law.beta(np.pi)[1]
@@ -73,7 +73,7 @@ def _beta_middle():
     # on the dwell [φ1, φ2] the link stands at ψ_B, so β = ψ_K − ψ_B; truth: ψ_K − the simulated ψ
     m = curved_slot_dwell(LAM, P1, P2)
     phi = np.linspace(P1, P2, 7)
-    K = base_law(LAM, phi).psi
+    K = slotted_link_law(LAM, phi).psi
     c = LAM * P1 / (3 * (LAM + 1))
     truth = K - m.motion(phi).psi
     return Claim(truth, K + c, K - c, 1e-12, text=(
@@ -96,7 +96,7 @@ def _distance():
 def _pressure_at_phi1():
     m = curved_slot_dwell(LAM, P1, P2)
     theta = m.motion(P1).pressure_angle
-    psiK = base_law(LAM, P1).psi
+    psiK = slotted_link_law(LAM, P1).psi
     printed = np.pi / 2 - (P1 - m.law.psi_dwell)
     correct = abs(np.pi / 2 - (P1 - psiK))
     return Claim(theta, printed, correct, 1e-12, text=(f"λ = 0.5, [60°, 150°]: through the slot θ(φ1) = {np.degrees(theta):.3f}°; the printed formula with "

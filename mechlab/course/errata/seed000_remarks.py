@@ -7,7 +7,7 @@ import numpy as np
 from ...analysis.equivalence import equivalent_slot
 from ...mechanisms.fourbar import FourBar
 from ...mechanisms.slotted import SlottedLink
-from ...synthesis.dwell_slot import base_law, curved_slot_dwell, two_branch_slot
+from ...synthesis.dwell_slot import slotted_link_law, curved_slot_dwell, two_branch_slot
 from . import Claim, Erratum
 
 NB05 = "05_dwell_curved_slot.ipynb"
@@ -21,7 +21,7 @@ def _arctangent_rotating():
     phi = np.linspace(turn + 0.05, np.pi - 0.05, 25)
     simulated = SlottedLink(lam, 1.0).motion(phi).psi           # the rotating link, lifted along the turn
     printed = np.arctan(lam * np.sin(phi) / (lam * np.cos(phi) + 1))
-    return Claim(simulated, printed, base_law(lam, phi).psi, 1e-12,
+    return Claim(simulated, printed, slotted_link_law(lam, phi).psi, 1e-12,
                  f"λ = 1.5, φ from {np.degrees(turn) + 2.9:.1f}° to 177.1° (past cos φ = −1/λ, φ = "
                  f"{np.degrees(turn):.2f}°): the simulated link angle against arctg(λ sin φ/(λ cos φ + 1)) "
                  f"(off by π) and the quadrant-correct atan2(λ sin φ, 1 + λ cos φ), continued along the turn")
@@ -46,7 +46,7 @@ def _two_branch_jump():
     assert abs(tb.velocity_jump - 2 * lam / (lam + 1)) < 1e-12 and abs(cubic[1] - cubic[0]) < 1e-5
     return (f"λ = 0.5: with the dwell arc through E (φ1 = 0, ψ'(0+) = {tb.dpsi_after:.1e}) the jump is "
             f"2ψ_K'(0) − 2ψ'(0+) = {tb.velocity_jump:.4f} = 2λ/(λ+1); with the cubic law of (21), ψ'(0+) = "
-            f"ψ_K'(0) = {base_law(lam, 0.0).d:.4f} and the simulated ψ' passes E without a jump "
+            f"ψ_K'(0) = {slotted_link_law(lam, 0.0).d:.4f} and the simulated ψ' passes E without a jump "
             f"({cubic[0]:.6f} → {cubic[1]:.6f})")
 
 

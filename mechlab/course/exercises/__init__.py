@@ -6,10 +6,15 @@ the checkers of :mod:`.design` run a student's design or function through mechla
 specification with its numbers. This package stores no answer.
 """
 
-from .design import (DesignReport, Spec, cam_design, dwell_slot_design, fourbar_design, function_check,
+from .design import (DesignReport, Requirement, cam_design, dwell_slot_design, fourbar_design, function_check,
                      geneva_design, guide_design, output_design, press_design, sixbar_design)
+from ...errors import renamed
 from .feedback import NotYet, Verdict, check, check_choice, check_form, recording, self_check, tolerance
 
-__all__ = ["check", "check_choice", "check_form", "self_check", "recording", "tolerance", "Verdict", "NotYet", "Spec", "DesignReport",
+__all__ = ["check", "check_choice", "check_form", "self_check", "recording", "tolerance", "Verdict", "NotYet",
+           "Requirement", "DesignReport",
            "fourbar_design", "output_design", "cam_design", "guide_design", "dwell_slot_design", "sixbar_design",
            "geneva_design", "press_design", "function_check"]
+
+# the old name (validate.Spec is what a parameter may be)
+__getattr__ = renamed(__name__, Spec=(Requirement, "mechlab.course.exercises.Requirement"))

@@ -16,6 +16,7 @@ from typing import Callable, Iterable, Sequence
 import numpy as np
 
 from ...errors import MechanismError
+from ...errors import renamed
 from . import feedback
 from .feedback import NotYet
 from .selfcheck import record, value_bin
@@ -25,7 +26,7 @@ _NEGATION = {"<": "≥", "≤": ">", ">": "≤", "≥": "<"}
 
 
 @dataclass(frozen=True)
-class Spec:
+class Requirement:
     """One specification: ``value op limit`` (op one of < ≤ > ≥), or ``|value − limit| ≤ tol`` when ``op``
     is "≈"; ``where`` says where the value was measured (e.g. "φ = 12°")."""
 
@@ -62,7 +63,7 @@ class DesignReport:
     not be examined at all (wrong type, not buildable, a function that raised)."""
 
     title: str
-    specs: tuple[Spec, ...] = ()
+    specs: tuple[Requirement, ...] = ()
     problem: str = ""
 
     @property
@@ -133,14 +134,14 @@ def fourbar_design(fb, *, swing: float | None = None, swing_tol: float = 0.5, mi
         return mo
     specs = []
     if swing is not None:
-        specs.append(Spec("rocker swing", _deg(np.ptp(mo.psi)), "≈", swing, "°", tol=swing_tol))
+        specs.append(Requirement("rocker swing", _deg(np.ptp(mo.psi)), "≈", swing, "°", tol=swing_tol))
     if min_transmission is not None:
         dev = np.minimum(mo.transmission, np.pi - mo.transmission)
         k = int(np.argmin(dev))
-        specs.append(Spec("smallest transmission angle min(μ, 180° − μ)", _deg(dev[k]), "≥", min_transmission,
-                          "°", f"φ = {_deg(mo.phi[k]):.0f}°"))
+        specs.append(Requirement("smallest transmission angle min(μ, 180° − μ)", _deg(dev[k]), "≥",
+                                 min_transmission, "°", f"φ = {_deg(mo.phi[k]):.0f}°"))
     if time_ratio_at_least is not None:
-        specs.append(Spec("time ratio K", time_ratio(mo.psi, mo.phi), "≥", time_ratio_at_least))
+        specs.append(Requirement("time ratio K", time_ratio(mo.psi, mo.phi), "≥", time_ratio_at_least))
     return DesignReport("four-bar design", tuple(specs))
 
 
@@ -154,10 +155,10 @@ def output_design(mech, *, min_swing: float | None = None, max_velocity: float |
         return mo
     specs = []
     if min_swing is not None:
-        specs.append(Spec("output swing", _deg(np.ptp(mo.psi)), "≥", min_swing, "°"))
+        specs.append(Requirement("output swing", _deg(np.ptp(mo.psi)), "≥", min_swing, "°"))
     if max_velocity is not None:
         k = int(np.argmax(np.abs(mo.dpsi)))
-        specs.append(Spec("largest |ψ′|", float(abs(mo.dpsi[k])), "≤", max_velocity, "",
+        specs.append(Requirement("largest |ψ′|", float(abs(mo.dpsi[k])), "≤", max_velocity, "",
                           f"φ = {_deg(mo.phi[k]):.0f}°"))
     return DesignReport("output design", tuple(specs))
 
@@ -170,9 +171,9 @@ def guide_design(guide, *, min_dwell: float, max_band: float, min_crank: float) 
     title = "circle-guiding design"
     if (bad := _kind(guide, CircleGuide, title, "circle_guiding(delta, a, dwell)")) is not None:
         return bad
-    return DesignReport(title, (Spec("dwell 2α", _deg(guide.dwell), "≥", min_dwell, "°"),
-                                Spec("band half-width E", guide.E, "≤", max_band, " l"),
-                                Spec("crank r", guide.r, "≥", min_crank, " l")))
+    return DesignReport(title, (Requirement("dwell 2α", _deg(guide.dwell), "≥", min_dwell, "°"),
+                                Requirement("band half-width E", guide.E, "≤", max_band, " l"),
+                                Requirement("crank r", guide.r, "≥", min_crank, " l")))
 
 
 def cam_design(cam, *, max_pressure: float, max_base_radius: float | None = None) -> DesignReport:
@@ -187,9 +188,9 @@ def cam_design(cam, *, max_pressure: float, max_base_radius: float | None = None
     phi = np.linspace(0.0, 2 * np.pi, 2881)
     alpha = np.abs(cam.pressure_angle(phi))
     k = int(np.argmax(alpha))
-    specs = [Spec("pressure angle", _deg(alpha[k]), "<", max_pressure, "°", f"φ = {_deg(phi[k]):.0f}°")]
+    specs = [Requirement("pressure angle", _deg(alpha[k]), "<", max_pressure, "°", f"φ = {_deg(phi[k]):.0f}°")]
     if max_base_radius is not None:
-        specs.append(Spec("base radius", float(cam.base_radius), "≤", max_base_radius))
+        specs.append(Requirement("base radius", float(cam.base_radius), "≤", max_base_radius))
     cut = cam.undercut()
     return DesignReport(title, tuple(specs), "" if cut is None else f"the profile is undercut: {cut}")
 
@@ -206,13 +207,13 @@ def dwell_slot_design(mech, *, min_dwell: float, max_pressure: float, dxf: str |
     if (bad := _kind(mech, DwellSlotMechanism, title, "curved_slot_dwell(lam, phi1, phi2, ...)")) is not None:
         return bad
     theta, at = mech.max_pressure_angle(n)
-    specs = [Spec("dwell φ2 − φ1", _deg(mech.phi2 - mech.phi1), "≥", min_dwell, "°"),
-             Spec("pressure angle", _deg(theta), "<", max_pressure, "°", f"φ = {_deg(at):.0f}°")]
+    specs = [Requirement("dwell φ2 − φ1", _deg(mech.phi2 - mech.phi1), "≥", min_dwell, "°"),
+             Requirement("pressure angle", _deg(theta), "<", max_pressure, "°", f"φ = {_deg(at):.0f}°")]
     problem = ""
     if dxf is not None:
         gap, problem = _dxf_gap(mech, dxf)
         if not problem:
-            specs.append(Spec("DXF centre line's distance from the designed slot", gap, "≤",
+            specs.append(Requirement("DXF centre line's distance from the designed slot", gap, "≤",
                               1e-3 * mech.pivot_distance))
     return DesignReport(title, tuple(specs), problem)
 
@@ -257,20 +258,20 @@ def sixbar_design(mech, dwell: float, *, time_ratio: float, swing: float, time_r
         return bad
     rep = report(mech, np.radians(dwell))
     return DesignReport(title, (
-        Spec("time ratio K", rep.K, "≈", time_ratio, tol=time_ratio_tol),
-        Spec("swing", _deg(rep.swing), "≈", swing, "°", tol=swing_tol),
-        Spec(f"residual motion over the {dwell:g}° dwell", _deg(rep.residual), "≤", max_residual, "°"),
+        Requirement("time ratio K", rep.K, "≈", time_ratio, tol=time_ratio_tol),
+        Requirement("swing", _deg(rep.swing), "≈", swing, "°", tol=swing_tol),
+        Requirement(f"residual motion over the {dwell:g}° dwell", _deg(rep.residual), "≤", max_residual, "°"),
     ))
 
 
-def motor_specs(motor_power: float, drive, catalogue: Sequence[float] | None = None) -> tuple[Spec, ...]:
+def motor_specs(motor_power: float, drive, catalogue: Sequence[float] | None = None) -> tuple[Requirement, ...]:
     """The chosen motor (W) against a :class:`~mechlab.kinetostatics.drive.Drive`: it covers the nominal power,
     and — with a ``catalogue`` — it is the smallest catalogue size that does."""
-    specs = [Spec(f"motor power vs the nominal power ({drive.governing} governs)", float(motor_power), "≥",
+    specs = [Requirement(f"motor power vs the nominal power ({drive.governing} governs)", float(motor_power), "≥",
                   drive.nominal_power, " W")]
     if catalogue is not None:  # counted, not named: the check must not hand out the answer
         smaller = [p for p in catalogue if drive.nominal_power <= p < float(motor_power)]
-        specs.append(Spec("smaller catalogue motors that would also do", len(smaller), "≤", 0))
+        specs.append(Requirement("smaller catalogue motors that would also do", len(smaller), "≤", 0))
     return tuple(specs)
 
 
@@ -281,10 +282,10 @@ def geneva_design(geneva, *, rpm: float, inertia: float, index_time: float, moto
     """A Geneva drive (planar or spherical) at ``rpm`` indexing ``inertia`` (kg·m²): at least ``min_rpm``
     cycles a minute; a share ≥ ``min_dwell_fraction`` of the turn at rest; the wheel's motion takes at most
     ``index_time`` seconds; the motor of ``motor_power`` W covers the nominal power of
-    :func:`mechlab.kinetostatics.geneva.drive` (rms torque, peak/overload) and is the smallest of
+    :func:`mechlab.kinetostatics.geneva.geneva_drive` (rms torque, peak/overload) and is the smallest of
     ``catalogue`` that does (:func:`motor_specs`); ``impacts`` lists the admissible kinds at entry ("none",
     "soft", "hard")."""
-    from ...kinetostatics.geneva import drive
+    from ...kinetostatics.geneva import geneva_drive
     from ...mechanisms.geneva import PlanarGeneva
     from ...mechanisms.spherical_geneva import SphericalGeneva
 
@@ -293,11 +294,11 @@ def geneva_design(geneva, *, rpm: float, inertia: float, index_time: float, moto
                      "SphericalGeneva")) is not None:
         return bad
     omega1 = float(rpm) * 2 * np.pi / 60
-    d = drive(geneva, inertia=inertia, omega1=omega1, overload=overload, n=2001)
-    specs = [Spec("cycles per minute", float(rpm), "≥", min_rpm)] if min_rpm is not None else []
+    d = geneva_drive(geneva, inertia=inertia, omega1=omega1, overload=overload, n=2001)
+    specs = [Requirement("cycles per minute", float(rpm), "≥", min_rpm)] if min_rpm is not None else []
     if min_dwell_fraction is not None:
-        specs.append(Spec("dwell fraction", geneva.dwell_fraction, "≥", min_dwell_fraction))
-    specs += [Spec("index time", 2 * geneva.engagement_half_angle / omega1, "≤", index_time, " s"),
+        specs.append(Requirement("dwell fraction", geneva.dwell_fraction, "≥", min_dwell_fraction))
+    specs += [Requirement("index time", 2 * geneva.engagement_half_angle / omega1, "≤", index_time, " s"),
               *motor_specs(motor_power, d, catalogue)]
     problem = ""
     if impacts is not None and (kind := geneva.impacts().kind) not in impacts:
@@ -321,8 +322,9 @@ def press_design(k, motor_power: float, *, stroke: float, stroke_tol: float, max
     d = drive(r.torque, r.phi, r.omega1, overload=overload)
     i = int(np.argmax(mo.pressure_angle))
     return DesignReport(title, (
-        Spec("stroke", float(np.ptp(mo.s)), "≈", stroke, " m", tol=stroke_tol),
-        Spec("pressure angle", _deg(mo.pressure_angle[i]), "<", max_pressure, "°", f"φ = {_deg(mo.phi[i]):.0f}°"),
+        Requirement("stroke", float(np.ptp(mo.s)), "≈", stroke, " m", tol=stroke_tol),
+        Requirement("pressure angle", _deg(mo.pressure_angle[i]), "<", max_pressure, "°",
+                    f"φ = {_deg(mo.phi[i]):.0f}°"),
         *motor_specs(motor_power, d, catalogue),
     ))
 
@@ -357,7 +359,12 @@ def function_check(fn: Callable, reference: Callable, cases: Iterable[tuple], *,
     verdict, agreed = feedback.function_outcome(fn, name, cases, outputs, rtol=rtol, atol=atol, hint=hint)
     title = f"function {name}"
     if verdict.ok:
-        return DesignReport(title, (Spec(f"cases that agree with the reference (rtol {rtol:g})", len(cases), "≥",
-                                         len(cases)),))
-    agree = (Spec("cases that agree with the reference", agreed, "≥", len(cases)),) if verdict.kind == "wrong" else ()
+        return DesignReport(title, (Requirement(f"cases that agree with the reference (rtol {rtol:g})",
+                                                len(cases), "≥", len(cases)),))
+    agree = ((Requirement("cases that agree with the reference", agreed, "≥", len(cases)),)
+             if verdict.kind == "wrong" else ())
     return DesignReport(title, agree, problem=verdict.message.removeprefix("✗ "))
+
+
+# the old name (validate.Spec is what a parameter may be)
+__getattr__ = renamed(__name__, Spec=(Requirement, "mechlab.course.exercises.Requirement"))

@@ -132,7 +132,7 @@ def check(answer, expected: float, *, name: str = "answer", unit: str = "", sign
     if isinstance(a, Verdict):
         verdict = a
     else:
-        table = selfcheck.candidates(call["expected"], call["unit_slips"], call["alternatives"], significant)
+        table = selfcheck.slip_candidates(call["expected"], call["unit_slips"], call["alternatives"], significant)
         found = selfcheck.classify(a, table, significant)
         verdict = _number_verdict(a, found, call)
         slip = {"units": f"{found[1]} for {unit}", "alternative": found[1]}.get(found[0], "") if found else ""

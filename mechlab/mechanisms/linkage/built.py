@@ -17,7 +17,7 @@ import numpy as np
 from ...errors import AssemblyError, DimensionError, JointError, MechanismError, MobilityError, SingularityError
 from ...geometry import AnglePath, as_angles
 from ...motion import AngularMotion, LinearMotion, Motion
-from ...validate import Spec, check, mechanism
+from ...validate import Spec, check_value, mechanism
 from ..base import (FRAME, FULL_TURN, TWO_PI, Mechanism, Part, Sketch, Structure, block_outline,
                     branch_references, fmt_ranges, lift_on_ranges)
 from .groups import PRP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
@@ -33,7 +33,7 @@ def _frame(value) -> tuple:
     if not isinstance(pairs, tuple | list | type({}.items())) or \
             not all(isinstance(p, tuple | list) and len(p) == 2 for p in pairs):
         raise DimensionError(f"frame must be a dict of fixed points {{name: (x, y)}}, got {value!r:.60}")
-    return tuple((check("frame point name", k, Spec("text")), check(f"frame point {k}", xy, _POINT))
+    return tuple((check_value("frame point name", k, Spec("text")), check_value(f"frame point {k}", xy, _POINT))
                  for k, xy in pairs)
 
 
