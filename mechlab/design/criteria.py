@@ -121,7 +121,7 @@ def counted(mechanism, *, rollers: int = 0, locks: int = 0) -> Counts:
 class Criteria:
     """One design judged on the criteria every family shares (see the module's docstring).
 
-    Attributes
+    Parameters
     ----------
     dwell_fraction : float
         Longest share of the turn over which the output stands exactly still (x′ = 0 up to
