@@ -125,9 +125,11 @@ class Verdict:
 
     Examples
     --------
-    >>> from mechlab.design import Verdict
-    >>> str(Verdict("size", False, "1200 mm > 1000 mm"))
-    '✗ size: 1200 mm > 1000 mm'
+    >>> import mechlab as ml
+    >>> from mechlab.design import Specification, check_design
+    >>> report = check_design(Specification("index", 0.75, stations=4), ml.ExternalGeneva(4, 1.0), scale=50)
+    >>> str(report.verdicts[3])
+    '✓ size: 85 mm ≤ 1000 mm'
     """
 
     criterion: str
@@ -145,8 +147,10 @@ class Verdict:
 
         Examples
         --------
-        >>> from mechlab.design import Verdict
-        >>> Verdict("size", True, "85 mm ≤ 1000 mm").reason
+        >>> import mechlab as ml
+        >>> from mechlab.design import Specification, check_design
+        >>> report = check_design(Specification("index", 0.75, stations=4), ml.ExternalGeneva(4, 1.0), scale=50)
+        >>> report.verdicts[3].reason
         'size: 85 mm ≤ 1000 mm'
         """
         return f"{self.criterion}: {self.text}"
@@ -382,8 +386,8 @@ class DesignReport:
         The specification run against.
     criteria : Criteria
         The design's figures, read off its simulated motion.
-    verdicts : tuple of Verdict
-        Amplitude, dwell, pressure angle, size and impacts, each met or missed.
+    verdicts : tuple
+        One verdict a limit: amplitude, dwell, pressure angle, size and impacts, each met or missed.
 
     Examples
     --------
