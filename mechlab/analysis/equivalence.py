@@ -64,6 +64,36 @@ def relative_path(mechanism: AnyMechanism, phi: Angles) -> PointPath:
     (:func:`mechlab.mechanisms.curved_slot.pin_relative_path`). Angular output about pivot P:
     w = Rot(-ψ)(A - P), w' = Rot(-ψ)(v' - ψ'·v⊥), w'' = Rot(-ψ)(v'' - 2ψ'·v'⊥ - ψ''·v⊥ - ψ'²·v) with v = A - P.
     Output sliding on a guide at γ: w = Rot(-γ)(A - O) - (s, 0), the analogs likewise.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A mechanism whose ``structure()`` has a crank pin jointed to a moving link.
+    phi : float or array_like
+        Crank angles (rad).
+
+    Returns
+    -------
+    PointPath
+        The pin's position in the output link's frame and its first and second φ-analogs.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``phi`` is not finite, or the crank pin is not jointed to a moving link.
+    AssemblyError
+        The linkage cannot be assembled at a requested crank angle.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.equivalence import relative_path
+    >>> w = relative_path(ml.FourBar(1, 3, 3, 4), np.linspace(0.0, 6.0, 7))
+    >>> np.round(np.hypot(*(w.p - [3.0, 0.0]).T), 12)  # a circle of radius l_AB = 3 about B
+    array([3., 3., 3., 3., 3., 3., 3.])
     """
     return pin_relative_path(mechanism, as_angles(phi))
 
@@ -161,7 +191,36 @@ def equivalent_slot(mechanism: AnyMechanism) -> EquivalentSlot:
     family's ``curved_slot_twin()``: FourBar → a circular slot of radius l_AB about B (Fig. 2),
     SliderCrank → a translating circular slot (Fig. 4); any other family with a structure → the pin's
     relative path read from it (:func:`mechlab.mechanisms.curved_slot.structural_twin`; for SixBarIV its inner
-    four-bar's coupler curve)."""
+    four-bar's coupler curve).
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A linkage with one second-order group.
+
+    Returns
+    -------
+    EquivalentSlot
+        The curved-slot twin, a Mechanism in the linkage's own frame.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        The mechanism has no crank pin jointed to a moving link.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.equivalence import equivalent_slot, law_difference
+    >>> fourbar = ml.FourBar(1, 3, 3, 4)
+    >>> twin = equivalent_slot(fourbar)
+    >>> phi = np.linspace(0.0, 6.0, 7)
+    >>> max(law_difference(fourbar.motion(phi), twin.motion(phi))) < 1e-12
+    True
+    """
     twin, phase = mechanism.curved_slot_twin()
     return EquivalentSlot(mechanism, twin, phase)
 
@@ -169,7 +228,33 @@ def equivalent_slot(mechanism: AnyMechanism) -> EquivalentSlot:
 @validated
 def law_difference(m1: AnyMotion, m2: AnyMotion) -> tuple[float, float, float]:
     """Max |difference| of the law (angles compared mod 2π) and its two analogs, of two motions
-    over the same crank angles."""
+    over the same crank angles.
+
+    Parameters
+    ----------
+    m1, m2 : Motion
+        Two motions of the same kind (angle or position) over the same crank angles.
+
+    Returns
+    -------
+    tuple of float
+        Largest |difference| of the law, of its first and of its second analog.
+
+    Raises
+    ------
+    TypeError
+        ``m1`` or ``m2`` is not a Motion.
+    DimensionError
+        The motions differ in kind or in their number of crank angles, or are empty.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.equivalence import law_difference
+    >>> a, b = ml.FourBar(1, 3, 3, 4), ml.FourBar(1, 3, 3, 4.1)
+    >>> [round(v, 4) for v in law_difference(a.motion([0.0, 1.0]), b.motion([0.0, 1.0]))]
+    [0.0268, 0.0108, 0.005]
+    """
     a, b = m1.output, m2.output
     if a.kind != b.kind or np.shape(a.value) != np.shape(b.value) or np.size(a.value) == 0:
         raise DimensionError(f"m1 and m2 must be motions of the same kind over the same (one or more) crank angles, "
@@ -191,7 +276,32 @@ def equivalence_error(mechanism: Mechanism, phi=None) -> float:
 @validated
 def base_mechanism(mechanism: AnyMechanism):
     """The base mechanism (Zinchenko et al. (2013) Fig. 5, 6): same crank, straight slot through the output
-    pivot (``SlottedLink(l_OA, l_OE)``), or the sine mechanism for a translating output."""
+    pivot (``SlottedLink(l_OA, l_OE)``), or the sine mechanism for a translating output.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A linkage with a crank whose output turns about one fixed pivot or translates.
+
+    Returns
+    -------
+    SlottedLink or SineMechanism
+        The straight-slot base mechanism.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        The output does not turn about one fixed pivot.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.equivalence import base_mechanism
+    >>> base_mechanism(ml.FourBar(1, 3, 3, 4))
+    SlottedLink(crank=1.0, pivot_distance=4.0)
+    """
     if mechanism.output == "position":
         return SineMechanism(mechanism.crank)
     return SlottedLink(mechanism.crank, float(np.hypot(*_pivot_position(mechanism))))
@@ -210,7 +320,36 @@ def frame_phase(mechanism: Mechanism) -> float:
 @validated
 def base_law(mechanism: AnyMechanism, phi: Angles) -> AnglePath:
     """The base mechanism's law in the mechanism's own frame: ψ_K(φ) = angle of A - pivot
-    (formulas (18)-(20) with λ = l_OA/l_OB), or x_K = l_OA cos φ (formulas (2), (5))."""
+    (formulas (18)-(20) with λ = l_OA/l_OB), or x_K = l_OA cos φ (formulas (2), (5)).
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A linkage with a crank whose output turns about one fixed pivot or translates.
+    phi : float or array_like
+        Crank angles (rad).
+
+    Returns
+    -------
+    AnglePath
+        ψ_K (rad) or x_K (length units) and its first and second φ-analogs.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``phi`` is not finite, or the output does not turn about one fixed pivot.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.equivalence import base_law
+    >>> law = base_law(ml.FourBar(1, 3, 3, 4), np.pi)
+    >>> round(float(law.theta), 4), round(float(law.d), 4)
+    (3.1416, 0.2)
+    """
     phi = as_angles(phi)
     base = base_mechanism(mechanism)
     ph = frame_phase(mechanism)
@@ -251,6 +390,35 @@ def assembly_symmetry(mechanism: AnyMechanism, phi: Angles) -> AssemblySymmetry:
     ψ''₋(φ) = -ψ''₊(-φ); (ψ₊ + ψ₋)/2 = ψ_K (mod π), likewise for the analogs (equal and opposite β,
     formula (12)); relative paths y₋ = -y₊, x₋ = x₊. Slider-crank (±1: slider ahead of / behind the
     pin): s₋(φ) = -s₊(π - φ), (s₊ + s₋)/2 = l_OA cos φ; relative paths x₋ = -x₊, y₋ = y₊.
+
+    Parameters
+    ----------
+    mechanism : FourBar or SliderCrank
+        Either assembly; the other one is built from it.
+    phi : float or array_like
+        Crank angles (rad).
+
+    Returns
+    -------
+    AssemblySymmetry
+        The largest residual of each relation; ``holds(tol)`` says whether all are within ``tol``.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``phi`` is not finite.
+    AssemblyError
+        An assembly cannot be assembled at a requested crank angle.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.equivalence import assembly_symmetry
+    >>> assembly_symmetry(ml.FourBar(1, 3, 3, 4), np.linspace(0.0, 6.0, 7)).holds()
+    True
     """
     phi = as_angles(phi)
     plus = mechanism if mechanism.assembly == 1 else other_assembly(mechanism)

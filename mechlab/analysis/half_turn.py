@@ -45,7 +45,33 @@ def _not_one(lam: float) -> None:
 def formula_18(lam: Ratio, phi) -> AnglePath:
     """The base mechanism's law from Zinchenko et al. (2013) (18)-(20) (the printed formulas, verified correct):
     tan ψ_K = λ sin φ/(λ cos φ + 1), ψ_K' = λ(λ + cos φ)/D, ψ_K'' = λ(λ² - 1) sin φ/D², D = λ² + 1 + 2λ cos φ.
-    ψ_K is the continuous branch (atan2; lifted by φ when λ > 1)."""
+    ψ_K is the continuous branch (atan2; lifted by φ when λ > 1).
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB of the base mechanism, positive and ≠ 1.
+    phi : float or array_like
+        Crank angles (rad).
+
+    Returns
+    -------
+    AnglePath
+        ψ_K (rad), ψ_K′ and ψ_K″ at ``phi`` (scalars for a scalar ``phi``).
+
+    Raises
+    ------
+    DimensionError
+        ``lam`` is not in [1e-6, 1e6] or equals 1, or ``phi`` is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.analysis.half_turn import formula_18
+    >>> law = formula_18(0.5, np.pi / 2)
+    >>> round(float(law.theta), 4), round(float(law.d), 4), round(float(law.dd), 4)
+    (0.4636, 0.2, -0.24)
+    """
     phi = as_angles(phi)
     _not_one(lam)
     s, c = np.sin(phi), np.cos(phi)
@@ -62,6 +88,27 @@ def base_peaks(lam: Ratio) -> tuple[float, float]:
 
     |ψ_K'| peaks at φ = π: λ/|1 - λ| (seed (25)). ψ_K'' ∝ sin φ/D² peaks where
     2λ cos²φ - (1 + λ²) cos φ - 4λ = 0, i.e. cos φ = [(1 + λ²) - √((1 + λ²)² + 32λ²)]/(4λ).
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB, positive and ≠ 1.
+
+    Returns
+    -------
+    tuple of float
+        (max |ψ_K′|, max |ψ_K″|) over a crank turn.
+
+    Raises
+    ------
+    DimensionError
+        ``lam`` is not in [1e-6, 1e6] or equals 1.
+
+    Examples
+    --------
+    >>> from mechlab.analysis.half_turn import base_peaks
+    >>> [round(v, 4) for v in base_peaks(0.5)]
+    [1.0, 1.3496]
     """
     _not_one(lam)
     v = lam / abs(1 - lam)
@@ -107,7 +154,39 @@ def _law(mo) -> AnglePath:
 @scalar_law
 @validated
 def other_half(mechanism: AnyMechanism, phi: Angles) -> HalfTurn:
-    """Predict the law at φ* = 2π - φ (or π - φ) from the law at φ and the base mechanism."""
+    """Predict the law at φ* = 2π - φ (or π - φ) from the law at φ and the base mechanism.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A linkage with one second-order group or a curved-slot link (its output turns about a
+        pivot or slides).
+    phi : float or array_like
+        Crank angles (rad).
+
+    Returns
+    -------
+    HalfTurn
+        φ, φ*, the law predicted at φ* and the law found there; ``residual()`` is their largest
+        difference.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``phi`` is not finite, or the output does not turn about one fixed pivot.
+    AssemblyError
+        The linkage cannot be assembled at φ or φ*.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.half_turn import other_half
+    >>> other_half(ml.FourBar(1, 3, 3, 4), np.linspace(0.1, 3.0, 5)).residual() < 1e-12
+    True
+    """
     phi = as_angles(phi)
     star = mirror_angle(mechanism, phi)
     law = _law(mechanism.motion(phi))
@@ -140,6 +219,36 @@ def limit_theorem(mechanism: AnyMechanism, n: Annotated[int, count(3)] = 721) ->
 
     The crank must turn fully. The grid is φ_k = 2πk/(n-1) (for a translating link
     shifted to -π/2 + …, symmetric under φ ↦ π - φ), so φ* of every sample is a sample.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A linkage with one second-order group or a curved-slot link, with a crank that turns fully.
+    n : int
+        Odd number of crank angles, ≥ 3 (default 721).
+
+    Returns
+    -------
+    LimitCheck
+        Peaks of |ψ′| and |ψ″| against the base mechanism's, and the pointwise gaps;
+        ``holds()`` says whether the theorem holds.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``n`` is even or < 3, or the output does not turn about one fixed pivot.
+    RotationError
+        The crank does not turn fully.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.half_turn import limit_theorem
+    >>> check = limit_theorem(ml.FourBar(1, 3, 3, 4))
+    >>> check.holds(), round(check.peak_velocity, 4), round(check.base_peak_velocity, 4)
+    (True, 0.3772, 0.3333)
     """
     if n < 3 or n % 2 == 0:
         raise DimensionError(f"n must be odd and ≥ 3 (so that φ = π is a sample), got {n}")

@@ -29,10 +29,39 @@ def _max_jump(mechanism, n: int, phase: float = 0.0):
 @validated
 def detect_impacts(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)],
                    n: Annotated[int, count(3, MAX_SAMPLES // 2)] = 4096, phase: Angle = 0.0) -> str:
-    """'hard', 'soft' or 'none', found numerically for any angular-output mechanism:
-    the largest change of ψ' (ψ'') between neighbouring samples halves when the grid is
-    refined if ψ' (ψ'') is continuous, and stays put where it jumps. The grid starts at
-    ``phase`` (to avoid a crank angle where a mechanism cannot be evaluated)."""
+    """The impacts of an angular output, found numerically: 'hard', 'soft' or 'none'.
+
+    The largest change of ψ′ (ψ″) between neighbouring samples halves when the grid is
+    refined if ψ′ (ψ″) is continuous, and stays put where it jumps.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A mechanism whose motion has an angular output (``dpsi``, ``ddpsi``).
+    n : int
+        Samples of the turn (the check also uses 2n); default 4096.
+    phase : float
+        Where the grid starts (rad), to avoid a crank angle where the mechanism cannot be evaluated.
+
+    Returns
+    -------
+    str
+        "hard" (ψ′ jumps), "soft" (ψ″ jumps) or "none".
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``n`` or ``phase`` out of range.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.intermittency import detect_impacts
+    >>> detect_impacts(ml.ExternalGeneva(4, 1.0))
+    'soft'
+    """
     v1, a1 = _max_jump(mechanism, n, phase)
     v2, a2 = _max_jump(mechanism, 2 * n, phase)
     if v2 > 0.75 * v1 and v1 > 1e-12:
@@ -81,9 +110,42 @@ def intermittency(mechanism: Annotated[Mechanism, mechanism_of(Mechanism)], *,
     (:func:`~mechlab.analysis.motion_laws.invariants`) with h = Δψ over Φ = (1 - near-standstill)·2π, the
     crank angle of the motion (cycloidal law: B = 2, C = 2π; Kinitsky, 1994, chapter 2).
     An approximate dwell (a linkage's) has no exact dwell and needs a larger ``dwell_tol`` (in (0, 1)) for
-    its near-standstill; the samples start at
-    ``phase``; ``name`` labels the row (by default the mechanism's class). The output must turn:
-    DimensionError for a rocker (Δψ = 0 per turn, B undefined)."""
+    its near-standstill.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A mechanism with an angular output that advances over a turn.
+    n : int
+        Samples of the turn (default 7201).
+    dwell_tol : float
+        Share of the peak |ψ′| in (0, 1) below which the output is nearly still (default 1e-9).
+    phase : float
+        Where the samples start (rad).
+    name : str, optional
+        Labels the row; by default the mechanism's class name.
+
+    Returns
+    -------
+    Intermittency
+        Dwell and near-standstill fractions, Δψ per turn (deg), max |ψ′| and |ψ″|, B, C, D and the impact.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        The output is not an angle, it does not advance over a turn (a rocker: B undefined), or
+        ``n``, ``dwell_tol`` or ``phase`` is out of range.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.intermittency import intermittency
+    >>> row = intermittency(ml.ExternalGeneva(4, 1.0))
+    >>> round(row.dwell_fraction, 3), round(row.index_deg, 1), row.impact
+    (0.75, 90.0, 'soft')
+    """
     if mechanism.output != "angle":
         raise DimensionError(f"mechanism must have an angular output (ψ), got a {type(mechanism).__name__}")
     phi = phase + np.linspace(0.0, TWO_PI, n)
@@ -121,6 +183,22 @@ def compare(mechanisms: dict, *, dwell_tol: float | dict = DWELL_TOL, **kw) -> T
     -------
     Table
         One :class:`Intermittency` per mechanism, in the dict's order.
+
+    Raises
+    ------
+    TypeError
+        ``mechanisms`` is not a dict, or one of its values is not a Mechanism.
+    DimensionError
+        ``dwell_tol`` names a mechanism not compared or lies outside (0, 1), or a mechanism's
+        output does not advance over a turn.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.intermittency import compare
+    >>> table = compare({"Geneva 4": ml.ExternalGeneva(4, 1.0), "Geneva 6": ml.ExternalGeneva(6, 1.0)})
+    >>> [round(row.dwell_fraction, 3) for row in table]
+    [0.75, 0.667]
     """
     if not isinstance(mechanisms, dict):
         raise TypeError(f"mechanisms must be a dict of name → mechanism, got {type(mechanisms).__name__}")

@@ -21,11 +21,40 @@ from ..validate import Angle, Spec, check_value, count, validated
 
 @validated
 def nearest_assembly(mechanism: AnyMechanism, phi: Angle, **joints):
-    """The assembly of ``mechanism`` whose joints at crank angle ``phi`` (radians) lie nearest
-    the given points, e.g. ``nearest_assembly(FourBar(1, 3, 3, 4), np.radians(60), B=(2.8, 2.7))``.
+    """The assembly of ``mechanism`` whose joints at crank angle ``phi`` lie nearest the given points.
 
     Picks a branch from a sketch: both assemblies (+1 and -1) are solved at φ and the one
     with the smaller sum of distances from the named joints to their points is returned.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A mechanism with an ``assembly`` field (+1 or −1).
+    phi : float
+        Crank angle of the sketch (rad).
+    **joints : (float, float)
+        Joint name → its sketched point, in the mechanism's length units, e.g. ``B=(2.8, 2.7)``.
+
+    Returns
+    -------
+    Mechanism
+        A copy of ``mechanism`` with the nearer assembly.
+
+    Raises
+    ------
+    DimensionError
+        The mechanism has no assembly, no joint is given, a name is not one of its joints, or a
+        point is not a finite (x, y) pair.
+    AssemblyError
+        The linkage cannot be assembled at ``phi``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.textbook import nearest_assembly
+    >>> nearest_assembly(ml.FourBar(1, 3, 3, 4), np.radians(60), B=(1.7, -1.9)).assembly
+    -1
     """
     if not any(f.name == "assembly" for f in dataclasses.fields(mechanism)):
         raise DimensionError(f"{type(mechanism).__name__} has no assembly to choose")
@@ -49,7 +78,27 @@ def nearest_assembly(mechanism: AnyMechanism, phi: Angle, **joints):
 
 @dataclass(frozen=True)
 class TransmissionExtremes:
-    """The least and greatest transmission angle μ over the crank's range and where they occur (radians)."""
+    """The least and greatest transmission angle μ over the crank's range and where they occur (radians).
+
+    Parameters
+    ----------
+    mu_min : float
+        Least transmission angle (rad).
+    phi_min : float
+        Crank angle where it occurs (rad, in [0, 2π)).
+    mu_max : float
+        Greatest transmission angle (rad).
+    phi_max : float
+        Crank angle where it occurs (rad, in [0, 2π)).
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.textbook import transmission_extremes
+    >>> t = transmission_extremes(ml.FourBar(1, 3, 3, 4))
+    >>> round(float(t.mu_min), 4), round(float(t.phi_max), 4)
+    (1.0472, 3.1416)
+    """
 
     mu_min: float
     phi_min: float
@@ -58,7 +107,19 @@ class TransmissionExtremes:
 
     @property
     def worst_deviation(self) -> float:
-        """max |μ - 90°| over the cycle (the largest pressure angle), radians."""
+        """max |μ − 90°| over the cycle: the largest pressure angle.
+
+        Returns
+        -------
+        float
+            The largest deviation of μ from π/2 (rad).
+
+        Examples
+        --------
+        >>> from mechlab.analysis.textbook import TransmissionExtremes
+        >>> round(float(TransmissionExtremes(1.0, 0.0, 2.0, 3.14).worst_deviation), 4)
+        0.5708
+        """
         return max(np.pi / 2 - self.mu_min, self.mu_max - np.pi / 2)
 
     def __repr__(self) -> str:
@@ -82,6 +143,33 @@ def transmission_extremes(mechanism: AnyMechanism, n: Annotated[int, count(3)] =
     Sampled on ``mechanism.cycle(n)`` and refined by a bounded search between the grid's
     neighbours of each extreme. For a four-bar, μ is extreme where the crank lies along the
     frame line (φ = 0 and π, from cos μ = (c² + r² - |AE|²)/(2cr)).
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A mechanism whose motion carries a transmission angle.
+    n : int
+        Samples of the crank's cycle (≥ 3; default 3601).
+
+    Returns
+    -------
+    TransmissionExtremes
+        μ_min, μ_max (rad) and the crank angles (rad) where they occur.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``n`` is not an integer ≥ 3.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.textbook import transmission_extremes
+    >>> t = transmission_extremes(ml.FourBar(1, 3, 3, 4))
+    >>> round(float(t.mu_min), 4), round(float(t.phi_min), 4)
+    (1.0472, 0.0)
     """
     phi = mechanism.cycle(n)
     mu = mechanism.motion(phi).transmission
@@ -101,6 +189,32 @@ def zero_acceleration(mechanism: AnyMechanism, n: Annotated[int, count(3)] = 360
     There the output acceleration at a constant crank speed vanishes and its velocity is
     extreme, e.g. the slider-crank's s″ = 0. Each sign change of s″ (or ψ″) on
     ``mechanism.cycle(n)`` is polished by Brent's method on the exact analog.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        Any mechlab mechanism.
+    n : int
+        Samples of the crank's cycle (≥ 3; default 3601).
+
+    Returns
+    -------
+    numpy.ndarray
+        The crank angles (rad) where the output's second analog is zero.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``n`` is not an integer ≥ 3.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.textbook import zero_acceleration
+    >>> [round(float(p), 4) for p in zero_acceleration(ml.SliderCrank(1, 3))]
+    [1.2771, 5.006]
     """
     phi = mechanism.cycle(n)
     dd = mechanism.motion(phi).output.dd
@@ -114,5 +228,28 @@ def zero_acceleration(mechanism: AnyMechanism, n: Annotated[int, count(3)] = 360
 
 @validated
 def crank_ranges_degrees(mechanism: AnyMechanism) -> tuple[tuple[float, float], ...]:
-    """``mechanism.crank_ranges()`` in degrees: ((0.0, 360.0),) for a crank that turns fully."""
+    """``mechanism.crank_ranges()`` in degrees: ((0.0, 360.0),) for a crank that turns fully.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        Any mechlab mechanism.
+
+    Returns
+    -------
+    tuple of (float, float)
+        Each range of crank angles (start, end) in degrees.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.analysis.textbook import crank_ranges_degrees
+    >>> crank_ranges_degrees(ml.FourBar(1, 3, 3, 4))
+    ((0.0, 360.0),)
+    """
     return tuple((float(np.degrees(s)), float(np.degrees(e))) for s, e in mechanism.crank_ranges())

@@ -18,7 +18,21 @@ from .spec import IMPACTS, AnySpecification, Specification
 
 @dataclass(frozen=True)
 class Refusal:
-    """A family that cannot meet the specification, and why (with the numbers)."""
+    """A family that cannot meet the specification, and why (with the numbers).
+
+    Parameters
+    ----------
+    family : str
+        The family's name, a key of :data:`~mechlab.design.FAMILIES`.
+    reason : str
+        Why it was refused: the synthesis's refusal, or each missed limit with its numbers.
+
+    Examples
+    --------
+    >>> from mechlab.design import Refusal
+    >>> str(Refusal("disc cam", "a swing was asked"))
+    'disc cam: a swing was asked'
+    """
 
     family: str
     reason: str
@@ -29,13 +43,43 @@ class Refusal:
 
 @dataclass(frozen=True)
 class Candidate:
-    """A family's design and its criteria, read off its simulated motion."""
+    """A family's design and its criteria, read off its simulated motion.
+
+    Parameters
+    ----------
+    design : Design
+        The family's synthesised design (:class:`~mechlab.design.Design`).
+    criteria : Criteria
+        Its judged figures (:class:`~mechlab.design.Criteria`).
+
+    Examples
+    --------
+    >>> from mechlab.design import Specification, candidates
+    >>> comparison = candidates(Specification("index", 0.75, stations=4), families=("external Geneva",))
+    >>> best = comparison.candidates[0]
+    >>> round(best.criteria.dwell_fraction, 3)
+    0.75
+    """
 
     design: Design
     criteria: Criteria
 
     @property
     def family(self) -> str:
+        """The design's family name.
+
+        Returns
+        -------
+        str
+            ``design.family``, a key of :data:`~mechlab.design.FAMILIES`.
+
+        Examples
+        --------
+        >>> from mechlab.design import Specification, candidates
+        >>> comparison = candidates(Specification("index", 0.75, stations=4), families=("external Geneva",))
+        >>> comparison.candidates[0].family
+        'external Geneva'
+        """
         return self.design.family
 
 
@@ -68,7 +112,25 @@ def _value(c: Criteria, key: str):
 
 @dataclass(frozen=True)
 class LimitVerdict:
-    """One limit of a specification: met or missed, in words with the numbers."""
+    """One limit of a specification: met or missed, in words with the numbers.
+
+    Parameters
+    ----------
+    criterion : str
+        The limit judged: "amplitude", "dwell", "pressure angle", "size" or "impacts".
+    met : bool
+        Whether the design meets it.
+    text : str
+        The numbers: what the design reached against what was asked.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.design import Specification, check_design
+    >>> report = check_design(Specification("index", 0.75, stations=4), ml.ExternalGeneva(4, 1.0), scale=50)
+    >>> str(report.verdicts[3])
+    '✓ size: 85 mm ≤ 1000 mm'
+    """
 
     criterion: str
     met: bool
@@ -76,7 +138,21 @@ class LimitVerdict:
 
     @property
     def reason(self) -> str:
-        """The criterion and its numbers, as a refusal states it."""
+        """The criterion and its numbers, as a refusal states it.
+
+        Returns
+        -------
+        str
+            ``"criterion: text"``.
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> from mechlab.design import Specification, check_design
+        >>> report = check_design(Specification("index", 0.75, stations=4), ml.ExternalGeneva(4, 1.0), scale=50)
+        >>> report.verdicts[3].reason
+        'size: 85 mm ≤ 1000 mm'
+        """
         return f"{self.criterion}: {self.text}"
 
     def __str__(self) -> str:
@@ -111,6 +187,22 @@ class Comparison:
 
     Shows as an HTML table in a notebook; :meth:`to_csv` writes the same table; :meth:`ranked`
     orders the candidates by a criterion.
+
+    Parameters
+    ----------
+    spec : Specification
+        The specification the families were synthesised for.
+    candidates : tuple of Candidate
+        The designs that meet it.
+    refusals : tuple of Refusal
+        The families that do not, with the reason.
+
+    Examples
+    --------
+    >>> from mechlab.design import Specification, candidates
+    >>> comparison = candidates(Specification("index", 0.75, stations=4), families=("external Geneva",))
+    >>> len(comparison.candidates), len(comparison.refusals)
+    (1, 0)
     """
 
     spec: Specification
@@ -119,8 +211,30 @@ class Comparison:
 
     @validated
     def ranked(self, by: Annotated[str, choice(*RANKABLE)] = "motor_power") -> "Comparison":
-        """The same comparison with the candidates ordered by ``by`` (one of :data:`RANKABLE`, smallest first;
-        a missing J last)."""
+        """The same comparison with the candidates ordered by ``by``, smallest first (a missing J last).
+
+        Parameters
+        ----------
+        by : str
+            One of :data:`RANKABLE`, the numeric columns of the table (default ``"motor_power"``).
+
+        Returns
+        -------
+        Comparison
+            The same specification and refusals, the candidates reordered.
+
+        Raises
+        ------
+        DimensionError
+            ``by`` is not a numeric column.
+
+        Examples
+        --------
+        >>> from mechlab.design import Specification, candidates
+        >>> comparison = candidates(Specification("index", 0.75, stations=4), families=("external Geneva",))
+        >>> comparison.ranked("size").candidates[0].family
+        'external Geneva'
+        """
 
         def key(c):
             v = _value(c.criteria, by)
@@ -129,7 +243,20 @@ class Comparison:
         return Comparison(self.spec, tuple(sorted(self.candidates, key=key)), self.refusals)
 
     def rows(self) -> list[tuple[str, ...]]:
-        """The table as text: a header row, then one row a candidate."""
+        """The table as text: a header row, then one row a candidate.
+
+        Returns
+        -------
+        list of tuple of str
+            The header (column with its unit), then each candidate's formatted values.
+
+        Examples
+        --------
+        >>> from mechlab.design import Specification, candidates
+        >>> comparison = candidates(Specification("index", 0.75, stations=4), families=("external Geneva",))
+        >>> comparison.rows()[0][:2]
+        ('family', 'dwell (of turn)')
+        """
         head = ("family",) + tuple(f"{h} ({u})" if u else h for _, h, u, _ in COLUMNS)
         body = [(c.family,) + tuple("—" if _value(c.criteria, k) is None else f.format(_value(c.criteria, k))
                                     for k, _, _, f in COLUMNS) for c in self.candidates]
@@ -137,7 +264,30 @@ class Comparison:
 
     @validated
     def to_csv(self, path: Annotated[object, Spec("path", optional=True)] = None) -> str:
-        """The table as CSV (full precision); written to ``path`` when given."""
+        """The table as CSV (full precision); written to ``path`` when given.
+
+        Parameters
+        ----------
+        path : str or path-like, optional
+            File to write (UTF-8); nothing is written when None.
+
+        Returns
+        -------
+        str
+            The CSV text: a header of column keys, then one row a candidate.
+
+        Raises
+        ------
+        DimensionError
+            ``path`` is not a path.
+
+        Examples
+        --------
+        >>> from mechlab.design import Specification, candidates
+        >>> comparison = candidates(Specification("index", 0.75, stations=4), families=("external Geneva",))
+        >>> comparison.to_csv().splitlines()[0][:35]
+        'family,dwell_fraction,standstill_fr'
+        """
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")
         w.writerow(["family"] + [k for k, *_ in COLUMNS])
@@ -174,6 +324,33 @@ def candidates(spec: AnySpecification, families: Annotated[tuple | None, Spec("i
     Each design is simulated and judged by :func:`~mechlab.design.criteria.evaluate`; a family
     whose synthesis refuses, or whose simulated design misses a limit of the specification
     (:func:`limits`), is listed among the refusals with the reason.
+
+    Parameters
+    ----------
+    spec : Specification
+        The machine's requirement.
+    families : tuple of str, optional
+        Names of :data:`~mechlab.design.FAMILIES` to try; all of them when None.
+
+    Returns
+    -------
+    Comparison
+        The designs that meet ``spec`` and the families refused, with the reasons.
+
+    Raises
+    ------
+    MechanismError
+        A name in ``families`` is not a known family.
+    TypeError
+        ``spec`` is not a :class:`Specification`.
+
+    Examples
+    --------
+    >>> from mechlab.design import Specification, candidates
+    >>> comparison = candidates(Specification("index", 0.75, stations=4),
+    ...                         families=("external Geneva", "curved slot"))
+    >>> [c.family for c in comparison.candidates], [r.family for r in comparison.refusals]
+    (['external Geneva'], ['curved slot'])
     """
     names = list(FAMILIES) if families is None else list(families)
     unknown = [n for n in names if n not in FAMILIES]
@@ -201,7 +378,25 @@ def candidates(spec: AnySpecification, families: Annotated[tuple | None, Spec("i
 
 @dataclass(frozen=True)
 class SpecificationReport:
-    """A student's (or anyone's) design run against a specification: each limit met or missed."""
+    """A student's (or anyone's) design run against a specification: each limit met or missed.
+
+    Parameters
+    ----------
+    spec : Specification
+        The specification run against.
+    criteria : Criteria
+        The design's figures, read off its simulated motion.
+    verdicts : tuple
+        One verdict a limit: amplitude, dwell, pressure angle, size and impacts, each met or missed.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.design import Specification, check_design
+    >>> report = check_design(Specification("index", 0.75, stations=4), ml.ExternalGeneva(4, 1.0), scale=50)
+    >>> [v.criterion for v in report.verdicts]
+    ['amplitude', 'dwell', 'pressure angle', 'size', 'impacts']
+    """
 
     spec: Specification
     criteria: Criteria
@@ -209,6 +404,20 @@ class SpecificationReport:
 
     @property
     def met(self) -> bool:
+        """Whether every limit is met.
+
+        Returns
+        -------
+        bool
+            True when all the verdicts are met.
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> from mechlab.design import Specification, check_design
+        >>> check_design(Specification("index", 0.75, stations=4), ml.ExternalGeneva(4, 1.0), scale=50).met
+        True
+        """
         return all(v.met for v in self.verdicts)
 
     def __str__(self) -> str:
@@ -232,8 +441,44 @@ def _counts(mechanism) -> Counts:
 @validated
 def check_design(spec: AnySpecification, mechanism: AnyMovable, *, scale: Length = 1.0,
                  phase: Phase = 0.0) -> SpecificationReport:
-    """Run ``mechanism`` (its lengths × ``scale`` = mm) against ``spec``: amplitude, dwell, pressure
-    angle, size and impacts, each met or missed with the numbers, from its simulated motion."""
+    """Run ``mechanism`` against ``spec``: each limit met or missed, from its simulated motion.
+
+    The limits are the amplitude (± 1 %), dwell, pressure angle, size and impacts, each
+    with the numbers.
+
+    Parameters
+    ----------
+    spec : Specification
+        The machine's requirement.
+    mechanism : Mechanism
+        Any object with ``motion(phi)``, e.g. a mechlab mechanism or one built with ``ml.Linkage``.
+    scale : float
+        Its lengths × ``scale`` are mm (default 1).
+    phase : float
+        Shift of the sampled crank angles (rad), off a point where its motion cannot be evaluated.
+
+    Returns
+    -------
+    SpecificationReport
+        The criteria and one verdict a limit.
+
+    Raises
+    ------
+    TypeError
+        ``spec`` is not a Specification, or ``mechanism`` has no ``motion``.
+    DimensionError
+        ``scale`` is not a positive length, or ``phase`` lies outside [−2π, 2π].
+    MechanismError
+        The mechanism's own motion refuses a crank angle of the turn.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.design import Specification, check_design
+    >>> report = check_design(Specification("index", 0.75, stations=4), ml.ExternalGeneva(4, 1.0), scale=50)
+    >>> report.met, round(report.criteria.dwell_fraction, 3)
+    (True, 0.75)
+    """
     c = evaluate(mechanism, spec, scale=scale, structure=_counts(mechanism), phase=phase)
     phi = phase + np.linspace(0.0, 2 * np.pi, 2881)
     x = np.asarray(mechanism.motion(phi).output.value, float) * (1.0 if spec.rotary else scale)

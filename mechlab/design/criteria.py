@@ -53,8 +53,30 @@ Phase = Annotated[float, angle(-TWO_PI, TWO_PI)]  # a shift of the sampled crank
 
 @dataclass(frozen=True)
 class Counts(Checked):
-    """What a design is built of: moving parts, lower pairs and higher pairs (cam, pin in slot), as
-    :func:`counted` reads them from the mechanism's :class:`~mechlab.mechanisms.base.Structure`."""
+    """What a design is built of: moving parts, lower pairs and higher pairs (cam, pin in slot).
+
+    :func:`counted` reads them from the mechanism's :class:`~mechlab.mechanisms.base.Structure`.
+
+    Parameters
+    ----------
+    parts : int
+        Moving parts (the frame not counted), 0 to 1000.
+    lower_pairs : int
+        Revolute and prismatic pairs.
+    higher_pairs : int
+        Higher pairs (cam and follower, pin in slot, locking arcs).
+
+    Raises
+    ------
+    DimensionError
+        A count that is not an integer in [0, 1000].
+
+    Examples
+    --------
+    >>> from mechlab.design import Counts
+    >>> str(Counts(2, 2, 2))
+    '2 parts, 2 lower + 2 higher pairs'
+    """
 
     parts: Parts
     lower_pairs: Parts
@@ -102,7 +124,7 @@ def counted(mechanism, *, rollers: int | None = None, locks: int | None = None) 
 class Criteria:
     """One design judged on the criteria every family shares (see the module's docstring).
 
-    Attributes
+    Parameters
     ----------
     dwell_fraction : float
         Longest share of the turn over which the output stands exactly still (x′ = 0 up to
@@ -131,6 +153,15 @@ class Criteria:
         Crank torque (N·m) and the motor's nominal power (W) by the course's motor rule.
     structure : Counts
         The parts and pairs of the design (:func:`counted`).
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.design import Counts, Specification, evaluate
+    >>> c = evaluate(ml.ExternalGeneva(4, 1.0), Specification("index", 0.75, stations=4),
+    ...              scale=50.0, structure=Counts(2, 2, 2))
+    >>> round(c.dwell_fraction, 4), c.impact
+    (0.75, 'soft')
     """
 
     dwell_fraction: float
@@ -252,9 +283,49 @@ def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
              phase: Phase = 0.0) -> Criteria:
     """Judge ``mechanism`` (lengths × ``scale`` = mm) against ``spec`` from its simulated motion.
 
-    ``circles`` are (centre, radius) pairs of parts the joints do not trace (a Geneva wheel, a
-    cam disc), in the mechanism's units, added to the footprint; ``pressure_angle``, when
-    given, replaces the motion's own (a family whose motion does not carry one).
+    Parameters
+    ----------
+    mechanism : Mechanism
+        Any object with ``motion(phi)`` whose output carries ``value``, ``d`` and ``dd``.
+    spec : Specification
+        The machine's requirement (amplitude, dwell precision, load, speed).
+    scale : float
+        The mechanism's lengths × ``scale`` are mm.
+    structure : Counts
+        Its parts and pairs, reported as they are (see :func:`counted`).
+    circles : tuple of ((x, y), r), optional
+        Parts the joints do not trace (a Geneva wheel, a cam disc), in the mechanism's units,
+        added to the footprint.
+    pressure_angle : float, optional
+        Worst pressure angle (rad) in [0, π/2] replacing the motion's own (a family whose
+        motion does not carry one).
+    phase : float
+        Shift of the sampled crank angles (rad), in [−2π, 2π].
+
+    Returns
+    -------
+    Criteria
+        The design's dwell, rise invariants, jerk, impacts, pressure angle, size, torque and
+        motor power.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` has no ``motion``, ``spec`` is not a Specification or ``structure`` not Counts.
+    DimensionError
+        ``scale``, ``circles``, ``pressure_angle`` or ``phase`` out of range.
+    MechanismError
+        The mechanism's own motion refuses a crank angle of the turn.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> from mechlab.design import Counts, Specification, evaluate
+    >>> g = ml.ExternalGeneva(4, 1.0)
+    >>> c = evaluate(g, Specification("index", 0.75, stations=4), scale=50.0, structure=Counts(2, 2, 2),
+    ...              circles=(((g.centre_distance, 0.0), g.outer_radius),))
+    >>> round(c.dwell_fraction, 4), round(c.size, 1)
+    (0.75, 121.1)
     """
     circles = tuple(_circle(i, c) for i, c in enumerate(circles))
     phi = phase + np.linspace(0.0, 2 * np.pi, SAMPLES + 1)

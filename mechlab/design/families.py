@@ -38,6 +38,34 @@ class Design:
     ``export(path)`` writes the part that must be manufactured to a profile (DXF), or is
     None where the family has none. ``phase`` shifts the sampled crank angles off a point
     where the family's solver cannot be evaluated.
+
+    Parameters
+    ----------
+    family : str
+        The family's name, a key of :data:`~mechlab.design.FAMILIES`.
+    mechanism : Mechanism
+        The synthesised mechanism, in its own units.
+    scale : float
+        Its lengths × ``scale`` are mm.
+    structure : Counts
+        Its moving parts, lower and higher pairs.
+    circles : tuple of ((x, y), r), optional
+        Parts the joints do not trace, for the footprint (mechanism's units).
+    pressure_angle : float, optional
+        Worst pressure angle (rad) replacing the motion's own.
+    phase : float, optional
+        Shift of the sampled crank angles (rad).
+    export : callable, optional
+        ``export(path)`` writes the part to manufacture (DXF); None where there is none.
+    note : str, optional
+        A line on what sets the design.
+
+    Examples
+    --------
+    >>> from mechlab.design import FAMILIES, Specification
+    >>> design = FAMILIES["external Geneva"](Specification("index", 0.75, stations=4))
+    >>> design.family, str(design.structure), round(design.scale, 3)
+    ('external Geneva', '2 parts, 2 lower + 2 higher pairs', 70.711)
     """
 
     family: str

@@ -63,6 +63,20 @@ class Specification(Checked):
         not fix a scale); a stroke fixes the scale itself.
     overload : float
         Motor overload factor of the course's motor rule (:func:`mechlab.kinetostatics.drive`).
+
+    Raises
+    ------
+    SpecificationError
+        A value outside its range, an index motion without ``stations``, ``stations`` given
+        to a swing or a stroke, a swing or stroke without ``amplitude``, or an amplitude
+        beyond π (a swing) or ``max_size`` (a stroke).
+
+    Examples
+    --------
+    >>> from mechlab.design import Specification
+    >>> spec = Specification("index", 0.5, stations=4)
+    >>> round(float(spec.amplitude), 4)
+    1.5708
     """
 
     motion: Annotated[str, choice(*MOTIONS, error=SpecificationError)]
@@ -99,20 +113,69 @@ class Specification(Checked):
 
     @property
     def omega1(self) -> float:
-        """Crank speed (rad/s)."""
+        """Crank speed (rad/s).
+
+        Returns
+        -------
+        float
+            ``rpm · 2π / 60``.
+
+        Examples
+        --------
+        >>> from mechlab.design import Specification
+        >>> round(Specification("swing", 0.3, amplitude=0.5, rpm=60).omega1, 4)
+        6.2832
+        """
         return self.rpm * 2 * np.pi / 60.0
 
     @property
     def dwell_angle(self) -> float:
-        """Crank angle of the dwell (rad)."""
+        """Crank angle of the dwell (rad).
+
+        Returns
+        -------
+        float
+            ``2π · dwell_fraction``.
+
+        Examples
+        --------
+        >>> from mechlab.design import Specification
+        >>> round(Specification("swing", 0.25, amplitude=0.5).dwell_angle, 4)
+        1.5708
+        """
         return 2 * np.pi * self.dwell_fraction
 
     @property
     def rotary(self) -> bool:
+        """Whether the output rotates (an index or a swing) rather than translates (a stroke).
+
+        Returns
+        -------
+        bool
+            True for ``"index"`` and ``"swing"``, False for ``"stroke"``.
+
+        Examples
+        --------
+        >>> from mechlab.design import Specification
+        >>> Specification("stroke", 0.3, amplitude=40.0).rotary
+        False
+        """
         return self.motion != "stroke"
 
     def describe(self) -> str:
-        """One line, in the units a machine designer reads."""
+        """One line, in the units a machine designer reads (degrees, mm, rpm).
+
+        Returns
+        -------
+        str
+            The motion, dwell, speed, load and limits.
+
+        Examples
+        --------
+        >>> from mechlab.design import Specification
+        >>> Specification("index", 0.5, stations=4).describe()[:40]
+        'index 90° (4 stations), dwell 0.500 of t'
+        """
         if self.motion == "index":
             what = f"index {np.degrees(self.amplitude):.4g}° ({self.stations} stations)"
         elif self.motion == "swing":

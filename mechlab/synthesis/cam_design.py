@@ -24,9 +24,36 @@ __all__ = ["CamProgramme"]
 class CamProgramme:
     """Rise – outer dwell – return – inner dwell over one cam turn (angles in radians).
 
-    ``stroke`` h is a length (translating follower) or an angle in radians (oscillating);
-    ``law`` shapes the rise, ``return_law`` (default: the same) the return, y = h·(1 − Y(x)).
-    The inner dwell is what is left of the turn. Raises DimensionError naming the parameter.
+    The inner dwell is what is left of the turn. Calling the programme at cam angles φ gives
+    the lift y(φ) (stroke units) and its analogs y′, y″ as an ``AnglePath``.
+
+    Parameters
+    ----------
+    stroke : float
+        h: a length (mm, translating follower) or an angle (rad, oscillating follower), > 0.
+    rise, ret : float
+        Cam angles of the rise and of the return (rad), > 0.
+    outer_dwell : float
+        Cam angle of the dwell at full lift (rad), ≥ 0 (default 0).
+    law : str or RiseLaw
+        The rise's law, a name of :mod:`mechlab.analysis.motion_laws` (default "cycloidal (sine)").
+    return_law : str or RiseLaw, optional
+        The return's law, y = h·(1 − Y(x)); by default the rise's.
+
+    Raises
+    ------
+    DimensionError
+        A stroke or angle that is not a positive finite number (the outer dwell may be 0), an
+        unknown law, or rise + outer dwell + return exceeding one turn.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> prog = ml.CamProgramme(10.0, np.pi / 2, np.pi / 2, outer_dwell=np.pi / 4)
+    >>> lift = prog(np.pi / 4)  # half-way up a cycloidal rise
+    >>> round(float(lift.theta), 4), round(float(lift.d), 4)
+    (5.0, 12.7324)
     """
 
     stroke: float
@@ -52,7 +79,20 @@ class CamProgramme:
 
     @property
     def breaks(self) -> tuple[float, float, float, float, float]:
-        """Cam angles where the phases start: rise, outer dwell, return, inner dwell, and 2π."""
+        """Cam angles where the phases start: rise, outer dwell, return, inner dwell, and 2π.
+
+        Returns
+        -------
+        tuple of float
+            Five cam angles (rad), ascending from 0 to 2π.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> [round(b, 4) for b in ml.CamProgramme(10.0, np.pi / 2, np.pi / 2, outer_dwell=np.pi / 4).breaks]
+        [0.0, 1.5708, 2.3562, 3.927, 6.2832]
+        """
         a = self.rise
         b = a + self.outer_dwell
         c = b + self.ret
@@ -78,8 +118,20 @@ class CamProgramme:
         h·Y‴/Φ³ on the rise, −h·Y‴/Φ³ on the return, 0 in the dwells; between the points where y″ jumps,
         where the jerk is an impulse (:func:`~mechlab.analysis.motion_laws.law_jerk` gives inf there).
 
+        Parameters
+        ----------
+        phi : array_like
+            Cam angles (rad), taken modulo 2π.
+
+        Returns
+        -------
+        numpy.ndarray
+            y‴ at each angle.
+
         Examples
         --------
+        >>> import numpy as np
+        >>> from mechlab import CamProgramme
         >>> prog = CamProgramme(10.0, np.pi / 2, np.pi / 2, law="3-4-5 polynomial")
         >>> float(prog.jerk(np.array([0.0]))[0]) == 10.0 * 60 / (np.pi / 2) ** 3
         True
@@ -93,7 +145,26 @@ class CamProgramme:
         return out
 
     def in_dwell(self, phi) -> np.ndarray:
-        """True where the follower stands still (either dwell)."""
+        """True where the follower stands still (either dwell).
+
+        Parameters
+        ----------
+        phi : array_like
+            Cam angles (rad), taken modulo 2π.
+
+        Returns
+        -------
+        numpy.ndarray of bool
+            True in the outer and the inner dwell.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> prog = ml.CamProgramme(10.0, np.pi / 2, np.pi / 2, outer_dwell=np.pi / 4)
+        >>> prog.in_dwell(np.array([0.1, 2.0, 5.0])).tolist()
+        [False, True, True]
+        """
         t = np.mod(np.asarray(phi, dtype=float), TWO_PI)
         _, a, b, c, _ = self.breaks
         return ((t >= a) & (t < b)) | (t >= c)

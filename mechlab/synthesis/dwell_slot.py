@@ -181,9 +181,6 @@ def check_interval(phi1, phi2) -> tuple[float, float]:
 class DwellLaw(Checked):
     """The designed law ψ(φ) (Zinchenko et al. (2013) (21)-(25), corrected) and the slot it fixes.
 
-    ``lam`` = λ, ``phi1`` < ``phi2`` the dwell (radians, strictly inside (0, π)),
-    ``transition`` one of :data:`TRANSITIONS`, ``pivot_distance`` d = l_OB.
-
     ψ = ψ_B on the dwell (the slot an arc of radius l_OA), ψ = ψ_B + p(φ1 - φ) on [0, φ1] and
     ψ_B + q(φ - φ2) on [φ2, π], starting with ψ' = ψ'' = 0 at the joins, reaching ψ_K' at 0 and π
     (odd derivatives must match the base mechanism's there), and ψ(0) = 0. ``"cubic"`` ((21),
@@ -191,6 +188,42 @@ class DwellLaw(Checked):
     ψ_B = λφ1/(3(λ + 1)); its jerk jumps and the slot's curvature grows like 1/φ at the ends.
     ``"quintic"``: p = c4 u⁴ + c5 u⁵ (q alike), also matching ψ_K‴ at 0 and π
     (λ(λ - 1)/(λ + 1)³ and -λ(λ + 1)/(λ - 1)³) with ψ‴ = 0 at the joins: bounded curvature.
+    Calling the law at any crank angles gives ψ and its three analogs (a ``BaseLaw``).
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB, in [1e-6, 1e6] with |λ − 1| > 1e-4.
+    phi1, phi2 : float
+        The dwell (rad), 0 < φ1 < φ2 < π, each transition ≥ MIN_TRANSITION.
+    transition : {"cubic", "quintic", "sextic"}
+        The transitions' law (:data:`TRANSITIONS`).
+    pivot_distance : float
+        d = l_OB (length units, default 1).
+
+    Attributes
+    ----------
+    psi_dwell : float
+        ψ_B, the link's angle during the dwell (rad).
+
+    Raises
+    ------
+    DwellRatioError
+        λ out of range or too near 1.
+    DwellIntervalError
+        The dwell is empty, reversed, outside (0, π) or leaves a transition too short.
+    DwellError
+        An unknown transition.
+    DimensionError
+        ``pivot_distance`` is not a positive length.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+    >>> round(law.psi_dwell, 6), round(float(law(np.radians(90)).d), 6)  # still in the dwell
+    (0.105429, 0.0)
     """
 
     lam: float
@@ -235,28 +268,98 @@ class DwellLaw(Checked):
 
     @property
     def left(self) -> Polynomial:
-        """p(u) on [0, φ1], u = φ1 - φ: ψ = ψ_B + p(φ1 - φ)."""
+        """p(u) on [0, φ1], u = φ1 - φ: ψ = ψ_B + p(φ1 - φ).
+
+        Returns
+        -------
+        numpy.polynomial.Polynomial
+            The left transition's polynomial in u.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> law.left.degree()
+        5
+        """
         return Polynomial(self.left_coef)
 
     @property
     def right(self) -> Polynomial:
-        """q(v) on [φ2, π], v = φ - φ2: ψ = ψ_B + q(φ - φ2)."""
+        """q(v) on [φ2, π], v = φ - φ2: ψ = ψ_B + q(φ - φ2).
+
+        Returns
+        -------
+        numpy.polynomial.Polynomial
+            The right transition's polynomial in v.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> round(float(law.right(np.pi - law.phi2)) + law.psi_dwell, 6)  # ψ(π)
+        -0.058828
+        """
         return Polynomial(self.right_coef)
 
     # -- dimensions ----------------------------------------------------------------------
     @property
     def crank(self) -> float:
-        """l_OA = λ·l_OB."""
+        """The crank's length l_OA = λ·l_OB.
+
+        Returns
+        -------
+        float
+            l_OA (length units).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> law.crank
+        0.5
+        """
         return self.lam * self.pivot_distance
 
     @property
     def dwell_angle(self) -> float:
-        """φ_B = φ2 - φ1 (radians)."""
+        """The dwell's crank angle φ_B = φ2 - φ1.
+
+        Returns
+        -------
+        float
+            φ_B (rad).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> round(float(np.degrees(law.dwell_angle)), 6)
+        90.0
+        """
         return self.phi2 - self.phi1
 
     @property
     def rotates(self) -> bool:
-        """λ > 1: the slotted link turns fully, one dwell per turn (intermittent rotation)."""
+        """Whether the slotted link turns fully, one dwell per turn (intermittent rotation): λ > 1.
+
+        Returns
+        -------
+        bool
+            True for λ > 1, False for a rocking link (λ < 1).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> law.rotates
+        False
+        """
         return self.lam > 1.0
 
     # -- the law on the half turn [0, π] -------------------------------------------------
@@ -265,7 +368,31 @@ class DwellLaw(Checked):
 
     @scalar_law
     def half(self, phi) -> BaseLaw:
-        """ψ, ψ', ψ'', ψ''' for φ in [0, π] (the designed half)."""
+        """ψ, ψ′, ψ″, ψ‴ for φ in [0, π] (the designed half).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles (rad) in [0, π], the designed half.
+
+        Returns
+        -------
+        BaseLaw
+            ψ (rad) and its first three analogs.
+
+        Raises
+        ------
+        DwellError
+            An angle outside [0, π] (use the law itself for any φ).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> np.round(law.half(np.array([0.0, np.pi])).d, 6).tolist()  # ψ_K' at the slot's ends
+        [0.333333, -1.0]
+        """
         phi = check_value("phi", as_angles(phi), _HALF_TURN)
         L, R = self._pieces(phi)
         out = [np.zeros_like(phi) for _ in range(4)]
@@ -299,14 +426,52 @@ class DwellLaw(Checked):
 
     @scalar_law
     def in_dwell(self, phi) -> np.ndarray:
-        """True where wrap(φ) lies in [φ1, φ2]."""
+        """True where wrap(φ) lies in [φ1, φ2].
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles (rad).
+
+        Returns
+        -------
+        numpy.ndarray of bool
+            Whether the link dwells there.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> law.in_dwell(np.radians([30.0, 90.0])).tolist()
+        [False, True]
+        """
         red = wrap(as_angles(phi))
         return (red >= self.phi1) & (red <= self.phi2)
 
     # -- the slot --------------------------------------------------------------------------
     @scalar_law
     def S(self, phi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """|A - B| and its two analogs (Zinchenko et al. (2013) §3, S(φ) corrected to the §2 frame)."""
+        """|A - B| and its two analogs (Zinchenko et al. (2013) §3, S(φ) corrected to the §2 frame).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles (rad).
+
+        Returns
+        -------
+        S, dS, ddS : numpy.ndarray
+            The pin's distance from B (length units) and its first and second φ-analogs.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> round(float(law.S(0.0)[0]), 6)  # d + r at φ = 0
+        1.5
+        """
         phi = as_angles(phi)
         d, r = self.pivot_distance, self.crank
         S = np.sqrt(d * d + r * r + 2 * r * d * np.cos(phi))
@@ -316,19 +481,81 @@ class DwellLaw(Checked):
 
     @scalar_law
     def beta(self, phi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """β = ψ_K - ψ (polar angle of the pin in the link's frame) and β', β'' for φ in [0, π]."""
+        """β = ψ_K - ψ (polar angle of the pin in the link's frame) and β', β'' for φ in [0, π].
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles (rad) in [0, π], the designed half.
+
+        Returns
+        -------
+        beta, dbeta, ddbeta : numpy.ndarray
+            β (rad) and its first and second φ-analogs.
+
+        Raises
+        ------
+        DwellError
+            An angle outside [0, π].
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> round(float(law.beta(np.radians(30))[0]), 6)
+        0.07615
+        """
         h, K = self.half(phi), slotted_link_law(self.lam, phi)
         return K.psi - h.psi, K.d - h.d, K.dd - h.dd
 
     @scalar_law
     def slot_points(self, phi) -> np.ndarray:
-        """Points of the slot's centre line in the link's frame (origin B), φ in [0, π]."""
+        """Points of the slot's centre line in the link's frame (origin B), φ in [0, π].
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles (rad) in [0, π], the designed half.
+
+        Returns
+        -------
+        numpy.ndarray
+            (n, 2) points (length units), where the pin is at those crank angles.
+
+        Raises
+        ------
+        DwellError
+            An angle outside [0, π].
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> np.round(law.slot_points(np.array([0.0, np.pi / 2])), 4).tolist()
+        [[1.5, 0.0], [1.0471, 0.392]]
+        """
         S, _, _ = self.S(phi)
         b, _, _ = self.beta(phi)
         return S[:, None] * np.stack([np.cos(b), np.sin(b)], axis=-1)
 
     def centre_in_link(self) -> np.ndarray:
-        """Where the crank pivot O sits in the link's frame during the dwell: the dwell arc's centre."""
+        """Where the crank pivot O sits in the link's frame during the dwell: the dwell arc's centre.
+
+        Returns
+        -------
+        numpy.ndarray
+            (x, y) in the link's frame (origin B, length units).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> np.round(law.centre_in_link(), 4).tolist()
+        [0.9944, -0.1052]
+        """
         c, s = np.cos(self.psi_dwell), np.sin(self.psi_dwell)
         return np.array([c * self.pivot_distance, -s * self.pivot_distance])
 
@@ -383,7 +610,26 @@ class DwellLaw(Checked):
     @scalar_law
     def pressure_angle(self, phi) -> np.ndarray:
         """Pressure angle θ (radians) at the pin for any φ, from the slot's geometry:
-        tan θ = S²|β'|/(r d |sin φ|) (exact limit at the slot's ends φ = 0, π)."""
+        tan θ = S²|β'|/(r d |sin φ|) (exact limit at the slot's ends φ = 0, π).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles (rad).
+
+        Returns
+        -------
+        numpy.ndarray
+            θ (rad) at each angle.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> np.round(law.pressure_angle(np.radians([30.0, 90.0])), 4).tolist()
+        [1.1435, 0.4636]
+        """
         phi = np.abs(wrap(as_angles(phi)))
         S, _, _ = self.S(phi)
         g = self._g(phi)
@@ -394,7 +640,26 @@ class DwellLaw(Checked):
         """Signed curvature of the slot's centre line where the pin is at crank angle φ ∈ [0, π]
         (sign taken along increasing distance from B), from the slot parametrised by S:
         κ = (2β_S + Sβ_SS + S²β_S³)/(1 + S²β_S²)^{3/2}. On the dwell |κ| = 1/l_OA. For the
-        cubic law κ grows like 1/φ towards the ends (it is evaluated 1e-6 inside them)."""
+        cubic law κ grows like 1/φ towards the ends (it is evaluated 1e-6 inside them).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles (rad).
+
+        Returns
+        -------
+        numpy.ndarray
+            κ (1/length) at each angle.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> np.round(law.curvature(np.radians([90.0])), 6).tolist()  # on the dwell arc: |κ| = 1/l_OA
+        [-2.0]
+        """
         phi = np.abs(wrap(as_angles(phi)))
         S = self.S(phi)[0]
         _, bS, bSS = self._polar(S)
@@ -402,7 +667,26 @@ class DwellLaw(Checked):
 
     # -- the slot as a curve in the link's frame, parameter = distance from B ----------------
     def phi_of_distance(self, S) -> np.ndarray:
-        """The crank angle φ ∈ [0, π] at which the pin is S from B (stable at both ends)."""
+        """The crank angle φ ∈ [0, π] at which the pin is S from B (stable at both ends).
+
+        Parameters
+        ----------
+        S : float or array_like
+            Distances from B (length units), in [|r − d|, r + d] (clipped there).
+
+        Returns
+        -------
+        numpy.ndarray
+            φ (rad).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> np.round(law.phi_of_distance([1.5, 0.5]), 6).tolist()
+        [0.0, 3.141593]
+        """
         S = np.asarray(S, dtype=float)
         r, d = self.crank, self.pivot_distance
         smax, smin = r + d, abs(r - d)
@@ -419,6 +703,19 @@ class DwellLaw(Checked):
         c = S·(cos β, sin β) with β from the law, β_S = -S g/(r d), β_SS = -g/(r d) + S² G/(r d)².
         Beyond [|r - d|, r + d] (never reached by the pin) the curve goes on with constant β_S,
         so that the solver's root brackets see both ends.
+
+        Returns
+        -------
+        ParametricSlot
+            The curve with its first and second derivatives in t.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> law = ml.DwellLaw(0.5, np.radians(60), np.radians(150), "quintic")
+        >>> np.round(law.slot_curve().evaluate(np.array([1.5])).p, 4).tolist()  # the far end, φ = 0
+        [[1.5, 0.0]]
         """
         from ..mechanisms.curved_slot import ParametricSlot
 
@@ -499,8 +796,43 @@ class DwellSlotMechanism(Mechanism):
 
     ``motion(phi)`` is solved through :class:`~mechlab.mechanisms.curved_slot.CurvedSlotLink`
     with the designed slot (:meth:`DwellLaw.slot_curve`); ``law`` is the design it was
-    made from. ``roller_radius`` (≥ 0, below the slot's smallest radius of curvature on its
-    concave side) sets the slot's flanks for drawing and export.
+    made from. Build one with :func:`curved_slot_dwell`.
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB (≠ 1; λ > 1 gives intermittent rotation).
+    phi1, phi2 : float
+        The dwell (rad), strictly inside (0, π).
+    pivot_distance : float
+        d = l_OB (length units, default 1).
+    transition : {"cubic", "quintic", "sextic"}
+        The transitions' law.
+    roller_radius : float
+        ρ ≥ 0, below the slot's smallest radius of curvature on its concave side: sets the slot's
+        flanks for drawing and export.
+
+    Attributes
+    ----------
+    law : DwellLaw
+        The design.
+
+    Raises
+    ------
+    DwellRatioError, DwellIntervalError, DwellError
+        As :class:`DwellLaw`.
+    SlotUndercutError
+        ρ not below the slot's smallest radius of curvature.
+    DimensionError
+        ``roller_radius`` negative or not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> mech = ml.DwellSlotMechanism(0.5, np.radians(60), np.radians(150), transition="quintic")
+    >>> round(mech.law.psi_dwell, 6), mech.crank
+    (0.105429, 0.5)
     """
 
     rollers = 1   # the roller in the slot
@@ -532,6 +864,21 @@ class DwellSlotMechanism(Mechanism):
 
     @property
     def crank(self) -> float:
+        """The crank's length l_OA.
+
+        Returns
+        -------
+        float
+            l_OA = λ·l_OB (length units).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+        >>> mech.crank
+        0.5
+        """
         return self.law.crank
 
     @cached_property
@@ -545,21 +892,95 @@ class DwellSlotMechanism(Mechanism):
         return link
 
     def base(self):
-        """The base mechanism (straight slot through B)."""
+        """The base mechanism (straight slot through B).
+
+        Returns
+        -------
+        SlottedLink
+            The same crank and pivot distance with a straight slot.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+        >>> mech.base()
+        SlottedLink(crank=0.5, pivot_distance=1.0)
+        """
         return self.link.base()
 
     def motion(self, phi):
-        """ψ, ψ', ψ'' and the pressure angle through the slot (the curved-slot solver)."""
+        """ψ, ψ', ψ'' and the pressure angle through the slot (the curved-slot solver).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles (rad).
+
+        Returns
+        -------
+        AngularMotion
+            The joints O, A, B, the link's angle ψ (rad), ψ′, ψ″ and the pressure angle (rad).
+
+        Raises
+        ------
+        DimensionError
+            ``phi`` is not finite.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+        >>> mo = mech.motion(np.radians([90.0, 120.0]))  # inside the dwell
+        >>> np.round(mo.psi, 6).tolist(), bool(np.allclose(mo.dpsi, 0.0))
+        ([0.105429, 0.105429], True)
+        """
         return self.link.motion(phi)
 
     def structure(self):
-        """The curved-slot link's: crank, slotted link, the slot's higher pair at A."""
+        """The curved-slot link's: crank, slotted link, the slot's higher pair at A.
+
+        Returns
+        -------
+        Structure
+            The links and pairs, from which drawing, centres and forces are derived.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+        >>> st = mech.structure()
+        >>> [link.name for link in st.links], [pair.kind for pair in st.pairs]
+        (['crank', 'link'], ['revolute', 'higher', 'revolute'])
+        """
         return self.link.structure()
 
     def sketch(self, motion) -> Sketch:
         """The crank; the link's slot (centre line, the dwell arc highlighted, the roller's flanks) drawn
         in the link frame once and turned by ψ about B; the arm holding it (numbered); the roller; and
-        "dwell" while the link stands still."""
+        "dwell" while the link stands still.
+
+        Parameters
+        ----------
+        motion : AngularMotion
+            The mechanism's motion, the frames drawn.
+
+        Returns
+        -------
+        Sketch
+            The parts in drawing order and the fixed pivots.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+        >>> sketch = mech.sketch(mech.motion(mech.turn(5)))
+        >>> [part.role for part in sketch.parts][:3], sketch.pivots
+        (['link', 'arm', 'anchor'], ('O', 'B'))
+        """
         from .slot_export import slot_profile
 
         centre, arc, rho = self.slot_points(160), self.dwell_points(60), self.roller_radius
@@ -587,13 +1008,62 @@ class DwellSlotMechanism(Mechanism):
     @validated
     def slot_points(self, n: Annotated[int, count(2)] = 401) -> np.ndarray:
         """(n, 2) points of the slot's centre line in the link frame, from the far end E
-        (φ = 0) to the near end (φ = π), as the solver's curve gives them."""
+        (φ = 0) to the near end (φ = π), as the solver's curve gives them.
+
+        Parameters
+        ----------
+        n : int
+            Points, ≥ 2 (default 401).
+
+        Returns
+        -------
+        numpy.ndarray
+            (n, 2) points (length units).
+
+        Raises
+        ------
+        DimensionError
+            ``n`` is not an integer ≥ 2.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+        >>> np.round(mech.slot_points(3), 4).tolist()
+        [[1.5, 0.0], [0.9211, 0.3894], [0.4991, 0.0294]]
+        """
         S = np.linspace(self.crank + self.pivot_distance, abs(self.crank - self.pivot_distance), n)
         return self.link.slot.points(S)
 
     @validated
     def dwell_points(self, n: Annotated[int, count(2)] = 101) -> np.ndarray:
-        """(n, 2) points of the dwell arc (link frame)."""
+        """(n, 2) points of the dwell arc (link frame).
+
+        Parameters
+        ----------
+        n : int
+            Points, ≥ 2 (default 101).
+
+        Returns
+        -------
+        numpy.ndarray
+            (n, 2) points on the arc of radius l_OA about :meth:`DwellLaw.centre_in_link`.
+
+        Raises
+        ------
+        DimensionError
+            ``n`` is not an integer ≥ 2.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+        >>> arc = mech.dwell_points(3)
+        >>> np.round(np.hypot(*(arc - mech.law.centre_in_link()).T), 12).tolist()
+        [0.5, 0.5, 0.5]
+        """
         phi = np.linspace(self.phi1, self.phi2, n)
         return self.law._arc_point(self.law.S(phi)[0])
 
@@ -601,7 +1071,32 @@ class DwellSlotMechanism(Mechanism):
     def max_pressure_angle(self, n: Annotated[int, count(2)] = 721) -> tuple[float, float]:
         """(θ_max, φ at θ_max) over the whole turn from the solver's motion: a grid over [0, π]
         (θ(-φ) = θ(φ): the pin is at the same slot point), the peak refined on the closed form
-        :meth:`DwellLaw.pressure_angle`, and θ re-evaluated there through the solver."""
+        :meth:`DwellLaw.pressure_angle`, and θ re-evaluated there through the solver.
+
+        Parameters
+        ----------
+        n : int
+            Grid points over [0, π], ≥ 2 (default 721).
+
+        Returns
+        -------
+        theta, phi : float
+            The largest pressure angle and the crank angle where it occurs (rad).
+
+        Raises
+        ------
+        DimensionError
+            ``n`` is not an integer ≥ 2.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+        >>> theta, where = mech.max_pressure_angle()
+        >>> round(float(np.degrees(theta)), 2), float(where)
+        (70.39, 0.0)
+        """
         from scipy.optimize import minimize_scalar
 
         phi = np.linspace(0.0, np.pi, n)
@@ -621,9 +1116,42 @@ def curved_slot_dwell(lam, phi1, phi2, pivot_distance=1.0, transition="cubic", *
                       roller_radius=0.0) -> DwellSlotMechanism:
     """Design the curved-slot dwell mechanism of Zinchenko et al. (2013) §3 (angles in radians, seed-000 frame).
 
-    λ = l_OA / l_OB (≠ 1; λ > 1 gives intermittent rotation), dwell [φ1, φ2] strictly inside
-    (0, π), ``transition`` one of :data:`TRANSITIONS`. Raises DwellRatioError,
-    DwellIntervalError (φ1 ≥ φ2, outside [0, π], touching 0 or π) or DwellError.
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB (≠ 1; λ > 1 gives intermittent rotation).
+    phi1, phi2 : float
+        The dwell (rad), strictly inside (0, π).
+    pivot_distance : float
+        d = l_OB (length units, default 1).
+    transition : {"cubic", "quintic", "sextic"}
+        The transitions' law (:data:`TRANSITIONS`).
+    roller_radius : float
+        ρ ≥ 0 of the roller on the pin, for the slot's flanks.
+
+    Returns
+    -------
+    DwellSlotMechanism
+        The mechanism, its motion solved through the designed slot.
+
+    Raises
+    ------
+    DwellRatioError
+        λ out of range or too near 1.
+    DwellIntervalError
+        φ1 ≥ φ2, outside [0, π], touching 0 or π.
+    DwellError
+        An unknown transition.
+    SlotUndercutError
+        ρ not below the slot's smallest radius of curvature.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> mech = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), transition="quintic")
+    >>> np.round(mech.motion(np.radians([90.0, 120.0])).psi, 6).tolist()  # the link stands still
+    [0.105429, 0.105429]
     """
     return DwellSlotMechanism(lam, phi1, phi2, pivot_distance, transition, roller_radius)
 
@@ -686,7 +1214,39 @@ def compare_transitions(lam, phi1, phi2, pivot_distance=1.0, n: Annotated[int, c
     """One :class:`TransitionRow` per transition law: ψ_B, peak |ψ'|, |ψ''| (through the slot,
     whole turn), peak |ψ'''| and its largest jump at 0, φ1, φ2, π (from the law), the largest
     pressure angle and where it occurs, the largest |κ| of the slot for φ ∈ [1°, 179°] and |κ|
-    at its ends (1e-6 rad inside them), and the smallest radius of curvature."""
+    at its ends (1e-6 rad inside them), and the smallest radius of curvature.
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB.
+    phi1, phi2 : float
+        The dwell (rad), strictly inside (0, π).
+    pivot_distance : float
+        d = l_OB (length units, default 1).
+    n : int
+        Crank angles over the turn, ≥ 2 (default 721).
+
+    Returns
+    -------
+    Table
+        One ``TransitionRow`` per law of :data:`TRANSITIONS`.
+
+    Raises
+    ------
+    DwellRatioError, DwellIntervalError
+        As :func:`curved_slot_dwell`.
+    DimensionError
+        ``n`` is not an integer ≥ 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> table = ml.compare_transitions(0.5, np.radians(60), np.radians(150))
+    >>> [(row.transition, round(row.min_radius, 4)) for row in table]
+    [('cubic', 0.0), ('quintic', 0.5), ('sextic', 0.0132)]
+    """
     from .slot_export import min_radius_of_curvature
 
     rows = []
@@ -737,8 +1297,45 @@ def where_kind(law: DwellLaw, phi: float, tol: float = np.radians(0.5)) -> str:
 @validated
 def best_placement(lam: Ratio, length: Annotated[float, angle(0.0, np.pi, open=True)], transition: Transition = "cubic",
                    pivot_distance: Length = 1.0, n_grid: Annotated[int, count(2, MAX_GRID)] = 19):
-    """The dwell [φ1, φ1 + length] that minimises the largest pressure angle (law-based,
-    closed form): (θ_max, φ1). Grid over φ1, then a bounded refinement."""
+    """The dwell [φ1, φ1 + length] that minimises the largest pressure angle (law-based, closed form).
+
+    A grid over φ1, then a bounded refinement.
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB.
+    length : float
+        The dwell's crank angle (rad), in (0, π).
+    transition : {"cubic", "quintic", "sextic"}
+        The transitions' law.
+    pivot_distance : float
+        d = l_OB (length units, default 1).
+    n_grid : int
+        Grid points over φ1, ≥ 2 (default 19).
+
+    Returns
+    -------
+    theta_max, phi1 : float
+        The least largest pressure angle and the dwell's start (rad).
+
+    Raises
+    ------
+    DwellRatioError
+        λ out of range or too near 1.
+    DwellIntervalError
+        The dwell leaves no room for both transitions.
+    DwellError
+        An unknown transition.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> theta, phi1 = ml.best_placement(0.5, np.radians(90))
+    >>> round(float(np.degrees(theta)), 2), round(float(np.degrees(phi1)), 2)
+    (68.56, 67.5)
+    """
     from scipy.optimize import minimize_scalar
 
     margin = 1e-3
@@ -762,7 +1359,39 @@ def dwell_limit(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2)], 
                 pivot_distance: Length = 1.0) -> DwellLimit:
     """The longest dwell whose largest pressure angle stays ≤ ``theta_max`` (radians) with the
     best placement, by bisection on the dwell length. Zinchenko et al. (2013) §3 says a dwell over 120°
-    makes the pressure angle large; this computes the actual limit and where θ is worst."""
+    makes the pressure angle large; this computes the actual limit and where θ is worst.
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB.
+    theta_max : float
+        The pressure angle bound (rad), in [0, π/2].
+    transition : {"cubic", "quintic", "sextic"}
+        The transitions' law.
+    pivot_distance : float
+        d = l_OB (length units, default 1).
+
+    Returns
+    -------
+    DwellLimit
+        The longest dwell (deg), its φ1, φ2 (rad), the largest pressure angle (deg) and where.
+
+    Raises
+    ------
+    DwellError
+        No dwell keeps the pressure angle within the bound, or an unknown transition.
+    DwellRatioError
+        λ out of range or too near 1.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> limit = ml.dwell_limit(0.5, np.radians(75), "quintic")
+    >>> round(limit.max_dwell_deg, 1), limit.where
+    (119.6, 'far slot end (φ = 0)')
+    """
     lo, hi = np.radians(1.0), np.pi - np.radians(1.0)
     if best_placement(lam, lo, transition, pivot_distance)[0] > theta_max:
         raise DwellError(f"no dwell keeps the pressure angle ≤ {np.degrees(theta_max):.1f}° for λ = {lam:g} "
@@ -788,7 +1417,33 @@ def cubic_dwell_window(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi 
     at both slot ends, where the cubic's is largest (chapter 5, from Zinchenko et al. (2013) (21), (23)):
     tan θ(0) = 2(1 + λ)/φ1 and tan θ(π) = 2|1 - λ|/(π - φ2), so φ1 = 2(1 + λ)/tan θ_max and
     φ2 = π - 2|1 - λ|/tan θ_max. :func:`dwell_limit` finds the same window numerically.
-    DwellIntervalError when the two transitions leave no dwell."""
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB.
+    theta_max : float
+        The pressure angle bound (rad), in (0, π/2].
+
+    Returns
+    -------
+    phi1, phi2 : float
+        The window's ends (rad).
+
+    Raises
+    ------
+    DwellIntervalError
+        The two transitions leave no dwell.
+    DwellRatioError
+        λ out of range or too near 1.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> [round(float(np.degrees(p)), 2) for p in ml.cubic_dwell_window(0.5, np.radians(60))]
+    [99.24, 146.92]
+    """
     lam = check_lambda(lam)
     phi1 = 2.0 * (1.0 + lam) / np.tan(theta_max)
     phi2 = np.pi - 2.0 * abs(1.0 - lam) / np.tan(theta_max)
@@ -810,6 +1465,35 @@ def two_branch_slot(lam: Ratio, phi2: Annotated[float, angle(0.0, np.pi, open=Tr
     the pin comes back along the same branch (Table 2: 2ψ_K'(0) - ψ'(0+)), their difference
     ``velocity_jump`` (= 2λ/(λ+1), times ω1), and ``link``: a factory of the curved-slot
     mechanism with that arc, which raises SingularityError at φ = 0.
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB.
+    phi2 : float
+        The dwell's end (rad), in (0, π).
+    pivot_distance : float
+        d = l_OB (length units, default 1).
+
+    Returns
+    -------
+    TwoBranchSlot
+        The pressure angle at E, ψ′ after and before φ = 0, their jump, and ``link()``.
+
+    Raises
+    ------
+    DwellRatioError
+        λ out of range or too near 1.
+    DwellIntervalError
+        ``phi2`` outside (0, π).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> slot = ml.two_branch_slot(0.5, np.radians(120))
+    >>> round(slot.velocity_jump, 6), round(slot.pressure_angle_at_E, 6)  # 2λ/(λ + 1), π/2
+    (0.666667, 1.570796)
     """
     from ..mechanisms.curved_slot import CircleSlot, CurvedSlotLink
 

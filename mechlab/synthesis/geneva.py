@@ -30,7 +30,40 @@ class SphericalRow:
 def spherical_table(R: float, e: float, z_values: Annotated[np.ndarray, Spec("samples", lo=1)],
                     pin_diameter: float = 10.0) -> Table:
     """Table 1 of Vainer & Shatokhina, recomputed: per z, α0 and β0 (deg), ω_max/ω1, the largest
-    |ε|/ω1² while the wheel moves (|α| ≤ α0), and α1, β1 (deg) where it is reached."""
+    |ε|/ω1² while the wheel moves (|α| ≤ α0), and α1, β1 (deg) where it is reached.
+
+    Parameters
+    ----------
+    R : float
+        Sphere radius (mm).
+    e : float
+        Offset (mm), 0 ≤ e < R.
+    z_values : array_like of int
+        Slot counts, each ≥ 3.
+    pin_diameter : float
+        Pin diameter (mm), default 10.
+
+    Returns
+    -------
+    Table
+        One ``SphericalRow`` per z.
+
+    Raises
+    ------
+    SlotCountError
+        A z that is not a whole number ≥ 3.
+    OffsetError
+        ``e`` outside [0, R).
+    DimensionError
+        ``R`` or ``pin_diameter`` not a positive length, or ``z_values`` empty.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> row = list(ml.spherical_table(40.0, 15.0, [4]))[0]
+    >>> round(row.alpha0, 2), round(row.omega_max, 2)
+    (62.06, 1.13)
+    """
     rows = []
     for z in z_values:
         g = SphericalGeneva(R, e, z, pin_diameter)
@@ -72,7 +105,34 @@ class Cell:
 
 def table1_comparison(R: float = 40.0, e: float = 15.0) -> Table:
     """Every cell of Vainer & Shatokhina's Table 1 (:data:`TABLE1_PRINTED`, two decimals printed)
-    against :func:`spherical_table`."""
+    against :func:`spherical_table`.
+
+    Parameters
+    ----------
+    R : float
+        Sphere radius (mm), default 40 (the printed table's).
+    e : float
+        Offset (mm), default 15.
+
+    Returns
+    -------
+    Table
+        One ``Cell`` per (z, column): printed, computed and "agrees", "last digit" or "differs".
+
+    Raises
+    ------
+    OffsetError
+        ``e`` outside [0, R).
+    DimensionError
+        ``R`` is not a positive length.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> cells = ml.table1_comparison()
+    >>> len(cells), sum(cell.agrees for cell in cells)
+    (30, 15)
+    """
     rows = spherical_table(R, e, TABLE1_PRINTED.column("z")).by("z")
     out = []
     for printed in TABLE1_PRINTED:
@@ -109,8 +169,24 @@ class ReviewRow:
 
 
 def table1_review(comparison: Table | None = None) -> Table:
-    """Table 1 as the reader checks it: per z, every cell of :func:`table1_comparison` (computed
-    for R = 40 mm, e = 15 mm unless ``comparison`` is given) as "printed / computed", marked."""
+    """Table 1 as the reader checks it: per z, every cell as "printed / computed", marked.
+
+    Parameters
+    ----------
+    comparison : Table, optional
+        The cells of :func:`table1_comparison`; by default computed for R = 40 mm, e = 15 mm.
+
+    Returns
+    -------
+    Table
+        One ``ReviewRow`` per z; a cell is marked "·" (last digit) or "✗" (differs).
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> list(ml.table1_review())[1].alpha0
+    '62.06 / 62.06'
+    """
     cells = {(c.z, c.column): c for c in (table1_comparison() if comparison is None else comparison)}
     return Table(ReviewRow(z, *(f"{cells[z, col].printed:.2f} / {cells[z, col].computed:.2f}"
                                 f"{_MARK[cells[z, col].status]}" for col in TABLE1_COLUMNS))

@@ -518,14 +518,45 @@ def circle_guiding(delta: float, a: float, dwell: float, *, guess: tuple | None 
     whole-turn line (2α = 360°, :func:`whole_turn_line`); 2α = 360° itself is :func:`whole_turn_guiding`.
     Near the span's ends, where r → 0, a design at a frame ten times further inside is followed in a
     (:func:`_from_inside`); where hybr stalls, scipy's ``least_squares`` polishes.
-    ``guess`` = (r, k, t3, t2) tries a neighbouring solution first; ``minimax=False`` skips the
-    (slower) Nelder-Mead fallback.
 
-    Raises NoDesignError where no design is returned, with ``kind`` and the evidence:
-    ``"frame"`` (a outside the region's span), ``"rotation"`` (the crank reaches the rotation limit at
-    2α = ``dwell_max`` < 2α), ``"fold"`` (above A the designs start at 2α = ``dwell_min``),
-    ``"resolution"`` (a band of half-width ``bound`` < RESOLUTION about Q = C + e/``k`` with crank
-    ``r`` holds D: the ripple is below what double precision resolves), ``"whole turn"``.
+    Parameters
+    ----------
+    delta : float
+        Break angle δ of the lambda mechanism (rad), in (0, 2π).
+    a : float
+        Frame length l_OC (units of l), in (0, 2).
+    dwell : float
+        The dwell's crank angle 2α (rad), in (0, 2π].
+    guess : tuple of float, optional
+        (r, k, t3, t2) of a neighbouring solution, tried first.
+    minimax : bool
+        False skips the (slower) Nelder-Mead fallback.
+
+    Returns
+    -------
+    CircleGuide
+        The design: crank r, band centre Q, radius R and half-width E (units of l).
+
+    Raises
+    ------
+    NoDesignError
+        No design, with ``kind`` and the evidence: ``"frame"`` (a outside the region's span),
+        ``"rotation"`` (the crank reaches the rotation limit at 2α = ``dwell_max`` < 2α), ``"fold"``
+        (above A the designs start at 2α = ``dwell_min``), ``"resolution"`` (a band of half-width
+        ``bound`` < RESOLUTION about Q = C + e/``k`` with crank ``r`` holds D: the ripple is below
+        what double precision resolves), ``"whole turn"``.
+    SynthesisError
+        a ≥ 2, or the equal-ripple solve fails.
+    DimensionError
+        δ, a, 2α or ``guess`` out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> round(guide.r, 6), round(guide.R, 4), f"{guide.E:.3g}"
+    (0.214482, 0.606, '7.59e-05')
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "circle guiding")
     minimax = check_value("minimax", minimax, Flag.__metadata__[0])
@@ -544,9 +575,32 @@ MAX_OUTCOMES = 1000  # requests per map: each is a synthesis (up to ~1 s near th
 
 @dataclass(frozen=True)
 class DesignOutcomes:
-    """What :func:`circle_guiding` returns over a grid of frames ``a`` (the span ``span`` = (lo, hi) of the
-    existence region, ends included) and dwells ``dwell`` (rad) for break angle ``delta``: ``kind[i, j]``
-    is ``"design"``, the refusal's kind (:class:`NoDesignError`) or ``"unresolved"`` for frame i, dwell j."""
+    """What :func:`circle_guiding` returns over a grid of frames and dwells (:func:`design_outcomes`).
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ (rad).
+    span : tuple of float
+        (lo, hi): the existence region's span of frames a, ends included.
+    fraction : numpy.ndarray
+        Each frame's place in the span: 0 at its lower end, 1 at its upper end.
+    a : numpy.ndarray
+        The frames (units of l).
+    dwell : numpy.ndarray
+        The dwells 2α (rad).
+    kind : numpy.ndarray of str
+        ``kind[i, j]`` is ``"design"``, the refusal's kind (:class:`NoDesignError`) or
+        ``"unresolved"`` for frame i, dwell j.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> outcomes = ml.design_outcomes(np.radians(150), fractions=(0.0, 0.5), dwells=(np.radians(60),))
+    >>> outcomes.kind.tolist()  # a = 0 is no frame
+    [['frame'], ['design']]
+    """
 
     delta: float
     span: tuple[float, float]
@@ -559,7 +613,35 @@ class DesignOutcomes:
 def design_outcomes(delta: float, fractions=OUTCOME_FRACTIONS, dwells=OUTCOME_DWELLS) -> DesignOutcomes:
     """:func:`circle_guiding` (``minimax=False``) at every frame ``lo + f (hi − lo)`` for ``f`` in ``fractions``
     of the existence region's span and every dwell 2α in ``dwells`` (rad): a map of where designs exist
-    and why the rest are refused (at most MAX_OUTCOMES requests)."""
+    and why the rest are refused.
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ (rad), in (0, 2π).
+    fractions : array_like
+        Places of the frames in the span, in [0, 1].
+    dwells : array_like
+        Dwells 2α (rad), in (0, 2π].
+
+    Returns
+    -------
+    DesignOutcomes
+        The frames, the dwells and each request's outcome.
+
+    Raises
+    ------
+    DimensionError
+        An argument out of range, empty, or more than MAX_OUTCOMES requests.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> outcomes = ml.design_outcomes(np.radians(150), fractions=(0.5,), dwells=(np.radians(60), np.radians(120)))
+    >>> outcomes.kind.tolist(), round(float(outcomes.a[0]), 4)
+    ([['design', 'design']], 0.6088)
+    """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     fractions = np.atleast_1d(check_value("fractions", fractions, Spec("reals", 0.0, 1.0, why="fractions of the span")))
     dwells = np.atleast_1d(check_value("dwells", dwells,
@@ -740,6 +822,39 @@ def thesis_iteration(delta: float, a: float, dwell: float, tol: float = 1e-6, ma
     have no solution, a + r leaves (0, 2), the fixed point is not a design or ``maxiter`` steps do not
     settle; the scheme is a fixed-point iteration without a convergence proof, so it may fail where
     :func:`circle_guiding` finds a design.
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ of the lambda mechanism (rad), in (0, 2π).
+    a : float
+        Frame length l_OC (units of l), in (0, 2).
+    dwell : float
+        The dwell's crank angle 2α (rad), in (0, 2π].
+    tol : float
+        ε of the stopping rule, in [1e-14, 1] (default 1e-6).
+    maxiter : int
+        Most steps, in [1, 10000] (default 200).
+
+    Returns
+    -------
+    ThesisIteration
+        r, the number of steps and every step's (r0, r1, μ0, μ1, μ3, μ2).
+
+    Raises
+    ------
+    SynthesisError
+        The iteration does not converge to a design, or a ≥ 2.
+    DimensionError
+        An argument out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> it = ml.thesis_iteration(np.radians(150), 0.9, np.radians(60))
+    >>> round(it.r, 7), it.steps
+    (0.1831762, 8)
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "thesis iteration")
     maxiter = int(_bounded("maxiter", maxiter, 1, 10_000))
@@ -820,6 +935,35 @@ def straight_guiding(delta: float, a: float, dwell: float) -> StraightGuide:
     family is not Haar) two alternate touches suffice. ``touches`` lists them (thesis angles t ≥ 0).
     Chebyshev's lambda (δ = π, a = 0.8) comes out r = 0.4 for every 2α from 180° to 208.955°
     (x(0) = x(±90°) = 1.6, x'(±90°) = 0, E = 1.9507·10⁻³).
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ of the lambda mechanism (rad), in (0, 2π).
+    a : float
+        Frame length l_OC (units of l), in (0, 2).
+    dwell : float
+        The dwell's crank angle 2α (rad), in (0, 2π].
+
+    Returns
+    -------
+    StraightGuide
+        The design: crank r, the line's offset Y and half-width E (units of l), and the touches.
+
+    Raises
+    ------
+    SynthesisError
+        No minimum of E(r) inside the crank's range, 2α = 360°, or a ≥ 2.
+    DimensionError
+        δ, a or 2α out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)  # Chebyshev's lambda
+    >>> round(guide.r, 6), round(guide.E, 7)
+    (0.4, 0.0019507)
     """
     delta, a, dwell = _check_inputs(delta, a, dwell, "straight-line guiding")
     alpha = dwell / 2
@@ -891,8 +1035,39 @@ def _polish_straight(delta, a, alpha, r):
 @validated
 def band_touches(deviation: Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)],
                  E: Annotated[float, number(0.0)], rtol: Annotated[float, number(0.0, 1.0)] = 1e-6) -> np.ndarray:
-    """Indices where a sampled deviation reaches ±E (local extrema of |dev| within rtol·E of E),
-    with alternating signs required: used by the tests to find touches rather than assume them."""
+    """Indices where a sampled deviation reaches ±E (local extrema of |dev| within rtol·E of E).
+
+    Used by the tests to find a band's touches rather than assume them.
+
+    Parameters
+    ----------
+    deviation : array_like
+        Sampled deviation from the band's middle (units of l).
+    E : float
+        The band's half-width, ≥ 0.
+    rtol : float
+        Relative tolerance on E, in [0, 1] (default 1e-6).
+
+    Returns
+    -------
+    numpy.ndarray of int
+        The indices of the touches (the ends included where they touch).
+
+    Raises
+    ------
+    DimensionError
+        ``deviation`` not finite samples, or ``E`` or ``rtol`` out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> t = np.linspace(-guide.alpha, guide.alpha, 2001)
+    >>> touches = ml.band_touches(guide.deviation(np.pi + t), guide.E, 1e-4)
+    >>> np.round(np.degrees(t[touches]), 1).tolist()  # seven alternating touches (Chebyshev)
+    [-60.0, -51.7, -29.5, 0.0, 29.5, 51.7, 60.0]
+    """
     dev = np.asarray(deviation)
     idx = [0] + list(_interior_extrema(dev, np.arange(len(dev)))) + [len(dev) - 1]
     return np.array([i for i in idx if abs(abs(dev[i]) - E) <= rtol * E + 1e-15])
@@ -922,7 +1097,32 @@ class TransmissionLines:
 def transmission_lines(mu_min: TransmissionAngle = np.pi / 6, mu_max: TransmissionAngle = 5 * np.pi / 6,
                        n: Annotated[int, count(2, MAX_SAMPLES)] = 101) -> TransmissionLines:
     """Working region of the base four-bar: μ = ∠ABC ranges over [2 asin(|a−r|/2), 2 asin((a+r)/2)],
-    so μ ≥ μ_min is the line a − r = 2 sin(μ_min/2) and μ ≤ μ_max is a + r = 2 sin(μ_max/2)."""
+    so μ ≥ μ_min is the line a − r = 2 sin(μ_min/2) and μ ≤ μ_max is a + r = 2 sin(μ_max/2).
+
+    Parameters
+    ----------
+    mu_min, mu_max : float
+        Transmission angle limits (rad), in (0, π), μ_min < μ_max (default 30° and 150°).
+    n : int
+        Points per line, ≥ 2 (default 101).
+
+    Returns
+    -------
+    TransmissionLines
+        ``mu_min`` and ``mu_max``, each a pair of arrays (r, a).
+
+    Raises
+    ------
+    DimensionError
+        A limit out of range, μ_min ≥ μ_max, or ``n`` < 2.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> lines = ml.transmission_lines(n=3)
+    >>> [round(float(a), 4) for a in lines.mu_min[1]]  # a = r + 2 sin(15°)
+    [0.5176, 1.0176, 1.5176]
+    """
     if mu_min >= mu_max:
         raise DimensionError(f"mu_min must be < mu_max, got {np.degrees(mu_min):.4g}° ≥ {np.degrees(mu_max):.4g}°")
     s1, s2 = 2 * np.sin(mu_min / 2), 2 * np.sin(mu_max / 2)
@@ -936,8 +1136,33 @@ def fifth_order_line(delta: float, n: int = 200) -> tuple[np.ndarray, np.ndarray
     ρ² about Q = C + c·e is F(μ) = ρ_C² + c² − (c/a)(ρ_C d + g ρ_C/d) with d = 2 sin(μ/2),
     ρ_C = 2 sin((δ − μ)/2), g = a² − r². As μ − μ0 ∝ t² near t = 0, six-point contact at
     D0 means F'(μ0) = F''(μ0) = 0: linear in w = a/c and g, then a + r = 2 sin(μ0/2)
-    and a − r = g/(a + r). Returns (r, a, k = 1/c) along the line, parametrised by μ0 ∈ (0, δ)
-    (k = 0 where the contact circle is a straight line).
+    and a − r = g/(a + r).
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ (rad), in (0, 2π).
+    n : int
+        Samples of μ0 ∈ (0, δ), ≥ 2 (default 200).
+
+    Returns
+    -------
+    r, a, k : numpy.ndarray
+        The line's points where the crank turns fully, and k = 1/c (0 where the contact circle is
+        a straight line).
+
+    Raises
+    ------
+    DimensionError
+        ``delta`` or ``n`` out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> r, a, k = ml.fifth_order_line(np.radians(150), 5)
+    >>> np.round(r, 4).tolist(), np.round(a, 4).tolist()
+    ([0.0005, 0.218], [0.0005, 0.4254])
     """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     n = int(_bounded("n", n, 2, MAX_SAMPLES))
@@ -1015,6 +1240,35 @@ def whole_turn_line(delta: float, ds: float = 0.02, r_start: float = 0.005) -> W
     numerically: there κ → 1/a, t3 → 60°, t2 → 120°), until it leaves the crank-rocker region:
     on r = a for δ < 120°, at (1, 1) for δ = 120° and on r + a = 2 for δ > 120°.
     For a < 1 beyond that end the iso-dwell lines crowd onto r = a instead (2α → 360° as r → a).
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ (rad), in (0, 2π).
+    ds : float
+        Continuation step, in [1e-3, 0.2] (default 0.02).
+    r_start : float
+        Crank r of the first point, in [1e-4, 0.05] (default 0.005).
+
+    Returns
+    -------
+    WholeTurnLine
+        The line's r, a, band offset c and touch angles t3, t2 (arrays).
+
+    Raises
+    ------
+    SynthesisError
+        No whole-turn line starts near r = 0.
+    DimensionError
+        An argument out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> line = ml.whole_turn_line(np.radians(150), ds=0.1)
+    >>> round(float(line.a.max()), 4)  # the point A: a = 2 sin(δ/4)
+    1.2175
     """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     ds = _bounded("ds", ds, 1e-3, 0.2)
@@ -1049,8 +1303,40 @@ def whole_turn_line(delta: float, ds: float = 0.02, r_start: float = 0.005) -> W
 def whole_turn_guiding(delta: float, a: float, line: WholeTurnLine | None = None) -> CircleGuide:
     """The circle-guiding design with 2α = 360° for frame a: the point of :func:`whole_turn_line`
     at that a, polished by a solve at fixed a; a CircleGuide with dwell = 2π whose band holds D over
-    the whole turn (checked on 4001 points). SynthesisError if the line misses a. ``line``: the
-    already traced :func:`whole_turn_line` of this δ (saves tracing it again)."""
+    the whole turn (checked on 4001 points).
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ (rad), in (0, 2π).
+    a : float
+        Frame length (units of l), in (0, 2).
+    line : WholeTurnLine, optional
+        The already traced :func:`whole_turn_line` of this δ (saves tracing it again).
+
+    Returns
+    -------
+    CircleGuide
+        The design with dwell 2π.
+
+    Raises
+    ------
+    SynthesisError
+        The line misses a, the solve does not converge or the fit leaves its band.
+    DimensionError
+        δ or a out of range.
+    TypeError
+        ``line`` is not a WholeTurnLine.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> delta = np.radians(150)
+    >>> guide = ml.whole_turn_guiding(delta, 1.2, line=ml.whole_turn_line(delta, ds=0.1))
+    >>> round(guide.r, 5), round(guide.E, 5)
+    (0.37827, 0.04855)
+    """
     delta, a, _ = _check_inputs(delta, a, 2 * np.pi, "whole-turn circle guiding")
     line = whole_turn_line(delta) if line is None else check_value("line", line, mechanism(WholeTurnLine))
     i = np.nonzero(np.sign(line.a[1:] - a) * np.sign(line.a[:-1] - a) <= 0)[0]
@@ -1079,7 +1365,37 @@ def existence_region(delta: float, line: WholeTurnLine | None = None) -> tuple[n
     line (2α → 0) from its lower end (0, a_lo) to A = (0, 2 sin(δ/4)), along the whole-turn line
     (2α = 360°) to the rotation limit, down the rotation limit r = min(a, 2 − a) to a = a_lo, and back to
     (0, a_lo); a_lo = 2 sin((δ − π)/2) for δ > π (where the fifth-order line leaves r = 0), else 0.
-    Checked by designs of :func:`circle_guiding` inside it and refusals outside (tests, δ = 150°, 240°)."""
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ (rad), in (0, 2π).
+    line : WholeTurnLine, optional
+        The already traced :func:`whole_turn_line` of this δ.
+
+    Returns
+    -------
+    r, a : numpy.ndarray
+        The closed polygon's vertices (units of l).
+
+    Raises
+    ------
+    SynthesisError
+        The whole-turn line cannot be traced.
+    DimensionError
+        ``delta`` out of range.
+    TypeError
+        ``line`` is not a WholeTurnLine.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> delta = np.radians(150)
+    >>> r, a = ml.existence_region(delta, line=ml.whole_turn_line(delta, ds=0.1))
+    >>> (float(r[0]), float(a[0])) == (float(r[-1]), float(a[-1])), round(float(a.max()), 4)
+    (True, 1.2175)
+    """
     r5, a5 = fifth_order_line(delta, 200)[:2]
     wt = whole_turn_line(delta) if line is None else check_value("line", line, mechanism(WholeTurnLine))
     a_lo = _frame_span(delta)[0]
@@ -1112,7 +1428,37 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
                   n: int = 25) -> ExistenceMap:
     """The curves of Fig. 2a for break angle δ (:class:`ExistenceMap`); the iso-dwell curves by
     continuation in a, the whole-turn line by :func:`whole_turn_line`, the region by
-    :func:`existence_region`; ``n`` frames a per iso-dwell curve (at most MAX_ISO_POINTS)."""
+    :func:`existence_region`.
+
+    Parameters
+    ----------
+    delta : float
+        Break angle δ (rad), in (0, 2π).
+    dwells : array_like
+        Dwells 2α (rad) of the iso-dwell curves (default 60°, 120°, 180°, 240°).
+    n : int
+        Frames a per iso-dwell curve, in [2, MAX_ISO_POINTS] (default 25).
+
+    Returns
+    -------
+    ExistenceMap
+        The curves, each a pair of arrays (r, a); ``iso_dwell`` keyed by the dwell in degrees.
+
+    Raises
+    ------
+    SynthesisError
+        The whole-turn line cannot be traced.
+    DimensionError
+        An argument out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> curves = ml.existence_map(np.radians(150), dwells=(np.radians(120),), n=3)
+    >>> list(curves.iso_dwell), np.round(curves.iso_dwell[120][0], 4).tolist()
+    ([120], [0.0441, 0.1625])
+    """
     delta = _angle("δ", delta, 0.0, 2 * np.pi, closed_hi=False)
     n = int(_bounded("n", n, 2, MAX_ISO_POINTS))
     dwells = [_angle("dwell 2α", w, 0.0, 2 * np.pi)

@@ -49,7 +49,34 @@ __all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_t
 @validated
 def time_ratio_far_angle(K: TimeRatio, dwell: DwellAngle) -> float:
     """Crank angle φ_n from the end of the dwell to the far extreme: K = φ_n / (2π − 2α − φ_n),
-    so φ_n = 2K(π − α)/(1 + K) (Kinitsky (1994), (14)-(15))."""
+    so φ_n = 2K(π − α)/(1 + K) (Kinitsky (1994), (14)-(15)).
+
+    Parameters
+    ----------
+    K : float
+        Time ratio, > 0.
+    dwell : float
+        Crank angle of the dwell 2α (rad), in (0, 2π).
+
+    Returns
+    -------
+    float
+        φ_n (rad).
+
+    Raises
+    ------
+    InfeasibleDesignError
+        ``K`` is not a positive number.
+    DimensionError
+        ``dwell`` outside (0, 2π).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> round(ml.time_ratio_far_angle(1.0, 2 * np.pi / 3), 4)  # 120°: half of what the dwell leaves
+    2.0944
+    """
     alpha = dwell / 2
     return 2 * K * (np.pi - alpha) / (1 + K)
 
@@ -91,6 +118,45 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
     of the base four-bar or the angle D-E-F of the attached dyad leaves the working range
     [μ_min, 180° − μ_min] over the turn (Kinitsky (1994), §1.8: 30° ≤ μ ≤ 150°, the figure "cnm" of
     Fig. 2a); pass ``mu_min=None`` to get such a design anyway.
+
+    Parameters
+    ----------
+    guide : CircleGuide
+        A circle-guiding lambda mechanism (:func:`circle_guiding`).
+    K : float
+        Time ratio, > 0.
+    swing : float
+        The rocker's swing β_m (rad), in (0, π).
+    side : {1, -1}
+        Side of the chord O1-E1 on which the rocker's pivot F lies.
+    mu_min : float, optional
+        Least admitted transmission angle (rad); None accepts any (default 30°).
+
+    Returns
+    -------
+    LambdaRockerSixBar
+        The six-bar, lengths in units of the crank's l.
+
+    Raises
+    ------
+    InfeasibleDesignError
+        K, β_m or the geometry admit no mechanism (the message names the condition).
+    TransmissionAngleError
+        A transmission angle leaves [μ_min, 180° − μ_min] over the turn.
+    DimensionError
+        ``swing`` outside (0, π), or ``side`` not ±1.
+    TypeError
+        ``guide`` is not a CircleGuide.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> six = ml.mchv1(guide, 1.0, np.radians(20))
+    >>> psi = six.motion(np.array([0.0, np.pi])).psi  # the far extreme and the dwell's centre
+    >>> round(float(np.degrees(abs(psi[0] - psi[1]))), 2)
+    20.0
     """
     swing = check_value("swing", swing, Spec("angle", MIN_SWING, np.pi, open_hi=True))
     m, alpha, R, Q = guide.mechanism, guide.alpha, guide.R, guide.centre
@@ -181,7 +247,37 @@ def _line_frame(guide: StraightGuide):
 @validated
 def mchv3_oscillating(guide: Straight, distance: Length) -> LambdaSlottedSixBar:
     """МЧВ3-1М: pivot on the straight line, ``distance`` (units of l) beyond the end D1 of the
-    straight part: the slot stays along the line during the dwell, the link oscillates."""
+    straight part: the slot stays along the line during the dwell, the link oscillates.
+
+    Parameters
+    ----------
+    guide : StraightGuide
+        A straight-line guiding lambda mechanism (:func:`straight_guiding`).
+    distance : float
+        How far past the end of the straight part the pivot lies (units of l), > 0.
+
+    Returns
+    -------
+    LambdaSlottedSixBar
+        The six-bar with an oscillating slotted link.
+
+    Raises
+    ------
+    TypeError
+        ``guide`` is not a StraightGuide.
+    DimensionError
+        ``distance`` is not a positive length.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)
+    >>> six = ml.mchv3_oscillating(guide, 0.1)
+    >>> psi = six.motion(np.pi + np.linspace(-np.pi / 2, np.pi / 2, 101)).psi
+    >>> round(float(np.degrees(np.ptp(psi))), 2)  # residual motion over the 180° dwell, degrees
+    1.4
+    """
     m, e, foot = _line_frame(guide)
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
     along = np.array([-e[1], e[0]])
@@ -191,7 +287,31 @@ def mchv3_oscillating(guide: Straight, distance: Length) -> LambdaSlottedSixBar:
 
 @validated
 def mchv3_half_turn(guide: Straight) -> LambdaSlottedSixBar:
-    """МЧВ3-2М: pivot on the straight part of the path (at D0): 180° per crank turn with a dwell."""
+    """МЧВ3-2М: pivot on the straight part of the path (at D0): 180° per crank turn with a dwell.
+
+    Parameters
+    ----------
+    guide : StraightGuide
+        A straight-line guiding lambda mechanism (:func:`straight_guiding`).
+
+    Returns
+    -------
+    LambdaSlottedSixBar
+        The six-bar whose slotted link turns half a turn per crank turn.
+
+    Raises
+    ------
+    TypeError
+        ``guide`` is not a StraightGuide.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)
+    >>> float(ml.mchv3_half_turn(guide).turns)
+    -0.5
+    """
     m = guide.mechanism
     P = m.coupler_point(np.array([np.pi]))[0]
     return LambdaSlottedSixBar(m.r, m.a, m.delta, float(P[0]), float(P[1]), 0.0, guide.dwell)
@@ -201,8 +321,38 @@ def mchv3_half_turn(guide: Straight) -> LambdaSlottedSixBar:
 def rise_law(mech: SixBar, dwell: DwellAngle, n: Annotated[int, count(2)] = 4001):
     """Output law over the rise: from the end of the dwell (φ = π + α) to the far extreme.
 
-    Returns (φ, ψ, ψ', ψ'') sampled on n points, ready for
-    :func:`mechlab.analysis.motion_laws.rise_invariants` (Kinitsky (1994), chapter 2)."""
+    Sampled for :func:`mechlab.analysis.motion_laws.rise_invariants` (Kinitsky (1994), chapter 2).
+
+    Parameters
+    ----------
+    mech : LambdaRockerSixBar or LambdaSlottedSixBar
+        A rotary-output dwell six-bar.
+    dwell : float
+        The dwell's crank angle 2α (rad), in (0, 2π).
+    n : int
+        Samples, ≥ 2 (default 4001).
+
+    Returns
+    -------
+    phi, psi, dpsi, ddpsi : numpy.ndarray
+        Crank angles (rad), ψ (rad), ψ′ and ψ″ over the rise.
+
+    Raises
+    ------
+    TypeError
+        ``mech`` is not a lambda six-bar with a rotating output.
+    DimensionError
+        ``dwell`` outside (0, 2π), or ``n`` < 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> phi, psi, dpsi, ddpsi = ml.rise_law(ml.mchv1(guide, 1.0, np.radians(20)), guide.dwell, n=11)
+    >>> round(float(np.degrees(phi[0])), 1), round(float(np.degrees(phi[-1])), 1)
+    (240.0, 360.0)
+    """
     far = _far_extreme(mech, dwell)
     start = np.pi + dwell / 2
     end = far if far > start else far + TWO_PI
@@ -230,6 +380,39 @@ def mchv3_full_turn(guide: Straight, beyond: Distance = 0.06, depth: Length = 0.
     from the line, ≤ E). With 2α = 180° the curve leaves ≤ 0.065 l for the pivot past the dwell end, so
     over the full 180° the defaults give 2.15° and the best pivot 2.01° (:func:`mchv3_full_turn_best`):
     ~2° is inherent there; a guide designed for a shorter dwell does better (160°: 0.94°, 140°: 0.55°).
+
+    Parameters
+    ----------
+    guide : StraightGuide
+        A straight-line guiding lambda mechanism (:func:`straight_guiding`).
+    beyond : float
+        Pivot past the end of the dwell part (units of l), ≥ 0 (default 0.06).
+    depth : float
+        Pivot into the curve and the slot's offset (units of l), > 0 (default 0.05).
+    side : {1, -1}
+        Which end of the dwell part.
+
+    Returns
+    -------
+    LambdaSlottedSixBar
+        The six-bar whose slotted link turns once per crank turn.
+
+    Raises
+    ------
+    InfeasibleDesignError
+        The pivot is not inside the coupler curve (or the slot cannot reach the pin).
+    TypeError
+        ``guide`` is not a StraightGuide.
+    DimensionError
+        ``beyond``, ``depth`` or ``side`` out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)
+    >>> float(ml.mchv3_full_turn(guide).turns)
+    -1.0
     """
     m, e, foot = _line_frame(guide)
     along = np.array([-e[1], e[0]])
@@ -256,7 +439,37 @@ def mchv3_full_turn(guide: Straight, beyond: Distance = 0.06, depth: Length = 0.
 @validated
 def dwell_extent(mech: SixBar, tol: Annotated[float, number(0.0, 1.0, open=True)] = 0.02,
                  n: Annotated[int, count(3)] = 2881) -> float:
-    """Crank angle around φ = π over which |ψ'| stays below tol·max|ψ'| (the usable dwell)."""
+    """Crank angle around φ = π over which |ψ'| stays below tol·max|ψ'| (the usable dwell).
+
+    Parameters
+    ----------
+    mech : LambdaRockerSixBar or LambdaSlottedSixBar
+        A rotary-output dwell six-bar.
+    tol : float
+        Share of the peak |ψ′|, in (0, 1) (default 0.02).
+    n : int
+        Samples of the cycle, ≥ 3 (default 2881).
+
+    Returns
+    -------
+    float
+        The usable dwell (rad); 0 when the output moves at φ = π.
+
+    Raises
+    ------
+    TypeError
+        ``mech`` is not a lambda six-bar with a rotating output.
+    DimensionError
+        ``tol`` or ``n`` out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)
+    >>> round(float(np.degrees(ml.dwell_extent(ml.mchv3_full_turn(guide)))), 1)
+    237.9
+    """
     phi = mech.cycle(n)
     d = np.abs(mech.motion(phi).dpsi)
     still = d <= tol * d.max()
@@ -285,7 +498,37 @@ def slot_residual_first_order(mech: Annotated[LambdaSlottedSixBar, mechanism(Lam
     the foot of P (the tangent point), the tangent turns about that point by atan(h/s) ≈ h/s. So the
     residual motion over the dwell is ≈ ptp(h/s): the straightness E of the guide divided by D's
     distance from the pivot's foot, worst at the dwell end nearest the pivot (E/beyond).
-    Returns h/s (compare differences: the simulated ψ − ψ(φ0) ≈ ±(h/s − (h/s)(φ0)))."""
+
+    Parameters
+    ----------
+    mech : LambdaSlottedSixBar
+        An МЧВ3-3М (:func:`mchv3_full_turn`).
+    guide : StraightGuide
+        The straight-line guide it was built on.
+    phi : float or array_like
+        Crank angles (rad).
+
+    Returns
+    -------
+    numpy.ndarray
+        h/s (rad): compare differences, the simulated ψ − ψ(φ0) ≈ ±(h/s − (h/s)(φ0)).
+
+    Raises
+    ------
+    TypeError
+        ``mech`` or ``guide`` of the wrong kind.
+    DimensionError
+        ``phi`` is not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)
+    >>> turn = ml.slot_residual_first_order(ml.mchv3_full_turn(guide), guide, np.array([np.pi - 0.5, np.pi + 0.5]))
+    >>> np.round(turn, 5).tolist()
+    [-0.00023, -0.00044]
+    """
     m = mech.base
     x, y = m.axis_coordinates(phi)
     e = m.axis
@@ -316,6 +559,42 @@ def mchv3_full_turn_best(guide: Straight, side: Sign = 1,
     (ψ' 13.4, ψ'' 276); without the speed bound 2.03° with ψ' ≈ 96. A free Nelder-Mead over P and e
     at the default's clearance gives 2.12°. So the ~2° is inherent to a 180° straight part, not a poor
     choice of pivot. Shorter dwells leave the pivot room: a guide for 2α = 160° gives 0.94°, 140° 0.55°.
+
+    Parameters
+    ----------
+    guide : StraightGuide
+        A straight-line guiding lambda mechanism (:func:`straight_guiding`).
+    side : {1, -1}
+        Which end of the dwell part.
+    max_speed : float, optional
+        Largest admitted peak |ψ′| over the turn (default 15); None: no limit.
+    beyonds, depths : array_like
+        The scan's grids of pivot positions (units of l).
+
+    Returns
+    -------
+    mechanism : LambdaSlottedSixBar
+        The best МЧВ3-3М found.
+    residual : float
+        Its simulated residual, the range of ψ over the guide's dwell (rad).
+
+    Raises
+    ------
+    InfeasibleDesignError
+        No pivot on the grids gives a full-turn link within ``max_speed``.
+    TypeError
+        ``guide`` is not a StraightGuide.
+    DimensionError
+        ``side``, ``max_speed`` or a grid out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)
+    >>> six, residual = ml.mchv3_full_turn_best(guide)
+    >>> round(float(np.degrees(residual)), 2)
+    2.01
     """
     m, e, foot = _line_frame(guide)
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
@@ -368,7 +647,41 @@ def mchv3_pivot_table(guide: Straight, beyonds: Grid = (0.0, 0.03, 0.06), depth:
     """МЧВ3-3М (:func:`mchv3_full_turn`) with its pivot moved along the line past the guide's dwell part:
     per pivot the turns, the residual (range of ψ over the guide's dwell 2α, ``n`` samples) and the
     usable dwell of :func:`dwell_extent`. The residual falls as the pivot moves away (to first order
-    h/s, :func:`slot_residual_first_order`; Kinitsky, 1994, МЧВ3-3М as reconstructed in chapter 8)."""
+    h/s, :func:`slot_residual_first_order`; Kinitsky, 1994, МЧВ3-3М as reconstructed in chapter 8).
+
+    Parameters
+    ----------
+    guide : StraightGuide
+        A straight-line guiding lambda mechanism (:func:`straight_guiding`).
+    beyonds : array_like
+        Pivot positions past the dwell part (units of l).
+    depth : float
+        Pivot depth into the curve (units of l).
+    n : int
+        Samples over the dwell, ≥ 3 (default 1201).
+
+    Returns
+    -------
+    Table
+        One ``PivotRow`` per pivot (angles in degrees).
+
+    Raises
+    ------
+    InfeasibleDesignError
+        A pivot is not inside the coupler curve.
+    TypeError
+        ``guide`` is not a StraightGuide.
+    DimensionError
+        ``beyonds``, ``depth`` or ``n`` out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)
+    >>> [round(row.residual, 2) for row in ml.mchv3_pivot_table(guide)]
+    [16.14, 3.88, 2.15]
+    """
     dw = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, n) + 1e-5  # off φ = π, where the slot turns over
     rows = []
     for beyond in beyonds:
@@ -396,8 +709,41 @@ def mchv3_best_table(dwells: Angles, delta: DwellAngle = np.pi, a: Length = 0.8,
                      depths: Grid | None = None) -> Table:
     """The best МЧВ3-3М (:func:`mchv3_full_turn_best`) on the straight guide (:func:`straight_guiding`, δ, a)
     of each dwell 2α in ``dwells`` (radians): where its pivot lies past the end of the dwell part and how
-    deep inside the curve, its residual over 2α and its peak |ψ'| over the turn; ``beyonds``, ``depths``:
-    the scan's grids (None: those of :func:`mchv3_full_turn_best`)."""
+    deep inside the curve, its residual over 2α and its peak |ψ'| over the turn.
+
+    Parameters
+    ----------
+    dwells : array_like
+        The guides' dwells 2α (rad).
+    delta : float
+        Break angle δ of the lambda mechanism (rad, default π).
+    a : float
+        Frame length (units of l, default 0.8).
+    beyonds, depths : array_like, optional
+        The scan's grids; None: those of :func:`mchv3_full_turn_best`.
+
+    Returns
+    -------
+    Table
+        One ``BestPivotRow`` per dwell (lengths in l, angles in degrees).
+
+    Raises
+    ------
+    SynthesisError
+        No straight-line guide exists for a dwell.
+    InfeasibleDesignError
+        No pivot on the grids gives a full-turn link.
+    DimensionError
+        An argument out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> row = list(ml.mchv3_best_table(np.radians([160.0])))[0]
+    >>> round(row.residual, 2), round(row.past, 3)
+    (0.94, 0.165)
+    """
     grids = {k: v for k, v in (("beyonds", beyonds), ("depths", depths)) if v is not None}
     rows = []
     for dwell in dwells:

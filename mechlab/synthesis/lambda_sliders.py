@@ -43,8 +43,43 @@ __all__ = ["mchv2", "mchv2_stroke", "mchv2_far_position", "mchv5", "SliderReport
 @validated
 def mchv2_far_position(guide: Circle, K: TimeRatio, normal: Sign = 1):
     """The far crank angle φ_far = π + α + φ_n and the far position E1 = D1 + R·n of the slider
-    for a time ratio K (n the unit normal to D's path at D1, on the side of Q for ``normal`` = +1 as
-    in МЧВ1's Fig. 3, on the other side for −1). Returns (φ_far, D1, E1)."""
+    for a time ratio K.
+
+    Parameters
+    ----------
+    guide : CircleGuide
+        A circle-guiding lambda mechanism (:func:`circle_guiding`).
+    K : float
+        Time ratio, > 0.
+    normal : {1, -1}
+        n is the unit normal to D's path at D1, on the side of Q for +1 (as in МЧВ1's Fig. 3),
+        on the other side for −1.
+
+    Returns
+    -------
+    phi_far : float
+        The far crank angle (rad; beyond 2π when the far extreme follows φ = 2π).
+    D1, E1 : numpy.ndarray
+        The coupler point and the slider there (units of l).
+
+    Raises
+    ------
+    TypeError
+        ``guide`` is not a CircleGuide.
+    InfeasibleDesignError
+        ``K`` is not a positive number.
+    DimensionError
+        ``normal`` is not ±1.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> phi_far, D1, E1 = ml.mchv2_far_position(guide, 1.25)
+    >>> round(float(np.degrees(phi_far)), 2), np.round(E1, 4).tolist()
+    (373.33, [1.6784, 2.0975])
+    """
     m, Q = guide.mechanism, guide.centre
     phi_far = np.pi + guide.alpha + time_ratio_far_angle(K, guide.dwell)
     D1 = m.motion(np.array([phi_far])).points["D"]
@@ -77,6 +112,40 @@ def mchv2(guide: Circle, K: TimeRatio = 1.0, *, normal: Annotated[int | None, Sp
     the normal to D's path, at t = α + φ_n, φ_n = 2K(π − α)/(1 + K) ((14)-(15)): E1 = D1 + R·n,
     h = |QE1|; K = 1 gives the least stroke h = R − |QD(0)| (the seed's |D0D1| to within E);
     h(K) = h(1/K). μ2′ = π/2 − β with sin β = (distance of D from the guide)/R.
+
+    Parameters
+    ----------
+    guide : CircleGuide
+        A circle-guiding lambda mechanism (:func:`circle_guiding`).
+    K : float
+        Time ratio, > 0 (default 1).
+    normal : {1, -1}, optional
+        Side of the rod at the far extreme; None tries +1, then −1.
+    mu_min : float, optional
+        Least admitted transmission angle μ2′ (rad, default 30°); None accepts any.
+
+    Returns
+    -------
+    LambdaSliderSixBar
+        МЧВ2, lengths in units of l.
+
+    Raises
+    ------
+    InfeasibleDesignError
+        The design does not work (the message names the condition and the numbers).
+    TypeError
+        ``guide`` is not a CircleGuide.
+    DimensionError
+        ``normal`` or ``mu_min`` out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> report = ml.slider_report(ml.mchv2(guide, 1.0))
+    >>> round(report.stroke, 4), round(report.K, 4)
+    (0.3217, 1.0)
     """
     if normal is not None:
         return _mchv2(guide, K, normal, mu_min)
@@ -139,8 +208,45 @@ def mchv2_stroke(guide: Circle, stroke: Length, side: Sign = 1, K_max: Annotated
     h(K) is smallest at K = 1 (guide on the axis) and, with the mirror symmetry, h(K) = h(1/K);
     ``side`` = +1 returns the solution with K ≥ 1, −1 the one with K ≤ 1. The smallest K on that
     side with h(K) = h is found by a scan of K ∈ [1, ``K_max``] and brentq (``normal`` as in
-    :func:`mchv2`, here fixed: h(K) depends on it; ``mu_min`` as there). Raises
-    InfeasibleDesignError naming the achievable range when h cannot be met.
+    :func:`mchv2`, here fixed: h(K) depends on it; ``mu_min`` as there).
+
+    Parameters
+    ----------
+    guide : CircleGuide
+        A circle-guiding lambda mechanism (:func:`circle_guiding`).
+    stroke : float
+        The slider's stroke h (units of l), > 0.
+    side : {1, -1}
+        +1 for the solution with K ≥ 1, −1 for K ≤ 1.
+    K_max : float
+        Upper end of the scan of K, ≥ 1 (default 20).
+    normal : {1, -1}
+        Side of the rod at the far extreme.
+    mu_min : float, optional
+        Least admitted transmission angle μ2′ (rad, default 30°); None accepts any.
+
+    Returns
+    -------
+    LambdaSliderSixBar
+        МЧВ2 with that stroke.
+
+    Raises
+    ------
+    InfeasibleDesignError
+        The stroke lies outside the achievable range (named), or :func:`mchv2` refuses the K found.
+    TypeError
+        ``guide`` is not a CircleGuide.
+    DimensionError
+        ``stroke``, ``side``, ``K_max`` or ``mu_min`` out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> report = ml.slider_report(ml.mchv2_stroke(guide, 0.35, mu_min=None))
+    >>> round(report.stroke, 4), round(report.K, 3)
+    (0.3501, 1.182)
     """
     h = stroke
 
@@ -198,6 +304,43 @@ def mchv5(guide: Straight, stroke: Annotated[float | None, Spec("length", 0.0, N
     analogs the same projection of D′, D″); with γ = 0, s = x − Y and the residual is exactly 2E,
     a turned guide scales the stroke by 1/cos γ at a constant pressure angle γ. K = 1 whatever γ
     (the curve's symmetry), so K cannot be chosen.
+
+    Parameters
+    ----------
+    guide : StraightGuide
+        A straight-line guiding lambda mechanism (:func:`straight_guiding`).
+    stroke : float, optional
+        The output's stroke h (units of l), ≥ h0.
+    guide_angle : float, optional
+        γ (rad), in (−π/2, π/2); default 0.
+    side : {1, -1}
+        Sign of γ when it follows from ``stroke``.
+    max_pressure : float
+        Largest admitted pressure angle γ (rad, default 60°).
+
+    Returns
+    -------
+    LambdaTranslatingSlot
+        МЧВ5, lengths in units of l.
+
+    Raises
+    ------
+    MechanismError
+        Both ``stroke`` and ``guide_angle`` given.
+    InfeasibleDesignError
+        h < h0, or γ exceeds ``max_pressure``.
+    TypeError
+        ``guide`` is not a StraightGuide.
+    DimensionError
+        An argument out of range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.straight_guiding(np.pi, 0.8, np.pi)
+    >>> round(ml.slider_report(ml.mchv5(guide)).stroke, 4), round(ml.slider_report(ml.mchv5(guide, 0.4)).stroke, 4)
+    (0.3596, 0.4)
     """
     if stroke is not None and guide_angle is not None:
         raise MechanismError("give either the stroke or the guide angle γ, not both")
@@ -257,7 +400,36 @@ class SliderReport:
 @validated
 def slider_report(mech: Slider, dwell: OptionalDwell = None) -> SliderReport:
     """Simulate МЧВ2 or МЧВ5 over a turn (the measures of :func:`.sixbars.report`): residual motion
-    in the dwell centred on φ = π, stroke, far extreme, measured K, transmission angles."""
+    in the dwell centred on φ = π, stroke, far extreme, measured K, transmission angles.
+
+    Parameters
+    ----------
+    mech : LambdaSliderSixBar or LambdaTranslatingSlot
+        МЧВ2 or МЧВ5.
+    dwell : float, optional
+        The dwell's crank angle 2α (rad), in (0, 2π); by default the mechanism's own.
+
+    Returns
+    -------
+    SliderReport
+        dwell, residual, stroke (units of l), far (rad), K, and the transmission angles (rad).
+
+    Raises
+    ------
+    TypeError
+        ``mech`` is not МЧВ2 or МЧВ5.
+    DimensionError
+        ``dwell`` outside (0, 2π).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> report = ml.slider_report(ml.mchv2(guide, 1.0))
+    >>> round(report.stroke, 4), round(float(np.degrees(report.mu2_min)), 1)
+    (0.3217, 53.3)
+    """
     dwell = mech.dwell if dwell is None else dwell
     r = report(_AsAngle(mech), dwell)
     return SliderReport(r.dwell, r.residual, r.swing, r.far, r.K, r.mu_min, r.mu_max, r.mu2_min, r.mu2_max)
@@ -272,6 +444,34 @@ def slider_rise(mech: Slider, dwell: OptionalDwell = None, n: Annotated[int, Spe
 
 @validated
 def slider_invariants(mech: Slider, dwell: OptionalDwell = None) -> Invariants:
-    """B, C, D of the rise (:func:`mechlab.analysis.motion_laws.rise_invariants`; Kinitsky (1994), chapter 2)."""
+    """B, C, D of the rise (:func:`mechlab.analysis.motion_laws.rise_invariants`; Kinitsky (1994), chapter 2).
+
+    Parameters
+    ----------
+    mech : LambdaSliderSixBar or LambdaTranslatingSlot
+        МЧВ2 or МЧВ5.
+    dwell : float, optional
+        The dwell's crank angle 2α (rad), in (0, 2π); by default the mechanism's own.
+
+    Returns
+    -------
+    Invariants
+        B (velocity), C (acceleration), D (kinetic power) of the rise from the dwell's end to the far extreme.
+
+    Raises
+    ------
+    TypeError
+        ``mech`` is not МЧВ2 or МЧВ5.
+    DimensionError
+        ``dwell`` outside (0, 2π).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> guide = ml.circle_guiding(np.radians(150), 0.9, np.radians(120))
+    >>> ml.slider_invariants(ml.mchv2(guide, 1.0))
+    Invariants(B=2.0049, C=10.4420, D=10.1496)
+    """
     return rise_invariants(*slider_rise(mech, dwell))
 

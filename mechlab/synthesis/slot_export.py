@@ -96,7 +96,42 @@ DiscCam = Annotated[Any, mechanism_of((TranslatingRollerCam, OscillatingRollerCa
 @validated
 def slot_profile(mechanism: Designed, roller_radius: Roller = None, n: HalfTurnSamples = 721) -> SlotProfile:
     """The slot of a :class:`~mechlab.synthesis.dwell_slot.DwellSlotMechanism` sampled at n crank angles
-    over [0, π], taken from the curve the solver uses, with flanks at ±ρ."""
+    over [0, π], taken from the curve the solver uses, with flanks at ±ρ.
+
+    Parameters
+    ----------
+    mechanism : DwellSlotMechanism
+        The designed curved-slot dwell mechanism (lengths in mm).
+    roller_radius : float, optional
+        ρ (mm, ≥ 0); by default the mechanism's own; 0 gives no flanks.
+    n : int
+        Crank angles over [0, π], ≥ 2 (default 721).
+
+    Returns
+    -------
+    SlotProfile
+        φ, the distance S from B, the centre line, unit normals, curvature κ and the flanks
+        ``left``, ``right`` (link frame, mm).
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a DwellSlotMechanism.
+    SlotUndercutError
+        ρ is negative, or not below the centre line's smallest radius of curvature.
+    DimensionError
+        ``n`` is not an integer ≥ 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> slot = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), pivot_distance=80.0,
+    ...                             transition="quintic", roller_radius=2.0)
+    >>> profile = ml.slot_profile(slot, n=5)
+    >>> np.round(profile.S, 3).tolist()
+    [120.0, 111.917, 89.443, 58.945, 40.0]
+    """
     rho = mechanism.roller_radius if roller_radius is None else roller_radius
     if rho > 0:
         check_roller(mechanism, rho)
@@ -111,8 +146,42 @@ def slot_profile(mechanism: Designed, roller_radius: Roller = None, n: HalfTurnS
 @validated
 def write_csv(mechanism: Designed, path: Annotated[Any, Spec("path", optional=True)] = None,
               roller_radius: Roller = None, n: HalfTurnSamples = 721) -> str:
-    """The slot as CSV (columns phi_deg, S, x, y, x_left, y_left, x_right, y_right, curvature);
-    written to ``path`` if given; returns the text."""
+    """The slot as CSV (columns phi_deg, S, x, y, x_left, y_left, x_right, y_right, curvature).
+
+    Parameters
+    ----------
+    mechanism : DwellSlotMechanism
+        The designed curved-slot dwell mechanism (lengths in mm).
+    path : str or path-like, optional
+        File to write; nothing is written when None.
+    roller_radius : float, optional
+        ρ (mm, ≥ 0); by default the mechanism's own; 0 gives no flanks.
+    n : int
+        Crank angles over [0, π], ≥ 2 (default 721).
+
+    Returns
+    -------
+    str
+        The CSV text, full precision.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a DwellSlotMechanism.
+    SlotUndercutError
+        ρ is negative, or not below the centre line's smallest radius of curvature.
+    DimensionError
+        ``path`` is not a path, or ``n`` is not an integer ≥ 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> slot = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), pivot_distance=80.0,
+    ...                             transition="quintic", roller_radius=2.0)
+    >>> ml.write_csv(slot, n=5).splitlines()[1].split(",")[:3]
+    ['0.0', '120.0', '120.0']
+    """
     prof = slot_profile(mechanism, roller_radius, n)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
@@ -145,8 +214,30 @@ class Columns:
 def read_csv(path_or_text: FilePath) -> Columns:
     """Columns of a CSV written by :func:`write_csv` or :func:`write_cam_csv` as float arrays.
 
-    ``path_or_text`` is a file's path, or the CSV text itself (it holds a line break); a
-    missing file or text that is not such a table raises DimensionError naming it.
+    Parameters
+    ----------
+    path_or_text : str or path-like
+        A file's path, or the CSV text itself (it holds a line break).
+
+    Returns
+    -------
+    Columns
+        The header's ``names``; ``columns["x"]`` is the column "x" as a float array.
+
+    Raises
+    ------
+    DimensionError
+        A missing file, or text that is not a table of finite numbers under one header row.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> slot = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), pivot_distance=80.0,
+    ...                             transition="quintic", roller_radius=2.0)
+    >>> columns = ml.read_csv(ml.write_csv(slot, n=5))
+    >>> np.round(columns["S"], 3).tolist()
+    [120.0, 111.917, 89.443, 58.945, 40.0]
     """
     text = str(path_or_text)
     if "\n" not in text:
@@ -170,7 +261,45 @@ def _angle_deg(v) -> float:
 
 @validated
 def write_dxf(mechanism: Designed, path: FilePath, roller_radius: Roller = None, n: HalfTurnSamples = 721):
-    """Write the slot as DXF (R2010, units mm) with ezdxf; returns the ezdxf document."""
+    """Write the slot as DXF (R2010, units mm) with ezdxf: layers CENTRE, DWELL and FLANKS.
+
+    Parameters
+    ----------
+    mechanism : DwellSlotMechanism
+        The designed curved-slot dwell mechanism (lengths in mm).
+    path : str or path-like
+        The file to write.
+    roller_radius : float, optional
+        ρ (mm, ≥ 0); by default the mechanism's own; 0 gives no flanks.
+    n : int
+        Crank angles over [0, π], ≥ 2 (default 721).
+
+    Returns
+    -------
+    ezdxf.document.Drawing
+        The document written.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a DwellSlotMechanism.
+    SlotUndercutError
+        ρ is negative, or not below the centre line's smallest radius of curvature.
+    DimensionError
+        ``path`` is not a path, or ``n`` is not an integer ≥ 2.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> slot = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), pivot_distance=80.0,
+    ...                             transition="quintic", roller_radius=2.0)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     doc = ml.write_dxf(slot, os.path.join(folder, "slot.dxf"), n=50)
+    >>> sorted({entity.dxf.layer for entity in doc.modelspace()})
+    ['CENTRE', 'DWELL', 'FLANKS']
+    """
     import ezdxf
 
     prof = slot_profile(mechanism, roller_radius, n)
@@ -218,9 +347,36 @@ class SlotDrawing:
 
 @validated
 def read_dxf(path: FilePath) -> SlotDrawing:
-    """The layers of a slot DXF written by :func:`write_dxf`, read with ezdxf: ``CENTRE`` (one polyline),
-    ``DWELL`` (one arc) and the ``FLANKS`` polylines. A missing or unreadable file, or one without
-    those layers, raises DimensionError naming it."""
+    """The layers of a slot DXF written by :func:`write_dxf`, read with ezdxf.
+
+    Parameters
+    ----------
+    path : str or path-like
+        A DXF file written by :func:`write_dxf`.
+
+    Returns
+    -------
+    SlotDrawing
+        The ``CENTRE`` polyline, the ``DWELL`` arc's centre and radius, and the ``FLANKS`` polylines.
+
+    Raises
+    ------
+    DimensionError
+        A missing or unreadable file, or one without one CENTRE polyline and one DWELL arc.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> slot = ml.curved_slot_dwell(0.5, np.radians(60), np.radians(150), pivot_distance=80.0,
+    ...                             transition="quintic", roller_radius=2.0)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     _ = ml.write_dxf(slot, os.path.join(folder, "slot.dxf"), n=50)
+    ...     drawing = ml.read_dxf(os.path.join(folder, "slot.dxf"))
+    >>> drawing.dwell_radius, len(drawing.flanks)  # the arc of radius l_OA = 0.5 · 80 mm
+    (40.0, 2)
+    """
     import ezdxf
 
     where = repr(str(path))
@@ -248,7 +404,39 @@ def write_cam_csv(cam: DiscCam, path: Annotated[Any, Spec("path", optional=True)
                   n: HalfTurnSamples = 721) -> str:
     """A disc cam's profile as CSV (columns theta_deg, x_pitch, y_pitch, x, y, nx, ny, curvature,
     pressure_angle_deg; x, y the surface, n the outward normal, curvature the pitch curve's), at n
-    cam angles over one turn; written to ``path`` if given; returns the text."""
+    cam angles over one turn.
+
+    Parameters
+    ----------
+    cam : TranslatingRollerCam or OscillatingRollerCam
+        The disc cam (lengths in mm).
+    path : str or path-like, optional
+        File to write; nothing is written when None.
+    n : int
+        Cam angles over one turn, ≥ 2 (default 721).
+
+    Returns
+    -------
+    str
+        The CSV text, full precision.
+
+    Raises
+    ------
+    TypeError
+        ``cam`` is not a disc cam.
+    CamUndercutError
+        The profile is undercut (the roller too large for the pitch curve).
+    DimensionError
+        ``path`` is not a path, or ``n`` is not an integer ≥ 2.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> cam = ml.TranslatingRollerCam(ml.CamProgramme(10.0, np.pi / 2, np.pi / 2), 40.0, 10.0)
+    >>> ml.write_cam_csv(cam, n=5).splitlines()[1].split(",")[:5]
+    ['0.0', '0.0', '50.0', '0.0', '40.0']
+    """
     prof = cam.profile(n)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
@@ -266,7 +454,42 @@ def write_cam_csv(cam: DiscCam, path: Annotated[Any, Spec("path", optional=True)
 @validated
 def write_cam_dxf(cam: DiscCam, path: FilePath, n: HalfTurnSamples = 721):
     """Write a disc cam as DXF (R2010, units mm) with ezdxf: the closed profile, the pitch curve and
-    the base circle, at n cam angles over one turn; returns the ezdxf document."""
+    the base circle, at n cam angles over one turn.
+
+    Parameters
+    ----------
+    cam : TranslatingRollerCam or OscillatingRollerCam
+        The disc cam (lengths in mm).
+    path : str or path-like
+        The file to write.
+    n : int
+        Cam angles over one turn, ≥ 2 (default 721).
+
+    Returns
+    -------
+    ezdxf.document.Drawing
+        The document written, layers PROFILE, PITCH and BASE.
+
+    Raises
+    ------
+    TypeError
+        ``cam`` is not a disc cam.
+    CamUndercutError
+        The profile is undercut.
+    DimensionError
+        ``path`` is not a path, or ``n`` is not an integer ≥ 2.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> cam = ml.TranslatingRollerCam(ml.CamProgramme(10.0, np.pi / 2, np.pi / 2), 40.0, 10.0)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     doc = ml.write_cam_dxf(cam, os.path.join(folder, "cam.dxf"), n=50)
+    >>> [entity.dxf.layer for entity in doc.modelspace()]
+    ['PROFILE', 'PITCH', 'BASE']
+    """
     import ezdxf
 
     prof = cam.profile(n)

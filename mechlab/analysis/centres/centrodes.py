@@ -112,8 +112,45 @@ def _two_links(ic: InstantCentres, link: str, reference: str) -> None:
 @validated
 def centrodes(mechanism: AnyMechanism, link: Name, reference: Name = "frame", phi: OptionalAngles = None,
               method: str = "kennedy") -> Centrodes:
-    """Fixed and moving centrodes of ``link`` relative to ``reference`` (link names of
-    :func:`instant_centres`, e.g. "coupler" and "frame" of a four-bar)."""
+    """Fixed and moving centrodes of ``link`` relative to ``reference``.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        Any planar mechanism that describes its ``structure()``.
+    link, reference : str
+        Link names of :func:`instant_centres`, e.g. "coupler" and "frame" of a four-bar.
+    phi : float or array_like, optional
+        Crank angles (rad); by default the mechanism's cycle.
+    method : {"kennedy", "velocity"}
+        How the centres are found (see :func:`instant_centres`).
+
+    Returns
+    -------
+    Centrodes
+        ``centre`` (world), ``fixed`` (in the reference's frame) and ``moving`` (in the link's
+        frame), each a :class:`Centre`.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    MechanismError
+        ``link`` or ``reference`` is not a link, or both name the same link.
+    SpatialMechanismError
+        A spatial mechanism (it has no planar centres).
+    IndeterminateCentre
+        Kennedy's construction degenerates at a crank angle (use ``method="velocity"``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> c = ml.centrodes(ml.FourBar(1, 3, 3, 4), "coupler", phi=np.array([0.0, 0.5]))
+    >>> np.round(c.fixed.xy, 4)
+    array([[4.    , 0.    ],
+           [3.2458, 1.7732]])
+    """
     ic = instant_centres(mechanism, phi, method)
     _two_links(ic, link, reference)
     P = ic(link, reference)
@@ -128,10 +165,41 @@ def centrodes(mechanism: AnyMechanism, link: Name, reference: Name = "frame", ph
 def rolling_speeds(mechanism: AnyMechanism, link: Name, reference: Name = "frame", phi: OptionalAngles = None):
     """Arc-length rates |dP/dφ| along the fixed and the moving centrode (formulas (7.8), (7.9)).
 
-    Returns ``(fixed_speed, moving_speed, xi, z)``: the two rates (equal: rolling without
-    slipping) and the pole from (7.6)/(7.7) in the link's and the reference's frame, as
-    complex numbers. Uses the link's origin and the point at one unit of length along
-    its x-axis as A and B, both seen from the reference link.
+    Uses the link's origin and the point at one unit of length along its x-axis as A and B,
+    both seen from the reference link.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        Any planar mechanism that describes its ``structure()``.
+    link, reference : str
+        Link names of :func:`instant_centres`.
+    phi : float or array_like, optional
+        Crank angles (rad); by default the mechanism's cycle.
+
+    Returns
+    -------
+    fixed_speed, moving_speed : numpy.ndarray
+        |dP/dφ| along the fixed and the moving centrode (equal: rolling without slipping).
+    xi, z : numpy.ndarray of complex
+        The pole from (7.6) and (7.7), in the link's and in the reference's frame.
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    MechanismError
+        ``link`` or ``reference`` is not a link, or both name the same link.
+    CentreAtInfinity
+        The link translates relative to the reference at a crank angle.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> fixed, moving, xi, z = ml.rolling_speeds(ml.FourBar(1, 3, 3, 4), "coupler", phi=np.array([0.1, 1.0]))
+    >>> np.round(fixed, 4), bool(np.allclose(fixed, moving))
+    (array([4.0755, 5.1648]), True)
     """
     phi = mechanism.cycle() if phi is None else phi
     ic = instant_centres(mechanism, phi, method="velocity")

@@ -40,8 +40,27 @@ class Centre(Checked):
 
     ``h`` is ``(n, 3)``: rows ``(x, y, 1)`` for finite points and ``(dx, dy, 0)`` with a
     unit direction for points at infinity; ``(3,)`` (one row) at a scalar crank angle. Build one with :func:`finite`,
-    :func:`at_infinity` or :func:`normalise`. Raises DimensionError naming ``h`` for rows that are not
-    normalised so (``xy`` would otherwise read a wrong position).
+    :func:`at_infinity` or :func:`normalise`.
+
+    Parameters
+    ----------
+    h : numpy.ndarray
+        Homogeneous rows ``(x, y, w)``, shape ``(n, 3)`` or ``(3,)``.
+    name : str
+        The centre's label, e.g. "P24".
+
+    Raises
+    ------
+    DimensionError
+        A row that is not normalised so (``xy`` would otherwise read a wrong position).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> c = ml.Centre(np.array([[1.0, 2.0, 1.0], [0.0, 1.0, 0.0]]), "P13")
+    >>> c.finite.tolist(), len(c)
+    ([True, False], 2)
     """
 
     h: np.ndarray
@@ -64,12 +83,43 @@ class Centre(Checked):
 
     @property
     def finite(self) -> np.ndarray:
-        """Boolean mask: True where the centre is a finite point."""
+        """Boolean mask: True where the centre is a finite point.
+
+        Returns
+        -------
+        numpy.ndarray of bool
+            Shape ``(n,)`` (a scalar for one row): w ≠ 0.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> ml.Centre(np.array([[1.0, 2.0, 1.0], [0.0, 1.0, 0.0]])).finite.tolist()
+        [True, False]
+        """
         return self.h[..., 2] != 0.0
 
     @property
     def xy(self) -> np.ndarray:
-        """Positions ``(n, 2)``; raises :class:`CentreAtInfinity` if any centre is at infinity."""
+        """Positions ``(n, 2)`` of finite centres.
+
+        Returns
+        -------
+        numpy.ndarray
+            The positions (x, y), in the mechanism's length units.
+
+        Raises
+        ------
+        CentreAtInfinity
+            A centre lies at infinity (use :attr:`finite`, :attr:`direction` or :meth:`masked`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> ml.Centre(np.array([[1.0, 2.0, 1.0]])).xy.tolist()
+        [[1.0, 2.0]]
+        """
         if not np.all(self.finite):
             i = int(np.argmin(np.atleast_1d(self.finite)))
             d = np.atleast_2d(self.h)[i, :2]
@@ -80,11 +130,37 @@ class Centre(Checked):
 
     @property
     def direction(self) -> np.ndarray:
-        """Unit directions ``(n, 2)`` of the centres at infinity (rows of finite centres are zero)."""
+        """Unit directions of the centres at infinity.
+
+        Returns
+        -------
+        numpy.ndarray
+            Shape ``(n, 2)``: the unit direction where a centre is at infinity, zero rows where it is finite.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> ml.Centre(np.array([[1.0, 2.0, 1.0], [0.0, 1.0, 0.0]])).direction.tolist()
+        [[0.0, 0.0], [0.0, 1.0]]
+        """
         return np.where(self.finite[..., None], 0.0, self.h[..., :2])
 
     def masked(self) -> np.ma.MaskedArray:
-        """Positions as a masked array, masked where the centre is at infinity (for plotting)."""
+        """Positions as a masked array, masked where the centre is at infinity (for plotting).
+
+        Returns
+        -------
+        numpy.ma.MaskedArray
+            Shape ``(n, 2)``; rows at infinity masked.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import mechlab as ml
+        >>> ml.Centre(np.array([[1.0, 2.0, 1.0], [0.0, 1.0, 0.0]])).masked().mask.tolist()
+        [[False, False], [True, True]]
+        """
         mask = np.repeat(~self.finite[..., None], 2, axis=-1)
         return np.ma.array(np.where(mask, 0.0, self.h[..., :2]), mask=mask)
 

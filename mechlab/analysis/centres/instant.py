@@ -266,6 +266,43 @@ def instant_centres(mechanism: AnyMechanism, phi: OptionalAngles = None,
     pairs' common normals, then Kennedy's theorem (Kozhevnikov, §7.1). ``method="velocity"``:
     from each link's twist (loop-closure analogs), the independent check; it is also
     defined where Kennedy's lines coincide (a change point), where "kennedy" raises.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        Any planar mechanism that describes its ``structure()``.
+    phi : float or array_like, optional
+        Crank angles (rad); by default ``mechanism.cycle()``.
+    method : {"kennedy", "velocity"}
+        Kennedy's theorem from positions, or the links' twists.
+
+    Returns
+    -------
+    InstantCentres
+        ``ic(a, b)`` is the :class:`Centre` of links ``a`` and ``b`` (names or 1-based numbers).
+
+    Raises
+    ------
+    TypeError
+        ``mechanism`` is not a Mechanism.
+    DimensionError
+        ``method`` is not "kennedy" or "velocity", or ``phi`` is not finite.
+    SpatialMechanismError
+        A spatial mechanism (the spherical Geneva).
+    IndeterminateCentre
+        Kennedy's lines coincide at a crank angle (``method="kennedy"``).
+    AssemblyError
+        The mechanism cannot be assembled at a requested crank angle.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> ic = ml.instant_centres(ml.FourBar(1, 3, 3, 4), np.pi / 2)
+    >>> ic.links, ic.label("coupler", "frame")
+    (('crank', 'coupler', 'rocker', 'frame'), 'P24')
+    >>> np.round(ic("coupler", "frame").xy, 4).tolist()  # OA ∩ BE
+    [0.0, 7.1072]
     """
     phi = mechanism.cycle() if phi is None else as_angles(phi)
     motion = mechanism.motion(phi)

@@ -40,7 +40,29 @@ def pair(i: int, j: int) -> Pair:
 
 @validated
 def centre_count(n_links: Annotated[int, count(2, why="a mechanism has at least 2 links, frame included")]) -> int:
-    """Number of instantaneous centres of n links, frame included: n(n - 1)/2."""
+    """Number of instantaneous centres of n links, frame included: n(n - 1)/2.
+
+    Parameters
+    ----------
+    n_links : int
+        Links, the frame included (≥ 2).
+
+    Returns
+    -------
+    int
+        n(n − 1)/2.
+
+    Raises
+    ------
+    DimensionError
+        ``n_links`` is not an integer ≥ 2.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> ml.centre_count(4)
+    6
+    """
     return n_links * (n_links - 1) // 2
 
 
@@ -167,11 +189,47 @@ def five_link_higher_pair(P15: Snapshots, P12: Snapshots, P23: Snapshots, P34: S
     and a higher pair between links 2 and 4 touching at ``contact`` with common normal
     ``normal``; every argument is (n, 2) for n snapshots.
 
-    Returns ``(by_kennedy, by_twists, steps)``: all ten centres found by Kennedy's theorem
-    from the five pins and the normal (the seed's construction), and the same centres
-    from the links' twists, obtained by solving the velocity constraints with ω₁ = 1
-    (each pin: equal velocities of both links there; the contact: no relative velocity
-    along the normal). The twists are the independent check of the construction.
+    The same centres are found twice: by Kennedy's theorem from the five pins and the normal
+    (the seed's construction), and from the links' twists, obtained by solving the velocity
+    constraints with ω₁ = 1 (each pin: equal velocities of both links there; the contact: no
+    relative velocity along the normal). The twists are the independent check.
+
+    Parameters
+    ----------
+    P15, P12, P23, P34, P45 : array_like
+        The pins, each ``(n, 2)`` for n snapshots.
+    contact : array_like
+        The higher pair's contact point, ``(n, 2)``.
+    normal : array_like
+        The common normal at the contact, ``(n, 2)``, non-zero.
+    scale : float
+        A length of the mechanism's size (default 1), for the tolerances.
+
+    Returns
+    -------
+    by_kennedy, by_twists : dict
+        The ten centres, keyed by 0-based pairs (i, j), i < j, each a :class:`Centre`.
+    steps : list
+        Kennedy's construction order.
+
+    Raises
+    ------
+    DimensionError
+        An argument is not ``(n, 2)`` with one row per snapshot, or the normal is zero.
+    IndeterminateCentre
+        Kennedy's construction degenerates (two lines or two points coincide).
+    SingularityError
+        The velocity constraints are singular (a dead-centre position).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> row = lambda x, y: np.array([[x, y]])
+    >>> by_kennedy, by_twists, steps = ml.five_link_higher_pair(
+    ...     row(0, 0), row(1, 1), row(3, 2), row(4, 0.5), row(5, -1), row(2.5, 0.3), row(0.3, 1))
+    >>> np.round(by_kennedy[(1, 3)].xy, 4).tolist(), np.round(by_twists[(1, 3)].xy, 4).tolist()  # P24
+    ([[3.0069, 1.9897]], [[3.0069, 1.9897]])
     """
     pins = {(0, 4): P15, (0, 1): P12, (1, 2): P23, (2, 3): P34, (3, 4): P45}
     n = len(contact)
