@@ -226,8 +226,8 @@ class RollerCam(Mechanism):
         >>> pr = CamProgramme(30.0, np.radians(40), np.radians(40), law="cycloidal (sine)")
         >>> TranslatingRollerCam(pr, 25.0, 1.0).undercut() is None
         True
-        >>> TranslatingRollerCam(pr, 20.0, 6.0).undercut().spans.shape
-        (1, 2)
+        >>> TranslatingRollerCam(pr, 15.0, 10.0).undercut().spans.shape  # one stretch on the rise, one on the return
+        (2, 2)
         """
         if n is not None:
             warnings.warn("undercut(n): the test is exact now and takes no samples; n is ignored and goes in "
