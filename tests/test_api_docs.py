@@ -5,7 +5,8 @@ and mechlab.kinetostatics, with the public methods and properties its class defi
 docscrape parses each docstring, inherited ones included, as Sphinx's autodoc shows them):
 
 - a Summary;
-- Parameters names exactly the signature's parameters (not self/cls; ``*args``/``**kwargs`` as written);
+- Parameters names exactly the signature's parameters (not self/cls nor private ``_x`` fields; ``*args``/``**kwargs``
+  as written);
   a class documents its constructor's (an exception class only when it defines ``__init__``);
 - Returns (Yields for a generator) for a function or method that returns a value, and for a property;
   a class documents no Returns;
@@ -36,7 +37,6 @@ NOT_YET = {
     "mechlab.analysis.centres.kennedy", "mechlab.analysis.equivalence", "mechlab.analysis.half_turn",
     "mechlab.analysis.intermittency", "mechlab.analysis.textbook",
     "mechlab.design.candidates", "mechlab.design.criteria", "mechlab.design.families", "mechlab.design.spec",
-    "mechlab.errors",
     "mechlab.kinetostatics.drive", "mechlab.kinetostatics.inverse", "mechlab.kinetostatics.machines",
     "mechlab.kinetostatics.model", "mechlab.kinetostatics.solve",
     "mechlab.mechanisms.antiparallelogram", "mechlab.mechanisms.base", "mechlab.mechanisms.cam",
@@ -104,7 +104,7 @@ def _documented_names(section) -> list[str]:
 def _signature_names(func, skip_first: bool) -> list[str]:
     names = []
     for i, p in enumerate(inspect.signature(func).parameters.values()):
-        if i == 0 and skip_first:
+        if i == 0 and skip_first or p.name.startswith("_"):  # a private field is not the caller's to pass
             continue
         prefix = "*" if p.kind is p.VAR_POSITIONAL else "**" if p.kind is p.VAR_KEYWORD else ""
         names.append(prefix + p.name)
