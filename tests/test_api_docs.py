@@ -45,7 +45,6 @@ NOT_YET = {
     "mechlab.mechanisms.linkage.built", "mechlab.mechanisms.linkage.groups", "mechlab.mechanisms.sixbar_iv",
     "mechlab.mechanisms.slider_crank", "mechlab.mechanisms.slotted", "mechlab.mechanisms.spherical_geneva",
     "mechlab.mechanisms.trammel",
-    "mechlab.motion",
     "mechlab.synthesis.cam_design", "mechlab.synthesis.dwell_slot", "mechlab.synthesis.geneva",
     "mechlab.synthesis.lambda_guiding", "mechlab.synthesis.lambda_sixbars", "mechlab.synthesis.lambda_sliders",
     "mechlab.synthesis.slot_export",
