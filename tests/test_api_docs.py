@@ -39,7 +39,7 @@ NOT_YET = {
     "mechlab.design.candidates", "mechlab.design.criteria", "mechlab.design.families", "mechlab.design.spec",
     "mechlab.kinetostatics.drive", "mechlab.kinetostatics.inverse", "mechlab.kinetostatics.machines",
     "mechlab.kinetostatics.model", "mechlab.kinetostatics.solve",
-    "mechlab.mechanisms.antiparallelogram", "mechlab.mechanisms.base", "mechlab.mechanisms.cam",
+    "mechlab.mechanisms.antiparallelogram", "mechlab.mechanisms.cam",
     "mechlab.mechanisms.curved_slot", "mechlab.mechanisms.fourbar", "mechlab.mechanisms.geneva",
     "mechlab.mechanisms.lambda_mechanism", "mechlab.mechanisms.lambda_sixbars", "mechlab.mechanisms.lambda_sliders",
     "mechlab.mechanisms.linkage.built", "mechlab.mechanisms.linkage.groups", "mechlab.mechanisms.sixbar_iv",
