@@ -37,8 +37,6 @@ NOT_YET = {
     "mechlab.analysis.centres.kennedy", "mechlab.analysis.equivalence", "mechlab.analysis.half_turn",
     "mechlab.analysis.intermittency", "mechlab.analysis.textbook",
     "mechlab.design.candidates", "mechlab.design.criteria", "mechlab.design.families", "mechlab.design.spec",
-    "mechlab.kinetostatics.drive", "mechlab.kinetostatics.machines",
-    "mechlab.kinetostatics.solve",
     "mechlab.mechanisms.antiparallelogram", "mechlab.mechanisms.cam",
     "mechlab.mechanisms.curved_slot", "mechlab.mechanisms.geneva",
     "mechlab.mechanisms.lambda_mechanism", "mechlab.mechanisms.lambda_sixbars", "mechlab.mechanisms.lambda_sliders",
