@@ -37,7 +37,6 @@ NOT_YET = {
     "mechlab.analysis.centres.kennedy", "mechlab.analysis.equivalence", "mechlab.analysis.half_turn",
     "mechlab.analysis.intermittency", "mechlab.analysis.textbook",
     "mechlab.design.candidates", "mechlab.design.criteria", "mechlab.design.families", "mechlab.design.spec",
-    "mechlab.mechanisms.spherical_geneva",
     "mechlab.synthesis.cam_design", "mechlab.synthesis.dwell_slot", "mechlab.synthesis.geneva",
     "mechlab.synthesis.lambda_guiding", "mechlab.synthesis.lambda_sixbars", "mechlab.synthesis.lambda_sliders",
     "mechlab.synthesis.slot_export",
