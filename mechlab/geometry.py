@@ -31,9 +31,25 @@ DEAD_POINT_TOL = 1e-12
 class PointPath:
     """Positions ``p`` of a point and its analogs ``d`` = dp/dφ, ``dd`` = d²p/dφ².
 
-    An analog may be given as a function of no arguments: it is evaluated on first
-    use and kept, so a motion costs only what is read of it (a four-bar's ψ, ψ', ψ''
-    need neither B' nor B''). Unpacks like the tuple ``(p, d, dd)``.
+    An analog may be given as a function of no arguments: it is evaluated on first use and kept, so a
+    motion costs only what is read of it (a four-bar's ψ, ψ', ψ'' need neither B' nor B''). Unpacks like
+    the tuple ``(p, d, dd)``.
+
+    Parameters
+    ----------
+    p : numpy.ndarray
+        Positions, shape (n, 2) (length; (2,) in a motion at one crank angle).
+    d : numpy.ndarray or callable
+        First analog dp/dφ (length/rad), or a function of no arguments giving it.
+    dd : numpy.ndarray or callable
+        Second analog d²p/dφ² (length/rad²), or a function of no arguments giving it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> A = crank_point(1.0, np.array([0.3]))
+    >>> A.p.round(4), A.d.round(4)
+    (array([[0.9553, 0.2955]]), array([[-0.2955,  0.9553]]))
     """
 
     __slots__ = ("_d", "_dd", "p")
@@ -43,12 +59,26 @@ class PointPath:
 
     @property
     def d(self) -> np.ndarray:
+        """The first analog dp/dφ (evaluated on first use if given as a function).
+
+        Returns
+        -------
+        numpy.ndarray
+            Shape like ``p`` (length/rad).
+        """
         if callable(self._d):
             self._d = self._d()
         return self._d
 
     @property
     def dd(self) -> np.ndarray:
+        """The second analog d²p/dφ² (evaluated on first use if given as a function).
+
+        Returns
+        -------
+        numpy.ndarray
+            Shape like ``p`` (length/rad²).
+        """
         if callable(self._dd):
             self._dd = self._dd()
         return self._dd
@@ -67,7 +97,24 @@ class PointPath:
 
 @dataclass(frozen=True, eq=False)
 class AnglePath:
-    """An angle θ(φ) and its analogs θ' and θ''; unpacks like the tuple ``(theta, d, dd)``."""
+    """An angle θ(φ) and its analogs θ' and θ''; unpacks like the tuple ``(theta, d, dd)``.
+
+    Parameters
+    ----------
+    theta : numpy.ndarray
+        The angle (radians) — or, for a displacement law, the coordinate (length).
+    d : numpy.ndarray
+        θ' = dθ/dφ.
+    dd : numpy.ndarray
+        θ'' = d²θ/dφ².
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> theta, d, dd = AnglePath(np.array([0.1]), np.array([1.0]), np.array([0.0]))
+    >>> float(d[0])
+    1.0
+    """
 
     theta: np.ndarray
     d: np.ndarray
@@ -106,8 +153,28 @@ def wrap(angle):
 def as_angles(phi, name: str = "phi") -> np.ndarray:
     """Crank angles (radians) as a 1-D float array; a scalar becomes an array of one.
 
-    Refuses by ``name`` (DimensionError) complex values, strings, None, NaN, ±inf,
-    magnitudes over 1e100 and multi-dimensional arrays (an empty array gives empty results).
+    Parameters
+    ----------
+    phi : float or array_like
+        Crank angles (radians).
+    name : str, optional
+        The parameter's name in the error message.
+
+    Returns
+    -------
+    numpy.ndarray
+        The angles, one-dimensional (an empty array gives empty results).
+
+    Raises
+    ------
+    DimensionError
+        Naming ``name``, for complex values, strings, None, NaN, ±inf, magnitudes over 1e100 and
+        multi-dimensional arrays.
+
+    Examples
+    --------
+    >>> as_angles(0.3)
+    array([0.3])
     """
     return check_value(name, phi, _ANGLES)
 
@@ -169,7 +236,26 @@ def _abs2(z):
 
 
 def fixed_point(xy, n: int) -> PointPath:
-    """A point fixed to the frame over n crank angles (read-only broadcast arrays)."""
+    """A point fixed to the frame over n crank angles (read-only broadcast arrays).
+
+    Parameters
+    ----------
+    xy : sequence of float
+        The point (length).
+    n : int
+        Number of crank angles.
+
+    Returns
+    -------
+    PointPath
+        Positions (n, 2) and zero analogs.
+
+    Examples
+    --------
+    >>> fixed_point((4.0, 0.0), 2).p
+    array([[4., 0.],
+           [4., 0.]])
+    """
     p = np.broadcast_to(np.asarray(xy, dtype=float), (n, 2))
     z = np.broadcast_to(np.zeros(2), (n, 2))
     return PointPath(p, z, z)
@@ -222,7 +308,28 @@ class CrankPath(PointPath):
 
 
 def crank_point(radius: float, phi: np.ndarray, centre=(0.0, 0.0)) -> CrankPath:
-    """The pin of a crank of given radius at angles φ about ``centre`` (built in blocks)."""
+    """The pin of a crank of given radius at angles φ about ``centre`` (built in blocks).
+
+    Parameters
+    ----------
+    radius : float
+        Crank radius (length).
+    phi : numpy.ndarray
+        Crank angles (radians), one-dimensional.
+    centre : sequence of float, optional
+        The crank's pivot (length).
+
+    Returns
+    -------
+    CrankPath
+        The pin's path (a PointPath whose analogs are i·(p − centre) and −(p − centre)).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> crank_point(1.0, np.array([0.3])).p.round(4)
+    array([[0.9553, 0.2955]])
+    """
     c = complex(centre[0], centre[1])
     z = np.empty(len(phi), dtype=complex)
 
@@ -236,12 +343,47 @@ def crank_point(radius: float, phi: np.ndarray, centre=(0.0, 0.0)) -> CrankPath:
 
 
 def relative(q: PointPath, p: PointPath) -> PointPath:
-    """The vector q - p with its analogs."""
+    """The vector q - p with its analogs.
+
+    Parameters
+    ----------
+    q, p : PointPath
+        Two moving points.
+
+    Returns
+    -------
+    PointPath
+        q − p, (q − p)', (q − p)''.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> relative(fixed_point((4.0, 0.0), 1), fixed_point((1.0, 1.0), 1)).p
+    array([[ 3., -1.]])
+    """
     return PointPath(q.p - p.p, q.d - p.d, q.dd - p.dd)
 
 
 def vector_angle(v: PointPath) -> AnglePath:
-    """Principal angle of a moving vector v(φ) with θ' = v×v'/|v|² and its derivative."""
+    """Principal angle of a moving vector v(φ) with θ' = v×v'/|v|² and its derivative.
+
+    Parameters
+    ----------
+    v : PointPath
+        A moving vector (non-zero).
+
+    Returns
+    -------
+    AnglePath
+        θ in (−π, π] (radians), θ' and θ''.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> A = crank_point(1.0, np.array([0.3]))
+    >>> vector_angle(A).theta.round(4), vector_angle(A).d
+    (array([0.3]), array([1.]))
+    """
     z, dz, ddz = as_complex(v.p), as_complex(v.d), as_complex(v.dd)
     r2 = _abs2(z)
     d = _im_conj(z, dz) / r2
@@ -364,6 +506,37 @@ def circle_circle(c1: np.ndarray, r1: float, c2: np.ndarray, r2: float, sign: in
     ``sign`` = +1 returns the point on the left of the directed line c1 → c2,
     -1 the one on its right. Raises AssemblyError where the circles do not meet and
     SingularityError where they only touch (stretched or folded dyad).
+
+    Parameters
+    ----------
+    c1, c2 : array_like
+        The centres, (n, 2) or one point (length).
+    r1, r2 : float
+        The radii (length).
+    sign : {1, -1}
+        Which intersection.
+    phi : numpy.ndarray, optional
+        The crank angles of the rows, named in the error message.
+    what : str, optional
+        The dyad's name in the error message.
+
+    Returns
+    -------
+    numpy.ndarray
+        The intersections, shape (n, 2).
+
+    Raises
+    ------
+    AssemblyError
+        Where the circles do not meet.
+    SingularityError
+        Where they only touch.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> circle_circle(np.array([[0.0, 0.0]]), 3.0, np.array([[4.0, 0.0]]), 3.5, 1).round(4)
+    array([[1.5938, 2.5416]])
     """
     n = max(np.shape(c1)[0] if np.ndim(c1) == 2 else 1, np.shape(c2)[0] if np.ndim(c2) == 2 else 1)
     z = _circle_circle_z(as_complex(c1), r1, as_complex(c2), r2, sign, phi, what)
@@ -379,6 +552,38 @@ def dyad_rrr(A: PointPath, E: PointPath, la: float, le: float, sign: int,
     constraints u·(B' - A') = 0, w·(B' - E') = 0 solve to B' = i(b2·u - b1·w)/D with
     b1 = u·A', b2 = w·E' (complex numbers for points); B'' likewise with
     b1 = u·A'' - |B' - A'|², b2 = w·E'' - |B' - E'|².
+
+    Parameters
+    ----------
+    A, E : PointPath
+        The outer joints' paths.
+    la, le : float
+        |B − A| and |B − E| (length).
+    sign : {1, -1}
+        The assembly: +1 puts B on the left of A → E.
+    phi : numpy.ndarray, optional
+        The crank angles of the rows, named in the error message.
+    what : str, optional
+        The dyad's name in the error message.
+
+    Returns
+    -------
+    PointPath
+        B with B' and B''.
+
+    Raises
+    ------
+    AssemblyError
+        Where the dyad does not close.
+    SingularityError
+        At a dead point (stretched or folded).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> A = crank_point(1.0, np.array([0.3]))
+    >>> dyad_rrr(A, fixed_point((4.0, 0.0), 1), 3.0, 3.5, 1).p.round(4)
+    array([[2.2222, 3.0149]])
     """
     zA, zE = as_complex(A.p), as_complex(E.p)
     B = _circle_circle_z(zA, la, zE, le, sign, phi, what)
@@ -493,6 +698,41 @@ def line_circle(p0: np.ndarray, u: np.ndarray, c: np.ndarray, r: float, sign: in
     """Parameter s of the points p0 + s·u (|u| = 1) at distance r from c.
 
     ``sign`` = +1 takes the larger root (ahead along u), -1 the smaller.
+
+    Parameters
+    ----------
+    p0 : numpy.ndarray
+        A point of the line (length).
+    u : numpy.ndarray
+        The line's unit direction.
+    c : numpy.ndarray
+        Circle centres, (n, 2) (length).
+    r : float
+        The distance (length).
+    sign : {1, -1}
+        Which root.
+    phi : numpy.ndarray, optional
+        The crank angles of the rows, named in the error message.
+    what : str, optional
+        The dyad's name in the error message.
+
+    Returns
+    -------
+    numpy.ndarray
+        s, one per row (length).
+
+    Raises
+    ------
+    AssemblyError
+        Where the circle misses the line.
+    SingularityError
+        Where it only touches it (the rod perpendicular to the guide).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> line_circle(np.array([0.0, 0.0]), np.array([1.0, 0.0]), np.array([[0.0, 1.0]]), 2.0, 1).round(4)
+    array([1.7321])
     """
     w = c - p0
     along = dot(w, u)
@@ -519,6 +759,42 @@ def dyad_rrp(A: PointPath, p0, direction: float, length: float, sign: int,
 
     Returns the path of B and its coordinate s along the line with s', s''
     (from (B - A)·(s'u - A') = 0 and its derivative).
+
+    Parameters
+    ----------
+    A : PointPath
+        The rod's outer joint.
+    p0 : sequence of float
+        A point of the guide (length).
+    direction : float
+        The guide's angle (radians).
+    length : float
+        |B − A| (length).
+    sign : {1, -1}
+        +1 takes the slider ahead along the guide, −1 behind.
+    phi : numpy.ndarray, optional
+        The crank angles of the rows, named in the error message.
+    what : str, optional
+        The dyad's name in the error message.
+
+    Returns
+    -------
+    tuple of (PointPath, AnglePath)
+        B, and s with s', s'' (length, in an AnglePath).
+
+    Raises
+    ------
+    AssemblyError
+        Where the rod cannot reach the guide.
+    SingularityError
+        Where the rod stands perpendicular to the guide.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> B, s = dyad_rrp(crank_point(1.0, np.array([0.3])), (0.0, 0.0), 0.0, 3.0, 1)
+    >>> s.theta.round(4)
+    array([3.9407])
     """
     u1 = unit(direction)
     p0 = np.asarray(p0, dtype=float)
@@ -537,6 +813,25 @@ def dyad_rpr(A: PointPath, pivot: PointPath) -> tuple[AnglePath, AnglePath]:
 
     Returns the link angle (principal value; lift it to a branch) with its analogs,
     and the pin's distance ρ = |A - pivot| along the slot with ρ' and ρ''.
+
+    Parameters
+    ----------
+    A : PointPath
+        The pin's path.
+    pivot : PointPath
+        The slotted link's pivot (a fixed point).
+
+    Returns
+    -------
+    tuple of AnglePath
+        The link's angle (radians) and ρ (length), each with its analogs.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> angle, rho = dyad_rpr(crank_point(1.0, np.array([0.3])), fixed_point((-0.5, 0.0), 1))
+    >>> angle.theta.round(4), rho.theta.round(4)
+    (array([0.2003]), array([1.485]))
     """
     v = relative(A, pivot)
     rho = np.hypot(v.p[:, 0], v.p[:, 1])

@@ -46,13 +46,39 @@ MAX_SLOTS = 1000
 class Spec:
     """What a parameter may be: ``kind`` with its bounds and its None policy.
 
-    kind: "number" (real), "length" (> 0, or ≥ 0 with ``zero``), "angle" (radians),
-    "count" (whole), "sign" (±1), "choice" (one of ``options``), "flag" (bool),
-    "point" (a 2-vector), "points" (an (m, width) array, m ≥ lo), "mechanism" (an instance of ``expected``),
-    "items" (a sequence of instances of ``expected``, made a tuple), "text" (a non-empty str), "function",
-    "samples" (a 1-D array of at least ``lo`` finite numbers), "path" (a str or os.PathLike),
-    "angles" (crank angles: a scalar or a 1-D array of at least ``lo``, radians), "reals" (a number or an array,
-    each value within [lo, hi]), "radians" (as "reals", angles: the bounds shown in degrees too).
+    Parameters
+    ----------
+    kind : str
+        "number" (real), "length" (> 0, or ≥ 0 with ``zero``), "angle" (radians), "count" (whole), "sign"
+        (±1), "choice" (one of ``options``), "flag" (bool), "point" (a 2-vector), "points" (an (m, width)
+        array, m ≥ lo), "mechanism" (an instance of ``expected``), "items" (a sequence of instances of
+        ``expected``, made a tuple), "text" (a non-empty str), "function", "samples" (a 1-D array of at least
+        ``lo`` finite numbers), "path" (a str or os.PathLike), "angles" (crank angles: a scalar or a 1-D array
+        of at least ``lo``, radians), "reals" (a number or an array, each value within [lo, hi]), "radians"
+        (as "reals", angles: the bounds shown in degrees too).
+    lo, hi : float, optional
+        Bounds (for "count", "points", "samples", "angles": the least and largest number).
+    open_lo, open_hi : bool, optional
+        Exclude the lower or the upper bound.
+    optional : bool, optional
+        Whether None is accepted (and passed through).
+    options : tuple, optional
+        The admissible values of a "choice" (or of a "sign", as (name, value) pairs).
+    expected : type or tuple of type, optional
+        The class(es) of a "mechanism" or of the "items".
+    error : type, optional
+        The exception raised on a violation.
+    why : str, optional
+        Appended to a range violation's message.
+    function_ok : bool, optional
+        Whether a function of the motion may stand for the value (a load, an axis).
+    width : int, optional
+        Columns of "points": 2 for (x, y), 3 for homogeneous (x, y, w).
+
+    Examples
+    --------
+    >>> Spec("length", 0.0, open_lo=True).check("rod", 3)
+    3.0
     """
 
     kind: str
@@ -69,7 +95,32 @@ class Spec:
     width: int = 2  # columns of "points": 2 for (x, y), 3 for homogeneous (x, y, w)
 
     def check(self, name: str, value):
-        """``value`` converted (float, int, tuple) or the declared error naming ``name``."""
+        """``value`` converted (float, int, tuple) or the declared error naming ``name``.
+
+        Parameters
+        ----------
+        name : str
+            The parameter's name, for the message.
+        value : object
+            The value to check.
+
+        Returns
+        -------
+        object
+            The converted value (None for an optional None; a function when ``function_ok``).
+
+        Raises
+        ------
+        DimensionError
+            Or the declared ``error``, naming ``name``, the condition and the value.
+
+        Examples
+        --------
+        >>> length().check("rod", -1)
+        Traceback (most recent call last):
+        ...
+        mechlab.errors.DimensionError: rod must be > 0, got -1
+        """
         if value is None and self.optional:
             return None
         if self.function_ok and callable(value):
@@ -77,7 +128,31 @@ class Spec:
         return _CHECKERS[self.kind](self, name, value)
 
     def fail(self, name: str, condition: str, value, *, explain: bool = True):
-        """Raise the declared error; ``why`` explains a violated range, not a value of the wrong type."""
+        """Raise the declared error; ``why`` explains a violated range, not a value of the wrong type.
+
+        Parameters
+        ----------
+        name : str
+            The parameter's name.
+        condition : str
+            What the value must be, e.g. "> 0".
+        value : object
+            The value given.
+        explain : bool, optional
+            Whether to append ``why``.
+
+        Raises
+        ------
+        DimensionError
+            Or the declared ``error``: "``name`` must be ``condition``, got ``value``".
+
+        Examples
+        --------
+        >>> Spec("number").fail("x", "positive", -1)
+        Traceback (most recent call last):
+        ...
+        mechlab.errors.DimensionError: x must be positive, got -1
+        """
         hint = f" ({self.why})" if self.why and explain else ""
         raise self.error(f"{name} must be {condition}, got {_show(value)}{hint}")
 
@@ -349,33 +424,176 @@ _CHECKERS = {"number": _number, "length": _length, "angle": _angle, "count": _co
 
 # -- declarations ------------------------------------------------------------------------------------------
 def number(lo=None, hi=None, *, open: bool = False, optional: bool = False, error=DimensionError, why=""):
-    """A real number, within [lo, hi] (or (lo, hi) with ``open``)."""
+    """A real number, within [lo, hi] (or (lo, hi) with ``open``).
+
+    Parameters
+    ----------
+    lo, hi : float, optional
+        The bounds (None: unbounded).
+    open : bool, optional
+        Exclude the bounds.
+    optional : bool, optional
+        Whether None is accepted (and passed through).
+    error : type, optional
+        The exception raised on a violation (a mechlab.errors class).
+    why : str, optional
+        Appended to a range violation's message, to say why the range holds.
+
+    Returns
+    -------
+    Spec
+        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+
+    Examples
+    --------
+    >>> number(0, 1, why="a fraction").check("f", 2)
+    Traceback (most recent call last):
+    ...
+    mechlab.errors.DimensionError: f must be ≤ 1, got 2 (a fraction)
+    """
     return Spec("number", lo, hi, open, open, optional, error=error, why=why)
 
 
 def length(*, zero: bool = False, hi=None, optional: bool = False, error=DimensionError, why=""):
-    """A length: > 0 (≥ 0 with ``zero``), at least 1e-100 unless 0."""
+    """A length: > 0 (≥ 0 with ``zero``), at least 1e-100 unless 0.
+
+    Parameters
+    ----------
+    zero : bool, optional
+        Accept 0.
+    hi : float, optional
+        The largest length (None: unbounded).
+    optional : bool, optional
+        Whether None is accepted (and passed through).
+    error : type, optional
+        The exception raised on a violation (a mechlab.errors class).
+    why : str, optional
+        Appended to a range violation's message, to say why the range holds.
+
+    Returns
+    -------
+    Spec
+        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+
+    Examples
+    --------
+    >>> length().check("rod", 3)
+    3.0
+    """
     return Spec("length", 0.0, hi, not zero, False, optional, error=error, why=why)
 
 
 def angle(lo=None, hi=None, *, open: bool = False, optional: bool = False, error=DimensionError, why=""):
-    """An angle in radians, within [lo, hi] (or (lo, hi) with ``open``)."""
+    """An angle in radians, within [lo, hi] (or (lo, hi) with ``open``).
+
+    Parameters
+    ----------
+    lo, hi : float, optional
+        The bounds (None: unbounded).
+    open : bool, optional
+        Exclude the bounds.
+    optional : bool, optional
+        Whether None is accepted (and passed through).
+    error : type, optional
+        The exception raised on a violation (a mechlab.errors class).
+    why : str, optional
+        Appended to a range violation's message, to say why the range holds.
+
+    Returns
+    -------
+    Spec
+        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+
+    Examples
+    --------
+    >>> angle(0, 3.2).check("beta", 1)
+    1.0
+    """
     return Spec("angle", lo, hi, open, open, optional, error=error, why=why)
 
 
 def count(lo: int = 1, limit: int = MAX_SAMPLES, *, optional: bool = False, error=DimensionError, why=""):
-    """A whole number in [lo, limit]."""
+    """A whole number in [lo, limit].
+
+    Parameters
+    ----------
+    lo : int, optional
+        The least value.
+    limit : int, optional
+        The largest value.
+    optional : bool, optional
+        Whether None is accepted (and passed through).
+    error : type, optional
+        The exception raised on a violation (a mechlab.errors class).
+    why : str, optional
+        Appended to a range violation's message, to say why the range holds.
+
+    Returns
+    -------
+    Spec
+        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+
+    Examples
+    --------
+    >>> count(3).check("z", 4.0)
+    4
+    """
     return Spec("count", lo, limit, optional=optional, error=error, why=why)
 
 
 def choice(*options, optional: bool = False, error=DimensionError):
-    """One of ``options`` (strings or ints)."""
+    """One of ``options`` (strings or ints).
+
+    Parameters
+    ----------
+    *options
+        The admissible values.
+    optional : bool, optional
+        Whether None is accepted (and passed through).
+    error : type, optional
+        The exception raised on a violation.
+
+    Returns
+    -------
+    Spec
+        The declaration.
+
+    Examples
+    --------
+    >>> choice("open", "crossed").check("assembly", "x")
+    Traceback (most recent call last):
+    ...
+    mechlab.errors.DimensionError: assembly must be one of 'open', 'crossed', got 'x'
+    """
     return Spec("choice", options=options, optional=optional, error=error)
 
 
 def mechanism(expected, *, optional: bool = False, error=TypeError, why=""):
-    """An instance of ``expected`` (a class, a tuple of classes or a runtime-checkable protocol); TypeError
-    (or ``error``) otherwise."""
+    """An instance of ``expected`` (a class, a tuple of classes or a runtime-checkable protocol).
+
+    Parameters
+    ----------
+    expected : type or tuple of type
+        The admissible class(es).
+    optional : bool, optional
+        Whether None is accepted (and passed through).
+    error : type, optional
+        The exception raised on a violation (TypeError by default).
+    why : str, optional
+        Appended to a range violation's message, to say why the range holds.
+
+    Returns
+    -------
+    Spec
+        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+
+    Examples
+    --------
+    >>> mechanism(int).check("m", "x")
+    Traceback (most recent call last):
+    ...
+    TypeError: m must be a int, got str 'x'
+    """
     return Spec("mechanism", expected=expected, optional=optional, error=error, why=why)
 
 
@@ -399,7 +617,23 @@ OptionalAngles = Annotated[np.ndarray | None, Spec("angles", lo=1, optional=True
 
 
 def or_function(spec: Spec) -> Spec:
-    """``spec``, or a function of the motion that gives such values."""
+    """``spec``, or a function of the motion that gives such values.
+
+    Parameters
+    ----------
+    spec : Spec
+        The declaration of a value.
+
+    Returns
+    -------
+    Spec
+        The same declaration, accepting a callable as well.
+
+    Examples
+    --------
+    >>> or_function(number()).check("load", abs) is abs
+    True
+    """
     return dataclasses.replace(spec, function_ok=True)
 
 
@@ -438,6 +672,21 @@ def check_fields(obj) -> None:
     """Check and convert, in place, every declared field of a frozen dataclass instance.
 
     An instance may name its parameters in messages by ``_label(name)`` (e.g. "mass of coupler").
+
+    Parameters
+    ----------
+    obj : object
+        A dataclass instance whose fields are annotated with ``Annotated[type, Spec]``.
+
+    Raises
+    ------
+    DimensionError
+        Or a field's declared error, for the first field that violates its declaration.
+
+    Examples
+    --------
+    >>> from mechlab import FourBar
+    >>> check_fields(FourBar(1, 3, 3.5, 4))  # its lengths pass (and stay converted to floats)
     """
     label = getattr(obj, "_label", None)
     for name, spec in _field_specs(type(obj)):
@@ -448,6 +697,19 @@ class Checked:
     """Base of the frozen dataclasses whose fields carry declarations: checked before any other use.
 
     A subclass with its own ``__post_init__`` calls ``super().__post_init__()`` first.
+
+    Examples
+    --------
+    >>> from dataclasses import dataclass
+    >>> @dataclass(frozen=True)
+    ... class Bar(Checked):
+    ...     length: Length
+    >>> Bar(2)
+    Bar(length=2.0)
+    >>> Bar(0)
+    Traceback (most recent call last):
+    ...
+    mechlab.errors.DimensionError: length must be > 0, got 0
     """
 
     def __post_init__(self):
@@ -457,8 +719,30 @@ class Checked:
 def validated(fn):
     """Check the declared arguments of ``fn`` (its annotations with a Spec) on every call.
 
-    Defaults are not checked (they are valid by construction); a converted value replaces
-    the argument, so the body sees floats and ints.
+    Defaults are not checked (they are valid by construction); a converted value replaces the argument,
+    so the body sees floats and ints.
+
+    Parameters
+    ----------
+    fn : callable
+        A function whose parameters are annotated with ``Annotated[type, Spec]``.
+
+    Returns
+    -------
+    callable
+        The checking wrapper, with ``fn``'s signature.
+
+    Examples
+    --------
+    >>> @validated
+    ... def scale(x: Length, k: Real = 2.0):
+    ...     return x * k
+    >>> scale(3)
+    6.0
+    >>> scale(-3)
+    Traceback (most recent call last):
+    ...
+    mechlab.errors.DimensionError: x must be > 0, got -3
     """
     signature = inspect.signature(fn)
     specs = None
@@ -481,7 +765,32 @@ def validated(fn):
 
 
 def check_value(name: str, value, spec: Spec):
-    """One value against a Spec (for values that are not parameters, e.g. a derived default)."""
+    """One value against a Spec (for values that are not parameters, e.g. a derived default).
+
+    Parameters
+    ----------
+    name : str
+        The value's name, for the message.
+    value : object
+        The value.
+    spec : Spec
+        Its declaration.
+
+    Returns
+    -------
+    object
+        The converted value.
+
+    Raises
+    ------
+    DimensionError
+        Or the declared error, naming ``name``.
+
+    Examples
+    --------
+    >>> check_value("n", 5, count(1))
+    5
+    """
     return spec.check(name, value)
 
 

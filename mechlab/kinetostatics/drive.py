@@ -21,16 +21,47 @@ Sampled = Annotated[np.ndarray, Spec("samples", lo=2, hi=MAX_SAMPLES)]
 
 @dataclass(frozen=True, eq=False)
 class Drive:
-    """A crank's torque over one cycle at constant ω1 and the motor it needs without a flywheel.
+    """A crank's torque over one cycle at constant ω1 and the motor it needs without a flywheel (from :func:`drive`).
 
-    ``phi``, ``torque``: the crank angles and the crank torque M(φ) as given;
-    ``motor_torque``: M_m(φ), the motor's torque referred to the crank (M/η where the
-    motor drives, M·η where the mechanism drives it back, see :func:`drive`). Every
-    statistic below is of M_m: ``mean_torque`` ⟨M_m⟩, ``rms_torque`` √⟨M_m²⟩ (thermal),
-    ``peak_torque`` max|M_m|; ``mean_power`` = ⟨M_m⟩·ω1 (Vainer & Shatokhina's N_cp),
-    ``peak_power`` = peak·|ω1|; ``nominal_torque`` = max(rms, peak/overload),
-    ``nominal_power`` = nominal_torque·|ω1|; ``governing`` = "rms" or "peak", the
-    term that decided.
+    Every statistic is of the motor torque M_m referred to the crank.
+
+    Parameters
+    ----------
+    phi : numpy.ndarray
+        Crank angles (radians), as given.
+    torque : numpy.ndarray
+        The crank torque M(φ) (N·m), as given.
+    motor_torque : numpy.ndarray
+        M_m(φ): M/η where the motor drives, M·η where the mechanism drives it back (N·m).
+    mean_torque : float
+        ⟨M_m⟩ (N·m).
+    peak_torque : float
+        max|M_m| (N·m).
+    rms_torque : float
+        √⟨M_m²⟩, the thermal equivalent torque (N·m).
+    mean_power : float
+        ⟨M_m⟩·ω1 (W; Vainer & Shatokhina's N_cp).
+    peak_power : float
+        peak·|ω1| (W).
+    nominal_torque : float
+        max(rms, peak/overload) (N·m).
+    nominal_power : float
+        nominal_torque·|ω1| (W).
+    overload : float
+        The motor's admissible ratio k of peak to nominal torque.
+    efficiency : float
+        η of the transmission between motor and crank.
+    governing : {"rms", "peak"}
+        The term that decided the nominal torque.
+
+    Examples
+    --------
+    >>> from mechlab.kinetostatics import drive, press
+    >>> k = press()
+    >>> phi = k.turn(73)
+    >>> d = drive(k.forces(phi).torque, phi, k.omega1)
+    >>> d.governing, round(d.nominal_power, 2)
+    ('peak', 1210.03)
     """
 
     phi: np.ndarray
@@ -48,7 +79,31 @@ class Drive:
     governing: str
 
     def choose(self, catalogue: Sequence[float]) -> float:
-        """The smallest motor power in ``catalogue`` (same unit as the powers here) ≥ nominal_power."""
+        """The smallest motor power in ``catalogue`` that reaches ``nominal_power``.
+
+        Parameters
+        ----------
+        catalogue : sequence of float
+            Available motor powers (W, the unit of the powers here).
+
+        Returns
+        -------
+        float
+            The chosen power.
+
+        Raises
+        ------
+        MechanismError
+            If no motor in the catalogue reaches the nominal power.
+
+        Examples
+        --------
+        >>> from mechlab.kinetostatics import drive, press
+        >>> k = press()
+        >>> phi = k.turn(73)
+        >>> drive(k.forces(phi).torque, phi, k.omega1).choose([250, 550, 750, 1100, 1500])
+        1500
+        """
         ok = sorted(p for p in catalogue if p >= self.nominal_power)
         if not ok:
             raise MechanismError(f"no motor in the catalogue reaches the nominal power {self.nominal_power:.4g} "
@@ -58,7 +113,33 @@ class Drive:
 
 @validated
 def cycle_mean(y: Sampled, phi: Sampled) -> float:
-    """Mean of y(φ) over the sampled interval (trapezoidal rule, any spacing)."""
+    """Mean of y(φ) over the sampled interval (trapezoidal rule, any spacing).
+
+    Parameters
+    ----------
+    y : array_like
+        Samples of y.
+    phi : array_like
+        The angles (radians) at which y is sampled, as many as ``y``.
+
+    Returns
+    -------
+    float
+        ∫y dφ / (φ_end − φ_start).
+
+    Raises
+    ------
+    DimensionError
+        If ``y`` and ``phi`` differ in length, or ``phi`` spans no interval.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.kinetostatics import cycle_mean
+    >>> phi = np.linspace(0, 2 * np.pi, 73)
+    >>> round(cycle_mean(np.sin(phi) ** 2, phi), 12)
+    0.5
+    """
     if len(y) != len(phi) or phi[-1] == phi[0]:
         raise DimensionError(f"y and phi must be samples of one interval, as many y as phi, got {len(y)} y over "
                              f"{len(phi)} phi from {phi[0]:g} to {phi[-1]:g}")
@@ -68,8 +149,37 @@ def cycle_mean(y: Sampled, phi: Sampled) -> float:
 @validated
 def motor_torque(torque: Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)], omega1: Real,
                  efficiency: Efficiency = 1.0) -> np.ndarray:
-    """The motor's torque referred to the crank: M/η where the motor drives (M·ω1 > 0), M·η
-    where the mechanism drives the motor back (M·ω1 < 0) through the same transmission."""
+    """The motor's torque referred to the crank.
+
+    M/η where the motor drives (M·ω1 > 0), M·η where the mechanism drives the motor back (M·ω1 < 0)
+    through the same transmission.
+
+    Parameters
+    ----------
+    torque : array_like
+        The crank torque M (N·m), one or more samples.
+    omega1 : float
+        Crank speed ω1 (rad/s; only its sign matters).
+    efficiency : float, optional
+        η of the transmission (0 < η ≤ 1).
+
+    Returns
+    -------
+    numpy.ndarray
+        M_m (N·m), one per sample.
+
+    Raises
+    ------
+    DimensionError
+        For torques that are not finite, or η outside (0, 1].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.kinetostatics import motor_torque
+    >>> motor_torque(np.array([10.0, -10.0]), 1.0, 0.8)
+    array([12.5, -8. ])
+    """
     M = np.asarray(torque, dtype=float)
     driving = M * np.sign(omega1) > 0
     return np.where(driving, M / efficiency, M * efficiency)
@@ -83,12 +193,33 @@ def drive(torque: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)]
           efficiency: Efficiency = 1.0) -> Drive:
     """The one rule of the course for sizing a motor that drives a crank without a flywheel.
 
-    ``torque`` is the crank torque M(φ) at the crank angles ``phi`` over one cycle (e.g.
-    ``ForceResult.torque``; :func:`mechlab.kinetostatics.geneva.geneva_drive` builds the Geneva's); ``omega1``
-    the constant crank speed (either sign); ``efficiency`` η of the transmission between
-    motor and crank (0 < η ≤ 1); ``overload`` the motor's admissible ratio k of peak to
-    nominal torque (k ≥ 1). Returns a :class:`Drive`.
+    Parameters
+    ----------
+    torque : array_like
+        The crank torque M(φ) (N·m) at the crank angles ``phi`` over one cycle (e.g.
+        ``ForceResult.torque``; :func:`mechlab.kinetostatics.geneva.geneva_drive` builds the Geneva's).
+    phi : array_like
+        The crank angles (radians), increasing, as many as ``torque``.
+    omega1 : float
+        The constant crank speed ω1 (rad/s, either sign, not 0).
+    overload : float, optional
+        The motor's admissible ratio k of peak to nominal torque (k ≥ 1).
+    efficiency : float, optional
+        η of the transmission between motor and crank (0 < η ≤ 1).
 
+    Returns
+    -------
+    Drive
+        The motor torque, its mean, rms and peak, the nominal torque and power and what governs them.
+
+    Raises
+    ------
+    DriveError
+        For torque and angles of different shapes, angles that do not increase, ω1 = 0, k < 1 or η
+        outside (0, 1].
+
+    Notes
+    -----
     Derivation. *Motor side.* Where the motor drives (M·ω1 > 0) it must supply M/η; where
     the mechanism drives the motor back (M·ω1 < 0: kinetic energy of the links returned,
     gravity) only M·η reaches it (a transmission that does not lock backwards, with the
@@ -125,6 +256,15 @@ def drive(torque: Annotated[np.ndarray, Spec("samples", lo=2, error=DriveError)]
     or nearly the same φ: each smooth piece is then integrated on its own to the
     accuracy of its sampling, as :func:`mechlab.kinetostatics.geneva.geneva_drive` does at the engagement
     ends. The peak is the largest sample.
+
+    Examples
+    --------
+    >>> from mechlab.kinetostatics import drive, press
+    >>> k = press()
+    >>> phi = k.turn(73)
+    >>> d = drive(k.forces(phi).torque, phi, k.omega1)
+    >>> round(d.rms_torque, 3), round(d.peak_torque, 3), d.governing
+    (53.391, 192.582, 'peak')
     """
     M = torque
     if M.shape != phi.shape:

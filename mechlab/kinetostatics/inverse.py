@@ -114,9 +114,13 @@ def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model 
 
     Parameters
     ----------
-    mechanism, phi, model, loads, omega1, eps1, gravity : as for :func:`balanced_load`.
-    load : Q on the output (N·m on the output link for an angular output, N along the output's path for
+    mechanism : Mechanism
+        As for :func:`balanced_load`.
+    load : float or array_like
+        Q on the output (N·m on the output link for an angular output, N along the output's path for
         a linear one; positive along +q), one number or one per angle.
+    phi, model, loads, omega1, eps1, gravity
+        As for :func:`balanced_load`.
 
     Returns
     -------

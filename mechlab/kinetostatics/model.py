@@ -59,14 +59,39 @@ class _Labelled(Checked):
 # --------------------------------------------------------------------------- structure
 @dataclass(frozen=True)
 class Body(_Labelled):
-    """A link: a joint fixed on it (``origin``), its axis, and its mass properties.
+    """A link of a force model: a joint fixed on it (``origin``), its axis, and its mass properties.
 
-    ``axis`` = (P, Q): the link's x axis points from joint P to joint Q; a float: the
-    link translates with its axis at that constant angle (radians); a callable
-    ``axis(motion) → (θ, θ', θ'')`` (e.g. :func:`output_axis`): any other link angle,
-    such as a curved-slot link's ψ. ``com`` is the
-    centre of mass in link coordinates (ξ along the axis from the origin, η to its left).
-    ``length`` is informational (a bar's length, for the default slender-bar inertia).
+    Parameters
+    ----------
+    name : str
+        The link's name (not ``"frame"``, which is reserved).
+    origin : str
+        A joint fixed on the link, the origin of its link coordinates.
+    axis : tuple of str, float or callable, optional
+        (P, Q): the link's x axis points from joint P to joint Q; a float: the link translates with its
+        axis at that constant angle (radians); a callable ``axis(motion) → (θ, θ', θ'')`` (e.g.
+        :func:`output_axis`): any other link angle, such as a curved-slot link's ψ.
+    mass : float, optional
+        Mass (kg, ≥ 0).
+    inertia : float, optional
+        Moment of inertia about the centre of mass (kg·m², ≥ 0).
+    com : tuple of float, optional
+        Centre of mass in link coordinates (ξ along the axis from the origin, η to its left; m).
+    length : float, optional
+        Informational: a bar's length (m), for the default slender-bar inertia.
+
+    Raises
+    ------
+    StructureError
+        For the name ``"frame"`` or an axis that is neither two joint names, an angle nor a callable.
+    MassError
+        For a negative or non-finite mass or inertia.
+
+    Examples
+    --------
+    >>> from mechlab import Body
+    >>> Body("coupler", "A", ("A", "B"), mass=2.0, com=(1.5, 0.0)).translates
+    False
     """
 
     name: Name
@@ -88,12 +113,44 @@ class Body(_Labelled):
 
     @property
     def translates(self) -> bool:
+        """True when the axis is a constant angle: the link only translates.
+
+        Returns
+        -------
+        bool
+            Whether the link keeps its orientation.
+        """
         return not isinstance(self.axis, tuple) and not callable(self.axis)
 
 
 @dataclass(frozen=True)
 class Revolute(_Labelled):
-    """Turning pair at joint ``point``; reaction R = force of link a on link b."""
+    """Turning pair at joint ``point``; its reaction R is the force of link ``a`` on link ``b``.
+
+    Parameters
+    ----------
+    name : str
+        The pair's name.
+    a, b : str
+        The two links (``"frame"`` for the frame).
+    point : str
+        The joint where the pair sits.
+    friction : float, optional
+        Friction coefficient f (0 ≤ f < 1).
+    radius : float, optional
+        Journal radius r (m, ≥ 0): the friction couple is f·r·|R|.
+
+    Raises
+    ------
+    FrictionError
+        For a friction coefficient or radius out of range.
+
+    Examples
+    --------
+    >>> from mechlab import Revolute
+    >>> Revolute("A", "crank", "coupler", "A", friction=0.1, radius=0.01).friction
+    0.1
+    """
 
     name: Name
     a: Name
@@ -106,7 +163,32 @@ class Revolute(_Labelled):
 
 @dataclass(frozen=True)
 class Prismatic(_Labelled):
-    """Link b slides on link a along a guide at ``angle`` to a's axis, through ``point`` (fixed on b)."""
+    """Link ``b`` slides on link ``a`` along a guide at ``angle`` to a's axis, through ``point`` (fixed on b).
+
+    Parameters
+    ----------
+    name : str
+        The pair's name.
+    a, b : str
+        The guiding link and the sliding link (``"frame"`` for the frame).
+    point : str
+        A joint fixed on ``b`` on the guide line.
+    angle : float, optional
+        The guide's angle to a's axis (radians).
+    friction : float, optional
+        Friction coefficient f (0 ≤ f < 1).
+
+    Raises
+    ------
+    FrictionError
+        For a friction coefficient out of range.
+
+    Examples
+    --------
+    >>> from mechlab import Prismatic
+    >>> Prismatic("guide", "frame", "slider", "B").angle
+    0.0
+    """
 
     name: Name
     a: Name
@@ -119,9 +201,31 @@ class Prismatic(_Labelled):
 
 @dataclass(frozen=True)
 class HigherPair(_Labelled):
-    """Contact of links a and b at the moving point ``point``; reaction along the common normal.
+    """Contact of links ``a`` and ``b`` at the moving point ``point``; its reaction acts along the common normal.
 
-    ``normal``: angle of the normal to a's axis, or ``normal(motion) → (n, 2)`` unit vectors.
+    Parameters
+    ----------
+    name : str
+        The pair's name.
+    a, b : str
+        The two links in contact.
+    point : str
+        The contact point (a joint of the motion).
+    normal : float or callable, optional
+        The normal's angle to a's axis (radians), or ``normal(motion) → (n, 2)`` unit vectors.
+    friction : float, optional
+        Friction coefficient f (0 ≤ f < 1).
+
+    Raises
+    ------
+    FrictionError
+        For a friction coefficient out of range.
+
+    Examples
+    --------
+    >>> from mechlab import HigherPair
+    >>> round(HigherPair("contact", "cam", "follower", "K").normal, 4)
+    1.5708
     """
 
     name: Name
@@ -140,9 +244,37 @@ Pair = Revolute | Prismatic | HigherPair
 class ForceModel(Checked):
     """Links, pairs and the structural groups (output first) of a mechanism driven by ``crank``.
 
-    ``numbering``: the bodies' names in the order of their numbers 1, 2, …, the frame included (from
-    :meth:`Structure.numbers` in :func:`model_for`, so forces number links as the drawing and the centres
-    do); empty for a model built by hand.
+    Usually built by :func:`model_for` from a mechanism's ``structure()``, then given masses
+    (:meth:`with_body`) and friction (:meth:`with_friction`).
+
+    Parameters
+    ----------
+    bodies : tuple of Body
+        The moving links.
+    pairs : tuple of Revolute, Prismatic or HigherPair
+        The kinematic pairs.
+    groups : tuple of tuple of str
+        The structural groups, each a tuple of body names, in the order they are solved (output first).
+    crank : str
+        The driving body.
+    pivot : str
+        The joint where the crank turns on the frame.
+    numbering : tuple of str, optional
+        The bodies' names in the order of their numbers 1, 2, …, the frame included (from
+        :meth:`Structure.numbers` in :func:`model_for`, so forces number links as the drawing and the
+        centres do); empty for a model built by hand.
+
+    Raises
+    ------
+    StructureError
+        For repeated names, a pair or group naming an unknown body, or groups that leave a pair unsolved.
+
+    Examples
+    --------
+    >>> from mechlab import FourBar, model_for
+    >>> model = model_for(FourBar(1, 3, 3.5, 4))
+    >>> model.numbering, model.groups
+    (('crank', 'coupler', 'rocker', 'frame'), (('coupler', 'rocker'),))
     """
 
     bodies: Annotated[tuple, Spec("items", expected=Body)]
@@ -195,18 +327,86 @@ class ForceModel(Checked):
         return [p for p in self.pairs if (p.a in group or p.b in group) and p.name not in solved]
 
     def number(self, name: str) -> int:
-        """The number of body ``name`` (or of the frame) in ``numbering``; KeyError for an unnumbered one."""
+        """The number of body ``name`` (or of the frame) in ``numbering``.
+
+        Parameters
+        ----------
+        name : str
+            A body's name, or ``"frame"``.
+
+        Returns
+        -------
+        int
+            Its number, from 1.
+
+        Raises
+        ------
+        KeyError
+            For a body that has no number.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar, model_for
+        >>> model_for(FourBar(1, 3, 3.5, 4)).number("rocker")
+        3
+        """
         if name not in self.numbering:
             raise KeyError(f"body {name!r} has no number; numbered: {list(self.numbering)}")
         return self.numbering.index(name) + 1
 
     def body(self, name: str) -> Body:
+        """The body called ``name``.
+
+        Parameters
+        ----------
+        name : str
+            A body's name.
+
+        Returns
+        -------
+        Body
+            That body.
+
+        Raises
+        ------
+        KeyError
+            If there is no such body.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar, model_for
+        >>> model_for(FourBar(1, 3, 3.5, 4)).body("coupler").com
+        (1.5, 0.0)
+        """
         for b in self.bodies:
             if b.name == name:
                 return b
         raise KeyError(f"no body {name!r}; bodies: {[b.name for b in self.bodies]}")
 
     def pair(self, name: str):
+        """The pair called ``name``.
+
+        Parameters
+        ----------
+        name : str
+            A pair's name.
+
+        Returns
+        -------
+        Revolute or Prismatic or HigherPair
+            That pair.
+
+        Raises
+        ------
+        KeyError
+            If there is no such pair.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar, model_for
+        >>> model_for(FourBar(1, 3, 3.5, 4)).pair("B")
+        Revolute(name='B', a='coupler', b='rocker', point='B', friction=0.0, radius=0.0)
+        """
         for p in self.pairs:
             if p.name == name:
                 return p
@@ -215,7 +415,35 @@ class ForceModel(Checked):
     def with_body(self, name: str, *, mass=None, inertia=None, com=None) -> "ForceModel":
         """A copy with link ``name``'s mass properties changed.
 
-        ``inertia=None`` with a new mass gives a slender uniform bar, J_S = m·length²/12.
+        Parameters
+        ----------
+        name : str
+            The body to change.
+        mass : float, optional
+            New mass (kg); unchanged if None.
+        inertia : float, optional
+            New moment of inertia about the centre of mass (kg·m²). None with a new mass gives a slender
+            uniform bar, J_S = m·length²/12; None without one keeps the old inertia.
+        com : tuple of float, optional
+            New centre of mass in link coordinates (m); unchanged if None.
+
+        Returns
+        -------
+        ForceModel
+            The changed copy.
+
+        Raises
+        ------
+        KeyError
+            If there is no such body.
+        MassError
+            For a negative or non-finite mass or inertia.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar, model_for
+        >>> model_for(FourBar(1, 3, 3.5, 4)).with_body("coupler", mass=2.0).body("coupler").inertia
+        1.5
         """
         old = self.body(name)
         m = old.mass if mass is None else mass
@@ -225,7 +453,35 @@ class ForceModel(Checked):
         return replace(self, bodies=tuple(new if b.name == name else b for b in self.bodies))
 
     def with_friction(self, f: float, radius: float = 0.0, *, pairs: Sequence[str] | None = None) -> "ForceModel":
-        """A copy with friction coefficient f in the named pairs (all by default) and journal radius r."""
+        """A copy with friction coefficient f in the named pairs (all by default) and journal radius r.
+
+        Parameters
+        ----------
+        f : float
+            Friction coefficient (0 ≤ f < 1).
+        radius : float, optional
+            Journal radius of the revolute pairs (m).
+        pairs : sequence of str, optional
+            The pairs to change; all if None.
+
+        Returns
+        -------
+        ForceModel
+            The changed copy.
+
+        Raises
+        ------
+        KeyError
+            For a pair name the model does not have.
+        FrictionError
+            For ``f`` or ``radius`` out of range.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar, model_for
+        >>> model_for(FourBar(1, 3, 3.5, 4)).with_friction(0.1, 0.01).pair("A").radius
+        0.01
+        """
         chosen = set(pairs) if pairs is not None else {p.name for p in self.pairs}
         unknown = chosen - {p.name for p in self.pairs}
         if unknown:
@@ -241,8 +497,28 @@ class ForceModel(Checked):
 # --------------------------------------------------------------------------- loads
 @dataclass(frozen=True)
 class Force(Checked):
-    """External force on ``body`` applied at ``at`` (joint name or link coordinates (ξ, η)); ``value``
-    a vector (Fx, Fy) or a function of the motion giving (n, 2) vectors."""
+    """External force on ``body``, applied at a joint or at a point of the link.
+
+    Parameters
+    ----------
+    body : str
+        The loaded body.
+    at : str or tuple of float
+        A joint name, or link coordinates (ξ, η) (m).
+    value : array_like or callable
+        A vector (Fx, Fy) (N), one per crank angle ((n, 2)), or a function of the motion giving (n, 2) vectors.
+
+    Raises
+    ------
+    LoadError
+        For a value of the wrong shape or not finite.
+
+    Examples
+    --------
+    >>> from mechlab import Force
+    >>> Force("slider", "B", (-100.0, 0.0)).at
+    'B'
+    """
 
     body: Name
     at: Any
@@ -260,7 +536,26 @@ class Force(Checked):
 
 @dataclass(frozen=True)
 class Torque(Checked):
-    """External couple on ``body`` (counter-clockwise positive): a number or a function of the motion."""
+    """External couple on ``body`` (counter-clockwise positive).
+
+    Parameters
+    ----------
+    body : str
+        The loaded body.
+    value : float or callable
+        The couple (N·m), or a function of the motion giving one per crank angle.
+
+    Raises
+    ------
+    LoadError
+        For a value that is not a finite number or a function.
+
+    Examples
+    --------
+    >>> from mechlab import Torque
+    >>> Torque("rocker", -5.0).value
+    -5.0
+    """
 
     body: Name
     value: Annotated[Any, or_function(number(error=LoadError))]
@@ -268,13 +563,38 @@ class Torque(Checked):
 
 # --------------------------------------------------------------------------- models of the core mechanisms
 def model_for(mechanism) -> ForceModel:
-    """Force model of a mechanism from its ``structure()``: massless frictionless links, a bar's centre
-    of mass half-way along its axis, the structure's pairs and groups, the input link as the crank.
+    """Force model of a mechanism from its ``structure()``.
 
-    E.g. FourBar: crank (O→A), coupler (A→B), rocker (E→B), pairs O, A, B, E, group (coupler, rocker);
-    SliderCrank: crank, rod, slider with the prismatic ``guide``; SlottedLink: crank, block, link with
-    the prismatic ``slot``; the cams: cam, follower with the higher pair ``contact``.
-    TypeError for an object that is no mechanism; MechanismError for a family with no ``structure()``.
+    Massless frictionless links, a bar's centre of mass half-way along its axis, the structure's pairs and
+    groups, the input link as the crank. E.g. FourBar: crank (O→A), coupler (A→B), rocker (E→B), pairs
+    O, A, B, E, group (coupler, rocker); SliderCrank: crank, rod, slider with the prismatic ``guide``;
+    SlottedLink: crank, block, link with the prismatic ``slot``; the cams: cam, follower with the higher
+    pair ``contact``.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        A mechanism that describes its ``structure()``.
+
+    Returns
+    -------
+    ForceModel
+        The model, numbered as the drawing and the centres number the links.
+
+    Raises
+    ------
+    TypeError
+        For an object that is no mechanism.
+    MechanismError
+        For a family with no ``structure()``, or a spatial one.
+    StructureError
+        If the input link turns about no pivot on the frame.
+
+    Examples
+    --------
+    >>> from mechlab import SliderCrank, model_for
+    >>> [p.name for p in model_for(SliderCrank(1, 3)).pairs]
+    ['O', 'A', 'B', 'guide']
     """
     describe = getattr(mechanism, "structure", None)
     if not callable(describe):
@@ -300,6 +620,32 @@ def _pair(p):
 
 
 def slender_bar(mass: float, length: float) -> float:
-    """Moment of inertia m·l²/12 of a uniform slender bar about its centre."""
+    """Moment of inertia m·l²/12 of a uniform slender bar about its centre.
+
+    Parameters
+    ----------
+    mass : float
+        Mass (kg, ≥ 0).
+    length : float
+        Length (m, ≥ 0).
+
+    Returns
+    -------
+    float
+        J_S (kg·m²).
+
+    Raises
+    ------
+    MassError
+        For a negative or non-finite mass.
+    DimensionError
+        For a negative or non-finite length.
+
+    Examples
+    --------
+    >>> from mechlab.kinetostatics import slender_bar
+    >>> slender_bar(2.0, 3.0)
+    1.5
+    """
     return _nonneg("mass", mass, MassError) * _nonneg("length", length, DimensionError) ** 2 / 12.0
 

@@ -148,10 +148,44 @@ def virtual_work_torque(model: AnyModel, motion: AnyMotion, loads: Loads = (), o
                         gravity: Point = (0.0, -G)) -> np.ndarray:
     """Frictionless balancing torque from the power balance alone (no reactions).
 
-    All forces — gravity, d'Alembert inertia forces and couples, external loads — and
-    the balancing torque M_b do no net work in a virtual displacement δφ of the
-    ideal mechanism, so M_b = −Σ(F_i·r_i' + M_i·θ_i') with r_i', θ_i' the analogs of
-    the load points and link angles: Zhukovsky's lever in analytic form.
+    All forces — gravity, d'Alembert inertia forces and couples, external loads — and the balancing torque
+    M_b do no net work in a virtual displacement δφ of the ideal mechanism, so M_b = −Σ(F_i·r_i' + M_i·θ_i')
+    with r_i', θ_i' the analogs of the load points and link angles: Zhukovsky's lever in analytic form.
+
+    Parameters
+    ----------
+    model : ForceModel
+        Bodies with their masses, pairs and groups.
+    motion : Motion
+        The mechanism's motion over an array of crank angles (radians).
+    loads : tuple of Force or Torque, optional
+        External loads on the model's bodies.
+    omega1 : float, optional
+        Crank speed ω1 (rad/s).
+    eps1 : float, optional
+        Crank acceleration ε1 (rad/s²).
+    gravity : tuple of float, optional
+        Gravity vector (m/s²).
+
+    Returns
+    -------
+    numpy.ndarray
+        M_b on the crank (N·m, counter-clockwise positive), one per crank angle.
+
+    Raises
+    ------
+    StructureError
+        If a body's origin or a load's point is not a joint of the motion.
+    LoadError
+        For a load or gravity of the wrong shape or not finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.kinetostatics import press, virtual_work_torque
+    >>> k = press()
+    >>> np.round(virtual_work_torque(k.model, k.motion(np.array([np.pi / 2])), k.loads, k.omega1), 4)
+    array([-2.2425])
     """
     frames = _frames(model, motion)
     kl = _known_loads(model, motion, frames, loads, omega1, eps1, gravity)
@@ -162,11 +196,30 @@ def virtual_work_torque(model: AnyModel, motion: AnyMotion, loads: Loads = (), o
 # --------------------------------------------------------------------------- results
 @dataclass(frozen=True, eq=False)
 class Reaction:
-    """Reaction in one pair over the cycle: force and couple of link a on link b.
+    """Reaction in one pair over the cycle: force and couple of link ``a`` on link ``b``.
 
-    ``force`` includes the friction force of a sliding pair; ``couple`` is the pair's
-    reaction couple (prismatic) plus the friction couple (revolute); ``normal`` is the
-    signed normal force N (prismatic, higher pairs; None for a revolute).
+    Parameters
+    ----------
+    pair : str
+        The pair's name.
+    a, b : str
+        The links: the reaction is the force of ``a`` on ``b``.
+    point : numpy.ndarray
+        The pair's joint positions (m), (n, 2) or (2,) at one angle.
+    force : numpy.ndarray
+        The reaction force (N), with the friction force of a sliding pair.
+    couple : numpy.ndarray
+        The pair's reaction couple (prismatic) plus the friction couple (revolute) (N·m).
+    normal : numpy.ndarray or None, optional
+        The signed normal force N (prismatic, higher pairs; None for a revolute).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.kinetostatics import press
+    >>> reaction = press().forces(np.pi / 2).reactions["B"]
+    >>> reaction.a, reaction.b, round(float(reaction.magnitude), 4)
+    ('rod', 'slider', 20.2976)
     """
 
     pair: str
@@ -179,12 +232,53 @@ class Reaction:
 
     @property
     def magnitude(self) -> np.ndarray:
-        return np.hypot(self.force[:, 0], self.force[:, 1])
+        """The reaction force's magnitude |R|.
+
+        Returns
+        -------
+        numpy.ndarray or float
+            |R| (N), one per crank angle.
+        """
+        return np.hypot(self.force[..., 0], self.force[..., 1])  # one angle (2,) or many (n, 2)
 
 
 @dataclass(frozen=True, eq=False)
 class ForceResult:
-    """Kinetostatics over the crank angles ``phi`` at crank speed ω1 and acceleration ε1."""
+    """Kinetostatics over the crank angles ``phi`` at crank speed ω1 and acceleration ε1 (from :func:`solve`).
+
+    Parameters
+    ----------
+    phi : numpy.ndarray
+        Crank angles (radians).
+    omega1 : float
+        Crank speed ω1 (rad/s).
+    eps1 : float
+        Crank acceleration ε1 (rad/s²).
+    reactions : Mapping[str, Reaction]
+        The reaction in every pair, by pair name.
+    torque : numpy.ndarray
+        Balancing torque on the crank M_b (N·m), from the groups.
+    torque_power : numpy.ndarray
+        The same from the power balance (with friction losses) (N·m).
+    ideal_torque : numpy.ndarray
+        Frictionless M_b from virtual work (N·m).
+    losses : numpy.ndarray
+        Friction power per unit ω1 (N·m, ≥ 0).
+    residual : float
+        Largest equilibrium residual of any link, relative.
+    iterations : int
+        Friction passes used (1 without friction).
+    model : ForceModel
+        The model solved.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.kinetostatics import press
+    >>> result = press().forces(np.pi / 2)
+    >>> round(float(result.torque), 4), sorted(result.reactions)
+    (-2.2425, ['A', 'B', 'O', 'guide'])
+    """
 
     phi: np.ndarray
     omega1: float
@@ -200,18 +294,51 @@ class ForceResult:
 
     @property
     def power(self) -> np.ndarray:
-        """Driving power M_b·ω1."""
+        """Driving power M_b·ω1.
+
+        Returns
+        -------
+        numpy.ndarray or float
+            Power (W), one per crank angle.
+        """
         return self.torque * self.omega1
 
     @property
     def power_gap(self) -> float:
-        """Largest |M_b(groups) − M_b(power balance)|, relative to the largest |M_b|."""
+        """Largest |M_b(groups) − M_b(power balance)|, relative to the largest |M_b|.
+
+        Returns
+        -------
+        float
+            The relative gap (≈ 1e-15 for a correct solution).
+        """
         return float(np.max(np.abs(self.torque - self.torque_power)) / (np.max(np.abs(self.torque)) + 1e-300))
 
     def verify(self, tol: float = 1e-9) -> str:
-        """The built-in checks: the balancing torque from the groups equals the power balance's
-        and every link is in equilibrium, both to ``tol``; returns a one-line summary and
-        raises MechanismError (with the numbers) otherwise."""
+        """The built-in checks: M_b from the groups equals the power balance's and every link is in equilibrium.
+
+        Parameters
+        ----------
+        tol : float, optional
+            Relative tolerance of both checks.
+
+        Returns
+        -------
+        str
+            A one-line summary with the two numbers.
+
+        Raises
+        ------
+        MechanismError
+            If either check fails (the message gives the numbers).
+
+        Examples
+        --------
+        >>> from mechlab.kinetostatics import press
+        >>> k = press()
+        >>> k.forces(k.turn(73)).verify()
+        'M_b from the groups = power balance to ...; every link in equilibrium to ...'
+        """
         if not (self.power_gap <= tol and self.residual <= tol):
             raise MechanismError(f"kinetostatics check failed: groups vs power balance {self.power_gap:.2e}, "
                                  f"equilibrium residual {self.residual:.2e} (tolerance {tol:g})")
@@ -221,9 +348,21 @@ class ForceResult:
     def efficiency(self) -> np.ma.MaskedArray:
         """Instantaneous efficiency η = 1 − P_friction/P_drive = M_ideal/M_b (Kinitsky (1994), ch. 3).
 
-        Defined where the drive delivers power and the loads absorb it (P_drive > 0 and
-        M_ideal·ω1 > 0); masked elsewhere — where the links' inertia or gravity drive the crank,
-        an instantaneous efficiency has no meaning.
+        Defined where the drive delivers power and the loads absorb it (P_drive > 0 and M_ideal·ω1 > 0);
+        masked elsewhere — where the links' inertia or gravity drive the crank, an instantaneous efficiency has
+        no meaning.
+
+        Returns
+        -------
+        numpy.ma.MaskedArray
+            η per crank angle, masked where undefined.
+
+        Examples
+        --------
+        >>> from mechlab.kinetostatics import press
+        >>> k = press(f=0.1)
+        >>> int(k.forces(k.turn(73)).efficiency().count())  # angles where η is defined
+        47
         """
         s = np.sign(self.omega1) or 1.0
         drive = self.torque * s
@@ -236,9 +375,36 @@ class ForceResult:
     def cycle_efficiency(self, moving: np.ndarray | None = None, how: str = "mean") -> float:
         """Cycle efficiency over the positions where the output moves.
 
-        ``how="mean"``: the thesis' definition (Kinitsky (1994), ch. 3), the arithmetic mean of the
-        instantaneous efficiencies (over the positions of ``moving`` where η is defined);
-        ``how="work"``: 1 − ∫P_friction dφ / ∫P_drive dφ over those positions.
+        Parameters
+        ----------
+        moving : numpy.ndarray of bool, optional
+            Mask of the positions to use, shaped like ``phi``; all by default.
+        how : {"mean", "work"}, optional
+            ``"mean"``: the thesis' definition (Kinitsky (1994), ch. 3), the arithmetic mean of the
+            instantaneous efficiencies where η is defined; ``"work"``: 1 − ∫P_friction dφ / ∫P_drive dφ.
+
+        Returns
+        -------
+        float
+            The cycle efficiency.
+
+        Raises
+        ------
+        DimensionError
+            If ``moving`` does not match ``phi``'s shape.
+        MechanismError
+            If the drive delivers no power where the output moves (``"mean"``) or no work over the cycle
+            (``"work"``).
+        ValueError
+            For another ``how``.
+
+        Examples
+        --------
+        >>> from mechlab.kinetostatics import press
+        >>> k = press(f=0.1)
+        >>> result = k.forces(k.turn(73))
+        >>> round(result.cycle_efficiency(), 4), round(result.cycle_efficiency(how="work"), 4)
+        (0.8365, 0.932)
         """
         sel = np.ones(len(self.phi), bool) if moving is None else np.asarray(moving, bool)
         if sel.shape != self.phi.shape:
@@ -294,21 +460,63 @@ def solve(model: AnyModel, motion: AnyMotion, loads: Loads = (), omega1: Omega =
           tol: Annotated[float, number(0.0, 1.0, open=True)] = 1e-12) -> ForceResult:
     """Reactions in every pair and the balancing torque, group by group (the SibSIU proceedings' method).
 
-    Groups are solved in ``model.groups`` order (output first), then the crank. Each
-    group's 3k equilibrium equations (ΣF = 0, ΣM about each link's origin = 0) form a
-    batch of linear systems in its unknown reactions, solved at every crank angle at
-    once. Raises SingularityError where a group cannot carry its loads (a dead point) and
-    SelfLockingError where friction locks the mechanism. A motion at one scalar φ gives the
-    results at that angle as scalars.
+    Groups are solved in ``model.groups`` order (output first), then the crank. Each group's 3k equilibrium
+    equations (ΣF = 0, ΣM about each link's origin = 0) form a batch of linear systems in its unknown
+    reactions, solved at every crank angle at once. A motion at one scalar φ gives the results at that
+    angle as scalars.
 
     Friction (any pair with f > 0) is linearised on its senses: with the direction ê of a journal's
     reaction R and the sign of a normal force N from the previous pass, f·r·|R| = f·r·ê·R and
-    f·|N| = f·sgn(N)·N are linear in the unknowns and go into each group's matrix; the passes stop
-    when ê·R = |R| to 1e-12 and every sgn N is consistent (3-6 passes; the first is frictionless).
-    Unlike friction lagging a full pass behind, this converges also where f·tan(pressure angle) > 1.
-    No consistent senses, or a singular group matrix with friction, is self-locking. The sense of
-    sliding comes from the analogs and the sign of ω1 (ω1 = 0: the start of a motion with ω1 > 0).
-    Prismatic friction is f·|N| with N the resultant normal force (edge pressures not modelled).
+    f·|N| = f·sgn(N)·N are linear in the unknowns and go into each group's matrix; the passes stop when
+    ê·R = |R| to 1e-12 and every sgn N is consistent (3-6 passes; the first is frictionless). Unlike
+    friction lagging a full pass behind, this converges also where f·tan(pressure angle) > 1. No
+    consistent senses, or a singular group matrix with friction, is self-locking. The sense of sliding
+    comes from the analogs and the sign of ω1 (ω1 = 0: the start of a motion with ω1 > 0). Prismatic
+    friction is f·|N| with N the resultant normal force (edge pressures not modelled).
+
+    Parameters
+    ----------
+    model : ForceModel
+        Bodies with their masses, pairs (with friction) and groups.
+    motion : Motion
+        The mechanism's motion (a scalar φ or an array of crank angles, radians).
+    loads : tuple of Force or Torque, optional
+        External loads on the model's bodies.
+    omega1 : float, optional
+        Crank speed ω1 (rad/s).
+    eps1 : float, optional
+        Crank acceleration ε1 (rad/s²).
+    gravity : tuple of float, optional
+        Gravity vector (m/s²).
+    maxiter : int, optional
+        Largest number of friction passes.
+    tol : float, optional
+        Convergence tolerance of the friction senses (0 < tol < 1).
+
+    Returns
+    -------
+    ForceResult
+        Reactions, balancing torque (from the groups and from the power balance), losses and checks.
+
+    Raises
+    ------
+    StructureError
+        If a pair's, body's or load's point is not a joint of the motion.
+    LoadError
+        For a load of the wrong shape or not finite.
+    SingularityError
+        Where a group cannot carry its loads (a dead point).
+    SelfLockingError
+        Where friction locks the mechanism.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.kinetostatics import press, solve
+    >>> k = press()
+    >>> result = solve(k.model, k.motion(np.pi / 2), k.loads, k.omega1)
+    >>> round(float(result.torque), 4)
+    -2.2425
     """
     if np.ndim(motion.phi) == 0:
         return first_of(solve(model, motion.as_arrays(), loads, omega1, eps1, gravity, maxiter=maxiter, tol=tol))

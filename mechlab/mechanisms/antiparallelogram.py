@@ -17,12 +17,11 @@ from ..validate import Length, Samples, validated
 class Antiparallelogram(Mechanism):
     """Crossed four-bar O-A-B-E with crank OA = rocker EB = ``crank`` and coupler AB = frame OE = ``ground``.
 
-    A four-bar with s + l = p + q is a change-point linkage: at φ = 0 and φ = π all four
-    joints lie on the frame line and the loop may continue as a parallelogram (ψ = φ) or
-    as the crossed antiparallelogram. :class:`~mechlab.FourBar` with a fixed assembly
-    sign cannot follow the crossed branch: it is ``assembly = -1`` on 0 < φ < π and
-    ``+1`` on π < φ < 2π (tests), and FourBar refuses φ = 0, π. This class follows the
-    crossed branch analytically through both change points. Derivation (sympy in the
+    A four-bar with s + l = p + q is a change-point linkage: at φ = 0 and φ = π all four joints lie on the
+    frame line and the loop may continue as a parallelogram (ψ = φ) or as the crossed antiparallelogram.
+    :class:`~mechlab.FourBar` with a fixed assembly sign cannot follow the crossed branch: it is
+    ``assembly = -1`` on 0 < φ < π and ``+1`` on π < φ < 2π (tests), and FourBar refuses φ = 0, π. This
+    class follows the crossed branch analytically through both change points. Derivation (sympy in the
     tests and notebook 01): with k = (crank + ground)/(crank - ground),
 
         tan(ψ/2) = k·tan(φ/2),   ψ' = 2k / ((1 + k²) + (1 - k²) cos φ),
@@ -30,6 +29,25 @@ class Antiparallelogram(Mechanism):
 
     ground < crank (k > 1): both long links turn fully in the same sense (short frame);
     ground > crank (k < -1): both short links turn fully in opposite senses (long frame).
+
+    Parameters
+    ----------
+    crank : float
+        Crank and rocker length (positive).
+    ground : float
+        Frame and coupler length (positive, ≠ crank).
+
+    Raises
+    ------
+    DimensionError
+        For a length that is not positive and finite, or crank = ground (a rhombus).
+
+    Examples
+    --------
+    >>> from mechlab import Antiparallelogram
+    >>> m = Antiparallelogram(2, 1)
+    >>> m.k, round(float(m.output_angle(1.0)), 4)
+    (3.0, 2.0459)
     """
 
     @classmethod
@@ -54,35 +72,113 @@ class Antiparallelogram(Mechanism):
 
     @property
     def coupler(self) -> float:
+        """The coupler's length, equal to the frame's.
+
+        Returns
+        -------
+        float
+            |AB| = ``ground``.
+        """
         return self.ground
 
     @property
     def rocker(self) -> float:
+        """The rocker's length, equal to the crank's.
+
+        Returns
+        -------
+        float
+            |EB| = ``crank``.
+        """
         return self.crank
 
     @property
     def k(self) -> float:
-        """k = (crank + ground)/(crank - ground), the ratio in tan(ψ/2) = k·tan(φ/2)."""
+        """k = (crank + ground)/(crank - ground), the ratio in tan(ψ/2) = k·tan(φ/2).
+
+        Returns
+        -------
+        float
+            k (> 1 for a short frame, < -1 for a long one).
+        """
         return (self.crank + self.ground) / (self.crank - self.ground)
 
     def change_points(self) -> tuple[float, float]:
-        """Crank angles (rad) where the linkage folds flat: 0 and π."""
+        """Crank angles where the linkage folds flat: 0 and π.
+
+        Returns
+        -------
+        tuple of float
+            ``(0.0, π)`` (radians).
+        """
         return (0.0, np.pi)
 
     @validated
     def cycle(self, n: Samples = 361) -> np.ndarray:
-        """n crank angles over a full turn, shifted by 0.37 of a step so that no sample falls
-        on a change point (0 or π), where Kennedy's construction is indeterminate."""
+        """n crank angles over a full turn, shifted so that no sample falls on a change point.
+
+        The shift is 0.37 of a step: at 0 and π Kennedy's construction is indeterminate.
+
+        Parameters
+        ----------
+        n : int, optional
+            Number of samples.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``n`` crank angles (radians).
+
+        Examples
+        --------
+        >>> from mechlab import Antiparallelogram
+        >>> Antiparallelogram(2, 1).cycle(3)
+        array([1.16238928, 4.30398194, 7.44557459])
+        """
         phi = self.turn(n)
         return phi + 0.37 * (phi[1] - phi[0]) if n > 1 else phi + 0.1
 
     def as_fourbar(self, assembly: int) -> FourBar:
-        """The same lengths as a FourBar with a fixed assembly sign (valid on half a turn each)."""
+        """The same lengths as a FourBar with a fixed assembly sign (valid on half a turn each).
+
+        Parameters
+        ----------
+        assembly : {1, -1}
+            The FourBar's assembly sign: -1 follows the crossed branch on 0 < φ < π, +1 on π < φ < 2π.
+
+        Returns
+        -------
+        FourBar
+            The four-bar with crank, coupler, rocker, ground = crank, ground, crank, ground.
+
+        Examples
+        --------
+        >>> from mechlab import Antiparallelogram
+        >>> Antiparallelogram(2, 1).as_fourbar(-1)
+        FourBar(crank=2.0, coupler=1.0, rocker=2.0, ground=1.0, assembly=-1)
+        """
         return FourBar(self.crank, self.ground, self.crank, self.ground, assembly)
 
     @scalar_law
     def output_angle(self, phi) -> np.ndarray:
-        """ψ(φ) on the crossed branch, continuous over any range of φ."""
+        """ψ(φ) on the crossed branch, continuous over any range of φ.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        numpy.ndarray or float
+            ψ (radians); a float for a scalar φ.
+
+        Examples
+        --------
+        >>> from mechlab import Antiparallelogram
+        >>> round(float(Antiparallelogram(2, 1).output_angle(1.0)), 4)
+        2.0459
+        """
         phi = as_angles(phi)
         k = self.k
         if k > 0:
@@ -90,7 +186,29 @@ class Antiparallelogram(Mechanism):
         return -phi + 2.0 * np.arctan2((k + 1.0) * np.sin(phi), (1.0 - k) + (1.0 + k) * np.cos(phi))
 
     def motion(self, phi) -> AngularMotion:
-        """Paths of O, A, B, E and ψ, ψ', ψ'' at crank angles φ (radians), any φ."""
+        """Paths of O, A, B, E and ψ, ψ', ψ'' at crank angles φ, any φ (through both change points).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        AngularMotion
+            Joint paths and the output angle ψ with ψ', ψ''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> from mechlab import Antiparallelogram
+        >>> Antiparallelogram(2, 1).motion(1.0).output
+        Law(ψ = 2.04588 rad = 117.22°, ψ′ = 1.05679, ψ″ = -1.25301)
+        """
         phi = as_angles(phi)
         n = len(phi)
         a, g, k = self.crank, self.ground, self.k

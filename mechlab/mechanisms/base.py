@@ -259,7 +259,30 @@ def bars(st: Structure) -> tuple[Part, ...]:
 
 @validated
 def output_axis(motion: Annotated[AngularMotion, mechanism(AngularMotion)]) -> tuple:
-    """The output angle ψ with ψ′, ψ″: the axis of a link that turns with the output."""
+    """The output angle ψ with ψ′, ψ″: the axis of a link that turns with the output.
+
+    Parameters
+    ----------
+    motion : AngularMotion
+        A motion whose output is an angle.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ψ (radians), ψ′ and ψ″.
+
+    Raises
+    ------
+    TypeError
+        If ``motion`` is not an :class:`~mechlab.motion.AngularMotion`.
+
+    Examples
+    --------
+    >>> from mechlab import FourBar
+    >>> psi, dpsi, ddpsi = output_axis(FourBar(1, 3, 3.5, 4).motion(0.3))
+    >>> round(float(psi), 4), round(float(dpsi), 4)
+    (2.1036, -0.2569)
+    """
     return motion.psi, motion.dpsi, motion.ddpsi
 
 
@@ -279,10 +302,18 @@ def fmt_ranges(ranges) -> str:
 class Mechanism(Checked):
     """Base of the single-loop mechanisms: a crank O-A driving one output.
 
-    Subclasses are frozen dataclasses of their dimensions and define :meth:`crank_ranges`,
-    :meth:`motion` and :meth:`structure` (its links, pairs and groups, from which the drawing, the
-    centres, the force model and the design layer's counts are read). ``pivots`` names the joints
-    fixed to the frame, ``output`` is ``"angle"`` or ``"position"``.
+    Subclasses are frozen dataclasses of their dimensions and define :meth:`crank_ranges`, :meth:`motion`
+    and :meth:`structure` (its links, pairs and groups, from which the drawing, the centres, the force
+    model and the design layer's counts are read). ``pivots`` (a class attribute) names the joints fixed to
+    the frame, ``output`` is ``"angle"`` or ``"position"``. The constructor takes the family's dimensions
+    (lengths dimensionless or mm) and raises DimensionError for one that is out of range.
+
+    Examples
+    --------
+    >>> from mechlab import FourBar, Mechanism
+    >>> m = FourBar(1, 3, 3.5, 4)
+    >>> isinstance(m, Mechanism), m.pivots, m.output
+    (True, ('O', 'E'), 'angle')
     """
 
     pivots: ClassVar[tuple[str, ...]] = ("O",)
@@ -351,21 +382,76 @@ class Mechanism(Checked):
         return tuple(sorted(found, key=lambda c: (c.__module__, c.__qualname__)))
 
     def crank_ranges(self) -> tuple[tuple[float, float], ...]:
-        """Open intervals of crank angles (radians) where the mechanism assembles."""
+        """Open intervals of crank angles where the mechanism assembles.
+
+        Returns
+        -------
+        tuple of (float, float)
+            ``((0, 2π),)`` for a crank that turns fully, else one or two intervals ``(start, end)``
+            (radians, ``start < end``); ``()`` if none.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> [tuple(round(x, 4) for x in r) for r in FourBar(3, 2, 4, 4).crank_ranges()]
+        [(0.5054, 2.0469), (-2.0469, -0.5054)]
+        """
         return FULL_TURN
 
     @property
     def can_turn(self) -> bool:
-        """True when the crank turns fully (a revolving input)."""
+        """True when the crank turns fully (a revolving input).
+
+        Returns
+        -------
+        bool
+            Whether :meth:`crank_ranges` is the full turn.
+        """
         return self.crank_ranges() == FULL_TURN
 
     def rotation_failure(self) -> str:
-        """Why the crank cannot turn fully (subclasses name the inequality)."""
+        """Why the crank cannot turn fully (subclasses name the inequality).
+
+        Returns
+        -------
+        str
+            The violated condition with its numbers and the reachable range (degrees).
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> FourBar(3, 2, 4, 4).rotation_failure()
+        'crank cannot turn fully: s + l = 6.00 < p + q = 7.00 (Grashof), but the shortest link is ...'
+        """
         return f"crank cannot turn fully: it reaches only φ ∈ {fmt_ranges(self.crank_ranges())}"
 
     @validated
     def turn(self, n: Samples = 361) -> np.ndarray:
-        """n crank angles over one full turn [0, 2π]; RotationError if the crank cannot turn."""
+        """n crank angles over one full turn [0, 2π].
+
+        Parameters
+        ----------
+        n : int, optional
+            Number of samples (≥ 2).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``n`` equally spaced crank angles (radians), both ends included.
+
+        Raises
+        ------
+        RotationError
+            If the crank cannot turn fully.
+        DimensionError
+            If ``n`` is not an admissible number of samples.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> FourBar(1, 3, 3.5, 4).turn(5)
+        array([0.        , 1.57079633, 3.14159265, 4.71238898, 6.28318531])
+        """
         if not self.can_turn:
             raise RotationError(self.rotation_failure())
         return np.linspace(0.0, TWO_PI, n)
@@ -374,10 +460,30 @@ class Mechanism(Checked):
     def cycle(self, n: Samples = 361) -> np.ndarray:
         """n crank angles over a full turn, or strictly inside the first reachable range.
 
-        A crank that cannot turn rocks between two dead points, where the analogs are
-        unbounded; the samples stop short of them by 1e-4 of the range (where a joint
-        distance is stationary at a dead point, as at φ = 0 or π, it moves away from the
-        dead point only with the square of the margin).
+        A crank that cannot turn rocks between two dead points, where the analogs are unbounded; the samples
+        stop short of them by 1e-4 of the range (where a joint distance is stationary at a dead point, as at
+        φ = 0 or π, it moves away from the dead point only with the square of the margin).
+
+        Parameters
+        ----------
+        n : int, optional
+            Number of samples (≥ 2).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``n`` crank angles (radians).
+
+        Raises
+        ------
+        DimensionError
+            If ``n`` is not an admissible number of samples.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> FourBar(3, 2, 4, 4).cycle(3)
+        array([0.50551467, 1.27613795, 2.04676123])
         """
         if self.can_turn:
             return self.turn(n)
@@ -386,7 +492,27 @@ class Mechanism(Checked):
         return np.linspace(start + margin, end - margin, n)
 
     def check_reachable(self, phi: np.ndarray) -> None:
-        """Raise AssemblyError naming the reachable range if some φ lies outside it."""
+        """Check that every crank angle lies in a reachable range.
+
+        Parameters
+        ----------
+        phi : numpy.ndarray
+            Crank angles (radians), one-dimensional.
+
+        Raises
+        ------
+        AssemblyError
+            Naming the first unreachable angle, why (:meth:`assembly_failure`) and the reachable range.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import FourBar
+        >>> FourBar(3, 2, 4, 4).check_reachable(np.array([0.0]))
+        Traceback (most recent call last):
+        ...
+        mechlab.errors.AssemblyError: cannot assemble at φ = 0.00°: |AE| = 1 ≤ |coupler - rocker| = 2; ...
+        """
         ranges = self.crank_ranges()
         if ranges == FULL_TURN:
             return
@@ -401,30 +527,128 @@ class Mechanism(Checked):
                 f"the crank reaches only φ ∈ {fmt_ranges(ranges)}")
 
     def assembly_failure(self, phi: float) -> str:
-        """The violated condition at one crank angle (subclasses give the numbers)."""
+        """The violated condition at one crank angle (subclasses give the numbers).
+
+        Parameters
+        ----------
+        phi : float
+            A crank angle (radians) where the mechanism does not assemble.
+
+        Returns
+        -------
+        str
+            The condition with its numbers.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> FourBar(3, 2, 4, 4).assembly_failure(0.0)
+        '|AE| = 1 ≤ |coupler - rocker| = 2'
+        """
         return "the loop does not close"
 
     def motion(self, phi) -> Motion:  # pragma: no cover - abstract
+        """Joint paths and the output law at crank angles φ (every family defines it).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        Motion
+            Joint paths with their first and second analogs and the output law (an AngularMotion or a LinearMotion).
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+        AssemblyError
+            Where the loop cannot close (the message names the reachable range).
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> FourBar(1, 3, 3.5, 4).motion(0.3).output
+        Law(ψ = 2.10358 rad = 120.526°, ψ′ = -0.256937, ψ″ = 0.348417)
+        """
         raise NotImplementedError
 
     def structure(self) -> Structure:
-        """The mechanism's links, pairs and structural groups (a family describes itself here once)."""
+        """The mechanism's links, pairs and structural groups (a family describes itself here once).
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Raises
+        ------
+        MechanismError
+            If the family defines no structure.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> FourBar(1, 3, 3.5, 4).structure().numbers()
+        {'crank': 1, 'coupler': 2, 'rocker': 3, 'frame': 4}
+        """
         raise MechanismError(f"{type(self).__name__} describes no structure: define its structure() method")
 
     def sketch(self, motion: Motion) -> Sketch:
-        """The kinematic diagram over ``motion``, read from ``structure()``: a bar through the ``joints`` of
-        each link that has some, the fixed ``pivots``, a link carrying a slot drawn as a slotted bar (turning)
-        or a yoke (translating), a link sliding on the frame as a guide and a block; each part carries its
-        link's number (:meth:`Structure.numbers`). The one method a family overrides to show more.
+        """The kinematic diagram over ``motion``, read from ``structure()``.
+
+        A bar through the ``joints`` of each link that has some, the fixed ``pivots``, a link carrying a slot
+        drawn as a slotted bar (turning) or a yoke (translating), a link sliding on the frame as a guide and a
+        block; each part carries its link's number (:meth:`Structure.numbers`). The one method a family
+        overrides to show more.
+
+        Parameters
+        ----------
+        motion : Motion
+            This mechanism's motion (from :meth:`motion`).
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the fixed pivots.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> m = FourBar(1, 3, 3.5, 4)
+        >>> sketch = m.sketch(m.motion(0.3))
+        >>> len(sketch.parts), sketch.pivots
+        (3, ('O', 'E'))
         """
         st = self.structure()
         return Sketch(bars(st) + _pair_parts(st, motion), self.pivots)
 
     def curved_slot_twin(self) -> tuple[Mechanism, float]:
-        """The curved-slot mechanism that moves like this one (Zinchenko et al. (2013) §1), in their frame, and the
-        crank-angle shift ``phase`` from this mechanism's frame to it: by default the slot is the crank pin's
-        path relative to the output link, read from ``structure()`` and the motion
-        (:func:`mechlab.mechanisms.curved_slot.structural_twin`); DimensionError where no twin exists."""
+        """The curved-slot mechanism that moves like this one (Zinchenko et al. (2013) §1), in their frame.
+
+        By default the slot is the crank pin's path relative to the output link, read from ``structure()`` and
+        the motion (:func:`mechlab.mechanisms.curved_slot.structural_twin`); DimensionError where no twin
+        exists.
+
+        Returns
+        -------
+        tuple of (Mechanism, float)
+            The curved-slot twin and the crank-angle shift ``phase`` (radians) from this mechanism's frame to it.
+
+        Raises
+        ------
+        DimensionError
+            If the mechanism has no curved-slot twin.
+
+        Examples
+        --------
+        >>> from mechlab import SliderCrank
+        >>> twin, phase = SliderCrank(1, 3).curved_slot_twin()
+        >>> type(twin).__name__, phase
+        ('TranslatingCurvedSlot', 0.0)
+        """
         from .curved_slot import structural_twin  # curved_slot builds on this module
 
         return structural_twin(self)

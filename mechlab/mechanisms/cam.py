@@ -228,8 +228,8 @@ class RollerCam(Mechanism):
         >>> pr = CamProgramme(30.0, np.radians(40), np.radians(40), law="cycloidal (sine)")
         >>> TranslatingRollerCam(pr, 25.0, 1.0).undercut() is None
         True
-        >>> TranslatingRollerCam(pr, 20.0, 6.0).undercut().spans.shape
-        (1, 2)
+        >>> TranslatingRollerCam(pr, 15.0, 10.0).undercut().spans.shape  # one stretch on the rise, one on the return
+        (2, 2)
         """
         if n is not None:
             warnings.warn("undercut(n): the test is exact now and takes no samples; n is ignored and goes in "
@@ -611,9 +611,34 @@ def _pressure(tangent, direction) -> np.ndarray:
 class TranslatingRollerCam(RollerCam):
     """Disc cam with a translating roller follower on the line x = ``offset`` (e), lifting along +y.
 
-    Lengths in mm (or dimensionless, one unit for all); ``programme.stroke`` is the lift h. The
-    roller centre is C = (e, s0 + s), s0 = √((r_b + r_r)² − e²). Raises DimensionError for a bad
-    dimension, e.g. |e| ≥ r_b + r_r (the follower's line misses the prime circle).
+    The roller centre is C = (e, s0 + s), s0 = √((r_b + r_r)² − e²).
+
+    Parameters
+    ----------
+    programme : CamProgramme
+        The follower's programme (:class:`~mechlab.synthesis.cam_design.CamProgramme`);
+        ``programme.stroke`` is the lift h (length).
+    base_radius : float
+        r_b, the base circle's radius (mm, or dimensionless with one unit for all).
+    roller_radius : float
+        r_r, the roller's radius (length).
+    offset : float, optional
+        e, the follower line's distance from O (length).
+    samples : int, optional
+        Profile nodes per turn that the motion's spline goes through.
+
+    Raises
+    ------
+    DimensionError
+        For a bad dimension, e.g. |e| ≥ r_b + r_r (the follower's line misses the prime circle).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import CamProgramme, TranslatingRollerCam
+    >>> cam = TranslatingRollerCam(CamProgramme(30.0, np.radians(40), np.radians(40)), 40.0, 10.0, offset=5.0)
+    >>> round(cam.s0, 4), round(float(cam.motion(1.0).s), 4)
+    (49.7494, 18.9959)
     """
 
     programme: object
@@ -633,7 +658,13 @@ class TranslatingRollerCam(RollerCam):
 
     @property
     def s0(self) -> float:
-        """Height of the roller centre above O in the inner dwell: √((r_b + r_r)² − e²)."""
+        """Height of the roller centre above O in the inner dwell: √((r_b + r_r)² − e²).
+
+        Returns
+        -------
+        float
+            s0 (length).
+        """
         return float(np.sqrt(self.prime_radius**2 - self.offset**2))
 
     q0 = 0.0
@@ -651,7 +682,26 @@ class TranslatingRollerCam(RollerCam):
         return X[:, 1] - self.s0
 
     def sketch(self, motion) -> Sketch:
-        """The cam's parts, and the follower's stem up its guide (a bushing above the stroke)."""
+        """The cam's parts, and the follower's stem up its guide (a bushing above the stroke).
+
+        Parameters
+        ----------
+        motion : LinearMotion
+            The cam's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the pivot O.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import CamProgramme, TranslatingRollerCam
+        >>> cam = TranslatingRollerCam(CamProgramme(30.0, np.radians(40), np.radians(40)), 40.0, 10.0)
+        >>> len(cam.sketch(cam.motion(1.0)).parts)
+        9
+        """
         sk = super().sketch(motion)
         C = motion.points["C"].p
         top = self.s0 + self.programme.stroke + 0.9 * self.prime_radius
@@ -679,8 +729,37 @@ class OscillatingRollerCam(RollerCam):
 
     The roller rides below the line OB; ψ = angle of B→C (radians) and the lift turns the arm
     counter-clockwise by the programme's ``stroke`` (the swing, radians): ψ = ψ0 + y, with
-    cos ψ0 = ((r_b + r_r)² − d² − L²)/(2dL), −π < ψ0 < 0. Raises DimensionError when the arm cannot
-    reach the prime circle or the swing would carry the roller across the line OB.
+    cos ψ0 = ((r_b + r_r)² − d² − L²)/(2dL), −π < ψ0 < 0.
+
+    Parameters
+    ----------
+    programme : CamProgramme
+        The follower's programme; ``programme.stroke`` is the swing (radians).
+    base_radius : float
+        r_b, the base circle's radius (length).
+    roller_radius : float
+        r_r, the roller's radius (length).
+    pivot_distance : float
+        d, from O to the arm's pivot B (length).
+    arm : float
+        L, the arm's length B→C (length).
+    samples : int, optional
+        Profile nodes per turn that the motion's spline goes through.
+
+    Raises
+    ------
+    DimensionError
+        When a dimension is bad, the arm cannot reach the prime circle or the swing would carry the
+        roller across the line OB.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import CamProgramme, OscillatingRollerCam
+    >>> programme = CamProgramme(np.radians(20), np.radians(40), np.radians(40))
+    >>> cam = OscillatingRollerCam(programme, 40.0, 10.0, 80.0, 60.0)
+    >>> round(cam.q0, 4), round(float(cam.motion(1.0).psi), 4)
+    (-2.4675, -2.2464)
     """
 
     programme: object
@@ -708,7 +787,13 @@ class OscillatingRollerCam(RollerCam):
 
     @property
     def q0(self) -> float:
-        """ψ0, the arm's angle in the inner dwell (radians)."""
+        """ψ0, the arm's angle in the inner dwell (radians).
+
+        Returns
+        -------
+        float
+            ψ0, in (−π, 0).
+        """
         d, L, R = self.pivot_distance, self.arm, self.prime_radius
         return -float(np.arccos((R * R - d * d - L * L) / (2 * d * L)))
 

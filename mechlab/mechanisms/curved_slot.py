@@ -48,6 +48,23 @@ class SlotCurve(Checked):
     periodic: bool
 
     def evaluate(self, t) -> PointPath:  # pragma: no cover - interface
+        """The curve's points with their first and second derivatives with respect to t.
+
+        Parameters
+        ----------
+        t : float or array_like
+            Curve parameters in [t0, t1] (reduced to it for a periodic curve).
+
+        Returns
+        -------
+        PointPath
+            c(t), c_t, c_tt, each (n, 2), in the link frame.
+
+        Raises
+        ------
+        DimensionError
+            If the curve's functions return arrays of the wrong shape or not finite (a ParametricSlot).
+        """
         raise NotImplementedError
 
     def points(self, t) -> np.ndarray:
@@ -65,7 +82,27 @@ def _xy(value, n, what):
 
 @dataclass(frozen=True)
 class CircleSlot(SlotCurve):
-    """Circle of ``radius`` about ``center`` (link frame); c(t) = center + radius·(cos t, sin t)."""
+    """Circle of ``radius`` about ``center`` (link frame); c(t) = center + radius·(cos t, sin t).
+
+    Parameters
+    ----------
+    center : tuple of float
+        The circle's centre in the link frame (length).
+    radius : float
+        Its radius (positive length).
+
+    Raises
+    ------
+    DimensionError
+        For a radius that is not positive and finite.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import CircleSlot
+    >>> CircleSlot((3.5, 0.0), 3.0).evaluate(np.array([0.0])).p
+    array([[6.5, 0. ]])
+    """
 
     center: Point
     radius: Length
@@ -82,7 +119,31 @@ class CircleSlot(SlotCurve):
 
 @dataclass(frozen=True)
 class ParametricSlot(SlotCurve):
-    """A curve given by vectorised functions f, f', f'' : t ↦ (n, 2) on [t0, t1]."""
+    """A curve given by vectorised functions f, f', f'' : t ↦ (n, 2) on [t0, t1].
+
+    Parameters
+    ----------
+    f, df, ddf : callable
+        c(t), c_t(t), c_tt(t), each taking an array of n parameters and returning (n, 2) (link frame).
+    t0, t1 : float
+        The parameter interval, t0 < t1.
+    periodic : bool, optional
+        Whether the curve is closed with period t1 − t0.
+
+    Raises
+    ------
+    DimensionError
+        For t0 ≥ t1 (and, on evaluation, for functions returning the wrong shape or non-finite values).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import ParametricSlot
+    >>> parabola = ParametricSlot(lambda t: np.stack([t, t**2], -1), lambda t: np.stack([1 + 0 * t, 2 * t], -1),
+    ...                           lambda t: np.stack([0 * t, 2 + 0 * t], -1), 0.0, 1.0)
+    >>> parabola.evaluate(np.array([0.5])).p
+    array([[0.5 , 0.25]])
+    """
 
     f: Function
     df: Function
@@ -104,9 +165,27 @@ class ParametricSlot(SlotCurve):
 
 @dataclass(frozen=True, eq=False)
 class SampledSlot(SlotCurve):
-    """Cubic spline through sampled points (m, 2) of the slot's centre line, chord-length parameter.
+    """Cubic spline through sampled points of the slot's centre line, chord-length parameter.
 
-    ``closed=True`` makes a periodic spline (the first point is repeated at the end if needed).
+    Parameters
+    ----------
+    samples : array_like
+        (m, 2) points (m ≥ 4) in the link frame (length).
+    closed : bool, optional
+        True makes a periodic spline (the first point is repeated at the end if needed).
+
+    Raises
+    ------
+    DimensionError
+        For fewer than four points, points that are not finite, or two consecutive points that coincide.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import SampledSlot
+    >>> slot = SampledSlot(np.array([[0, 0], [1, 0.5], [2, 0.8], [3, 0.9]], dtype=float))
+    >>> round(slot.t1, 4)  # the chord length
+    3.1671
     """
 
     samples: Annotated[np.ndarray, Spec("points", lo=4)]
@@ -282,11 +361,36 @@ def slot_sketch(mech, motion, pivot: str = "B") -> Sketch:
 # ---------------------------------------------------------------------------------------------
 @dataclass(frozen=True, eq=False)
 class CurvedSlotLink(PivotedSlot, Mechanism):
-    """Crank O-A (radius ``crank``) driving a link pivoted at B = (-pivot_distance, 0) whose
-    slot ``slot`` (a curve in the link frame, origin at B) carries the pin A.
+    """Crank O-A driving a link pivoted at B = (-pivot_distance, 0) whose curved slot carries the pin A.
 
     Zinchenko et al. (2013) §2, Fig. 8, formulas (12)-(17): ψ = ψ_K - β with ψ_K the base mechanism's
     angle (formula (18)) and β the polar angle of the pin in the link frame.
+
+    Parameters
+    ----------
+    crank : float
+        Crank radius (positive length).
+    pivot_distance : float
+        |OB| (positive length, ≠ crank).
+    slot : SlotCurve
+        The slot, a curve in the link frame (origin at B): a CircleSlot, ParametricSlot or SampledSlot.
+    start : float, optional
+        The slot parameter t near which the working piece is taken (needed when the pin may lie on
+        several pieces).
+
+    Raises
+    ------
+    DimensionError
+        For bad lengths, crank = pivot distance, or a slot with no usable working piece.
+    AssemblyError
+        If the pin never lies on the slot.
+
+    Examples
+    --------
+    >>> from mechlab import CircleSlot, CurvedSlotLink
+    >>> m = CurvedSlotLink(1.0, 4.0, CircleSlot((3.5, 0.0), 3.0), start=1.5707963267948966)
+    >>> round(float(m.motion(1.0).psi), 4)
+    -0.5239
     """
 
     @classmethod
@@ -312,16 +416,42 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
 
     # -- basic quantities ---------------------------------------------------------------------
     def base(self) -> SlottedLink:
-        """The base mechanism: straight slot through the pivot, same crank and pivot
-        (Zinchenko et al. (2013) Fig. 5)."""
+        """The base mechanism: straight slot through the pivot, same crank and pivot (Zinchenko et al. (2013) Fig. 5).
+
+        Returns
+        -------
+        SlottedLink
+            The base mechanism.
+
+        Examples
+        --------
+        >>> from mechlab import CircleSlot, CurvedSlotLink
+        >>> m = CurvedSlotLink(1.0, 4.0, CircleSlot((3.5, 0.0), 3.0), start=1.5707963267948966)
+        >>> m.base()
+        SlottedLink(crank=1.0, pivot_distance=4.0)
+        """
         return SlottedLink(self.crank, self.pivot_distance)
 
     @property
     def s_max(self) -> float:
+        """The pin's largest distance from B: crank + pivot distance.
+
+        Returns
+        -------
+        float
+            The distance (length).
+        """
         return self.crank + self.pivot_distance
 
     @property
     def s_min(self) -> float:
+        """The pin's smallest distance from B: |pivot distance − crank|.
+
+        Returns
+        -------
+        float
+            The distance (length).
+        """
         return abs(self.pivot_distance - self.crank)
 
     def _cos_for_distance(self, s):
@@ -452,13 +582,36 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
     def beta(self, phi) -> AnglePath:
         """β(φ), β'(φ), β''(φ): the pin's polar angle in the link frame (Zinchenko et al. (2013), formula (12)).
 
-        B + R(ψ)·c(t) = A(φ) gives |c(t)| = S(φ), an equation for t alone, solved on the working
-        segment (found once, in ``__post_init__``) by a vectorised bracketed Newton iteration on
-        |c(t)|² - S² = 0 (derivative 2c·c_t) started from a monotone table; a circle in closed form
-        (triangle B-centre-A). Analogs from c·c = S²: t' = (S²)'/(2c·c_t),
-        t'' = ((S²)''/2 - (|c_t|² + c·c_tt)·t'²)/(c·c_t); β' = θ_t·t', β'' = θ_tt·t'² + θ_t·t''.
-        A parameter with |c(t)| strictly monotone on the piece (the distance from B, as
-        :mod:`mechlab.synthesis.dwell_slot` uses) is always safe; c_t must not vanish there.
+        B + R(ψ)·c(t) = A(φ) gives |c(t)| = S(φ), an equation for t alone, solved on the working segment
+        (found once, in ``__post_init__``) by a vectorised bracketed Newton iteration on |c(t)|² - S² = 0
+        (derivative 2c·c_t) started from a monotone table; a circle in closed form (triangle B-centre-A).
+        Analogs from c·c = S²: t' = (S²)'/(2c·c_t), t'' = ((S²)''/2 - (|c_t|² + c·c_tt)·t'²)/(c·c_t);
+        β' = θ_t·t', β'' = θ_tt·t'² + θ_t·t''. A parameter with |c(t)| strictly monotone on the piece (the
+        distance from B, as :mod:`mechlab.synthesis.dwell_slot` uses) is always safe; c_t must not vanish there.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        AnglePath
+            β (radians) with β' and β''.
+
+        Raises
+        ------
+        AssemblyError
+            Where the pin is off the slot's working piece.
+        SingularityError
+            Where the slot is tangent to the circle about B at the pin (the analogs are unbounded).
+
+        Examples
+        --------
+        >>> from mechlab import CircleSlot, CurvedSlotLink
+        >>> m = CurvedSlotLink(1.0, 4.0, CircleSlot((3.5, 0.0), 3.0), start=1.5707963267948966)
+        >>> round(float(m.beta(1.0).theta), 4)
+        0.7072
         """
         phi = as_angles(phi)
         self.check_reachable(phi)
@@ -524,7 +677,34 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
         return np.interp(u, seg.u_table, ref)
 
     def motion(self, phi) -> AngularMotion:
-        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, Zinchenko et al. (2013) frame)."""
+        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (Zinchenko et al. (2013) frame).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        AngularMotion
+            Joint paths and the output angle ψ with ψ', ψ''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+        AssemblyError
+            Where the loop cannot close (the message names the reachable range).
+        SingularityError
+            Where the slot is tangent to the circle about B at the pin.
+
+        Examples
+        --------
+        >>> from mechlab import CircleSlot, CurvedSlotLink
+        >>> m = CurvedSlotLink(1.0, 4.0, CircleSlot((3.5, 0.0), 3.0), start=1.5707963267948966)
+        >>> m.motion(1.0).output
+        Law(ψ = -0.523911 rad = -30.0179°, ψ′ = 0.0124067, ψ″ = -0.190415)
+        """
         phi = as_angles(phi)
         b = self.beta(phi)
         base = self.base().motion(phi)
@@ -564,8 +744,22 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
         return np.stack([c * tan_link[:, 0] - s * tan_link[:, 1], s * tan_link[:, 0] + c * tan_link[:, 1]], axis=-1)
 
     def structure(self) -> Structure:
-        """Crank O→A; the pin A in the link's curved slot, a higher pair whose normal is the slot's at the
-        pin; the link turning about B (axis at ψ); one group, the link (Zinchenko et al. (2013) §2)."""
+        """Crank O→A; the pin A in the link's curved slot, a higher pair whose normal is the slot's at the pin.
+
+        The link turns about B (axis at ψ); one group, the link (Zinchenko et al. (2013) §2).
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab import CircleSlot, CurvedSlotLink
+        >>> m = CurvedSlotLink(1.0, 4.0, CircleSlot((3.5, 0.0), 3.0), start=1.5707963267948966)
+        >>> m.structure().numbers()["frame"]
+        3
+        """
         def normal(mo):
             return _unit_normal(self._slot_tangent_world(mo.phi, mo.psi))
 
@@ -577,11 +771,42 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
             (("link",),), "link", scale=self.crank + self.pivot_distance)
 
     def sketch(self, motion) -> Sketch:
-        """The crank, the slot turning with the link about B, and the arm holding it."""
+        """The crank, the slot turning with the link about B, and the arm holding it.
+
+        Parameters
+        ----------
+        motion : AngularMotion
+            The mechanism's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the pivots O and B.
+        """
         return slot_sketch(self, motion, "B")
 
     def slot_samples(self, n: int = 200) -> np.ndarray:
-        """(n, 2) points of the slot's working part in the link frame (for drawings)."""
+        """(n, 2) points of the slot's working part in the link frame (for drawings).
+
+        Parameters
+        ----------
+        n : int, optional
+            Number of points.
+
+        Returns
+        -------
+        numpy.ndarray
+            Points of the slot's centre line, shape (n, 2) (length).
+
+        Examples
+        --------
+        >>> from mechlab import CircleSlot, CurvedSlotLink
+        >>> m = CurvedSlotLink(1.0, 4.0, CircleSlot((3.5, 0.0), 3.0), start=1.5707963267948966)
+        >>> m.slot_samples(3).round(4)
+        array([[4.0357, 2.9518],
+               [2.8929, 2.9379],
+               [1.75  , 2.4367]])
+        """
         if isinstance(self.slot, CircleSlot):
             phi = np.linspace(*self._sample_range(), n)
             return self._pin_in_link(phi)
@@ -610,9 +835,31 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
 class TranslatingCurvedSlot(Mechanism):
     """Crank O-A driving a slotted link that translates along the x axis (Zinchenko et al. (2013) Fig. 4, 7).
 
-    The slot is a curve in the link frame whose origin C = (s, 0) slides on the x axis;
-    the pin satisfies A = (s + x_α, y_α), so s = x_K - x_α with x_K = crank·cos φ the sine
-    mechanism's law (formulas (1), (2)).
+    The slot is a curve in the link frame whose origin C = (s, 0) slides on the x axis; the pin satisfies
+    A = (s + x_α, y_α), so s = x_K - x_α with x_K = crank·cos φ the sine mechanism's law (formulas (1), (2)).
+
+    Parameters
+    ----------
+    crank : float
+        Crank radius (positive length).
+    slot : SlotCurve
+        The slot, a curve in the link frame.
+    start : float, optional
+        The slot parameter t near which the working piece is taken.
+
+    Raises
+    ------
+    DimensionError
+        For a bad crank or a slot with no usable working piece.
+    AssemblyError
+        If the pin never lies on the slot.
+
+    Examples
+    --------
+    >>> from mechlab import CircleSlot, TranslatingCurvedSlot
+    >>> m = TranslatingCurvedSlot(1.0, CircleSlot((0.0, 0.0), 3.0), start=3.141592653589793)
+    >>> round(float(m.motion(1.0).s), 4)
+    3.4199
     """
 
     @classmethod
@@ -644,7 +891,13 @@ class TranslatingCurvedSlot(Mechanism):
             self._segments  # noqa: B018
 
     def base(self) -> SineMechanism:
-        """The base mechanism: the sine mechanism with the same crank (Zinchenko et al. (2013) Fig. 6)."""
+        """The base mechanism: the sine mechanism with the same crank (Zinchenko et al. (2013) Fig. 6).
+
+        Returns
+        -------
+        SineMechanism
+            The base mechanism.
+        """
         return SineMechanism(self.crank)
 
     # -- working segment: y decreasing from 0 one way, increasing the other -------------------
@@ -723,7 +976,30 @@ class TranslatingCurvedSlot(Mechanism):
     # -- kinematics ---------------------------------------------------------------------------
     @scalar_law
     def x_alpha(self, phi) -> AnglePath:
-        """x_α(φ) with its analogs: the slot point's abscissa in the link frame (formula (1))."""
+        """x_α(φ) with its analogs: the slot point's abscissa in the link frame (formula (1)).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        AnglePath
+            x_α (length) with its first and second analogs (an AnglePath holds the three arrays).
+
+        Raises
+        ------
+        AssemblyError
+            Where the pin is off the slot's working piece.
+
+        Examples
+        --------
+        >>> from mechlab import CircleSlot, TranslatingCurvedSlot
+        >>> m = TranslatingCurvedSlot(1.0, CircleSlot((0.0, 0.0), 3.0), start=3.141592653589793)
+        >>> round(float(m.x_alpha(1.0).theta), 4)
+        -2.8796
+        """
         phi = as_angles(phi)
         self.check_reachable(phi)
         a = self.crank
@@ -758,7 +1034,32 @@ class TranslatingCurvedSlot(Mechanism):
         return AnglePath(c.p[:, 0], c.d[:, 0] * dt, c.dd[:, 0] * dt**2 + c.d[:, 0] * ddt)
 
     def motion(self, phi) -> LinearMotion:
-        """Paths of O, A, C and s, s', s'' at crank angles φ (radians)."""
+        """Paths of O, A, C and s, s', s'' at crank angles φ.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        LinearMotion
+            Joint paths and the output displacement s with s', s''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+        AssemblyError
+            Where the loop cannot close (the message names the reachable range).
+
+        Examples
+        --------
+        >>> from mechlab import CircleSlot, TranslatingCurvedSlot
+        >>> m = TranslatingCurvedSlot(1.0, CircleSlot((0.0, 0.0), 3.0), start=3.141592653589793)
+        >>> m.motion(1.0).output
+        Law(s = 3.41987, s′ = -0.999359, s″ = -0.404442)
+        """
         phi = as_angles(phi)
         xa = self.x_alpha(phi)
         A = crank_point(self.crank, phi)
@@ -793,8 +1094,22 @@ class TranslatingCurvedSlot(Mechanism):
         return self.slot.evaluate(t).d
 
     def structure(self) -> Structure:
-        """Crank O→A; the pin A in the yoke's curved slot (a higher pair, the slot's normal at the pin);
-        the yoke at C sliding on the frame along x; one group, the yoke."""
+        """Crank O→A; the pin A in the yoke's curved slot (a higher pair, the slot's normal at the pin).
+
+        The yoke at C slides on the frame along x; one group, the yoke.
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab import CircleSlot, TranslatingCurvedSlot
+        >>> m = TranslatingCurvedSlot(1.0, CircleSlot((0.0, 0.0), 3.0), start=3.141592653589793)
+        >>> m.structure().numbers()
+        {'crank': 1, 'yoke': 2, 'frame': 3}
+        """
         def normal(mo):
             return _unit_normal(self._tangent(mo.phi))
 
@@ -805,11 +1120,33 @@ class TranslatingCurvedSlot(Mechanism):
             (("yoke",),), "yoke", scale=self.crank)
 
     def sketch(self, motion) -> Sketch:
-        """The crank, the slot moving with the yoke, its rod and the guide."""
+        """The crank, the slot moving with the yoke, its rod and the guide.
+
+        Parameters
+        ----------
+        motion : LinearMotion
+            The mechanism's motion over an array of crank angles.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the pivot O.
+        """
         return slot_sketch(self, motion)
 
     def slot_samples(self, n: int = 200) -> np.ndarray:
-        """(n, 2) points of the slot's working part in the link frame (for drawings)."""
+        """(n, 2) points of the slot's working part in the link frame (for drawings).
+
+        Parameters
+        ----------
+        n : int, optional
+            Number of points.
+
+        Returns
+        -------
+        numpy.ndarray
+            Points of the slot's centre line, shape (n, 2) (length).
+        """
         lo, hi = self._y_range()
         a = self.crank
         ys = np.linspace(max(lo, -a), min(hi, a), n)

@@ -60,11 +60,25 @@ def circle_pair(r1: float, centre2, r2: float) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass(frozen=True)
 class Grashof:
-    """Grashof classification of a four-bar with the numbers behind it.
+    """Grashof classification of a four-bar with the numbers behind it (from :meth:`FourBar.grashof`).
 
-    ``kind`` names the linkage by its crank and rocker (Norton's table); ``grashof_class``
-    says whether Grashof's condition s + l ≤ p + q holds: "Grashof", "non-Grashof" (every
-    triple-rocker) or "change-point" (equality).
+    Parameters
+    ----------
+    kind : str
+        The linkage by its crank and rocker (Norton's table): ``"crank-rocker"``, ``"double-crank"``,
+        ``"rocker-crank"``, ``"double-rocker"``, ``"change-point"`` or ``"triple-rocker"``.
+    s, l : float
+        The shortest and the longest link (length).
+    p, q : float
+        The other two links (length).
+    shortest : str
+        The name of the shortest link (``"crank"``, ``"coupler"``, ``"rocker"`` or ``"ground"``).
+
+    Examples
+    --------
+    >>> from mechlab import FourBar
+    >>> FourBar(1, 3, 3.5, 4).grashof()
+    Grashof(kind='crank-rocker', s=1.0, l=4.0, p=3.0, q=3.5, shortest='crank')
     """
 
     kind: str            # crank-rocker, double-crank, rocker-crank, double-rocker, change-point, triple-rocker
@@ -76,6 +90,13 @@ class Grashof:
 
     @property
     def inequality(self) -> str:
+        """Grashof's inequality with its numbers, e.g. ``"s + l = 5.00 < p + q = 6.50"``.
+
+        Returns
+        -------
+        str
+            The comparison of s + l with p + q (``<``, ``=`` within 1e-12 relative, or ``>``).
+        """
         lhs, rhs = self.s + self.l, self.p + self.q
         if abs(lhs - rhs) <= _CHANGE_POINT_TOL * rhs:
             rel = "="
@@ -85,6 +106,13 @@ class Grashof:
 
     @property
     def grashof_class(self) -> str:
+        """Whether Grashof's condition s + l ≤ p + q holds.
+
+        Returns
+        -------
+        str
+            ``"Grashof"``, ``"non-Grashof"`` (every triple-rocker) or ``"change-point"`` (equality).
+        """
         return {"change-point": "change-point", "triple-rocker": "non-Grashof"}.get(self.kind, "Grashof")
 
     def __str__(self) -> str:
@@ -96,9 +124,31 @@ class Grashof:
 class FourBar(Mechanism):
     """Crank O-A, coupler A-B, rocker B-E, frame O-E; output ψ = angle of E→B.
 
-    ``assembly`` is +1 or "open", -1 or "crossed" (stored as the sign). Raises
-    DimensionError for a length that is not positive and finite, AssemblyError if the
-    linkage closes at no crank angle.
+    The crank pivot O is at the origin, the output pivot E at (ground, 0); φ and ψ are measured
+    counter-clockwise from the ray O→E (radians).
+
+    Parameters
+    ----------
+    crank, coupler, rocker, ground : float
+        Link lengths (positive; dimensionless or mm, in one unit).
+    assembly : {1, -1, "open", "crossed"}, optional
+        The assembly branch: +1 or ``"open"`` (B on the left of A→E), -1 or ``"crossed"``; stored as the sign.
+
+    Raises
+    ------
+    DimensionError
+        If a length is not positive and finite, or ``assembly`` is not one of the four values.
+    AssemblyError
+        If the linkage closes at no crank angle.
+
+    Examples
+    --------
+    >>> from mechlab import FourBar
+    >>> m = FourBar(1, 3, 3.5, 4)
+    >>> round(float(m.motion(0.3).psi), 4)
+    2.1036
+    >>> m.grashof().kind
+    'crank-rocker'
     """
 
     title = "four-bar"
@@ -129,7 +179,19 @@ class FourBar(Mechanism):
 
     # -- structure ------------------------------------------------------------------
     def grashof(self) -> Grashof:
-        """Grashof's classification with respect to the crank (input) link."""
+        """Grashof's classification with respect to the crank (input) link.
+
+        Returns
+        -------
+        Grashof
+            The kind of linkage, the sorted lengths s, l, p, q and the shortest link's name.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> str(FourBar(3, 2, 4, 4).grashof())
+        'double-rocker (s + l = 6.00 < p + q = 7.00, shortest link: coupler = 2)'
+        """
         named = {"crank": self.crank, "coupler": self.coupler, "rocker": self.rocker, "ground": self.ground}
         order = sorted(named, key=named.get)
         s, p, q, l = (named[k] for k in order)
@@ -147,9 +209,24 @@ class FourBar(Mechanism):
     def extremes(self) -> Extremes:
         """The rocker's limit positions, its swing and the time ratio of a crank-rocker.
 
-        B is at a limit when O, A, B lie in line: |OB| = coupler + crank (extended) or
-        coupler - crank (folded), and |EB| = rocker (the law of cosines in triangle O-B-E).
-        Raises RotationError unless the linkage is a crank-rocker.
+        B is at a limit when O, A, B lie in line: |OB| = coupler + crank (extended) or coupler - crank
+        (folded), and |EB| = rocker (the law of cosines in triangle O-B-E).
+
+        Returns
+        -------
+        Extremes
+            Crank angles and rocker angles of both limits (radians), the swing and the time ratio.
+
+        Raises
+        ------
+        RotationError
+            Unless the linkage is a crank-rocker.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> round(FourBar(1, 3, 3.5, 4).extremes().time_ratio, 6)
+        1.106982
         """
         kind = self.grashof().kind
         if kind != "crank-rocker":
@@ -183,7 +260,19 @@ class FourBar(Mechanism):
         return f"|AE| = {d:.4g} ≤ |coupler - rocker| = {abs(c - r):.4g}"
 
     def structure(self) -> Structure:
-        """Crank O→A, coupler A→B, rocker E→B; revolute pairs O, A, B, E; one RRR group."""
+        """Crank O→A, coupler A→B, rocker E→B; revolute pairs O, A, B, E; one RRR group.
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> FourBar(1, 3, 3.5, 4).structure().numbers()
+        {'crank': 1, 'coupler': 2, 'rocker': 3, 'frame': 4}
+        """
         return Structure(
             (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")),
              Link("coupler", "A", ("A", "B"), self.coupler, joints=("A", "B")),
@@ -193,10 +282,24 @@ class FourBar(Mechanism):
             (("coupler", "rocker"),), "rocker", scale=max(self.crank, self.coupler, self.rocker, self.ground))
 
     def curved_slot_twin(self):
-        """Zinchenko et al. (2013) Fig. 2: a link pivoted at E whose slot is the circle of radius l_AB about B,
-        on the arc
-        chosen by kc; in Zinchenko et al.'s (2013) frame (crank angle φ − π). Kept over the default (the same
-        slot, sampled from the motion) for its closed form and for a crank that only rocks."""
+        """Zinchenko et al. (2013) Fig. 2: a link pivoted at E whose slot is the circle of radius l_AB about B.
+
+        The arc is chosen by the assembly; the twin is in Zinchenko et al.'s (2013) frame (crank angle φ − π).
+        Kept over the default (the same slot, sampled from the motion) for its closed form and for a crank that
+        only rocks.
+
+        Returns
+        -------
+        tuple of (Mechanism, float)
+            The curved-slot twin and the crank-angle shift ``phase`` (radians) from this mechanism's frame to it.
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> twin, phase = FourBar(1, 3, 3.5, 4).curved_slot_twin()
+        >>> type(twin).__name__, round(phase, 4)
+        ('CurvedSlotLink', 3.1416)
+        """
         slot = CircleSlot((self.rocker, 0.0), self.coupler)
         return CurvedSlotLink(self.crank, self.ground, slot, start=self.assembly * np.pi / 2), np.pi
 
@@ -212,9 +315,30 @@ class FourBar(Mechanism):
         return np.arctan2(B[:, 1], B[:, 0] - self.ground)
 
     def motion(self, phi) -> AngularMotion:
-        """Joint paths of O, A, B, E and the output law ψ, ψ', ψ'' at crank angles φ (rad).
+        """Joint paths of O, A, B, E and the output law ψ, ψ', ψ'' at crank angles φ.
 
-        Raises AssemblyError (with the reachable range) where the loop cannot close.
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        AngularMotion
+            Joint paths and the output angle ψ with ψ', ψ''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+        AssemblyError
+            Where the loop cannot close (the message names the reachable range).
+
+        Examples
+        --------
+        >>> from mechlab import FourBar
+        >>> FourBar(1, 3, 3.5, 4).motion(0.3).output
+        Law(ψ = 2.10358 rad = 120.526°, ψ′ = -0.256937, ψ″ = 0.348417)
         """
         phi = as_angles(phi)
         self.check_reachable(phi)

@@ -343,9 +343,35 @@ class PlanarGeneva(Mechanism):
 class ExternalGeneva(PlanarGeneva):
     """External Geneva: the pin on the near side of O, the wheel turns against the crank.
 
-    a = C sin(π/z), wheel (entry) radius C cos(π/z), outer radius sqrt(C²cos²(π/z) + r²)
-    (the slot corners touch the roller at entry), locking disc radius a - 1.5·r.
-    Dwell fraction 1/2 + 1/z; max |ψ'| = λ/(1 - λ); |ψ''| jumps by tan(π/z) at entry.
+    a = C sin(π/z), wheel (entry) radius C cos(π/z), outer radius sqrt(C²cos²(π/z) + r²) (the slot corners
+    touch the roller at entry), locking disc radius a - 1.5·r. Dwell fraction 1/2 + 1/z;
+    max |ψ'| = λ/(1 - λ); |ψ''| jumps by tan(π/z) at entry.
+
+    Parameters
+    ----------
+    z : int
+        Number of slots (≥ 3).
+    centre_distance : float
+        C, from the crank pivot O to the wheel's centre W (positive length).
+    roller_radius : float, optional
+        Roller radius r (length); 0.15·a if None.
+
+    Raises
+    ------
+    SlotCountError
+        For z that is not a whole number ≥ 3.
+    DimensionError
+        For negative sizes or a roller that does not fit.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import ExternalGeneva
+    >>> g = ExternalGeneva(4, 100)
+    >>> round(g.crank_radius, 4), round(g.outer_radius, 4)
+    (70.7107, 71.5017)
+    >>> round(float(np.degrees(g.motion(np.pi).psi)), 4)  # the wheel half-way through its index
+    -45.0
     """
 
     title = "external Geneva"
@@ -359,26 +385,63 @@ class ExternalGeneva(PlanarGeneva):
 
     @property
     def outer_radius(self) -> float:
-        """sqrt(C² cos²(π/z) + r²): the slot corners touch the roller at entry."""
+        """sqrt(C² cos²(π/z) + r²): the slot corners touch the roller at entry.
+
+        Returns
+        -------
+        float
+            The wheel's outer radius (length).
+        """
         return float(np.hypot(self.entry_radius, self.roller_radius))
 
     @property
     def slot_length(self) -> float:
-        """From the rim to the slot's bottom: outer radius - (C - a - r)."""
+        """From the rim to the slot's bottom: outer radius - (C - a - r).
+
+        Returns
+        -------
+        float
+            The slot's length (length).
+        """
         return self.outer_radius - (self.slot_bottom - self.roller_radius)
 
     @property
     def locking_radius(self) -> float:
-        """Radius of the crank's locking disc, a - 1.5 r (the usual design rule: the
-        roller clears it by half its radius). The wheel's concave locking arcs have this
-        radius, centred at distance C from W on the bisectors between slots."""
+        """Radius of the crank's locking disc, a - 1.5 r (the usual design rule).
+
+        The wheel's concave locking arcs have the same radius, centred at distance C from W on the bisectors
+        between slots.
+
+        Returns
+        -------
+        float
+            The radius (length).
+        """
         return self.crank_radius - 1.5 * self.roller_radius
 
     def _drawing_radii(self) -> tuple:
         return ("wheel outer radius", self.outer_radius), ("locking disc radius", self.locking_radius)
 
     def sketch(self, motion) -> Sketch:
-        """The wheel, and the crank's locking disc whose relief lets the wheel turn."""
+        """The wheel, and the crank's locking disc whose relief lets the wheel turn.
+
+        Parameters
+        ----------
+        motion : AngularMotion
+            The mechanism's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the pivots O and W.
+
+        Examples
+        --------
+        >>> from mechlab import ExternalGeneva
+        >>> g = ExternalGeneva(4, 100)
+        >>> len(g.sketch(g.motion(0.3)).parts)
+        5
+        """
         sk = super().sketch(motion)
         A, s0 = motion.points["A"].p, self.engagement_half_angle
 
@@ -393,9 +456,31 @@ class ExternalGeneva(PlanarGeneva):
 class InternalGeneva(PlanarGeneva):
     """Internal Geneva: the pin on the far side of O, wheel and crank turn the same way.
 
-    a = C sin(π/z), slot mouths at C cos(π/z) from W, slot bottoms at C + a. Dwell
-    fraction 1/2 - 1/z; max |ψ'| = λ/(1 + λ) at mid-motion; |ψ''| is largest at entry
-    and exit, tan(π/z).
+    a = C sin(π/z), slot mouths at C cos(π/z) from W, slot bottoms at C + a. Dwell fraction 1/2 - 1/z;
+    max |ψ'| = λ/(1 + λ) at mid-motion; |ψ''| is largest at entry and exit, tan(π/z).
+
+    Parameters
+    ----------
+    z : int
+        Number of slots (≥ 3).
+    centre_distance : float
+        C, from the crank pivot O to the wheel's centre W (positive length).
+    roller_radius : float, optional
+        Roller radius r (length); 0.15·a if None.
+
+    Raises
+    ------
+    SlotCountError
+        For z that is not a whole number ≥ 3.
+    DimensionError
+        For negative sizes or a roller that does not fit.
+
+    Examples
+    --------
+    >>> from mechlab import InternalGeneva
+    >>> g = InternalGeneva(4, 100)
+    >>> round(g.inner_radius, 4), round(g.slot_length, 4)
+    (69.9107, 111.4066)
     """
 
     title = "internal Geneva"
@@ -409,17 +494,35 @@ class InternalGeneva(PlanarGeneva):
 
     @property
     def inner_radius(self) -> float:
-        """The ring's inner rim, where the slot walls end: sqrt(C²cos²(π/z) - r²)."""
+        """The ring's inner rim, where the slot walls end: sqrt(C²cos²(π/z) - r²).
+
+        Returns
+        -------
+        float
+            The radius (length).
+        """
         return float(np.sqrt(self.entry_radius**2 - self.roller_radius**2))
 
     @property
     def outer_radius(self) -> float:
-        """The ring's outer rim, drawn 1.5 r beyond the slot bottoms (a drawing choice, not a design rule)."""
+        """The ring's outer rim, drawn 1.5 r beyond the slot bottoms (a drawing choice, not a design rule).
+
+        Returns
+        -------
+        float
+            The radius (length).
+        """
         return self.slot_bottom + 2.5 * self.roller_radius
 
     @property
     def slot_length(self) -> float:
-        """From the inner rim to the slot's bottom: C + a + r - inner radius."""
+        """From the inner rim to the slot's bottom: C + a + r - inner radius.
+
+        Returns
+        -------
+        float
+            The slot's length (length).
+        """
         return self.slot_bottom + self.roller_radius - self.inner_radius
 
     def _drawing_radii(self) -> tuple:

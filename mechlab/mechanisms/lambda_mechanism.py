@@ -33,15 +33,38 @@ def _angle(name: str, value, lo: float, hi: float, *, closed_hi: bool = True) ->
 class LambdaMechanism(Mechanism):
     """Symmetric lambda mechanism O-A-B-C with coupler point D (Kinitsky (1994), Fig. 1a).
 
-    ``r`` = l_OA / l, ``a`` = l_OC / l, ``delta`` = ∠ABD in (0, π] (radians). ``assembly``
-    +1 is the thesis' assembly (B on the left of A→C, D turned from A about B by +δ), in
-    which the symmetry axis of the coupler curve makes π − δ/2 with the ray C→O; −1 is
-    its mirror image in the line OC. The output ψ is the angle of the rocker C→B.
+    Lengths are in units of the coupler l = l_AB = l_BC = l_BD. ``assembly`` +1 is the thesis' assembly
+    (B on the left of A→C, D turned from A about B by +δ), in which the symmetry axis of the coupler curve
+    makes π − δ/2 with the ray C→O; −1 is its mirror image in the line OC. The output ψ is the angle of the
+    rocker C→B. (The text before Fig. 1 prints only l_OA < l and l_OC + l_OA < 2l, which also admits the
+    double crank r > a: see the errata.)
 
-    Crank-rocker condition (boundary lines r = a and r + a = 2 of Kinitsky (1994), Fig. 2a): r < a
-    and r + a < 2; otherwise RotationError names the violated inequality. (The text before
-    Fig. 1 prints only l_OA < l and l_OC + l_OA < 2l, which also admits the double crank
-    r > a: see the errata.)
+    Parameters
+    ----------
+    r : float
+        l_OA / l, the crank (positive).
+    a : float
+        l_OC / l, the frame (positive).
+    delta : float
+        δ = ∠ABD (radians, in (0, 2π)).
+    assembly : {1, -1}, optional
+        The assembly sign.
+
+    Raises
+    ------
+    DimensionError
+        For a length or angle out of range.
+    RotationError
+        Unless the base four-bar is a crank-rocker, r < a and r + a < 2 (the boundary lines r = a and
+        r + a = 2 of Kinitsky (1994), Fig. 2a); the message names the violated inequality.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import LambdaMechanism
+    >>> m = LambdaMechanism(0.4, 0.8, np.pi)
+    >>> m.coupler_point(1.0).round(4)
+    array([1.7404, 1.6314])
     """
 
     @classmethod
@@ -81,26 +104,68 @@ class LambdaMechanism(Mechanism):
     # -- symmetry ---------------------------------------------------------------------------
     @property
     def dwell_centre(self) -> float:
-        """Crank angle φ = π where A is farthest from C (|CA| = a + r): the curve's axis point D0."""
+        """Crank angle φ = π where A is farthest from C (|CA| = a + r): the curve's axis point D0.
+
+        Returns
+        -------
+        float
+            π (radians).
+        """
         return np.pi
 
     @property
     def axis_angle(self) -> float:
-        """Direction (from +x) of the ray C→D0 along the symmetry axis: assembly·δ/2."""
+        """Direction (from +x) of the ray C→D0 along the symmetry axis: assembly·δ/2.
+
+        Returns
+        -------
+        float
+            The angle (radians).
+        """
         return self.assembly * self.delta / 2.0
 
     @property
     def axis(self) -> np.ndarray:
-        """Unit vector e of the symmetry axis, pointing from C towards D0."""
+        """Unit vector e of the symmetry axis, pointing from C towards D0.
+
+        Returns
+        -------
+        numpy.ndarray
+            e, shape (2,).
+        """
         return unit(self.axis_angle)
 
     @property
     def C(self) -> np.ndarray:
+        """The rocker's pivot C = (a, 0).
+
+        Returns
+        -------
+        numpy.ndarray
+            C, shape (2,).
+        """
         return np.array([self.a, 0.0])
 
     @scalar_law
     def mu(self, phi) -> np.ndarray:
-        """Transmission angle μ = ∠ABC at crank angles φ: |CA| = 2 sin(μ/2)."""
+        """Transmission angle μ = ∠ABC at crank angles φ: |CA| = 2 sin(μ/2).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        numpy.ndarray or float
+            μ (radians); a float for a scalar φ.
+
+        Examples
+        --------
+        >>> from mechlab import classic_lambda
+        >>> round(float(classic_lambda().mu(1.0)), 4)
+        0.6874
+        """
         return 2.0 * np.arcsin(np.clip(np.hypot(*self._from_C(as_angles(phi)).T) / 2.0, -1.0, 1.0))
 
     def _from_C(self, phi) -> np.ndarray:
@@ -109,7 +174,24 @@ class LambdaMechanism(Mechanism):
 
     @scalar_law
     def coupler_point(self, phi) -> np.ndarray:
-        """Positions of D by the closed form (*) of :mod:`mechlab.synthesis.lambda_guiding` (no dyad solve)."""
+        """Positions of D by the closed form (*) of :mod:`mechlab.synthesis.lambda_guiding` (no dyad solve).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        numpy.ndarray
+            D, shape (n, 2), or (2,) for a scalar φ (units of l).
+
+        Examples
+        --------
+        >>> from mechlab import classic_lambda
+        >>> classic_lambda().coupler_point(1.0).round(4)
+        array([1.7404, 1.6314])
+        """
         v = self._from_C(as_angles(phi))
         d = np.hypot(*v.T)  # |CA| = 2 sin(μ/2)
         k = np.sin((self.delta - 2 * np.arcsin(np.clip(d / 2, -1.0, 1.0))) / 2) / (d / 2)
@@ -119,7 +201,24 @@ class LambdaMechanism(Mechanism):
 
     @scalar_law
     def axis_coordinates(self, phi) -> tuple[np.ndarray, np.ndarray]:
-        """D in the axis frame at C: x along e (towards D0), y across (left of e)."""
+        """D in the axis frame at C: x along e (towards D0), y across (left of e).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (x, y), each one per angle (floats for a scalar φ).
+
+        Examples
+        --------
+        >>> from mechlab import classic_lambda
+        >>> [round(float(v), 4) for v in classic_lambda().axis_coordinates(1.0)]
+        [1.6314, -0.9404]
+        """
         w = self.coupler_point(phi) - self.C
         e = self.axis
         return w @ e, w @ perp(e)
@@ -129,6 +228,27 @@ class LambdaMechanism(Mechanism):
         """Paths of O, A, B, C, D (positions and analogs) and the rocker angle ψ, ψ', ψ''.
 
         D = B + Rot(assembly·δ)(A − B): its analogs follow from those of A and B (exact).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        AngularMotion
+            Joint paths and the output angle ψ with ψ', ψ''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> from mechlab import classic_lambda
+        >>> classic_lambda().motion(1.0).output
+        Law(ψ = 1.39156 rad = 79.7305°, ψ′ = 0.183787, ψ″ = 0.653068)
         """
         phi = as_angles(phi)
         mo = self.fourbar.motion(phi)
@@ -144,17 +264,67 @@ class LambdaMechanism(Mechanism):
         return AngularMotion(phi, pts, mo.transmission, mo.psi, mo.dpsi, mo.ddpsi)
 
     def structure(self) -> Structure:
-        """The four-bar O-A-B-C: crank O→A, coupler A→B carrying D, rocker C→B (the output); one RRR group."""
+        """The four-bar O-A-B-C: crank O→A, coupler A→B carrying D, rocker C→B (the output); one RRR group.
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab import classic_lambda
+        >>> classic_lambda().structure().numbers()
+        {'crank': 1, 'coupler': 2, 'rocker': 3, 'frame': 4}
+        """
         return Structure(lambda_links(self), lambda_pairs(), (("coupler", "rocker"),), "rocker", scale=self.a)
 
     def sketch(self, motion) -> Sketch:
-        """The bars, and the symmetry axis of the coupler curve through C."""
+        """The bars, and the symmetry axis of the coupler curve through C.
+
+        Parameters
+        ----------
+        motion : AngularMotion
+            The mechanism's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the pivots O and C.
+
+        Examples
+        --------
+        >>> from mechlab import classic_lambda
+        >>> m = classic_lambda()
+        >>> len(m.sketch(m.motion(1.0)).parts)
+        4
+        """
         sk = super().sketch(motion)
         axis = np.array([self.C - 0.3 * self.axis, self.C + 2.2 * self.axis])
         return replace(sk, parts=sk.parts + (Part("extra", lambda i: axis),))
 
     def radius_about(self, centre, phi) -> tuple[np.ndarray, np.ndarray]:
-        """ρ = |D − Q| and ρ' = dρ/dφ for a fixed point Q."""
+        """ρ = |D − Q| and ρ' = dρ/dφ for a fixed point Q.
+
+        Parameters
+        ----------
+        centre : sequence of float
+            Q (units of l).
+        phi : array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ρ and ρ', one per angle.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import classic_lambda
+        >>> [v.round(4) for v in classic_lambda().radius_about((0.8, 1.0), np.array([3.0]))]
+        [array([0.605]), array([-0.0696])]
+        """
         D = self.motion(phi).points["D"]
         w = D.p - np.asarray(centre, dtype=float)
         rho = np.hypot(w[:, 0], w[:, 1])
@@ -218,6 +388,18 @@ def dwell_path(mech, dwell: float) -> np.ndarray:
 
 
 def classic_lambda() -> LambdaMechanism:
-    """Chebyshev's lambda: crank 1, ground 2, links 2.5, coupler point at 5 (δ = π)."""
+    """Chebyshev's lambda: crank 1, ground 2, links 2.5, coupler point at 5 (δ = π).
+
+    Returns
+    -------
+    LambdaMechanism
+        r = 0.4, a = 0.8, δ = π (in units of the 2.5 links).
+
+    Examples
+    --------
+    >>> from mechlab import classic_lambda
+    >>> classic_lambda()
+    LambdaMechanism(r=0.4, a=0.8, delta=3.141592653589793, assembly=1)
+    """
     return LambdaMechanism(1.0 / 2.5, 2.0 / 2.5, np.pi)
 

@@ -22,9 +22,44 @@ __all__ = ["LambdaRockerSixBar", "LambdaSlottedSixBar"]
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class LambdaRockerSixBar(Mechanism):
-    """Lambda mechanism (r, a, δ) + connecting rod D-E (``rod``) + rocker E-F (``rocker``)
-    pivoted at F = (``fx``, ``fy``). ``assembly`` puts E on the left (+1) or right (−1) of
-    the directed line D→F. Output ψ: angle of the rocker F→E."""
+    """МЧВ1: the lambda mechanism + connecting rod D-E + rocker E-F pivoted at F = (fx, fy).
+
+    Output ψ: the angle of the rocker F→E (radians); its dwell comes from the circular part of D's path.
+
+    Parameters
+    ----------
+    r, a : float
+        The lambda mechanism's crank l_OA / l and frame l_OC / l (units of its coupler l).
+    delta : float
+        δ = ∠ABD of the coupler point D (radians).
+    rod : float
+        |DE| (positive length).
+    rocker : float
+        |EF| (positive length).
+    fx, fy : float
+        The rocker's pivot F.
+    assembly : {1, -1}, optional
+        E on the left (+1) or right (−1) of the directed line D→F.
+    dwell : float, optional
+        The designed dwell 2α (radians; informational: drawings, widgets).
+
+    Raises
+    ------
+    DimensionError
+        For a length or angle out of range.
+    RotationError
+        If the lambda mechanism's crank cannot turn fully.
+    InfeasibleDesignError
+        If the dyad D-E-F does not close over the whole crank turn.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import LambdaRockerSixBar
+    >>> m = LambdaRockerSixBar(0.4, 0.8, np.pi, 1.5, 1.0, 1.0, 3.0)
+    >>> round(float(m.motion(1.0).psi), 4)
+    4.0234
+    """
 
     title = "lambda six-bar, type 1 (rocker dwell)"
 
@@ -66,6 +101,13 @@ class LambdaRockerSixBar(Mechanism):
 
     @property
     def F(self) -> np.ndarray:
+        """The rocker's pivot F = (fx, fy).
+
+        Returns
+        -------
+        numpy.ndarray
+            F, shape (2,).
+        """
         return np.array([float(self.fx), float(self.fy)])
 
     @cached_property
@@ -81,7 +123,30 @@ class LambdaRockerSixBar(Mechanism):
         return np.arctan2(E.p[:, 1] - self.F[1], E.p[:, 0] - self.F[0])
 
     def motion(self, phi) -> AngularMotion:
-        """Paths of O, A, B, C, D, E, F and the rocker's ψ, ψ', ψ''; transmission = angle DEF."""
+        """Paths of O, A, B, C, D, E, F and the rocker's ψ, ψ', ψ''; transmission = angle DEF.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        AngularMotion
+            Joint paths and the output angle ψ with ψ', ψ''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaRockerSixBar
+        >>> LambdaRockerSixBar(0.4, 0.8, np.pi, 1.5, 1.0, 1.0, 3.0).motion(1.0).output
+        Law(ψ = 4.0234 rad = 230.524°, ψ′ = 0.0383767, ψ″ = -1.22754)
+        """
         phi = as_angles(phi)
         mo = self.base.motion(phi)
         D = mo.points["D"]
@@ -96,8 +161,22 @@ class LambdaRockerSixBar(Mechanism):
         return AngularMotion(phi, pts, mu, psi, ang.d, ang.dd)
 
     def structure(self) -> Structure:
-        """МЧВ1: the lambda mechanism, the rod D→E and the output rocker F→E; groups (rod, output), then
-        (coupler, rocker) (Kinitsky (1994), ch. 3)."""
+        """МЧВ1: the lambda mechanism, the rod D→E and the output rocker F→E (Kinitsky (1994), ch. 3).
+
+        Groups (rod, output), then (coupler, rocker).
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaRockerSixBar
+        >>> LambdaRockerSixBar(0.4, 0.8, np.pi, 1.5, 1.0, 1.0, 3.0).structure().numbers()
+        {'crank': 1, 'coupler': 2, 'rocker': 3, 'rod': 4, 'output': 5, 'frame': 6}
+        """
         r = self.base
         return Structure(
             (*lambda_links(r), Link("rod", "D", ("D", "E"), self.rod, joints=("D", "E")),
@@ -107,7 +186,26 @@ class LambdaRockerSixBar(Mechanism):
             (("rod", "output"), ("coupler", "rocker")), "output", scale=r.a)
 
     def sketch(self, motion) -> Sketch:
-        """МЧВ1: the bars, the dwell part of D's path and the output rocker highlighted during the dwell."""
+        """МЧВ1: the bars, the dwell part of D's path and the output rocker highlighted during the dwell.
+
+        Parameters
+        ----------
+        motion : AngularMotion
+            The mechanism's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the fixed pivots.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaRockerSixBar
+        >>> m = LambdaRockerSixBar(0.4, 0.8, np.pi, 1.5, 1.0, 1.0, 3.0)
+        >>> len(m.sketch(m.motion(1.0)).parts)
+        7
+        """
         sk = super().sketch(motion)
         path, F, E = dwell_path(self, self.dwell), motion.points["F"].p, motion.points["E"].p
         still, nan = in_dwell(motion.phi, self.dwell), np.full((2, 2), np.nan)
@@ -121,11 +219,41 @@ class LambdaRockerSixBar(Mechanism):
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class LambdaSlottedSixBar(Mechanism):
-    """Lambda mechanism (r, a, δ) whose coupler point D slides in the straight slot of a link
-    turning about P = (``px``, ``py``); the slot line runs at signed distance ``offset`` from P,
-    on the left of P looking along the slot direction u for offset > 0: u × (D − P) = offset.
-    Output ψ: the slot's direction (continuous, so a link that turns fully gains 2π, or π for
-    a slot through a pivot on the path, per turn).
+    """МЧВ3: the lambda mechanism whose coupler point D slides in the straight slot of a link turning about P.
+
+    The slot line runs at signed distance ``offset`` from P, on the left of P looking along the slot
+    direction u for offset > 0: u × (D − P) = offset. Output ψ: the slot's direction (continuous, so a link
+    that turns fully gains 2π, or π for a slot through a pivot on the path, per turn).
+
+    Parameters
+    ----------
+    r, a : float
+        The lambda mechanism's crank l_OA / l and frame l_OC / l (units of its coupler l).
+    delta : float
+        δ = ∠ABD of the coupler point D (radians).
+    px, py : float
+        The slotted link's pivot P.
+    offset : float, optional
+        The slot line's signed distance from P (length).
+    dwell : float, optional
+        The straight part's crank angle 2α (radians; informational).
+
+    Raises
+    ------
+    DimensionError
+        For a length or angle out of range.
+    RotationError
+        If the lambda mechanism's crank cannot turn fully.
+    InfeasibleDesignError
+        If the pin D comes inside the slot offset |e| of the pivot.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import LambdaSlottedSixBar
+    >>> m = LambdaSlottedSixBar(0.4, 0.8, np.pi, 0.8, 3.0)
+    >>> round(float(m.motion(1.0).psi), 4), m.turns
+    (-0.9688, 0.0)
     """
 
     title = "lambda six-bar, type 3 (slotted link)"
@@ -161,13 +289,38 @@ class LambdaSlottedSixBar(Mechanism):
         return LambdaMechanism(self.r, self.a, self.delta)
 
     def cycle(self, n: int = 361) -> np.ndarray:
-        """A turn sampled off φ = π by 1e-6 rad (the pin may pass through the pivot exactly there)."""
+        """A turn sampled off φ = π by 1e-6 rad (the pin may pass through the pivot exactly there); also ``turn``.
+
+        Parameters
+        ----------
+        n : int, optional
+            Number of samples.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``n`` crank angles over one turn (radians), shifted by 1e-6.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaSlottedSixBar
+        >>> [round(float(x), 6) for x in LambdaSlottedSixBar(0.4, 0.8, np.pi, 0.8, 3.0).cycle(3)]
+        [1e-06, 3.141594, 6.283186]
+        """
         return np.linspace(0.0, TWO_PI, n) + 1e-6
 
     turn = cycle
 
     @property
     def P(self) -> np.ndarray:
+        """The slotted link's pivot P = (px, py).
+
+        Returns
+        -------
+        numpy.ndarray
+            P, shape (2,).
+        """
         return np.array([float(self.px), float(self.py)])
 
     @cached_property
@@ -228,12 +381,32 @@ class LambdaSlottedSixBar(Mechanism):
 
     @property
     def turns(self) -> float:
-        """Output rotation per crank turn in revolutions (0 for an oscillating link)."""
+        """Output rotation per crank turn in revolutions (0 for an oscillating link).
+
+        Returns
+        -------
+        float
+            Revolutions of the slotted link per crank turn.
+        """
         return self._turns[3] / TWO_PI
 
     def structure(self) -> Structure:
-        """МЧВ3: the lambda mechanism, a block at D sliding in the slot of the output link (pivot P, axis at
-        ψ along the slot); groups (block, output), then (coupler, rocker)."""
+        """МЧВ3: the lambda mechanism, a block at D sliding in the slot of the output link turning about P.
+
+        The output's axis runs along the slot; groups (block, output), then (coupler, rocker).
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaSlottedSixBar
+        >>> LambdaSlottedSixBar(0.4, 0.8, np.pi, 0.8, 3.0).structure().numbers()["frame"]
+        5
+        """
         return Structure(
             (*lambda_links(self.base), Link("block", "D", output_axis, block=True),
              Link("output", "P", output_axis, label="slotted link")),
@@ -242,8 +415,28 @@ class LambdaSlottedSixBar(Mechanism):
             (("block", "output"), ("coupler", "rocker")), "output", scale=self.a)
 
     def sketch(self, motion) -> Sketch:
-        """МЧВ3: the slotted link (a bar through the pivot along the slot, numbered), highlighted in the
-        dwell, and the dwell part of D's path."""
+        """МЧВ3: the slotted link (a bar through the pivot along the slot, numbered), highlighted in the dwell.
+
+        With the dwell part of D's path.
+
+        Parameters
+        ----------
+        motion : AngularMotion
+            The mechanism's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the fixed pivots.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaSlottedSixBar
+        >>> m = LambdaSlottedSixBar(0.4, 0.8, np.pi, 0.8, 3.0)
+        >>> len(m.sketch(m.motion(1.0)).parts)
+        6
+        """
         sk = Sketch(bars(self.structure()), self.pivots)   # the slotted link drawn here, offset slot and all
         P, psi, still = motion.points["P"].p, motion.psi, in_dwell(motion.phi, self.dwell)
         reach = 1.2 * np.max(np.hypot(*(motion.points["D"].p - P).T))

@@ -34,14 +34,47 @@ class _OnLambda(Mechanism):
 
 @dataclass(frozen=True)
 class LambdaSliderSixBar(_OnLambda):
-    """МЧВ2 (Kinitsky (1994), Fig. 1 в): lambda mechanism (r, a, δ) + rod D-E (``rod``) + slider E on the
-    fixed line through Q = (``qx``, ``qy``) at angle ``theta`` (radians, from +x).
+    """МЧВ2 (Kinitsky (1994), Fig. 1 в): the lambda mechanism + rod D-E + slider E on a fixed line.
 
-    Output s: E = Q + s·u, u = (cos θ, sin θ). ``assembly`` = +1 takes the root of the RRP dyad
-    ahead along u, −1 the one behind (:func:`mechlab.geometry.line_circle`). Transmission angle
-    μ2′ = π/2 − β, β = asin(dist(D, guide)/rod), the acute angle between the rod and the guide.
-    Raises InfeasibleDesignError if D goes as far as ``rod`` from the guide somewhere in the turn
-    (the rod would stand across the guide: a dead point, or no assembly at all).
+    The line passes through Q = (qx, qy) at angle ``theta``. Output s: E = Q + s·u, u = (cos θ, sin θ).
+    Transmission angle μ2′ = π/2 − β, β = asin(dist(D, guide)/rod), the acute angle between the rod and the
+    guide.
+
+    Parameters
+    ----------
+    r, a : float
+        The lambda mechanism's crank l_OA / l and frame l_OC / l (units of its coupler l).
+    delta : float
+        δ = ∠ABD of the coupler point D (radians).
+    rod : float
+        |DE| (positive length).
+    qx, qy : float
+        The guide's reference point Q (s = 0 there).
+    theta : float
+        The guide's angle from +x (radians).
+    assembly : {1, -1}, optional
+        +1 takes the root of the RRP dyad ahead along u, −1 the one behind
+        (:func:`mechlab.geometry.line_circle`).
+    dwell : float, optional
+        The designed dwell 2α (radians; informational: drawings, reports).
+
+    Raises
+    ------
+    DimensionError
+        For a length or angle out of range.
+    RotationError
+        If the lambda mechanism's crank cannot turn fully.
+    InfeasibleDesignError
+        If D goes as far as ``rod`` from the guide somewhere in the turn (the rod would stand across the
+        guide: a dead point, or no assembly at all).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import LambdaSliderSixBar
+    >>> m = LambdaSliderSixBar(0.4, 0.8, np.pi, 1.0, 1.0, 1.0, 0.0)
+    >>> round(float(m.motion(1.0).s), 4)
+    1.5159
     """
 
     title = "lambda six-bar, type 2 (slider dwell)"
@@ -78,22 +111,75 @@ class LambdaSliderSixBar(_OnLambda):
 
     @property
     def Q(self) -> np.ndarray:
-        """The guide's reference point (the arc centre for a designed МЧВ2): s = 0 there."""
+        """The guide's reference point (the arc centre for a designed МЧВ2): s = 0 there.
+
+        Returns
+        -------
+        numpy.ndarray
+            Q, shape (2,).
+        """
         return np.array([self.qx, self.qy])
 
     @property
     def u(self) -> np.ndarray:
-        """Unit vector of the guide."""
+        """Unit vector of the guide.
+
+        Returns
+        -------
+        numpy.ndarray
+            u = (cos θ, sin θ).
+        """
         return unit(self.theta)
 
     @scalar_law
     def offsets(self, phi) -> np.ndarray:
-        """Signed distance u × (D − Q) of D from the guide line (closed form of D)."""
+        """Signed distance u × (D − Q) of D from the guide line (closed form of D).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        numpy.ndarray or float
+            The distances (units of l); a float for a scalar φ.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaSliderSixBar
+        >>> round(float(LambdaSliderSixBar(0.4, 0.8, np.pi, 1.0, 1.0, 1.0, 0.0).offsets(1.0)), 4)
+        0.6314
+        """
         D = self.base.coupler_point(phi)
         return cross(np.broadcast_to(self.u, D.shape), D - self.Q)
 
     def motion(self, phi) -> LinearMotion:
-        """Paths of O, A, B, C, D, E and the slider's s, s′, s″ (exact); transmission = μ2′."""
+        """Paths of O, A, B, C, D, E and the slider's s, s′, s″ (exact); transmission = μ2′.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        LinearMotion
+            Joint paths and the output displacement s with s', s''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaSliderSixBar
+        >>> LambdaSliderSixBar(0.4, 0.8, np.pi, 1.0, 1.0, 1.0, 0.0).motion(1.0).output
+        Law(s = 1.51592, s′ = 0.0975097, s″ = -1.53927)
+        """
         phi = as_angles(phi)
         mo = self.base.motion(phi)
         E, s = dyad_rrp(mo.points["D"], self.Q, self.theta, self.rod, self.assembly, phi, "the slider dyad D-E")
@@ -108,8 +194,22 @@ class LambdaSliderSixBar(_OnLambda):
         return LinearMotion(phi, pts, mu2, s.theta, s.d, s.dd)
 
     def structure(self) -> Structure:
-        """МЧВ2: the lambda mechanism, the rod D→E and the slider E on the guide (angle θ); groups
-        (rod, slider), then (coupler, rocker)."""
+        """МЧВ2: the lambda mechanism, the rod D→E and the slider E on the guide (angle θ).
+
+        Groups (rod, slider), then (coupler, rocker).
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaSliderSixBar
+        >>> LambdaSliderSixBar(0.4, 0.8, np.pi, 1.0, 1.0, 1.0, 0.0).structure().numbers()
+        {'crank': 1, 'coupler': 2, 'rocker': 3, 'rod': 4, 'slider': 5, 'frame': 6}
+        """
         return Structure(
             (*lambda_links(self.base), Link("rod", "D", ("D", "E"), self.rod, joints=("D", "E")),
              Link("slider", "E", self.theta)),
@@ -118,8 +218,26 @@ class LambdaSliderSixBar(_OnLambda):
             (("rod", "slider"), ("coupler", "rocker")), "slider", scale=self.a)
 
     def sketch(self, motion) -> Sketch:
-        """МЧВ2: the guide through Q, the slider block at E (numbered, highlighted in the dwell), D's dwell
-        path."""
+        """МЧВ2: the guide through Q, the slider block at E (numbered, highlighted in the dwell), D's dwell path.
+
+        Parameters
+        ----------
+        motion : LinearMotion
+            The mechanism's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the fixed pivots.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaSliderSixBar
+        >>> m = LambdaSliderSixBar(0.4, 0.8, np.pi, 1.0, 1.0, 1.0, 0.0)
+        >>> len(m.sketch(m.motion(1.0)).parts)
+        8
+        """
         sk = Sketch(bars(self.structure()), self.pivots)   # the guide and the output drawn here
         u, s, E, still = self.u, motion.s, motion.points["E"].p, in_dwell(motion.phi, self.dwell)
         size = 0.2 * self.rod
@@ -139,14 +257,45 @@ class LambdaSliderSixBar(_OnLambda):
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class LambdaTranslatingSlot(_OnLambda):
-    """МЧВ5 (Kinitsky (1994), Fig. 1 д): lambda mechanism (r, a, δ) + block at D sliding in a straight slot
-    (direction angle ``slot``) of an output link translating along the fixed direction ``guide``.
+    """МЧВ5 (Kinitsky (1994), Fig. 1 д): the lambda mechanism + a block at D in the slot of a translating link.
 
-    Output s: the link's displacement along w = (cos guide, sin guide), zero when the slot line
-    passes through P = (``px``, ``py``): s = v×(D − P)/(v×w), s′ = v×D′/(v×w), s″ = v×D″/(v×w).
-    The point E = P + s·w of the slot line (on the guide through P) is the output's reference
-    point. Transmission angle: the acute angle between slot and guide (constant; 90° ideal: the
-    pressure angle is the angle between the slot's normal, along which the block pushes, and w).
+    The slot's direction angle is ``slot``; the output link translates along the fixed direction ``guide``.
+    Output s: the link's displacement along w = (cos guide, sin guide), zero when the slot line passes
+    through P = (px, py): s = v×(D − P)/(v×w), s′ = v×D′/(v×w), s″ = v×D″/(v×w). The point E = P + s·w of
+    the slot line (on the guide through P) is the output's reference point. Transmission angle: the acute
+    angle between slot and guide (constant; 90° ideal).
+
+    Parameters
+    ----------
+    r, a : float
+        The lambda mechanism's crank l_OA / l and frame l_OC / l (units of its coupler l).
+    delta : float
+        δ = ∠ABD of the coupler point D (radians).
+    px, py : float
+        P, where s = 0.
+    slot : float
+        The slot's direction (radians, from +x).
+    guide : float
+        The output's direction of travel (radians, from +x).
+    dwell : float, optional
+        The straight part's crank angle 2α (radians; informational).
+
+    Raises
+    ------
+    DimensionError
+        For a length or angle out of range.
+    RotationError
+        If the lambda mechanism's crank cannot turn fully.
+    MechanismError
+        If the guide is parallel to the slot (to within 0.057°).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab import LambdaTranslatingSlot
+    >>> m = LambdaTranslatingSlot(0.4, 0.8, np.pi, 0.8, 3.0, np.pi / 2, 0.0)
+    >>> round(float(m.motion(1.0).s), 4)
+    0.9404
     """
 
     title = "lambda six-bar, type 5 (translating-slot dwell)"
@@ -179,6 +328,13 @@ class LambdaTranslatingSlot(_OnLambda):
 
     @property
     def P(self) -> np.ndarray:
+        """The point P = (px, py) where s = 0.
+
+        Returns
+        -------
+        numpy.ndarray
+            P, shape (2,).
+        """
         return np.array([self.px, self.py])
 
     @property
@@ -188,11 +344,40 @@ class LambdaTranslatingSlot(_OnLambda):
 
     @property
     def transmission_angle(self) -> float:
-        """The acute angle between the slot and the guide (π/2 when the guide is along the slot normal)."""
+        """The acute angle between the slot and the guide (π/2 when the guide is along the slot normal).
+
+        Returns
+        -------
+        float
+            The angle (radians).
+        """
         return float(np.arcsin(min(abs(self._sin), 1.0)))
 
     def motion(self, phi) -> LinearMotion:
-        """Paths of O, A, B, C, D, E (output reference point) and s, s′, s″ in closed form."""
+        """Paths of O, A, B, C, D, E (output reference point) and s, s′, s″ in closed form.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        LinearMotion
+            Joint paths and the output displacement s with s', s''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaTranslatingSlot
+        >>> LambdaTranslatingSlot(0.4, 0.8, np.pi, 0.8, 3.0, np.pi / 2, 0.0).motion(1.0).output
+        Law(s = 0.940436, s′ = -0.0250964, s″ = -1.08113)
+        """
         phi = as_angles(phi)
         mo = self.base.motion(phi)
         D = mo.points["D"]
@@ -207,8 +392,22 @@ class LambdaTranslatingSlot(_OnLambda):
         return LinearMotion(phi, pts, np.full(len(phi), self.transmission_angle), s, ds, dds)
 
     def structure(self) -> Structure:
-        """МЧВ5: the lambda mechanism, a block at D in the output's slot (angle ``slot``), the output
-        translating along ``guide`` through E; groups (block, output), then (coupler, rocker)."""
+        """МЧВ5: the lambda mechanism, a block at D in the output's slot, the output translating along ``guide``.
+
+        The output's reference point E is on the guide; groups (block, output), then (coupler, rocker).
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaTranslatingSlot
+        >>> LambdaTranslatingSlot(0.4, 0.8, np.pi, 0.8, 3.0, np.pi / 2, 0.0).structure().numbers()
+        {'crank': 1, 'coupler': 2, 'rocker': 3, 'output': 4, 'frame': 5}
+        """
         return Structure(
             (*lambda_links(self.base), Link("block", "D", self.slot, block=True), Link("output", "E", self.guide)),
             (*lambda_pairs(), Pair("revolute", "D", "coupler", "block", "D"),
@@ -217,8 +416,29 @@ class LambdaTranslatingSlot(_OnLambda):
             (("block", "output"), ("coupler", "rocker")), "output", scale=self.a)
 
     def sketch(self, motion) -> Sketch:
-        """МЧВ5: the fixed guide (a bushing beyond the bar's travel), the output link (a slot through D
-        and a bar along the guide; numbered, highlighted in the dwell), the block at D, D's dwell path."""
+        """МЧВ5: the fixed guide, the output link (a slot through D and a bar along the guide), the block at D.
+
+        The guide has a bushing beyond the bar's travel; the output is numbered and highlighted in the dwell,
+        with D's dwell path.
+
+        Parameters
+        ----------
+        motion : LinearMotion
+            The mechanism's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the fixed pivots.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab import LambdaTranslatingSlot
+        >>> m = LambdaTranslatingSlot(0.4, 0.8, np.pi, 0.8, 3.0, np.pi / 2, 0.0)
+        >>> len(m.sketch(m.motion(1.0)).parts)
+        8
+        """
         sk = Sketch(bars(self.structure()), self.pivots)   # the guide and the output drawn here
         v, w = np.array([np.cos(self.slot), np.sin(self.slot)]), np.array([np.cos(self.guide), np.sin(self.guide)])
         E, D = motion.points["E"].p, motion.points["D"].p

@@ -44,12 +44,48 @@ def _rot(theta, v):
 class SixBarIV(Mechanism):
     """Crank O-A driving the class-IV group (links 2-5); output ψ = angle of link 4 about E.
 
-    ``inner_assembly`` = ±1: P on the left (+1) or right of the directed line Q→T in
-    the starting position; ``start``: the angle of R→Q in the output link's frame at
-    φ = π, near which the starting assembly is taken (needed when several fit).
-    Raises DimensionError for bad lengths, AssemblyError if the group cannot be
-    assembled at φ = π, RotationError if the crank cannot turn fully (the group
-    reaches a dead position), with the numbers.
+    The crank turns about O = (0, 0), the output link 4 about E = (ground, 0); link 4 carries the joints R
+    and T, link 3 = R-Q, link 5 = T-P, the coupler 2 carries Q, P and the crank pin A.
+
+    Parameters
+    ----------
+    crank : float
+        Crank radius |OA| (positive length).
+    ground : float
+        Distance |OE| (positive length).
+    r_joint, t_joint : tuple of float
+        R and T in the output link's frame (origin E, x axis at ψ) (length).
+    link3 : float
+        |RQ| (positive length).
+    link5 : float
+        |TP| (positive length).
+    qp : float
+        |QP| on the coupler (positive length).
+    coupler_point : tuple of float
+        A − Q in the coupler's frame (x axis along Q→P) (length).
+    inner_assembly : {1, -1}, optional
+        P on the left (+1) or right of the directed line Q→T in the starting position.
+    start : float, optional
+        The angle of R→Q in the output link's frame at φ = π near which the starting assembly is taken
+        (radians; needed when several fit).
+
+    Raises
+    ------
+    DimensionError
+        For bad lengths, or R and T coinciding.
+    AssemblyError
+        If the group cannot be assembled at φ = π.
+    RotationError
+        If the crank cannot turn fully (the group reaches a dead position), with the numbers.
+
+    Examples
+    --------
+    >>> from mechlab.mechanisms.sixbar_iv import example
+    >>> m = example()
+    >>> m.crank, m.ground
+    (0.25, 1.04)
+    >>> round(float(m.motion(1.0).psi), 4)
+    2.6439
     """
 
     title = "class-IV six-bar"
@@ -96,8 +132,32 @@ class SixBarIV(Mechanism):
         return Q, P
 
     def relative_pin(self, theta) -> PointPath:
-        """A in the output link's frame as a function of θ = angle of R→Q in that frame,
-        with its θ-derivatives: the coupler curve of the inner four-bar R-Q-P-T."""
+        """A in the output link's frame as a function of θ = angle of R→Q in that frame, with its θ-derivatives.
+
+        This is the coupler curve of the inner four-bar R-Q-P-T.
+
+        Parameters
+        ----------
+        theta : float or array_like
+            Angles θ of R→Q in the output link's frame (radians).
+
+        Returns
+        -------
+        PointPath
+            Positions (n, 2) of A with their first and second θ-derivatives.
+
+        Raises
+        ------
+        AssemblyError
+            Where the inner four-bar does not close.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mechlab.mechanisms.sixbar_iv import example
+        >>> example().relative_pin(np.array([0.5])).p.round(4)
+        array([[1.1928, 0.1658]])
+        """
         Q, P = self._inner(theta)
         ang = vector_angle(relative(P, Q))
         e = unit(ang.theta)
@@ -259,9 +319,22 @@ class SixBarIV(Mechanism):
 
     # -- structure and motion (the curved-slot twin comes from them: Mechanism.curved_slot_twin) ---------
     def structure(self) -> Structure:
-        """Crank O→A and the class-IV group: coupler A-Q-P (axis Q→P), link 3 Q→R, link 5 P→T and the
-        output R-T-E turning about E (axis at ψ); seven revolute pairs. Numbered as in the class docstring:
-        the coupler 2 and the output 4 are triangles (ternary links), link 3 = QR, link 5 = PT, the frame 6."""
+        """Crank O→A and the class-IV group: coupler A-Q-P (axis Q→P), link 3 Q→R, link 5 P→T, output R-T-E.
+
+        The output turns about E (axis at ψ); seven revolute pairs. The coupler 2 and the output 4 are
+        triangles (ternary links), link 3 = QR, link 5 = PT, the frame 6.
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab.mechanisms.sixbar_iv import example
+        >>> example().structure().numbers()
+        {'crank': 1, 'coupler': 2, 'link 3': 3, 'output': 4, 'link 5': 5, 'frame': 6}
+        """
         return Structure(
             (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")),
              Link("coupler", "A", ("Q", "P"), self.qp, joints=("A", "Q", "P", "A")),
@@ -276,7 +349,29 @@ class SixBarIV(Mechanism):
             numbering=("crank", "coupler", "link 3", "output", "link 5", FRAME))
 
     def motion(self, phi) -> AngularMotion:
-        """Joint paths (O, A, Q, P, R, T, E) and ψ, ψ', ψ'' of link 4 at crank angles φ (radians)."""
+        """Joint paths (O, A, Q, P, R, T, E) and ψ, ψ', ψ'' of link 4 at crank angles φ.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        AngularMotion
+            Joint paths and the output angle ψ with ψ', ψ''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> from mechlab.mechanisms.sixbar_iv import example
+        >>> example().motion(1.0).output
+        Law(ψ = 2.64387 rad = 151.483°, ψ′ = -0.0346817, ψ″ = 0.50691)
+        """
         phi = as_angles(phi)
         n = len(phi)
         phis, xs, turns, _ = self._grid
@@ -315,7 +410,24 @@ class SixBarIV(Mechanism):
         return AngularMotion(phi, pts, mu, x[:, 1], w4, a4)
 
     def inner_angle(self, phi) -> AnglePath:
-        """θ (angle of R→Q in the output link's frame) with its analogs: the pin's place on the slot."""
+        """θ (angle of R→Q in the output link's frame) with its analogs: the pin's place on the slot.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        AnglePath
+            θ (radians) with θ' and θ''.
+
+        Examples
+        --------
+        >>> from mechlab.mechanisms.sixbar_iv import example
+        >>> round(float(example().inner_angle(1.0).theta), 4)
+        -4.6043
+        """
         mo = self.motion(phi)
         v = relative(mo.points["Q"], mo.points["R"])
         ang = vector_angle(v)

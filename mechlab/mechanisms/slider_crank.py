@@ -26,8 +26,29 @@ from .fourbar import Assembly
 class SliderCrank(Mechanism):
     """Crank O-A, rod A-B, slider B on the line y = offset; output s = x of B.
 
-    The crank turns fully when crank + |offset| < rod. Raises DimensionError for bad
-    lengths, AssemblyError if it closes at no crank angle.
+    The crank turns fully when crank + |offset| < rod.
+
+    Parameters
+    ----------
+    crank, rod : float
+        Crank radius and rod length (positive; dimensionless or mm).
+    offset : float, optional
+        The guide's distance from the crank pivot, y of the guide line (length).
+    assembly : {1, -1, "open", "crossed"}, optional
+        The assembly branch (+1: the slider on the +x side).
+
+    Raises
+    ------
+    DimensionError
+        For a length that is not positive and finite, an offset that is not finite, or a bad ``assembly``.
+    AssemblyError
+        If it closes at no crank angle.
+
+    Examples
+    --------
+    >>> from mechlab import SliderCrank
+    >>> round(float(SliderCrank(1, 3).motion(0.3).s), 4)
+    3.9407
     """
 
     @classmethod
@@ -54,8 +75,24 @@ class SliderCrank(Mechanism):
     def extremes(self) -> Extremes:
         """The slider's limit positions, its stroke and the time ratio (a turning crank only).
 
-        B is at a limit when crank and rod lie in line: |OB| = rod ± crank with B on the
-        guide, x = ±√((rod ± crank)² - offset²); with no offset at ±(rod ± crank), φ = 0 and π.
+        B is at a limit when crank and rod lie in line: |OB| = rod ± crank with B on the guide,
+        x = ±√((rod ± crank)² - offset²); with no offset at ±(rod ± crank), φ = 0 and π.
+
+        Returns
+        -------
+        Extremes
+            Crank angles (radians) and slider positions (length) of both limits, the stroke and the time ratio.
+
+        Raises
+        ------
+        RotationError
+            If the crank cannot turn fully.
+
+        Examples
+        --------
+        >>> from mechlab import SliderCrank
+        >>> round(SliderCrank(1, 3, offset=0.5).extremes().time_ratio, 6)
+        1.084501
         """
         if not self.can_turn:
             raise RotationError(f"limit positions and a time ratio need a turning crank; {self.rotation_failure()}")
@@ -82,7 +119,19 @@ class SliderCrank(Mechanism):
         return f"the pin is {gap:.4g} from the guide, ≥ rod = {self.rod:.4g}"
 
     def structure(self) -> Structure:
-        """Crank O→A, rod A→B, slider at B on the guide (the x axis); one RRP group (rod, slider)."""
+        """Crank O→A, rod A→B, slider at B on the guide (the x axis); one RRP group (rod, slider).
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab import SliderCrank
+        >>> SliderCrank(1, 3).structure().numbers()
+        {'crank': 1, 'rod': 2, 'slider': 3, 'frame': 4}
+        """
         return Structure(
             (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")),
              Link("rod", "A", ("A", "B"), self.rod, joints=("A", "B")),
@@ -92,13 +141,51 @@ class SliderCrank(Mechanism):
             (("rod", "slider"),), "slider", scale=self.crank + self.rod + abs(self.offset))
 
     def curved_slot_twin(self):
-        """Zinchenko et al. (2013) Fig. 4: a translating link whose slot is the circle of radius l_AB about (0, e)
-        (kept over the default for its closed form and for a crank that only rocks)."""
+        """Zinchenko et al. (2013) Fig. 4: a translating link whose slot is the circle of radius l_AB about (0, e).
+
+        Kept over the default for its closed form and for a crank that only rocks.
+
+        Returns
+        -------
+        tuple of (Mechanism, float)
+            The curved-slot twin and the crank-angle shift ``phase`` (radians) from this mechanism's frame to it.
+
+        Examples
+        --------
+        >>> from mechlab import SliderCrank
+        >>> twin, phase = SliderCrank(1, 3).curved_slot_twin()
+        >>> type(twin).__name__, phase
+        ('TranslatingCurvedSlot', 0.0)
+        """
         slot = CircleSlot((0.0, self.offset), self.rod)
         return TranslatingCurvedSlot(self.crank, slot, start=np.pi if self.assembly == 1 else 0.0), 0.0
 
     def motion(self, phi) -> LinearMotion:
-        """Paths of O, A, B and the law s, s', s'' at crank angles φ (radians)."""
+        """Paths of O, A, B and the law s, s', s'' at crank angles φ.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        LinearMotion
+            Joint paths and the output displacement s with s', s''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+        AssemblyError
+            Where the loop cannot close (the message names the reachable range).
+
+        Examples
+        --------
+        >>> from mechlab import SliderCrank
+        >>> SliderCrank(1, 3, offset=0.5).motion(0.3).output
+        Law(s = 3.94836, s′ = -0.230253, s″ = -1.28188)
+        """
         phi = as_angles(phi)
         self.check_reachable(phi)
         A = crank_point(self.crank, phi)

@@ -51,8 +51,29 @@ class PivotedSlot:
 class SlottedLink(PivotedSlot, Mechanism):
     """Crank O-A (radius ``crank``) driving a slotted link pivoted at B = (-pivot_distance, 0).
 
-    Raises DimensionError for bad lengths and for λ = crank / pivot_distance = 1,
-    where the pin passes through the pivot and the slot's direction is undefined.
+    Zinchenko et al.'s (2013) base mechanism; output ψ is the slotted link's angle (radians).
+
+    Parameters
+    ----------
+    crank : float
+        Crank radius l_OA (positive length).
+    pivot_distance : float
+        Distance l_OB of the link's pivot B from O (positive length).
+
+    Raises
+    ------
+    DimensionError
+        For bad lengths and for λ = crank / pivot_distance = 1, where the pin passes through the pivot
+        and the slot's direction is undefined.
+
+    Examples
+    --------
+    >>> from mechlab import SlottedLink
+    >>> m = SlottedLink(2, 1)
+    >>> m.lam, m.rotates
+    (2.0, True)
+    >>> round(float(m.motion(0.3).psi), 4)
+    0.2003
     """
 
     @classmethod
@@ -71,7 +92,29 @@ class SlottedLink(PivotedSlot, Mechanism):
         self._check_crank_and_pivot()
 
     def motion(self, phi) -> AngularMotion:
-        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (radians, Zinchenko et al. (2013) frame)."""
+        """Paths of O, A, B and ψ, ψ', ψ'' at crank angles φ (Zinchenko et al. (2013) frame).
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        AngularMotion
+            Joint paths and the output angle ψ with ψ', ψ''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> from mechlab import SlottedLink
+        >>> SlottedLink(2, 1).motion(0.3).output
+        Law(ψ = 0.200336 rad = 11.4784°, ψ′ = 0.670042, ψ″ = 0.022786)
+        """
         phi = as_angles(phi)
         n = len(phi)
         A = crank_point(self.crank, phi)
@@ -84,7 +127,19 @@ class SlottedLink(PivotedSlot, Mechanism):
         return AngularMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "B": B}, mu, psi, ang.d, ang.dd)
 
     def structure(self) -> Structure:
-        """Crank O→A; a block at A slides in the link's slot B→A; the link turns about B; one RPR group."""
+        """Crank O→A; a block at A slides in the link's slot B→A; the link turns about B; one RPR group.
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab import SlottedLink
+        >>> SlottedLink(2, 1).structure().numbers()["frame"]
+        3
+        """
         reach = self.pivot_distance + self.crank
         return Structure(
             (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")), Link("block", "A", ("B", "A"), block=True),
@@ -98,8 +153,24 @@ class SlottedLink(PivotedSlot, Mechanism):
 class SineMechanism(Mechanism):
     """Scotch yoke: the pin A drives a yoke whose slot is perpendicular to its guide (x axis).
 
-    The output s is the yoke's x coordinate, s = crank·cos φ; joint K = (s, 0) is where
-    the slot's centre line crosses the guide.
+    The output s is the yoke's x coordinate, s = crank·cos φ; joint K = (s, 0) is where the slot's centre
+    line crosses the guide.
+
+    Parameters
+    ----------
+    crank : float
+        Crank radius (positive length).
+
+    Raises
+    ------
+    DimensionError
+        If ``crank`` is not positive and finite.
+
+    Examples
+    --------
+    >>> from mechlab import SineMechanism
+    >>> round(float(SineMechanism(1).motion(0.3).s), 4)
+    0.9553
     """
 
     @classmethod
@@ -113,7 +184,29 @@ class SineMechanism(Mechanism):
     output = "position"
 
     def motion(self, phi) -> LinearMotion:
-        """Paths of O, A, K and s, s', s'' at crank angles φ (radians)."""
+        """Paths of O, A, K and s, s', s'' at crank angles φ.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        LinearMotion
+            Joint paths and the output displacement s with s', s''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> from mechlab import SineMechanism
+        >>> SineMechanism(1).motion(0.3).output
+        Law(s = 0.955336, s′ = -0.29552, s″ = -0.955336)
+        """
         phi = as_angles(phi)
         n = len(phi)
         A = crank_point(self.crank, phi)
@@ -123,8 +216,21 @@ class SineMechanism(Mechanism):
         return LinearMotion(phi, {"O": fixed_point((0.0, 0.0), n), "A": A, "K": K}, mu, *law)
 
     def structure(self) -> Structure:
-        """Crank O→A; a block at A slides in the yoke's slot (perpendicular to the guide); the yoke at K
-        slides on the frame along x; one group (block, yoke)."""
+        """Crank O→A; a block at A slides in the yoke's slot; the yoke at K slides on the frame along x.
+
+        The slot is perpendicular to the guide; one group (block, yoke).
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab import SineMechanism
+        >>> SineMechanism(1).structure().numbers()
+        {'crank': 1, 'yoke': 2, 'frame': 3}
+        """
         return Structure(
             (Link("crank", "O", ("O", "A"), self.crank, joints=("O", "A")), Link("block", "A", np.pi / 2, block=True),
              Link("yoke", "K", 0.0)),

@@ -28,18 +28,36 @@ _MIN_GUIDE_ANGLE = 1e-6
 class EllipticTrammel(Mechanism):
     """Rod A-B of length ``rod``; A slides on the x axis, B on the line through O at angle ``beta``.
 
-    Derivation (Kozhevnikov, Fig. 7.5, derived anew): the normals to the guides at A and B
-    meet at the rod's instantaneous centre P, so O, A, P, B lie on the circle with
-    diameter OP = rod / sin β (angle AOB = β subtends the chord AB = rod). That circle's
-    centre C = P/2 is fixed to the rod, and |OC| = r = rod / (2 sin β): a crank O-C of
-    radius r drives the rod (Cardan's drive; the crank adds a redundant but consistent
-    constraint). With φ the crank angle, P = 2r·(cos φ, sin φ), and the feet of P on
+    Derivation (Kozhevnikov, Fig. 7.5, derived anew): the normals to the guides at A and B meet at the
+    rod's instantaneous centre P, so O, A, P, B lie on the circle with diameter OP = rod / sin β. That
+    circle's centre C = P/2 is fixed to the rod, and |OC| = r = rod / (2 sin β): a crank O-C of radius r
+    drives the rod (Cardan's drive). With φ the crank angle, P = 2r·(cos φ, sin φ), and the feet of P on
     the guides are
 
         A = 2r cos φ · (1, 0),    B = 2r cos(φ - β) · (cos β, sin β),
 
-    the rod's angle is θ = π/2 + β - φ (θ' = -1: the small circle rolls inside the big
-    one and turns backwards at the crank's rate). Output: s = x_A = 2r cos φ.
+    the rod's angle is θ = π/2 + β - φ (θ' = -1). Output: s = x_A = 2r cos φ.
+
+    Parameters
+    ----------
+    rod : float
+        Rod length |AB| (positive length).
+    beta : float, optional
+        Angle between the guides (radians, 0 < β < π; π/2 by default).
+
+    Raises
+    ------
+    DimensionError
+        For a rod that is not positive and finite, or guides (nearly) parallel.
+
+    Examples
+    --------
+    >>> from mechlab import EllipticTrammel
+    >>> m = EllipticTrammel(2.0)
+    >>> m.crank, m.fixed_radius
+    (1.0, 2.0)
+    >>> round(float(m.motion(0.3).s), 4)
+    1.9107
     """
 
     @classmethod
@@ -56,22 +74,69 @@ class EllipticTrammel(Mechanism):
 
     @property
     def crank(self) -> float:
-        """Radius of the Cardan crank O-C: rod / (2 sin β), the moving centrode's radius."""
+        """Radius of the Cardan crank O-C: rod / (2 sin β), the moving centrode's radius.
+
+        Returns
+        -------
+        float
+            The radius (length).
+        """
         return self.rod / (2.0 * np.sin(self.beta))
 
     @property
     def fixed_radius(self) -> float:
-        """Radius of the fixed centrode (centre O): rod / sin β (Kozhevnikov, formula (7.12))."""
+        """Radius of the fixed centrode (centre O): rod / sin β (Kozhevnikov, formula (7.12)).
+
+        Returns
+        -------
+        float
+            The radius (length).
+        """
         return self.rod / np.sin(self.beta)
 
     @scalar_law
     def rod_angle(self, phi) -> np.ndarray:
-        """Angle θ of the rod A→B at crank angles φ: θ = π/2 + β - φ."""
+        """Angle θ of the rod A→B at crank angles φ: θ = π/2 + β - φ.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians).
+
+        Returns
+        -------
+        numpy.ndarray or float
+            θ (radians); a float for a scalar φ.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not finite.
+
+        Examples
+        --------
+        >>> from mechlab import EllipticTrammel
+        >>> round(float(EllipticTrammel(2.0).rod_angle(0.3)), 4)
+        2.8416
+        """
         return np.pi / 2 + self.beta - as_angles(phi)
 
     def structure(self) -> Structure:
-        """The rod A→B (the input: Cardan's crank only parametrises it, θ′ = −1) and the sliders A, B on
-        their guides; numbered as in Kozhevnikov, Fig. 7.5: 1 = frame, 2 = slider A, 3 = slider B, 4 = rod."""
+        """The rod A→B (the input) and the sliders A, B on their guides; numbered as in Kozhevnikov, Fig. 7.5.
+
+        Cardan's crank only parametrises the rod (θ′ = −1): 1 = frame, 2 = slider A, 3 = slider B, 4 = rod.
+
+        Returns
+        -------
+        Structure
+            Links, pairs and structural groups, from which the drawing, centres, force model and counts derive.
+
+        Examples
+        --------
+        >>> from mechlab import EllipticTrammel
+        >>> EllipticTrammel(2.0).structure().numbers()
+        {'frame': 1, 'slider A': 2, 'slider B': 3, 'rod': 4}
+        """
         return Structure(
             (Link("rod", "A", ("A", "B"), self.rod, joints=("A", "B")), Link("slider A", "A", 0.0),
              Link("slider B", "B", self.beta)),
@@ -82,9 +147,28 @@ class EllipticTrammel(Mechanism):
             input_rate=-1.0)
 
     def sketch(self, motion) -> Sketch:
-        """Both guides (through O, 1.15 R either side) and the two blocks; numbered as Kozhevnikov's
-        Fig. 7.5 (the centres use it): 1 the guides (frame), 2 slider A, 3 slider B, 4 the rod; Cardan's
-        crank O-C only parametrises the motion and has no number."""
+        """Both guides (through O, 1.15 R either side) and the two blocks, numbered as Kozhevnikov's Fig. 7.5.
+
+        The centres use this numbering: 1 the guides (frame), 2 slider A, 3 slider B, 4 the rod; Cardan's
+        crank O-C only parametrises the motion and has no number.
+
+        Parameters
+        ----------
+        motion : LinearMotion
+            The trammel's motion.
+
+        Returns
+        -------
+        Sketch
+            The parts to draw and the fixed pivot O.
+
+        Examples
+        --------
+        >>> from mechlab import EllipticTrammel
+        >>> m = EllipticTrammel(2.0)
+        >>> len(m.sketch(m.motion(0.3)).parts)
+        8
+        """
         R = self.fixed_radius
         h = 0.06 * R
         parts = [Part("link", ("O", "C")), Part("link", ("A", "B"), "rod"), Part("link", ("B", "C")),
@@ -96,7 +180,29 @@ class EllipticTrammel(Mechanism):
         return Sketch(tuple(parts), self.pivots)
 
     def motion(self, phi) -> LinearMotion:
-        """Paths of O, C, A, B and the slider law s = x_A, s', s'' at crank angles φ (rad)."""
+        """Paths of O, C, A, B and the slider law s = x_A, s', s'' at crank angles φ.
+
+        Parameters
+        ----------
+        phi : float or array_like
+            Crank angles φ (radians); a scalar gives a motion of scalars.
+
+        Returns
+        -------
+        LinearMotion
+            Joint paths and the output displacement s with s', s''.
+
+        Raises
+        ------
+        DimensionError
+            If φ is not a finite real number or array.
+
+        Examples
+        --------
+        >>> from mechlab import EllipticTrammel
+        >>> EllipticTrammel(2.0).motion(0.3).output
+        Law(s = 1.91067, s′ = -0.59104, s″ = -1.91067)
+        """
         phi = as_angles(phi)
         n = len(phi)
         d = 2.0 * self.crank

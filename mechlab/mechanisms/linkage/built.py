@@ -434,7 +434,13 @@ class Linkage(Mechanism):
 
     @property
     def assur_class(self) -> int:
-        """The mechanism's class: the highest class of its groups (I for a crank alone, II with dyads)."""
+        """The mechanism's class: the highest class of its groups (I for a crank alone, II with dyads).
+
+        Returns
+        -------
+        int
+            The class (1, 2, 3 or 4).
+        """
         return max(c for _, c, _, _ in self.classification())
 
     def formula(self) -> str:
@@ -457,13 +463,25 @@ class Linkage(Mechanism):
     # -- what the drawing and the forces read ----------------------------------------------------------------
     @property
     def pivots(self) -> tuple[str, ...]:
-        """The frame points where a link turns on the frame."""
+        """The frame points where a link turns on the frame.
+
+        Returns
+        -------
+        tuple of str
+            Joint names, in the order of the structure's pairs.
+        """
         return tuple(dict.fromkeys(p.point for p in self.structure().pairs
                                    if p.kind == "revolute" and FRAME in (p.a, p.b)))
 
     @property
     def output(self) -> str:
-        """``"position"`` when the output link slides on a frame guide, else ``"angle"``."""
+        """``"position"`` when the output link slides on a frame guide, else ``"angle"``.
+
+        Returns
+        -------
+        str
+            The output's kind.
+        """
         return "position" if self.structure().link(self.structure().output).translates else "angle"
 
     def _joints_of(self, link: str) -> tuple[str, ...]:
@@ -511,8 +529,15 @@ class Linkage(Mechanism):
         return tuple(sorted(ranges))
 
     def crank_ranges(self):
-        """The open intervals of crank angles where every group closes (found on 3600 samples, each end
-        bisected to 1e-13 rad)."""
+        """The open intervals of crank angles where every group closes.
+
+        Found on 3600 samples, each end bisected to 1e-13 rad.
+
+        Returns
+        -------
+        tuple of (float, float)
+            ``((0, 2π),)`` for a crank that turns fully, else the intervals (radians).
+        """
         return self._ranges
 
     def assembly_failure(self, phi: float) -> str:

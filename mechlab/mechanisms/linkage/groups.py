@@ -80,9 +80,17 @@ def _broadcast(z, n):
 
 @dataclass(frozen=True)
 class Guide(Checked):
-    """A straight guide (or slot) fixed on the link ``on``: the line through joint ``through`` at ``angle``
-    (radians) to that link's axis. ``on`` defaults to the link ``through`` was made on (the frame for a frame
-    point); name it for a guide on another link through that joint (a slotted lever through its pivot).
+    """A straight guide (or slot) fixed on the link ``on``: the line through joint ``through`` at ``angle``.
+
+    Parameters
+    ----------
+    through : str
+        A joint on the line.
+    angle : float, optional
+        The line's angle to the axis of the link ``on`` (radians).
+    on : str, optional
+        The link the guide is fixed on; by default the link ``through`` was made on (the frame for a frame
+        point). Name it for a guide on another link through that joint (a slotted lever through its pivot).
 
     Examples
     --------
@@ -95,11 +103,35 @@ class Guide(Checked):
     on: Annotated[str | None, Spec("text", optional=True)] = None
 
     def link(self, carrier) -> str:
-        """The link the guide is fixed on."""
+        """The link the guide is fixed on.
+
+        Parameters
+        ----------
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+
+        Returns
+        -------
+        str
+            The link's name.
+        """
         return self.on if self.on is not None else carrier(self.through)
 
     def line(self, state: State, carrier):
-        """The line's point Q (complex: position, analogs) and its angle θ + angle with analogs."""
+        """The line's point Q (complex: position, analogs) and its angle θ + angle with analogs.
+
+        Parameters
+        ----------
+        state : State
+            The linkage being placed.
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+
+        Returns
+        -------
+        tuple
+            Q's position and analogs as complex numbers, and the line's AnglePath.
+        """
         th = state.angles[self.link(carrier)]
         return state.z(self.through), AnglePath(th.theta + self.angle, th.d, th.dd)
 
@@ -144,30 +176,104 @@ class Group:
     order: ClassVar[int] = 2
 
     def needs(self) -> tuple[str, ...]:
+        """The joints this element needs placed before it.
+
+        Returns
+        -------
+        tuple of str
+            Joint names.
+        """
         raise NotImplementedError
 
     def makes(self) -> tuple[str, ...]:
-        """The joints this element defines."""
+        """The joints this element defines.
+
+        Returns
+        -------
+        tuple of str
+            Joint names (empty for a group that makes none).
+        """
         return ()
 
     def guides(self) -> tuple[Guide, ...]:
-        """The guides this element slides on."""
+        """The guides this element slides on.
+
+        Returns
+        -------
+        tuple of Guide
+            The guides (empty for none).
+        """
         return ()
 
     def link_names(self) -> tuple[str, ...]:
+        """The names of the links this element adds.
+
+        Returns
+        -------
+        tuple of str
+            Link names, as given by ``links`` or by default from the joints' letters.
+        """
         raise NotImplementedError
 
     def describe(self) -> str:
+        """The element in words, for error messages.
+
+        Returns
+        -------
+        str
+            E.g. ``"the RRR group (AB, EB)"``.
+        """
         return f"the {self.kind} group ({', '.join(self.link_names())})"
 
     def structure(self, carrier, links) -> tuple[tuple[Link, ...], tuple[Pair, ...]]:
+        """The links and pairs this element adds to the linkage's structure.
+
+        Parameters
+        ----------
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+        links : dict
+            The links defined so far, by name.
+
+        Returns
+        -------
+        tuple of (tuple of Link, tuple of Pair)
+            The new links and their pairs.
+        """
         raise NotImplementedError
 
     def place(self, state: State, carrier) -> None:
+        """Place this element's joints and links over all crank angles of ``state`` (positions and analogs).
+
+        Parameters
+        ----------
+        state : State
+            The linkage's joints and link angles placed so far; the new ones are written into it.
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+
+        Raises
+        ------
+        AssemblyError
+            Where the group cannot close (a strict state; otherwise those rows are marked in ``state.ok``).
+        SingularityError
+            At a dead point of the group (a strict state).
+        """
         raise NotImplementedError
 
     def transmission(self, state: State) -> np.ndarray:
-        """The transmission angle μ of this group over the placed motion (π/2 is ideal)."""
+        """The transmission angle μ of this group over the placed motion (π/2 is ideal).
+
+        Parameters
+        ----------
+        state : State
+            The placed linkage.
+
+        Returns
+        -------
+        numpy.ndarray
+            μ (radians) at every crank angle.
+        """
         raise NotImplementedError
 
     def _names(self, default: tuple[str, str]) -> tuple[str, str]:
@@ -185,8 +291,23 @@ class _Dyad(Group):
 
 @dataclass(frozen=True)
 class Crank(Group, Checked):
-    """The driver: a link turning about the frame pivot ``pivot``; its joint ``joint`` at ``radius`` is at
-    angle φ from the x axis.
+    """The driver: a link turning about the frame pivot ``pivot``, its joint ``joint`` at crank angle φ.
+
+    Parameters
+    ----------
+    pivot : str
+        The frame point it turns about.
+    joint : str
+        The joint it carries, at angle φ from the x axis.
+    radius : float
+        |pivot joint| (positive length).
+    name : str, optional
+        The link's name.
+
+    Raises
+    ------
+    DimensionError
+        For a radius that is not positive and finite.
 
     Examples
     --------
@@ -245,10 +366,29 @@ def _bar_angle(state, start: str, end: str) -> AnglePath:
 
 @dataclass(frozen=True)
 class RRR(_Dyad, Checked):
-    """Two links pinned at the new joint ``joint`` and to the joints ``first`` and ``second``:
-    |joint - first| = first_length, |joint - second| = second_length. ``assembly`` +1 puts the joint on
-    the left of the directed line first → second, -1 on its right. ``links``: the two links' names
-    (default: the joints' letters, e.g. "AB", "EB").
+    """Two links pinned at the new joint ``joint`` and to the joints ``first`` and ``second``.
+
+    |joint - first| = first_length, |joint - second| = second_length.
+
+    Parameters
+    ----------
+    first, second : str
+        The known joints the two links are pinned to.
+    joint : str
+        The new joint where the two links meet.
+    first_length, second_length : float
+        The two links' lengths (positive).
+    assembly : {1, -1}, optional
+        +1 puts the joint on the left of the directed line first → second, -1 on its right.
+    links : sequence of str, optional
+        The two links' names (default: the joints' letters, e.g. "AB", "EB").
+
+    Raises
+    ------
+    DimensionError
+        For a length that is not positive and finite.
+    StructureError
+        For ``links`` that are not two names.
 
     Examples
     --------
@@ -302,12 +442,32 @@ class RRR(_Dyad, Checked):
         _place_inner(self, state, carrier, B, (P1, P2), ())
 
     def links_placed(self, state, carrier):
+        """Record the angles of this group's links (θ, θ', θ'') in ``state`` once its joint is placed.
+
+        Parameters
+        ----------
+        state : State
+            The linkage being placed.
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+        """
         one, two = self.link_names()
         state.link(one, self.first, _bar_angle(state, self.first, self.joint))
         state.link(two, self.second, _bar_angle(state, self.second, self.joint))
 
     def transmission(self, state):
-        """μ at the inner joint between its two links (cos μ = (B→first)·(B→second)/(l1·l2))."""
+        """μ at the inner joint between its two links (cos μ = (B→first)·(B→second)/(l1·l2)).
+
+        Parameters
+        ----------
+        state : State
+            The placed linkage.
+
+        Returns
+        -------
+        numpy.ndarray
+            μ (radians) at every crank angle.
+        """
         B, P1, P2 = (as_complex(state.points[k].p) for k in (self.joint, self.first, self.second))
         cos = _re_conj(P1 - B, P2 - B) / (self.first_length * self.second_length)
         return np.arccos(np.clip(cos, -1.0, 1.0))
@@ -328,9 +488,29 @@ def _guide_axis(guide: Guide, on: str, links):
 
 @dataclass(frozen=True)
 class RRP(_Dyad, Checked):
-    """A rod ``pin``-``joint`` of ``length`` and a slider at ``joint`` on the straight ``guide`` (a
-    :class:`Guide` on any link). ``assembly`` +1 takes the slider ahead of the pin's foot along the guide,
-    -1 behind. ``links``: the rod's and the slider's names (default "AB" and "slider B").
+    """A rod ``pin``-``joint`` of ``length`` and a slider at ``joint`` on the straight ``guide``.
+
+    Parameters
+    ----------
+    pin : str
+        The known joint the rod is pinned to.
+    joint : str
+        The new joint: the slider's pin.
+    length : float
+        The rod's length (positive).
+    guide : Guide
+        The straight guide (on any link) the slider runs on.
+    assembly : {1, -1}, optional
+        +1 takes the slider ahead of the pin's foot along the guide, -1 behind.
+    links : sequence of str, optional
+        The rod's and the slider's names (default "AB" and "slider B").
+
+    Raises
+    ------
+    DimensionError
+        For a length that is not positive and finite.
+    StructureError
+        For ``links`` that are not two names.
 
     Examples
     --------
@@ -351,6 +531,13 @@ class RRP(_Dyad, Checked):
         return (self.pin, self.guide.through)
 
     def guides(self):
+        """The guides this element slides on: its one guide.
+
+        Returns
+        -------
+        tuple of Guide
+            The guides.
+        """
         return (self.guide,)
 
     def makes(self):
@@ -384,13 +571,32 @@ class RRP(_Dyad, Checked):
         _place_inner(self, state, carrier, Q[0] + t * u, (P,), ((Q, th),))
 
     def links_placed(self, state, carrier):
+        """Record the angles of this group's links (θ, θ', θ'') in ``state`` once its joint is placed.
+
+        Parameters
+        ----------
+        state : State
+            The linkage being placed.
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+        """
         rod, slider = self.link_names()
         state.link(rod, self.pin, _bar_angle(state, self.pin, self.joint))
         state.link(slider, self.joint, self.guide.line(state, carrier)[1])
 
     def transmission(self, state):
-        """μ between the rod and the guide's normal (as :class:`~mechlab.SliderCrank`): π/2 with the rod along
-        the guide."""
+        """μ between the rod and the guide's normal (as :class:`~mechlab.SliderCrank`): π/2 with the rod on the guide.
+
+        Parameters
+        ----------
+        state : State
+            The placed linkage.
+
+        Returns
+        -------
+        numpy.ndarray
+            μ (radians) at every crank angle.
+        """
         rod = as_complex(state.points[self.joint].p) - as_complex(state.points[self.pin].p)
         u = np.exp(1j * state.angles[self.link_names()[1]].theta)
         return np.pi / 2 - np.arcsin(np.clip(np.abs(_im_conj(u, rod)) / self.length, 0.0, 1.0))
@@ -398,10 +604,25 @@ class RRP(_Dyad, Checked):
 
 @dataclass(frozen=True)
 class RPR(_Dyad, Checked):
-    """A block pinned at the joint ``pin`` slides in the straight slot of a link pivoted at the joint
-    ``pivot``; the slot passes through the pivot, so the link turns with the line pivot → pin. ``length``:
-    the slotted link's length (to draw it; points on it are placed with :class:`Point`). ``links``: the
-    block's and the slotted link's names (default "block A" and "EA" for pin A, pivot E).
+    """A block pinned at the joint ``pin`` slides in the straight slot of a link pivoted at the joint ``pivot``.
+
+    The slot passes through the pivot, so the link turns with the line pivot → pin.
+
+    Parameters
+    ----------
+    pin : str
+        The known joint the block is pinned to.
+    pivot : str
+        The known joint the slotted link turns about.
+    length : float, optional
+        The slotted link's length (to draw it; points on it are placed with :class:`Point`).
+    links : sequence of str, optional
+        The block's and the slotted link's names (default "block A" and "EA" for pin A, pivot E).
+
+    Raises
+    ------
+    StructureError
+        For ``links`` that are not two names.
 
     Examples
     --------
@@ -443,15 +664,38 @@ class RPR(_Dyad, Checked):
         state.link(lever, self.pivot, angle)
 
     def transmission(self, state):
-        """π/2: the pin pushes the slot along its normal (as :class:`~mechlab.SlottedLink`)."""
+        """π/2: the pin pushes the slot along its normal (as :class:`~mechlab.SlottedLink`).
+
+        Parameters
+        ----------
+        state : State
+            The placed linkage.
+
+        Returns
+        -------
+        numpy.ndarray
+            μ (radians) at every crank angle.
+        """
         return np.full(state.n, np.pi / 2)
 
 
 @dataclass(frozen=True)
 class PRP(_Dyad, Checked):
-    """Two blocks pinned together at the new joint ``joint``, one sliding on the guide ``first``, the other on
-    the guide ``second`` (:class:`Guide` s on any links): the joint is where the two lines cross. ``links``:
-    the two blocks' names (default "slider B" and "block B").
+    """Two blocks pinned together at the new joint ``joint``, each on a guide: the joint is where the lines cross.
+
+    Parameters
+    ----------
+    first, second : Guide
+        The guides (on any links) of the first and the second block.
+    joint : str
+        The new joint: the blocks' common pin.
+    links : sequence of str, optional
+        The two blocks' names (default "slider B" and "block B").
+
+    Raises
+    ------
+    StructureError
+        For ``links`` that are not two names.
 
     Examples
     --------
@@ -470,6 +714,13 @@ class PRP(_Dyad, Checked):
         return (self.first.through, self.second.through)
 
     def guides(self):
+        """The guides this element slides on: the first and the second.
+
+        Returns
+        -------
+        tuple of Guide
+            The guides.
+        """
         return (self.first, self.second)
 
     def makes(self):
@@ -497,20 +748,48 @@ class PRP(_Dyad, Checked):
         _place_inner(self, state, carrier, Q1[0] + t * u1, (), ((Q1, th1), (Q2, th2)))
 
     def links_placed(self, state, carrier):
+        """Record the angles of this group's links (θ, θ', θ'') in ``state`` once its joint is placed.
+
+        Parameters
+        ----------
+        state : State
+            The linkage being placed.
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+        """
         one, two = self.link_names()
         state.link(one, self.joint, self.first.line(state, carrier)[1])
         state.link(two, self.joint, self.second.line(state, carrier)[1])
 
     def transmission(self, state):
-        """μ = the angle between the two guides: π/2 when the first block pushes along the second guide."""
+        """μ = the angle between the two guides: π/2 when the first block pushes along the second guide.
+
+        Parameters
+        ----------
+        state : State
+            The placed linkage.
+
+        Returns
+        -------
+        numpy.ndarray
+            μ (radians) at every crank angle.
+        """
         one, two = self.link_names()
         return np.abs(np.mod(state.angles[two].theta - state.angles[one].theta + np.pi, 2 * np.pi) - np.pi)
 
 
 @dataclass(frozen=True)
 class Point(Checked):
-    """A point ``name`` fixed on the link ``on`` at (ξ, η) = ``at`` in the link's coordinates: ξ along its
-    axis from its origin joint, η to the axis' left (a coupler point, the far end of a lever).
+    """A point ``name`` fixed on the link ``on`` (a coupler point, the far end of a lever).
+
+    Parameters
+    ----------
+    name : str
+        The new joint's name.
+    on : str
+        The link it is fixed on.
+    at : tuple of float, optional
+        (ξ, η) in the link's coordinates: ξ along its axis from its origin joint, η to the axis' left (length).
 
     Examples
     --------
@@ -523,12 +802,35 @@ class Point(Checked):
     at: Annotated[tuple, Spec("point")] = (0.0, 0.0)
 
     def needs(self):
+        """The joints a point needs placed before it: none (its link's origin and angle are known once the link is).
+
+        Returns
+        -------
+        tuple of str
+            ``()``.
+        """
         return ()
 
     def makes(self):
+        """The joint this point defines.
+
+        Returns
+        -------
+        tuple of str
+            ``(name,)``.
+        """
         return (self.name,)
 
     def place(self, state, carrier):
+        """Place the point over all crank angles of ``state`` (positions and analogs).
+
+        Parameters
+        ----------
+        state : State
+            The linkage's joints and link angles placed so far; the new ones are written into it.
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+        """
         O = state.z(state.origins[self.on])
         th = state.angles[self.on]
         r = complex(*self.at) * np.exp(1j * th.theta)
