@@ -169,3 +169,71 @@ def test_chapter_12_families_differ_by_dash_and_marker_and_colour():
     assert len(laws) == len(comp.candidates) >= 2
     assert len({(line.get_linestyle(), line.get_marker()) for line in laws}) == len(laws)
     plt.close(fig)
+
+
+def _controls(widget):
+    """The controls (sliders, toggle buttons, drop-downs) in an ipywidgets tree: its value widgets but text and pictures."""
+    import ipywidgets as W
+    found = [widget] if isinstance(widget, W.ValueWidget) and not isinstance(widget, (W.HTML, W.Play, W.Image)) else []
+    for child in getattr(widget, "children", ()) or ():
+        found += _controls(child)
+    return found
+
+
+def test_every_explorer_control_is_named_and_its_status_is_a_live_region():
+    from mechlab.widgets import fourbar_explorer
+    from mechlab.widgets.access import LABEL_CONTROLS_JS, STATUS_CLASS
+    from mechlab.widgets.forces import press_explorer
+    from mechlab.widgets.geneva import planar_geneva_explorer
+
+    for explorer in (fourbar_explorer(live=False), press_explorer(live=False), planar_geneva_explorer(live=False)):
+        controls = _controls(explorer.widget)
+        assert len(controls) >= 3 and all(c.description.strip() for c in controls), \
+            [type(c).__name__ for c in controls if not c.description.strip()]
+        assert STATUS_CLASS in explorer.status._dom_classes and explorer.status.value.strip()
+        before = explorer.status.value
+        slider = next(c for c in controls if c is not explorer.angle and hasattr(c, "step") and c.step)
+        slider.value = slider.value + slider.step   # a change of the first dimension is told in the status
+        assert explorer.status.value != before
+        plt.close("all")
+    # the page script names each slider handle by its visible label and makes the status line polite
+    assert "aria-labelledby" in LABEL_CONTROLS_JS and f".{STATUS_CLASS}" in LABEL_CONTROLS_JS
+    assert "'aria-live', 'polite'" in LABEL_CONTROLS_JS
+
+
+def test_the_choosing_explorers_picture_and_status_follow_the_specification():
+    from mechlab.widgets.design import ChoosingExplorer
+
+    ex = ChoosingExplorer(D.Specification("index", 0.75, stations=4, inertia=1.0), live=False)
+    assert ex.output.alt == alt_text(ex.figure.fig) and ex.output.tooltip == ex.output.alt
+    assert f"Comparison of {len(ex.comparison.candidates)} candidate mechanisms" in ex.output.alt
+    first = ex.comparison.candidates[0]
+    assert ex.status.value.startswith(f"{len(ex.comparison.candidates)} of ") and first.family in ex.status.value
+    ex.sliders["dwell_fraction"].value = 0.40   # no family meets it
+    assert ex.status.value.startswith("0 of ") and "no family meets" in ex.output.alt
+    assert all(c.description.strip() for c in _controls(ex.widget))
+    plt.close("all")
+
+
+def test_the_printed_books_figures_are_groups_around_their_described_image(tmp_path):
+    """A figure directive's <figure> is role="group" in the single-page book tools/print_pdf.py prints (else
+    Chromium tags it a second, undescribed /Figure around the image's), and stays a <figure> on the web."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    ext = Path(__file__).resolve().parent.parent / "book" / "_ext"
+    src = tmp_path / "src"
+    src.mkdir()
+    (src / "conf.py").write_text(f"import sys\nsys.path.insert(0, {str(ext)!r})\nextensions = ['alttext']\n")
+    fig, _ = plt.subplots(figsize=(1, 1))
+    fig.savefig(src / "f.png")
+    plt.close(fig)
+    (src / "index.rst").write_text("Title\n=====\n\n.. figure:: f.png\n   :alt: A square.\n\n   Its caption.\n")
+    tags = {}
+    for builder in ("html", "singlehtml"):
+        subprocess.run([sys.executable, "-m", "sphinx", "-q", "-b", builder, str(src), str(tmp_path / builder)],
+                       check=True, capture_output=True)
+        tags[builder] = re.findall(r"<figure[^>]*>", (tmp_path / builder / "index.html").read_text())
+    assert len(tags["html"]) == len(tags["singlehtml"]) == 1
+    assert 'role="group"' in tags["singlehtml"][0] and "role" not in tags["html"][0]
