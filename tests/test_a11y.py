@@ -89,7 +89,9 @@ def test_a_figure_that_names_nothing_has_no_alt_text_and_one_that_does_is_compos
     ax.set(title="lift", xlabel="φ (deg)", ylabel="s (mm)")
     ax.plot([0, 1], [1, 0], label="cycloidal")
     ax.legend()
-    assert alt_text(fig) == "Figure: lift, s (mm) against φ (deg), legend: cycloidal."
+    # its subject, then its key reading: each curve's range (unlabelled: named by the y axis)
+    assert alt_text(fig) == ("Figure: lift, s (mm) against φ (deg), legend: cycloidal, "
+                             "s (mm) from 0 to 1; cycloidal from 0 to 1.")
     ax.set_xlabel(r"x (units of $l_{OB}$)")   # mathtext is read as plain words
     assert "s (mm) against x (units of l_OB)" in alt_text(fig)
     assert alt_text(set_alt(fig, "  Lift  of a cam. ")) == "Lift of a cam."
@@ -237,3 +239,38 @@ def test_the_printed_books_figures_are_groups_around_their_described_image(tmp_p
         tags[builder] = re.findall(r"<figure[^>]*>", (tmp_path / builder / "index.html").read_text())
     assert len(tags["html"]) == len(tags["singlehtml"]) == 1
     assert 'role="group"' in tags["singlehtml"][0] and "role" not in tags["html"][0]
+
+
+KEY_READING = re.compile(r"\d|\b(more|less|larger|smaller|than|best|worst|largest|smallest)\b")
+
+
+def test_every_library_figure_states_a_key_reading_not_only_its_subject():
+    fb = FourBar(1, 3, 3, 4, 1)
+    mo = fb.motion(np.linspace(0, 2 * np.pi, 90))
+    comp = D.candidates(D.Specification("swing", 40 / 360, amplitude=np.radians(40),
+                                        max_pressure_angle=np.radians(60)))
+    figures = [draw(fb, 0.3).ax.figure, plot_law(mo)[0].figure, comparison_figure(comp),
+               plot_design_outcomes(design_outcomes(150 * DEG, fractions=(0.5,), dwells=(180 * DEG,)))]
+    for fig in figures:
+        text = alt_text(fig)
+        titles = [t.get_text() for t in [getattr(fig, "_suptitle", None), *(ax.title for ax in fig.axes)] if t]
+        assert KEY_READING.search(text) and text.rstrip(".") not in titles, text
+    plt.close("all")
+
+
+def test_a_composed_description_gives_each_curves_range_but_a_diagrams_lines_none():
+    fig, (plot, diagram) = plt.subplots(1, 2)
+    phi = np.linspace(0, 360, 73)
+    plot.plot(phi, 40 + 20 * np.sin(np.radians(phi)), label="μ")
+    plot.axhline(40, color="0.5")   # a reference line, no reading
+    plot.set(xlabel="φ (deg)", ylabel="μ (deg)", title="transmission angle")
+    diagram.plot([0, 1], [0, 2])
+    diagram.set(title="the four-bar")
+    diagram.set_axis_off()
+    text = alt_text(fig)
+    assert "panel 1: transmission angle, μ (deg) against φ (deg), μ from 20 to 60;" in text
+    assert text.endswith("panel 2: the four-bar.")
+    for k in range(6):   # a seventh curve: four ranges and how many more
+        plot.plot(phi, np.full_like(phi, k) + phi / 360, label=f"c{k}")
+    assert "; and 3 more curves" in alt_text(fig)
+    plt.close(fig)
