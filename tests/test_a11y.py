@@ -89,7 +89,9 @@ def test_a_figure_that_names_nothing_has_no_alt_text_and_one_that_does_is_compos
     ax.set(title="lift", xlabel="φ (deg)", ylabel="s (mm)")
     ax.plot([0, 1], [1, 0], label="cycloidal")
     ax.legend()
-    assert alt_text(fig) == "Figure: lift, s (mm) against φ (deg), legend: cycloidal."
+    # its subject, then its key reading: each curve's range (unlabelled: named by the y axis)
+    assert alt_text(fig) == ("Figure: lift, s (mm) against φ (deg), legend: cycloidal, "
+                             "s (mm) from 0 to 1; cycloidal from 0 to 1.")
     ax.set_xlabel(r"x (units of $l_{OB}$)")   # mathtext is read as plain words
     assert "s (mm) against x (units of l_OB)" in alt_text(fig)
     assert alt_text(set_alt(fig, "  Lift  of a cam. ")) == "Lift of a cam."
@@ -168,4 +170,107 @@ def test_chapter_12_families_differ_by_dash_and_marker_and_colour():
     laws = [line for line in fig.axes[1].get_lines() if line.get_visible()]
     assert len(laws) == len(comp.candidates) >= 2
     assert len({(line.get_linestyle(), line.get_marker()) for line in laws}) == len(laws)
+    plt.close(fig)
+
+
+def _controls(widget):
+    """The controls (sliders, toggle buttons, drop-downs) in an ipywidgets tree: its value widgets but text and pictures."""
+    import ipywidgets as W
+    found = [widget] if isinstance(widget, W.ValueWidget) and not isinstance(widget, (W.HTML, W.Play, W.Image)) else []
+    for child in getattr(widget, "children", ()) or ():
+        found += _controls(child)
+    return found
+
+
+def test_every_explorer_control_is_named_and_its_status_is_a_live_region():
+    from mechlab.widgets import fourbar_explorer
+    from mechlab.widgets.access import LABEL_CONTROLS_JS, STATUS_CLASS
+    from mechlab.widgets.forces import press_explorer
+    from mechlab.widgets.geneva import planar_geneva_explorer
+
+    for explorer in (fourbar_explorer(live=False), press_explorer(live=False), planar_geneva_explorer(live=False)):
+        controls = _controls(explorer.widget)
+        assert len(controls) >= 3 and all(c.description.strip() for c in controls), \
+            [type(c).__name__ for c in controls if not c.description.strip()]
+        assert STATUS_CLASS in explorer.status._dom_classes and explorer.status.value.strip()
+        before = explorer.status.value
+        slider = next(c for c in controls if c is not explorer.angle and hasattr(c, "step") and c.step)
+        slider.value = slider.value + slider.step   # a change of the first dimension is told in the status
+        assert explorer.status.value != before
+        plt.close("all")
+    # the page script names each slider handle by its visible label and makes the status line polite
+    assert "aria-labelledby" in LABEL_CONTROLS_JS and f".{STATUS_CLASS}" in LABEL_CONTROLS_JS
+    assert "'aria-live', 'polite'" in LABEL_CONTROLS_JS
+
+
+def test_the_choosing_explorers_picture_and_status_follow_the_specification():
+    from mechlab.widgets.design import ChoosingExplorer
+
+    ex = ChoosingExplorer(D.Specification("index", 0.75, stations=4, inertia=1.0), live=False)
+    assert ex.output.alt == alt_text(ex.figure.fig) and ex.output.tooltip == ex.output.alt
+    assert f"Comparison of {len(ex.comparison.candidates)} candidate mechanisms" in ex.output.alt
+    first = ex.comparison.candidates[0]
+    assert ex.status.value.startswith(f"{len(ex.comparison.candidates)} of ") and first.family in ex.status.value
+    ex.sliders["dwell_fraction"].value = 0.40   # no family meets it
+    assert ex.status.value.startswith("0 of ") and "no family meets" in ex.output.alt
+    assert all(c.description.strip() for c in _controls(ex.widget))
+    plt.close("all")
+
+
+def test_the_printed_books_figures_are_groups_around_their_described_image(tmp_path):
+    """A figure directive's <figure> is role="group" in the single-page book tools/print_pdf.py prints (else
+    Chromium tags it a second, undescribed /Figure around the image's), and stays a <figure> on the web."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    ext = Path(__file__).resolve().parent.parent / "book" / "_ext"
+    src = tmp_path / "src"
+    src.mkdir()
+    (src / "conf.py").write_text(f"import sys\nsys.path.insert(0, {str(ext)!r})\nextensions = ['alttext']\n")
+    fig, _ = plt.subplots(figsize=(1, 1))
+    fig.savefig(src / "f.png")
+    plt.close(fig)
+    (src / "index.rst").write_text("Title\n=====\n\n.. figure:: f.png\n   :alt: A square.\n\n   Its caption.\n")
+    tags = {}
+    for builder in ("html", "singlehtml"):
+        subprocess.run([sys.executable, "-m", "sphinx", "-q", "-b", builder, str(src), str(tmp_path / builder)],
+                       check=True, capture_output=True)
+        tags[builder] = re.findall(r"<figure[^>]*>", (tmp_path / builder / "index.html").read_text())
+    assert len(tags["html"]) == len(tags["singlehtml"]) == 1
+    assert 'role="group"' in tags["singlehtml"][0] and "role" not in tags["html"][0]
+
+
+KEY_READING = re.compile(r"\d|\b(more|less|larger|smaller|than|best|worst|largest|smallest)\b")
+
+
+def test_every_library_figure_states_a_key_reading_not_only_its_subject():
+    fb = FourBar(1, 3, 3, 4, 1)
+    mo = fb.motion(np.linspace(0, 2 * np.pi, 90))
+    comp = D.candidates(D.Specification("swing", 40 / 360, amplitude=np.radians(40),
+                                        max_pressure_angle=np.radians(60)))
+    figures = [draw(fb, 0.3).ax.figure, plot_law(mo)[0].figure, comparison_figure(comp),
+               plot_design_outcomes(design_outcomes(150 * DEG, fractions=(0.5,), dwells=(180 * DEG,)))]
+    for fig in figures:
+        text = alt_text(fig)
+        titles = [t.get_text() for t in [getattr(fig, "_suptitle", None), *(ax.title for ax in fig.axes)] if t]
+        assert KEY_READING.search(text) and text.rstrip(".") not in titles, text
+    plt.close("all")
+
+
+def test_a_composed_description_gives_each_curves_range_but_a_diagrams_lines_none():
+    fig, (plot, diagram) = plt.subplots(1, 2)
+    phi = np.linspace(0, 360, 73)
+    plot.plot(phi, 40 + 20 * np.sin(np.radians(phi)), label="μ")
+    plot.axhline(40, color="0.5")   # a reference line, no reading
+    plot.set(xlabel="φ (deg)", ylabel="μ (deg)", title="transmission angle")
+    diagram.plot([0, 1], [0, 2])
+    diagram.set(title="the four-bar")
+    diagram.set_axis_off()
+    text = alt_text(fig)
+    assert "panel 1: transmission angle, μ (deg) against φ (deg), μ from 20 to 60;" in text
+    assert text.endswith("panel 2: the four-bar.")
+    for k in range(6):   # a seventh curve: four ranges and how many more
+        plot.plot(phi, np.full_like(phi, k) + phi / 360, label=f"c{k}")
+    assert "; and 3 more curves" in alt_text(fig)
     plt.close(fig)

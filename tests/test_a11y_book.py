@@ -94,4 +94,4 @@ def test_a_small_book_gives_figures_alt_text_and_refuses_one_without(tmp_path):
     alts = re.findall(r'<img[^>]*\balt="([^"]+)"', page)
     assert any(a.startswith("Kinematic diagram of a four bar with joints O, A, B") and "φ = 17°" in a for a in alts)
     assert any("external geneva" in a and "Animation of 4 frames" in a for a in alts)
-    assert "Figure: a parabola, y against x." in alts
+    assert "Figure: a parabola, y against x, y from 0 to 4." in alts   # its subject and its key reading

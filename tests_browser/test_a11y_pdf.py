@@ -74,7 +74,6 @@ def test_a_small_page_prints_tagged_with_its_figures_described(browser, tmp_path
     assert found["figures"] >= 2 and len(found["alts"]) >= found["figures"], found
 
 
-@pytest.mark.xfail(reason='117 of 118 PDF figures carry /Alt in CI 2026-12-02: one figure without alternative text (issue 29)', strict=False)
 def test_the_book_pdf_is_tagged_and_its_figures_described():
     if not PDF.is_file():
         pytest.fail(f"no {PDF}: run `make pdf` first (make test-browser does)")

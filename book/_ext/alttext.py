@@ -10,6 +10,11 @@
   or only the image's address (what docutils writes for an image without one: a figure that
   names nothing, an animation without a description): each one is a
   warning naming the page, so ``sphinx-build -W`` fails on it.
+* In the single-page book that ``tools/print_pdf.py`` prints, a figure directive's ``<figure>`` is a
+  ``role="group"`` around its image and caption: Chromium's tagged PDF makes every ``<figure>`` a
+  /Figure structure element, which gets no /Alt (its name is its caption), so the described image
+  would sit inside an undescribed Figure (PDF/UA wants every Figure described). The image inside
+  stays the Figure, with its alt; the web pages keep their ``<figure>``.
 """
 
 from __future__ import annotations
@@ -61,6 +66,16 @@ def _render_image_with_alt(render_image):
     return render
 
 
+def _figure_as_group(visit_figure):
+    def visit(self, node):
+        visit_figure(self, node)
+        if self.builder.name == "singlehtml" and self.body[-1].startswith("<figure"):
+            self.body[-1] = self.body[-1].replace("<figure", '<figure role="group"', 1)
+
+    visit.mechbook_group = True
+    return visit
+
+
 def _check_alt(app, exception):
     if exception is not None or app.builder.format != "html":
         return
@@ -80,5 +95,9 @@ def setup(app):
 
     if not getattr(NbElementRenderer.render_image, "mechbook_alt", False):
         NbElementRenderer.render_image = _render_image_with_alt(NbElementRenderer.render_image)
+    from sphinx.writers.html5 import HTML5Translator
+
+    if not getattr(HTML5Translator.visit_figure, "mechbook_group", False):
+        HTML5Translator.visit_figure = _figure_as_group(HTML5Translator.visit_figure)
     app.connect("build-finished", _check_alt, priority=400)   # before mechbook's, which records the warnings
     return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}

@@ -13,7 +13,9 @@ it displays for its default values plus a one-line note on running it live:
   (an explorer's question and status line) above it and its controls' values as a
   caption (a play button is no value: it is left out);
 * every figure is published with its alternative text (``mechlab.draw.access.install_alt_text``),
-  which ``_ext/alttext.py`` writes into the page as the image's ``alt``; a widget's image keeps it;
+  which ``_ext/alttext.py`` writes into the page as the image's ``alt``; a widget's image keeps it
+  (an ``ipywidgets.Image`` its ``alt``, :class:`mechlab.widgets.access.AltImage`, or tooltip); an image
+  without one gets an empty ``alt``, which ``_ext/alttext.py`` refuses;
 * ``%matplotlib widget`` / ``ipympl`` falls back to the inline backend (ipympl figures
   do not render in static HTML).
 
@@ -46,7 +48,7 @@ def _mechbook_setup():
 
     def recording_publish(data, metadata=None, *args, **kwargs):
         if capturing and isinstance(data, dict) and "image/png" in data:
-            alt = ((metadata or {}).get("image/png") or {}).get("alt") or "figure for the default values"
+            alt = ((metadata or {}).get("image/png") or {}).get("alt") or ""
             last_image[capturing[-1].model_id] = (data["image/png"], alt)
         return publish(data, metadata, *args, **kwargs)
 
@@ -81,8 +83,9 @@ def _mechbook_setup():
                 png, alt = last_image[w.model_id]
                 parts.append(f'<img src="data:image/png;base64,{png}" alt="{html.escape(alt, quote=True)}"/>')
             elif isinstance(w, ipywidgets.Image) and w.value:   # an explorer that sends its figure as one picture
+                alt = getattr(w, "alt", "") or w.tooltip or ""   # mechlab.widgets.access.AltImage's
                 parts.append(f'<img src="data:image/{w.format};base64,{base64.b64encode(w.value).decode()}" '
-                             f'alt="figure for the default values"/>')
+                             f'alt="{html.escape(alt, quote=True)}"/>')
             elif isinstance(w, ipywidgets.HTML) and w.value.strip():
                 texts.append(f'<div class="mechbook-widget-text">{w.value}</div>')  # the widget's own HTML
             elif isinstance(w, ipywidgets.Play):

@@ -113,7 +113,13 @@ class EquivalentSlot(Mechanism):
 
     @classmethod
     def example(cls) -> EquivalentSlot:
-        """The curved-slot twin of ``FourBar.example()``."""
+        """The curved-slot twin of ``FourBar.example()``.
+
+        Returns
+        -------
+        EquivalentSlot
+            A valid instance of the family, the one the services that find the families use.
+        """
         return equivalent_slot(FourBar.example())
 
     linkage: AnyMechanism

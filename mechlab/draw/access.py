@@ -96,6 +96,31 @@ def plain(text: str) -> str:
     return re.sub(r"\\([A-Za-z]+)", r"\1", text.replace("$", "")).replace("{", "").replace("}", "")
 
 
+READINGS = 4   # the curves of a panel whose ranges a composed description gives
+
+
+def _readings(ax) -> str:
+    """The key reading of a panel, from the data it draws: each curve's range (its legend label, else the
+    y-axis's), up to :data:`READINGS` of them; else the number of points scattered; "" if it draws neither.
+    A flat line without a label (a zero line, a limit drawn across) is a reference, not a reading."""
+    ranges = []
+    for line in ax.get_lines():
+        y = np.asarray(line.get_ydata(), float).ravel() if line.get_visible() else np.array([])
+        y = y[np.isfinite(y)]
+        label = line.get_label()
+        named = bool(label) and not label.startswith("_")
+        if len(y) < 2 or (np.ptp(y) == 0 and not named):
+            continue
+        name = plain(label) if named else (plain(ax.get_ylabel()) or "the curve")
+        lo, hi = float(y.min()), float(y.max())
+        ranges.append(f"{name} at {lo:.3g}" if lo == hi else f"{name} from {lo:.3g} to {hi:.3g}")
+    if ranges:
+        more = len(ranges) - READINGS
+        return "; ".join(ranges[:READINGS]) + (f"; and {more} more curves" if more > 0 else "")
+    points = sum(len(c.get_offsets()) for c in ax.collections if c.get_visible() and hasattr(c, "get_offsets"))
+    return f"{points} points" if points > 1 else ""
+
+
 def _axes_words(ax) -> str:
     words = []
     if ax.get_title():
@@ -108,13 +133,19 @@ def _axes_words(ax) -> str:
         entries = [plain(t.get_text()) for t in legend.get_texts() if t.get_text()]
         if entries:
             words.append("legend: " + "; ".join(entries))
+    # a plot's reading (a drawing with its axes off, a kinematic diagram, is described by its own words)
+    reading = _readings(ax) if labels and ax.axison else ""
+    if reading:
+        words.append(reading)
     return ", ".join(words)
 
 
 def alt_text(fig) -> str:
     """The alternative text of ``fig``: what :func:`set_alt` attached, else a description composed
-    from the figure's own words (its title, each panel's title, axis labels and legend entries),
-    else "" (a figure that names nothing).
+    from the figure's own words (its title, each panel's title, axis labels and legend entries) and
+    each plot's key reading (a panel with labelled axes: its curves' ranges, or how many points it
+    scatters), else "" (a
+    figure that names nothing).
 
     Examples
     --------
@@ -125,6 +156,9 @@ def alt_text(fig) -> str:
     >>> _ = ax.set(title="pressure angle", xlabel="φ (deg)", ylabel="μ (deg)")
     >>> alt_text(fig)
     'Figure: pressure angle, μ (deg) against φ (deg).'
+    >>> _ = ax.plot([0, 180, 360], [40, 90, 40])
+    >>> alt_text(fig)
+    'Figure: pressure angle, μ (deg) against φ (deg), μ (deg) from 40 to 90.'
     >>> plt.close(fig)
     """
     own = getattr(fig, ALT_ATTRIBUTE, "")

@@ -52,7 +52,13 @@ class Antiparallelogram(Mechanism):
 
     @classmethod
     def example(cls) -> Antiparallelogram:
-        """Crank 1, ground 2."""
+        """Crank 1, ground 2.
+
+        Returns
+        -------
+        Antiparallelogram
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(1.0, 2.0)
 
     crank: Length

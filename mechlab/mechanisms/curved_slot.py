@@ -395,7 +395,13 @@ class CurvedSlotLink(PivotedSlot, Mechanism):
 
     @classmethod
     def example(cls) -> CurvedSlotLink:
-        """Crank 1, pivots 4 apart, a circular slot of radius 3."""
+        """Crank 1, pivots 4 apart, a circular slot of radius 3.
+
+        Returns
+        -------
+        CurvedSlotLink
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(1.0, 4.0, CircleSlot((3.0, 0.0), 3.0), start=1.0)
 
     crank: Length
@@ -864,7 +870,13 @@ class TranslatingCurvedSlot(Mechanism):
 
     @classmethod
     def example(cls) -> TranslatingCurvedSlot:
-        """Crank 1, a circular slot of radius 3."""
+        """Crank 1, a circular slot of radius 3.
+
+        Returns
+        -------
+        TranslatingCurvedSlot
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(1.0, CircleSlot((0.0, 0.2), 3.0))
 
     crank: Length

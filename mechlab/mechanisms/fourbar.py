@@ -155,7 +155,13 @@ class FourBar(Mechanism):
 
     @classmethod
     def example(cls) -> FourBar:
-        """A crank-rocker (crank 1, coupler 3, rocker 3, ground 4)."""
+        """A crank-rocker (crank 1, coupler 3, rocker 3, ground 4).
+
+        Returns
+        -------
+        FourBar
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(1.0, 3.0, 3.0, 4.0)
 
     crank: Length

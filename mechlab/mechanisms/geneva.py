@@ -378,7 +378,13 @@ class ExternalGeneva(PlanarGeneva):
 
     @classmethod
     def example(cls) -> ExternalGeneva:
-        """Four slots, centres 1 apart."""
+        """Four slots, centres 1 apart.
+
+        Returns
+        -------
+        ExternalGeneva
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(4, 1.0, roller_radius=0.1)
 
     kappa = -1
@@ -487,7 +493,13 @@ class InternalGeneva(PlanarGeneva):
 
     @classmethod
     def example(cls) -> InternalGeneva:
-        """Six slots, centres 1 apart."""
+        """Six slots, centres 1 apart.
+
+        Returns
+        -------
+        InternalGeneva
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(6, 1.0)
 
     kappa = +1

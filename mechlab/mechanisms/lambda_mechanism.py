@@ -69,7 +69,13 @@ class LambdaMechanism(Mechanism):
 
     @classmethod
     def example(cls) -> LambdaMechanism:
-        """Chebyshev's straight-line proportions (r 0.4, a 0.8, δ = 180°)."""
+        """Chebyshev's straight-line proportions (r 0.4, a 0.8, δ = 180°).
+
+        Returns
+        -------
+        LambdaMechanism
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(0.4, 0.8, np.pi)
 
     r: Length
@@ -338,7 +344,13 @@ class GuidedLambda(LambdaMechanism):
 
     @classmethod
     def example(cls) -> GuidedLambda:
-        """The circle-guiding design for δ = 150°, a = 0.9, a 120° dwell (``circle_guiding``)."""
+        """The circle-guiding design for δ = 150°, a = 0.9, a 120° dwell (``circle_guiding``).
+
+        Returns
+        -------
+        GuidedLambda
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(0.21448157412574897, 0.9, 2.6179938779914944, 1, 1.3973785525129392, 1.8562420285733539,
                    0.6060573531852789, 0.6059055628051808, 2.0943951023931953)
 

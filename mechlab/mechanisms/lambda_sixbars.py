@@ -65,7 +65,13 @@ class LambdaRockerSixBar(Mechanism):
 
     @classmethod
     def example(cls) -> LambdaRockerSixBar:
-        """МЧВ1 on the circle-guiding design for δ = 150°, a = 0.9, a 120° dwell, a 20° swing (``mchv1``)."""
+        """МЧВ1 on the circle-guiding design for δ = 150°, a = 0.9, a 120° dwell, a 20° swing (``mchv1``).
+
+        Returns
+        -------
+        LambdaRockerSixBar
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(0.21448157412574897, 0.9, 2.6179938779914944, 0.6059814579952297, 0.9261816628317386,
                    0.5579728992779812, 2.247663312975413, -1, 2.0943951023931953)
 
@@ -260,7 +266,13 @@ class LambdaSlottedSixBar(Mechanism):
 
     @classmethod
     def example(cls) -> LambdaSlottedSixBar:
-        """МЧВ3 (full turn) on the straight-guiding design for δ = 180°, a = 0.8 (``mchv3_full_turn``)."""
+        """МЧВ3 (full turn) on the straight-guiding design for δ = 180°, a = 0.8 (``mchv3_full_turn``).
+
+        Returns
+        -------
+        LambdaSlottedSixBar
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(0.4000000000000008, 0.8, np.pi, -0.06000000000000105, 1.6519507466172711, -0.05, np.pi)
 
     r: Length

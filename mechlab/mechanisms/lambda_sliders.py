@@ -81,7 +81,13 @@ class LambdaSliderSixBar(_OnLambda):
 
     @classmethod
     def example(cls) -> LambdaSliderSixBar:
-        """МЧВ2 on the circle-guiding design for δ = 150°, a = 0.9, a 120° dwell (``mchv2``)."""
+        """МЧВ2 on the circle-guiding design for δ = 150°, a = 0.9, a 120° dwell (``mchv2``).
+
+        Returns
+        -------
+        LambdaSliderSixBar
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(0.21448157412574897, 0.9, 2.6179938779914944, 0.6059814579952297, 1.3973785525129392,
                    1.8562420285733539, 1.3089969389957479, 1, 2.0943951023931953)
 
@@ -302,7 +308,13 @@ class LambdaTranslatingSlot(_OnLambda):
 
     @classmethod
     def example(cls) -> LambdaTranslatingSlot:
-        """МЧВ5 on the straight-guiding design for δ = 180°, a = 0.8 (``mchv5``)."""
+        """МЧВ5 on the straight-guiding design for δ = 180°, a = 0.8 (``mchv5``).
+
+        Returns
+        -------
+        LambdaTranslatingSlot
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(0.4000000000000008, 0.8, np.pi, 0.8000000000000002, 1.601950746617271, np.pi, np.pi / 2, np.pi)
 
     r: Length

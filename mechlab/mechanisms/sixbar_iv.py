@@ -98,6 +98,11 @@ class SixBarIV(Mechanism):
         |RT| ≈ 0.85, crank R-Q 0.25, coupler Q-P 0.9, rocker P-T 0.85) is a crank-rocker,
         so its coupler curve (the slot of the equivalent slotted link) is a closed oval.
         Of the two assemblies at φ = 180° the one with R→Q at ≈ 1° is taken.
+
+        Returns
+        -------
+        SixBarIV
+            The course's six-bar, the one the services that find the families use.
         """
         return cls(crank=0.25, ground=1.04, r_joint=(0.55, 0.45), t_joint=(1.35, 0.15), link3=0.25,
                    link5=0.85, qp=0.9, coupler_point=(0.2, -0.55), inner_assembly=1, start=0.0)

@@ -53,7 +53,13 @@ class SliderCrank(Mechanism):
 
     @classmethod
     def example(cls) -> SliderCrank:
-        """Crank 1, rod 3, offset 0.2."""
+        """Crank 1, rod 3, offset 0.2.
+
+        Returns
+        -------
+        SliderCrank
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(1.0, 3.0, 0.2)
 
     crank: Length

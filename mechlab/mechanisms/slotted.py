@@ -78,7 +78,13 @@ class SlottedLink(PivotedSlot, Mechanism):
 
     @classmethod
     def example(cls) -> SlottedLink:
-        """Crank 0.5, pivots 1 apart (λ = 0.5)."""
+        """Crank 0.5, pivots 1 apart (λ = 0.5).
+
+        Returns
+        -------
+        SlottedLink
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(0.5, 1.0)
 
     crank: Length
@@ -175,7 +181,13 @@ class SineMechanism(Mechanism):
 
     @classmethod
     def example(cls) -> SineMechanism:
-        """Crank 1."""
+        """Crank 1.
+
+        Returns
+        -------
+        SineMechanism
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(1.0)
 
     crank: Length

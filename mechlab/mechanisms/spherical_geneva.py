@@ -87,7 +87,13 @@ class SphericalGeneva(Mechanism):
 
     @classmethod
     def example(cls) -> SphericalGeneva:
-        """Sphere 40 mm, offset 15 mm, four slots."""
+        """Sphere 40 mm, offset 15 mm, four slots.
+
+        Returns
+        -------
+        SphericalGeneva
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(40.0, 15.0, 4, pin_diameter=10.0)
 
     R: Length

@@ -62,7 +62,13 @@ class EllipticTrammel(Mechanism):
 
     @classmethod
     def example(cls) -> EllipticTrammel:
-        """Rod 1, guides 1.2 rad apart."""
+        """Rod 1, guides 1.2 rad apart.
+
+        Returns
+        -------
+        EllipticTrammel
+            A valid instance of the family, the one the services that find the families use.
+        """
         return cls(1.0, 1.2)
 
     rod: Length

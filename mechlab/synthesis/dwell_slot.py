@@ -78,6 +78,31 @@ def slotted_link_law(lam: float, phi) -> BaseLaw:
     """The base mechanism's law ψ_K(φ) with ψ_K', ψ_K'', ψ_K''' (Zinchenko et al. (2013), (18)-(20)).
 
     ψ_K is continuous in φ: principal for λ < 1, ψ_K - φ ∈ (-π/2, π/2) for λ > 1 (the link turns).
+
+    Parameters
+    ----------
+    lam : float
+        λ = l_OA / l_OB, the crank over the pivot distance (dimensionless, λ ≠ 1).
+    phi : float or array_like
+        Crank angles (rad).
+
+    Returns
+    -------
+    BaseLaw
+        ψ_K (rad) and its analogs ψ_K′, ψ_K″, ψ_K‴ (``psi``, ``d``, ``dd``, ``ddd``).
+
+    Raises
+    ------
+    DwellRatioError
+        λ = 1 (within 1e-4) or outside [1e-6, 1e6].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.synthesis.dwell_slot import slotted_link_law
+    >>> k = slotted_link_law(0.5, np.pi / 2)
+    >>> round(float(k.psi), 4), round(float(k.d), 4)    # atan(λ) and λ²/(1 + λ²)
+    (0.4636, 0.2)
     """
     lam = check_lambda(lam)
     phi = as_angles(phi)
@@ -839,7 +864,13 @@ class DwellSlotMechanism(Mechanism):
 
     @classmethod
     def example(cls) -> DwellSlotMechanism:
-        """λ = 0.5, a dwell from φ = 60° to 150° (``curved_slot_dwell``)."""
+        """λ = 0.5, a dwell from φ = 60° to 150° (``curved_slot_dwell``).
+
+        Returns
+        -------
+        DwellSlotMechanism
+            A valid instance of the family, the one the services that find the families use.
+        """
         return curved_slot_dwell(0.5, np.pi / 3, 5 * np.pi / 6)
 
     lam: float

@@ -36,6 +36,7 @@ from traitlets import CFloat
 from ..draw import drawing_class, fill_axes
 from ..errors import MechanismError
 from ..mechanisms.fourbar import FourBar
+from .access import announce_controls, status_line
 
 UNIT_TEXT = {"deg": "°"}   # how a unit reads in a slider's description
 SLIDER_STYLE = dict(style={"description_width": "165px"}, layout=W.Layout(width="445px"))
@@ -225,7 +226,7 @@ class Explorer:
         self.angle = AngleSlider(value=self.angle_step * round(angle / self.angle_step), min=0.0, max=360.0,
                                    step=self.angle_step, description="crank angle φ (°)", continuous_update=True,
                                    readout_format=".0f", **SLIDER_STYLE)
-        self.status = W.HTML()
+        self.status = status_line()   # announced by a screen reader when it changes
         self.question = W.HTML(f"<b>Investigate:</b> {html.escape(question)}" if question else "")
         self.live = live_by_default() if live is None else live
         self._background = None
@@ -371,6 +372,7 @@ class Explorer:
                 display(self.fig)
 
     def _ipython_display_(self):
+        announce_controls()
         display(self.widget)
 
 

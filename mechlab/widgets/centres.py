@@ -56,7 +56,9 @@ class CentrodeExplorer(MechanismExplorer):
             where = (f"({P.h[0, 0]:.3f}, {P.h[0, 1]:.3f})" if P.finite[0]
                      else f"at infinity along ({P.h[0, 0]:.2f}, {P.h[0, 1]:.2f})")
             label = self.centrodes.centres.label(self.link, self.reference)
-            self.status.value = f"pole {label} of the {self.link} relative to the {self.reference}: {where}"
+            # and the mechanism's own reading, so that a change of a dimension is told too
+            self.status.value = (f"pole {label} of the {self.link} relative to the {self.reference}: {where} · "
+                                 f"{self._status()}")
 
     def _moving_artists(self):
         extra = self.overlay.artists if self.overlay is not None else []

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import html
 import io
 from dataclasses import replace
 
@@ -15,9 +16,11 @@ from PIL import Image
 
 from ..design import Specification, candidates
 from ..design.candidates import COLUMNS
+from ..draw.access import alt_text
 from ..draw.design import FIGSIZE, ComparisonFigure
 from ..errors import MechanismError
 from . import _uses_ipympl, bare_canvas
+from .access import AltImage, announce_controls, status_line
 
 _STYLE = {"description_width": "150px"}
 _LAYOUT = W.Layout(width="420px")
@@ -64,6 +67,7 @@ class ChoosingExplorer:
         self.rank = W.Dropdown(options=keys, value="motor_power", description="rank by", style=_STYLE,
                                layout=_LAYOUT)
         self.table = W.HTML()
+        self.status = status_line()   # the outcome in one line, announced when it changes
         if self.live:
             with plt.ioff():
                 fig = plt.figure(figsize=FIGSIZE, dpi=100, layout="constrained")
@@ -75,10 +79,11 @@ class ChoosingExplorer:
         self._background = None   # (the laws' y-limits, the pixels of everything but the data) once drawn
         self.message = ""
         self.figure = ComparisonFigure(candidates(spec), fig)
-        self.output = None if self.live else W.Image(format="png", layout=W.Layout(width="880px"))
+        self.output = None if self.live else AltImage(format="png", layout=W.Layout(width="880px"))
         canvas = fig.canvas if self.live else self.output
         ask = [W.HTML(f"<b>Investigate:</b> {question}")] if question else []
-        self.widget = W.VBox(ask + [W.HBox([W.VBox(list(s.values())), W.VBox([self.rank])]), canvas, self.table])
+        self.widget = W.VBox(ask + [W.HBox([W.VBox(list(s.values())), W.VBox([self.rank, self.status])]), canvas,
+                                     self.table])
         for w in [*s.values(), self.rank]:
             w.observe(lambda change: self.rebuild(), names="value")
         self.rebuild()
@@ -99,6 +104,7 @@ class ChoosingExplorer:
         except MechanismError as err:
             self.message = str(err)
             self.table.value = f"<p style='color:#b00020'>{err}</p>"
+            self.status.value = f"<span style='color:#b00020'>{html.escape(str(err))}</span>"
             return
         self.comparison = comp
         self.figure.update(comp)
@@ -109,13 +115,26 @@ class ChoosingExplorer:
             self.message = "No family meets this specification."
             why = "".join(f"<li><b>{r.family}</b>: {r.reason}</li>" for r in comp.refusals)
             self.table.value = f"<p style='color:#b00020'><b>{self.message}</b> Why:</p><ul>{why}</ul>"
+        self.status.value = html.escape(self._summary(comp))
         self._redraw()
+
+    def _summary(self, comp) -> str:
+        """How many families meet the specification, and which comes first by the ranking criterion."""
+        kept, refused = len(comp.candidates), len(comp.refusals)
+        head = f"{kept} of {kept + refused} families meet the specification"
+        if not comp.candidates:
+            return head + "."
+        key, heading, unit, fmt = next(col for col in COLUMNS if col[0] == self.rank.value)
+        first = comp.candidates[0]
+        value = fmt.format(getattr(first.criteria, key))
+        return f"{head}; first by {heading}: {first.family} ({value}{' ' + unit if unit else ''})."
 
     def _redraw(self) -> None:
         if self.live:
             self.figure.fig.canvas.draw_idle()
         else:
             self.output.value = self._png()
+            self.output.alt = alt_text(self.figure.fig)
 
     def _png(self) -> bytes:
         """The figure as PNG: the axes, ticks and titles drawn once (their layout frozen), then only the data
@@ -145,6 +164,7 @@ class ChoosingExplorer:
         return png.getvalue()
 
     def _ipython_display_(self):
+        announce_controls()
         display(self.widget)
 
 
