@@ -78,6 +78,7 @@ BUILT = {ml.FourBar: fourbar, ml.SliderCrank: slider_crank, ml.SlottedLink: slot
          ml.LambdaSlottedSixBar: lambda_slotted_sixbar, ml.Antiparallelogram: antiparallelogram_half}
 NOT_BUILT = {
     "Linkage": "it is the structure-derived motion itself",
+    "LinkageFamily": "its motion is its built Linkage's (no closed form of its own)",
     "SineMechanism": "its group (block in the yoke's slot, yoke on a frame guide) is an RPP dyad; the builder has "
                      "RRR, RRP, RPR, PRP",
     "LambdaTranslatingSlot": "its group is an RPP dyad (block at D in a translating slotted link)",
