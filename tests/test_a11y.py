@@ -274,3 +274,17 @@ def test_a_composed_description_gives_each_curves_range_but_a_diagrams_lines_non
         plot.plot(phi, np.full_like(phi, k) + phi / 360, label=f"c{k}")
     assert "; and 3 more curves" in alt_text(fig)
     plt.close(fig)
+
+
+@pytest.mark.parametrize("name", sorted(__import__("mechlab.draw.machines", fromlist=["MACHINES"]).MACHINES))
+def test_a_schematics_alt_names_the_machine_and_what_its_parts_do(name):
+    """A chapter's opening schematic is read by its title and its labelled parts (their words, not a generic
+    "schematic"): each arrowed label of the drawing appears in the alt text."""
+    from mechlab.draw.access import alt_text
+    from mechlab.draw.machines import schematic
+
+    fig = schematic(name)
+    alt = alt_text(fig)
+    labels = [" ".join(t.get_text().split()) for t in fig.axes[0].texts if hasattr(t, "xy") and len(t.get_text()) > 2]
+    assert len(labels) >= 3 and fig.axes[0].get_title() in alt
+    assert all(label in alt for label in labels), alt

@@ -26,6 +26,7 @@ from ..mechanisms.geneva import ExternalGeneva
 from ..mechanisms.slider_crank import SliderCrank
 from ..synthesis.cam_design import CamProgramme
 from . import LINK_STYLE, MIN_WIDTH_PX, draw
+from .access import set_alt
 
 MACHINE_STYLE = dict(color="#555555", lw=1.5, zorder=1)
 PART_FILL = dict(facecolor="#e8e8e8", edgecolor="#555555", lw=1.2, zorder=1)
@@ -380,7 +381,18 @@ def schematic(name: str, ax=None):
     fig = MACHINES[name](ax)
     if ax is None:
         _widen(fig, SCHEMATIC_WIDTH_PX)
+    set_alt(fig, schematic_alt(fig))
     return fig
+
+
+def schematic_alt(fig) -> str:
+    """A schematic's alternative text: its title (the machine and the mechanism that drives it) and what
+    each labelled part does, in the drawing's own words (its arrowed labels, top to bottom)."""
+    ax = fig.axes[0]
+    labels = [t for t in ax.texts if hasattr(t, "xy") and len(t.get_text()) > 2]
+    labels.sort(key=lambda t: -t.get_position()[1])
+    parts = "; ".join(" ".join(t.get_text().split()) for t in labels)
+    return f"Schematic. {ax.get_title()}. Labelled parts: {parts}."
 
 
 SCHEMATIC_WIDTH_PX = MIN_WIDTH_PX + 20   # shown width (tight crop, figure dpi): animations' width and a margin
