@@ -378,3 +378,16 @@ def test_twin_of_a_rocking_crank_has_the_same_range_and_law(fb):
     assert np.isclose(te - ts, e - s, atol=1e-12)
     phi = np.linspace(s + 0.01 * (e - s), e - 0.01 * (e - s), 201)
     assert max(law_difference(fb.motion(phi), twin.motion(phi))) < 1e-9
+
+
+@pytest.mark.parametrize("call", ["base_mechanism", "other_half", "assembly_symmetry"])
+def test_a_mechanism_without_a_crank_length_or_assemblies_is_refused_by_name(call):
+    """A Geneva drive has neither a crank length l_OA nor two assemblies: a named DimensionError, not an
+    AttributeError from deep inside."""
+    from mechlab.analysis.equivalence import assembly_symmetry, base_mechanism
+
+    geneva = ml.ExternalGeneva(4, 1.0)
+    fn = {"base_mechanism": lambda: base_mechanism(geneva), "other_half": lambda: ml.other_half(geneva, 0.3),
+          "assembly_symmetry": lambda: assembly_symmetry(geneva, np.linspace(0.0, 1.0, 3))}[call]
+    with pytest.raises(ml.DimensionError, match="ExternalGeneva"):
+        fn()

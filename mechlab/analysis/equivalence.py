@@ -14,6 +14,7 @@ derived here). The book's first chapters derive all three.
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass, fields, replace
 from typing import Annotated
 
@@ -308,6 +309,9 @@ def base_mechanism(mechanism: AnyMechanism):
     >>> base_mechanism(ml.FourBar(1, 3, 3, 4))
     SlottedLink(crank=1.0, pivot_distance=4.0)
     """
+    if not isinstance(getattr(mechanism, "crank", None), numbers.Real):
+        raise DimensionError(f"{type(mechanism).__name__} has no crank length l_OA: the base mechanism is that of "
+                             f"a linkage driven by a crank (four-bar, slider-crank, slotted link, six-bar)")
     if mechanism.output == "position":
         return SineMechanism(mechanism.crank)
     return SlottedLink(mechanism.crank, float(np.hypot(*_pivot_position(mechanism))))
@@ -427,7 +431,7 @@ def assembly_symmetry(mechanism: AnyMechanism, phi: Angles) -> AssemblySymmetry:
     True
     """
     phi = as_angles(phi)
-    plus = mechanism if mechanism.assembly == 1 else other_assembly(mechanism)
+    plus = mechanism if getattr(mechanism, "assembly", None) == 1 else other_assembly(mechanism)
     minus = other_assembly(plus)
     m, base = minus.motion(phi), base_law(plus, phi)
     p = plus.motion(phi)
