@@ -181,9 +181,9 @@ def render(src, aid: str, student: str = SHARED, values: dict | None = None):
         for j, (call, answer) in enumerate(zip(calls, _answer(hidden, len(calls)))):
             try:
                 sealed[f"{gid}:{j}"] = seal(call, salt(aid, student, gid, j))
-            except TypeError:            # a case the token cannot carry: this one is checked at submission only
-                lines.append(f"# {call['name']}: checked when you submit")
-                continue
+            except TypeError as err:     # every auto-graded answer is checked in the notebook: no exception
+                raise ValueError(f"{aid}: {gid}: {err} (give the hidden test's cases as objects of an importable "
+                                 "class, e.g. one in mechlab.course.exercises)") from err
             lines.append(f'self_check(CHECKS["{gid}:{j}"], {answer});')
         if any(call["kind"] == "function" for call in calls):     # the hidden test's own check, for autograde
             lines.insert(0, "from mechlab.course.exercises import function_check")
