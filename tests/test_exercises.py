@@ -315,3 +315,19 @@ def test_a_per_student_design_exists_at_every_corner_and_is_checked_against_its_
                 exec(checker.source, env)
             except NotYet as err:
                 pytest.fail(f"{path.stem} at {values}: {err}")
+
+
+def test_the_lab_model_is_the_plus_one_assembly_and_nothing_else():
+    """symmetry's ``plus``: ψ′ of FourBar(..., +1), from its own closure; no way to ask it for the other assembly."""
+    from mechlab.course.exercises.lab_model import PlusAssemblyRate
+    from mechlab.errors import AssemblyError
+    rng = np.random.default_rng(5)
+    for crank in rng.uniform(0.3, 1.5, 5):
+        phi = rng.uniform(0, 2 * np.pi, 7)
+        plus = PlusAssemblyRate(crank, 3.0, 3.0, 4.0)
+        assert np.allclose(plus(phi), ml.FourBar(crank, 3.0, 3.0, 4.0, 1).motion(phi).dpsi, rtol=1e-10)
+        assert not np.allclose(plus(phi), ml.FourBar(crank, 3.0, 3.0, 4.0, -1).motion(phi).dpsi, rtol=1e-3)
+    assert set(vars(plus)) == {"crank", "coupler", "rocker", "ground"}
+    assert not [n for n in dir(plus) if not n.startswith("_") and callable(getattr(plus, n))]   # no method to call
+    with pytest.raises(AssemblyError, match="does not close"):
+        PlusAssemblyRate(0.3, 1.0, 1.0, 4.0)(0.0)

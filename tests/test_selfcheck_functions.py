@@ -36,7 +36,7 @@ DECIMAL = re.compile(r"-?\d+\.\d+(?:e[-+]?\d+)?")
 
 
 def _exercises(aid):
-    """(rendered master, [(cell, hidden test, token or None)]) of each function check of ``aid``."""
+    """(rendered master, [(cell, hidden test, token or None if the cell has none)]) of each function check of ``aid``."""
     nb = variants.render(nbformat.read(SOURCE / aid / f"{aid}.ipynb", as_version=4), aid, "ada")
     sealed = next(c for c in nb.cells if c.get("id") == "sealed-checks")
     env: dict = {}
