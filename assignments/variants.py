@@ -139,6 +139,13 @@ def _answer(hidden: str, n: int) -> list[str]:
     return found
 
 
+def _wrapped(token: str, width: int = 88) -> str:
+    """A token as adjacent string literals in parentheses, one short line each (Python joins them): the
+    sealed cell stays within the notebook's width."""
+    chunks = [token[i:i + width] for i in range(0, len(token), width)] or [""]
+    return "(\n" + "".join(f"        {c!r}\n" for c in chunks) + "    )"
+
+
 def salt(aid: str, student: str, cell_id: str, k: int) -> str:
     return hashlib.sha256(f"mechlab|{aid}|{student}|{cell_id}|{k}".encode()).hexdigest()[:16]
 
@@ -181,9 +188,9 @@ def render(src, aid: str, student: str = SHARED, values: dict | None = None):
         for j, (call, answer) in enumerate(zip(calls, _answer(hidden, len(calls)))):
             try:
                 sealed[f"{gid}:{j}"] = seal(call, salt(aid, student, gid, j))
-            except TypeError:            # a case the token cannot carry: this one is checked at submission only
-                lines.append(f"# {call['name']}: checked when you submit")
-                continue
+            except TypeError as err:     # every auto-graded answer is checked in the notebook: no exception
+                raise ValueError(f"{aid}: {gid}: {err} (give the hidden test's cases as objects of an importable "
+                                 "class, e.g. one in mechlab.course.exercises)") from err
             lines.append(f'self_check(CHECKS["{gid}:{j}"], {answer});')
         if any(call["kind"] == "function" for call in calls):     # the hidden test's own check, for autograde
             lines.insert(0, "from mechlab.course.exercises import function_check")
@@ -192,7 +199,7 @@ def render(src, aid: str, student: str = SHARED, values: dict | None = None):
         at = nb.cells.index(variant_cell(nb) or next(c for c in nb.cells if c.cell_type == "code")) + 1
         cell = nbformat.v4.new_code_cell(
             "# what the check cells compare your answers with, sealed (no number in it): run it, do not edit it\n"
-            "from mechlab.course.exercises import self_check\n\nCHECKS = {\n" + "".join(f"    {k!r}: {v!r},\n" for k, v in sealed.items()) + "}\n")
+            "from mechlab.course.exercises import self_check\n\nCHECKS = {\n" + "".join(f"    {k!r}: {_wrapped(v)},\n" for k, v in sealed.items()) + "}\n")
         cell["id"] = "sealed-checks"
         cell.metadata.update({"jupyter": {"source_hidden": True}, "nbgrader": {
             "grade": False, "grade_id": "sealed_checks", "locked": True, "schema_version": 3, "solution": False,

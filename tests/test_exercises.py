@@ -95,7 +95,7 @@ def test_choice_and_form():
 def test_the_package_holds_no_answer():
     assert not hasattr(ex, "solution") and not hasattr(ex, "get")
     names = {p.stem for p in Path(ex.__file__).parent.glob("*.py")}
-    assert names == {"__init__", "feedback", "design", "selfcheck"}
+    assert names == {"__init__", "feedback", "design", "selfcheck", "lab_model"}   # lab_model: the +1 assembly only
 
 
 # -- design and code checks: one passing, one failing design each --------------------------------------------
@@ -179,6 +179,11 @@ def test_cam_design():
     bad = cam_design(ml.TranslatingRollerCam(nose, base_radius=15.0, roller_radius=11.0), max_pressure=30)
     assert not bad and "✗ pressure angle 65.76° ≥ 30° at φ = 17°" in repr(bad) and "undercut" in bad.problem
     assert "expected a mechlab roller cam" in cam_design(ml.FourBar(1, 3, 3, 4), max_pressure=30).problem
+    cam = ml.TranslatingRollerCam(pusher, 40.0, 10.0, offset=8.0)
+    assert cam_design(cam, max_pressure=30, motion=(20, 120, 40, 100))
+    easier = cam_design(cam, max_pressure=30, motion=(25, 120, 40, 90))    # a smaller stroke, a slower return
+    assert not easier and [s.met for s in easier.specs][-4:] == [False, True, True, False]
+    assert "✗ stroke 20: outside 25 ± 0.05" in repr(easier)
 
 
 def test_function_check():
@@ -263,3 +268,66 @@ def test_no_graded_answer_is_one_public_call_away(aid):
     audit = _audit()
     rows = audit.audit(aid, audit.public_callables())
     assert len(rows) >= 3 and not [r for r in rows if r[2]], rows
+
+
+# -- a design to each student's own specification ---------------------------------------------------------------
+def _design_cells(nb):
+    """(answer cell, check cell) of each design exercise: the two code cells after its heading."""
+    out = []
+    for k, c in enumerate(nb.cells):
+        if c.cell_type == "markdown" and c.source.startswith("## Exercise") and "· design" in c.source.split("\n")[0]:
+            answer, checker = [d for d in nb.cells[k + 1:k + 3] if d.cell_type == "code"]
+            out.append((answer, checker))
+    return out
+
+
+def _corners(path):
+    """Each corner of the variant ranges of the numbers a design exercise reads (the other numbers: the source's)."""
+    import itertools
+    import nbformat
+    nb = nbformat.read(path, as_version=4)
+    cell = next(c for c in nb.cells if "variant" in c.metadata.get("mechlab", {}))
+    ranges = cell.metadata["mechlab"]["variant"]
+    base = {}
+    exec(cell.source, {}, base)
+    for answer, checker in _design_cells(nb):
+        used = sorted(set(re.findall(r"V\[\"(\w+)\"\]", answer.source + checker.source)) & set(ranges))
+        for corner in itertools.product(*[(ranges[k][0], ranges[k][1]) for k in used]):
+            yield nb, answer, checker, {**base["V"], **dict(zip(used, corner))}
+
+
+@pytest.mark.parametrize("path", [p for p in _notebooks() if any(True for _ in _corners(p))], ids=lambda p: p.stem)
+def test_a_per_student_design_exists_at_every_corner_and_is_checked_against_its_own_numbers(path, tmp_path,
+                                                                                            monkeypatch):
+    """The worked solution, built from the student's numbers, meets the check at every corner of the ranges the
+    design's specification is drawn from; the check reads ``V``, so another student's numbers give another spec."""
+    import contextlib
+    import io
+    monkeypatch.chdir(tmp_path)                        # a design may write its DXF
+    setup = None
+    for nb, answer, checker, values in _corners(path):
+        setup = setup or next(c.source for c in nb.cells if c.cell_type == "code")
+        env = {"V": values}
+        with contextlib.redirect_stdout(io.StringIO()):
+            exec(setup, env)
+            exec(answer.source, env)                   # the given lines, then the worked solution
+            try:
+                exec(checker.source, env)
+            except NotYet as err:
+                pytest.fail(f"{path.stem} at {values}: {err}")
+
+
+def test_the_lab_model_is_the_plus_one_assembly_and_nothing_else():
+    """symmetry's ``plus``: ψ′ of FourBar(..., +1), from its own closure; no way to ask it for the other assembly."""
+    from mechlab.course.exercises.lab_model import PlusAssemblyRate
+    from mechlab.errors import AssemblyError
+    rng = np.random.default_rng(5)
+    for crank in rng.uniform(0.3, 1.5, 5):
+        phi = rng.uniform(0, 2 * np.pi, 7)
+        plus = PlusAssemblyRate(crank, 3.0, 3.0, 4.0)
+        assert np.allclose(plus(phi), ml.FourBar(crank, 3.0, 3.0, 4.0, 1).motion(phi).dpsi, rtol=1e-10)
+        assert not np.allclose(plus(phi), ml.FourBar(crank, 3.0, 3.0, 4.0, -1).motion(phi).dpsi, rtol=1e-3)
+    assert set(vars(plus)) == {"crank", "coupler", "rocker", "ground"}
+    assert not [n for n in dir(plus) if not n.startswith("_") and callable(getattr(plus, n))]   # no method to call
+    with pytest.raises(AssemblyError, match="does not close"):
+        PlusAssemblyRate(0.3, 1.0, 1.0, 4.0)(0.0)

@@ -176,10 +176,13 @@ def guide_design(guide, *, min_dwell: float, max_band: float, min_crank: float) 
                                 Requirement("crank r", guide.r, "≥", min_crank, " l")))
 
 
-def cam_design(cam, *, max_pressure: float, max_base_radius: float | None = None) -> DesignReport:
+def cam_design(cam, *, max_pressure: float, max_base_radius: float | None = None,
+               motion: tuple[float, float, float, float] | None = None) -> DesignReport:
     """A disc cam with a roller follower (``mechlab.TranslatingRollerCam`` or ``OscillatingRollerCam``): the
-    profile is not undercut, the largest |pressure angle| over the turn is < ``max_pressure`` (degrees), and
-    the base radius ≤ ``max_base_radius`` (the cam's size)."""
+    profile is not undercut, the largest |pressure angle| over the turn is < ``max_pressure`` (degrees), the
+    base radius ≤ ``max_base_radius`` (the cam's size), and — when ``motion`` = (stroke, rise, outer dwell,
+    return) is given (the stroke in the cam's length unit, angles in degrees) — the follower's programme is
+    that motion (stroke to 0.05, angles to 0.5°), so that a cam for an easier motion does not pass."""
     title = "cam design"
     if cam is None or cam is Ellipsis:
         return DesignReport(title, problem="no design yet: build a TranslatingRollerCam or OscillatingRollerCam")
@@ -191,6 +194,11 @@ def cam_design(cam, *, max_pressure: float, max_base_radius: float | None = None
     specs = [Requirement("pressure angle", _deg(alpha[k]), "<", max_pressure, "°", f"φ = {_deg(phi[k]):.0f}°")]
     if max_base_radius is not None:
         specs.append(Requirement("base radius", float(cam.base_radius), "≤", max_base_radius))
+    if motion is not None:
+        prog = cam.programme
+        got = (float(prog.stroke), _deg(prog.rise), _deg(prog.outer_dwell), _deg(prog.ret))
+        specs += [Requirement(name, value, "≈", want, unit, tol=tol) for name, value, want, unit, tol in
+                  zip(("stroke", "rise", "outer dwell", "return"), got, motion, ("", "°", "°", "°"), (0.05, 0.5, 0.5, 0.5))]
     cut = cam.undercut()
     return DesignReport(title, tuple(specs), "" if cut is None else f"the profile is undercut: {cut}")
 
