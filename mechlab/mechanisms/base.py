@@ -5,6 +5,7 @@ and the curved-slot equivalence are derived, and its sketch, from which it is dr
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Annotated, Any, ClassVar
@@ -376,7 +377,7 @@ class Mechanism(Checked):
         found, todo = {}, [cls]
         while todo:
             c = todo.pop()
-            if "example" in c.__dict__ and c is not Mechanism:
+            if "example" in c.__dict__ and c is not Mechanism and _still_defined(c):
                 found[c] = None
             todo += c.__subclasses__()
         return tuple(sorted(found, key=lambda c: (c.__module__, c.__qualname__)))
@@ -717,3 +718,16 @@ def _pair_parts(st: Structure, motion: Motion) -> tuple[Part, ...]:
 
 # a parameter that takes any mechanism (TypeError naming the class otherwise)
 AnyMechanism = Annotated[Mechanism, mechanism(Mechanism)]
+
+
+def _still_defined(cls: type) -> bool:
+    """Whether ``cls`` is still where it was defined: a module's attribute (a notebook cell's class is
+    one of ``__main__``), or a class made in a function. A class a doctest or an ``exec`` made in borrowed
+    globals (its module names a mechlab module that holds no such name) is gone with them, not a family."""
+    if "<locals>" in cls.__qualname__:
+        return True
+    owner = sys.modules.get(cls.__module__)
+    for part in cls.__qualname__.split("."):
+        owner = getattr(owner, part, None)
+    return owner is cls
+
