@@ -23,15 +23,15 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-from mechlab import FourBar  # noqa: E402
-from mechlab.draw import animate, frame_dpi  # noqa: E402
-from mechlab.widgets import fourbar_explorer  # noqa: E402
-from mechlab.widgets.centres import fourbar_centrode_explorer  # noqa: E402
-from mechlab.widgets.chebyshev import mchv1_explorer  # noqa: E402
-from mechlab.widgets.dwell import dwell_explorer  # noqa: E402
-from mechlab.widgets.equivalence import fourbar_equivalence  # noqa: E402
-from mechlab.widgets.forces import press_explorer  # noqa: E402
-from mechlab.widgets.geneva import planar_geneva_explorer, spherical_geneva_explorer  # noqa: E402
+from mechlab import FourBar
+from mechlab.draw import animate, frame_dpi
+from mechlab.widgets import fourbar_explorer
+from mechlab.widgets.centres import fourbar_centrode_explorer
+from mechlab.widgets.chebyshev import mchv1_explorer
+from mechlab.widgets.dwell import dwell_explorer
+from mechlab.widgets.equivalence import fourbar_equivalence
+from mechlab.widgets.forces import press_explorer
+from mechlab.widgets.geneva import planar_geneva_explorer, spherical_geneva_explorer
 
 EXPLORERS = (fourbar_explorer, fourbar_equivalence, fourbar_centrode_explorer, dwell_explorer, mchv1_explorer,
              planar_geneva_explorer, spherical_geneva_explorer, press_explorer)

@@ -18,10 +18,9 @@ import time
 import matplotlib
 
 matplotlib.use("Agg")
-import numpy as np  # noqa: E402
+import numpy as np
 
-from mechlab import Crank, FourBar, Linkage
-from mechlab import geometry
+from mechlab import Crank, FourBar, Linkage, geometry
 
 CRANK, COUPLER, ROCKER, GROUND = 1.0, 3.0, 3.0, 4.0
 

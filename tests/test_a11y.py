@@ -16,7 +16,7 @@ import pytest
 import mechlab.design as D
 from mechlab import ExternalGeneva, FourBar
 from mechlab.draw import OUTCOME_STYLE, alt_text, animate, draw, plot_design_outcomes, plot_law
-from mechlab.draw.access import (CATEGORY_COLOURS, CVD_MATRICES, delta_e, install_alt_text, set_alt, simulate_cvd)
+from mechlab.draw.access import CATEGORY_COLOURS, CVD_MATRICES, delta_e, install_alt_text, set_alt, simulate_cvd
 from mechlab.draw.design import STYLES, comparison_figure
 from mechlab.errors import MechanismError
 from mechlab.synthesis.lambda_guiding import design_outcomes

@@ -8,21 +8,37 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from mechlab import (AssemblyError, DimensionError, FourBar, MechanismError, SineMechanism, SingularityError,
-                     SliderCrank, SlottedLink)
-from mechlab.mechanisms.antiparallelogram import Antiparallelogram
-from mechlab.analysis.centres.homogeneous import Centre, CentreAtInfinity, IndeterminateCentre, segments, separation
-from mechlab.mechanisms.trammel import EllipticTrammel
-from mechlab.analysis.centres.kennedy import centre_count
-from mechlab.analysis.centres.instant import instant_centres
-from mechlab.analysis.centres.centrodes import rolling_speeds
-from mechlab.analysis.centres import centrodes
-from mechlab.analysis.centres import kennedy
-from mechlab.analysis.centres.homogeneous import at_infinity, finite, in_frame, line_through, meet
-from mechlab.analysis.centres.kennedy import five_link_higher_pair
-from mechlab.geometry import relative, vector_angle
 from strategies import central_difference, fourbars, revolving_fourbars, revolving_slider_cranks
+
+from mechlab import (
+    AssemblyError,
+    DimensionError,
+    FourBar,
+    MechanismError,
+    SineMechanism,
+    SingularityError,
+    SliderCrank,
+    SlottedLink,
+)
+from mechlab.analysis.centres import centrodes, kennedy
+from mechlab.analysis.centres.centrodes import rolling_speeds
+from mechlab.analysis.centres.homogeneous import (
+    Centre,
+    CentreAtInfinity,
+    IndeterminateCentre,
+    at_infinity,
+    finite,
+    in_frame,
+    line_through,
+    meet,
+    segments,
+    separation,
+)
+from mechlab.analysis.centres.instant import instant_centres
+from mechlab.analysis.centres.kennedy import centre_count, five_link_higher_pair
+from mechlab.geometry import relative, vector_angle
+from mechlab.mechanisms.antiparallelogram import Antiparallelogram
+from mechlab.mechanisms.trammel import EllipticTrammel
 
 SETTINGS = settings(max_examples=40, deadline=None)
 
@@ -369,6 +385,7 @@ def test_lookup_errors():
 # -- drawings, widgets, exercises, errata ----------------------------------------------------------------
 def test_centrode_animation_moves_the_same_artists():
     import matplotlib.pyplot as plt
+
     from mechlab.draw.centres import animate_centrodes, draw_centres
 
     anim = animate_centrodes(Antiparallelogram(1.0, 2.0), "coupler", n=8)

@@ -7,12 +7,19 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from mechlab.errors import InfeasibleDesignError
-from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
-from mechlab.mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
-from mechlab.synthesis.lambda_sliders import mchv2, mchv2_far_position, mchv2_stroke, mchv5, slider_invariants, slider_report, slider_rise
-from mechlab.errors import DimensionError, MechanismError
 from mechlab.analysis.motion_laws import rise_invariants
+from mechlab.errors import DimensionError, InfeasibleDesignError, MechanismError
+from mechlab.mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
+from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
+from mechlab.synthesis.lambda_sliders import (
+    mchv2,
+    mchv2_far_position,
+    mchv2_stroke,
+    mchv5,
+    slider_invariants,
+    slider_report,
+    slider_rise,
+)
 
 DEG = np.pi / 180
 

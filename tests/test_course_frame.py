@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
-from mechlab.draw.machines import MACHINES, schematic  # noqa: E402
-from mechlab.errors import MechanismError  # noqa: E402
+from mechlab.draw.machines import MACHINES, schematic
+from mechlab.errors import MechanismError
 
 ROOT = Path(__file__).parent.parent
 sys.path.insert(0, str(ROOT / "tools"))

@@ -4,10 +4,16 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import revolving_fourbars, revolving_slider_cranks
 
 from mechlab import AssemblyError, DimensionError, FourBar, SingularityError
-from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, ParametricSlot, SampledSlot, TranslatingCurvedSlot
-from strategies import revolving_fourbars, revolving_slider_cranks
+from mechlab.mechanisms.curved_slot import (
+    CircleSlot,
+    CurvedSlotLink,
+    ParametricSlot,
+    SampledSlot,
+    TranslatingCurvedSlot,
+)
 
 H = 1e-5
 

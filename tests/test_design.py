@@ -17,7 +17,6 @@ from mechlab.geometry import PointPath
 from mechlab.mechanisms.cam import CamAngularMotion
 from mechlab.motion import AngularMotion
 
-
 SEEN: set[str] = set()  # families that produced a candidate in the property test
 
 
@@ -130,8 +129,8 @@ def test_geneva_criteria_agree_with_its_closed_form(z):
     # the index is one rise, from the end of the exact dwell to the start of the next: the rest of the turn
     assert c.dwell_fraction == pytest.approx(g.dwell_fraction, abs=1e-7)
     motion_angle, h = 2 * np.pi * (1 - c.dwell_fraction), 2 * np.pi / z
-    assert c.B == pytest.approx(g.max_velocity() * motion_angle / h, rel=2.5e-3)
-    assert c.C == pytest.approx(g.max_acceleration() * motion_angle**2 / h, rel=3e-3)
+    assert pytest.approx(g.max_velocity() * motion_angle / h, rel=2.5e-3) == c.B
+    assert pytest.approx(g.max_acceleration() * motion_angle**2 / h, rel=3e-3) == c.C
     assert c.impact == "soft" and c.acceleration_jump > 0.01 and c.velocity_jump == 0.0
     assert c.dwell_residual < 1e-3
 
@@ -162,11 +161,11 @@ def test_criteria_reproduce_the_cycloidal_invariants():
     mech = _CycloidalRiseReturn(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
     c = D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1))
     law = law_invariants("cycloidal (sine)")
-    assert (law.B, law.C) == (pytest.approx(2.0), pytest.approx(2 * np.pi))
+    assert (pytest.approx(2.0), pytest.approx(2 * np.pi)) == (law.B, law.C)
     # the rise is measured from where the exact dwell ends (its end refined between samples) up to the top
-    assert (c.B, c.C, c.D) == pytest.approx((law.B, law.C, law.D), rel=1e-3)
+    assert pytest.approx((law.B, law.C, law.D), rel=1e-3) == (c.B, c.C, c.D)
     # no closed-form jerk in this motion: a central difference of x″
-    assert c.J == pytest.approx(4 * np.pi**2, rel=3e-3)
+    assert pytest.approx(4 * np.pi**2, rel=3e-3) == c.J
     assert c.impact == "none"
     # the exact dwell is the stand-in's: a third of the turn
     assert c.dwell_fraction == pytest.approx(1 / 3, abs=1e-6)
@@ -197,11 +196,11 @@ def test_criteria_take_the_jerk_from_the_motions_closed_form():
     # and it is that jerk (scaling it scales J; a central difference of x″ would not follow)
     spec = D.Specification("swing", 1 / 3, amplitude=0.5)
     mech = _CycloidalWithJerk(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
-    assert D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J == pytest.approx(4 * np.pi**2,
-                                                                                                 rel=1e-5)
+    assert pytest.approx(4 * np.pi**2,
+                                                                                                 rel=1e-5) == D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J
     mech.factor = 1.5
-    assert D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J == pytest.approx(6 * np.pi**2,
-                                                                                                 rel=1e-5)
+    assert pytest.approx(6 * np.pi**2,
+                                                                                                 rel=1e-5) == D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J
 
 
 def test_curved_slot_candidate_respects_the_limit_theorem():
@@ -309,7 +308,7 @@ def test_the_cam_candidate_carries_its_law_and_exports_its_profile(motion, ampli
     cand = D.candidates(spec, ["disc cam"]).candidates[0]
     law = law_invariants("cycloidal (sine)")
     c = cand.criteria
-    assert (c.B, c.C, c.J) == pytest.approx((law.B, law.C, 4 * np.pi**2), rel=1e-5)
+    assert pytest.approx((law.B, law.C, 4 * np.pi**2), rel=1e-5) == (c.B, c.C, c.J)
     assert c.dwell_fraction == pytest.approx(0.3, abs=1e-6)
     assert c.pressure_angle <= spec.max_pressure_angle and c.impact == "none"
     # the base circle is the smallest within the limit: 2 % smaller breaks it

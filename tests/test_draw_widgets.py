@@ -566,8 +566,8 @@ def test_plot_slot_draws_the_profile_in_units_of_the_pivot_distance():
 
 
 def test_comparison_cuts_an_axis_that_one_spike_would_squash_and_says_so():
-    from mechlab import ExternalGeneva, InternalGeneva
     import mechlab.draw.geneva as G
+    from mechlab import ExternalGeneva, InternalGeneva
 
     class Scaled:
         """The external Geneva with its analogs ``k`` times larger."""

@@ -5,13 +5,22 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
-                                          slotted_link_law,
-                                          compare_transitions, cubic_dwell_window, curved_slot_dwell, dwell_limit,
-                                          two_branch_slot)
 from mechlab.errors import DimensionError, MechanismError, SingularityError
 from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
 from mechlab.mechanisms.slotted import SlottedLink
+from mechlab.synthesis.dwell_slot import (
+    TRANSITIONS,
+    DwellError,
+    DwellIntervalError,
+    DwellLaw,
+    DwellRatioError,
+    compare_transitions,
+    cubic_dwell_window,
+    curved_slot_dwell,
+    dwell_limit,
+    slotted_link_law,
+    two_branch_slot,
+)
 
 DEG = np.pi / 180
 
@@ -274,8 +283,7 @@ def test_bad_transition_and_pivot():
 
 # -- errata, exercises, drawing, widget ----------------------------------------------------
 def test_errata_of_section_3_hold():
-    from mechlab.course.errata import collect, table
-    from mechlab.course.errata import seed000_dwell
+    from mechlab.course.errata import collect, seed000_dwell, table
 
     assert len(seed000_dwell.ERRATA) >= 6
     for e in seed000_dwell.ERRATA:

@@ -3,17 +3,27 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings
+from strategies import revolving_fourbars, revolving_slider_cranks
+from test_protocol import SkewYoke
 
 import mechlab as ml
 from mechlab import DimensionError, FourBar, SineMechanism, SliderCrank, SlottedLink
-from mechlab.analysis.equivalence import EquivalentSlot, assembly_symmetry, base_law, base_mechanism, equivalence_error, equivalent_slot, law_difference, other_assembly, relative_path
+from mechlab.analysis.equivalence import (
+    EquivalentSlot,
+    assembly_symmetry,
+    base_law,
+    base_mechanism,
+    equivalence_error,
+    equivalent_slot,
+    law_difference,
+    other_assembly,
+    relative_path,
+)
 from mechlab.analysis.half_turn import formula_18
 from mechlab.geometry import PointPath, as_angles, crank_point, fixed_point, relative, vector_angle
 from mechlab.mechanisms.base import FRAME, Link, Mechanism, Pair, Structure
 from mechlab.mechanisms.sixbar_iv import example
 from mechlab.motion import AngularMotion
-from strategies import revolving_fourbars, revolving_slider_cranks
-from test_protocol import SkewYoke
 
 H = 1e-5
 

@@ -6,7 +6,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from mechlab.course.errata import KINDS, Claim, Erratum, collect, count_by_kind, table
+from mechlab.course.errata import Claim, Erratum, collect, table
 
 ERRATA = collect()
 

@@ -4,13 +4,29 @@ import numpy as np
 import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
+from strategies import revolving_fourbars, revolving_slider_cranks
 
 from mechlab import FourBar, MechanismError, SineMechanism, SliderCrank, SlottedLink
-from mechlab.kinetostatics.model import FRAME, Body, Force, ForceModel, FrictionError, HigherPair, LoadError, MassError, Prismatic, Revolute, SelfLockingError, StructureError, Torque, model_for, slender_bar
 from mechlab.kinetostatics.drive import DriveError, cycle_mean, drive
 from mechlab.kinetostatics.machines import Kinetostatics
+from mechlab.kinetostatics.model import (
+    FRAME,
+    Body,
+    Force,
+    ForceModel,
+    FrictionError,
+    HigherPair,
+    LoadError,
+    MassError,
+    Prismatic,
+    Revolute,
+    SelfLockingError,
+    StructureError,
+    Torque,
+    model_for,
+    slender_bar,
+)
 from mechlab.kinetostatics.solve import solve, virtual_work_torque
-from strategies import revolving_fourbars, revolving_slider_cranks
 
 unit_floats = st.floats(min_value=-1.0, max_value=1.0, allow_nan=False)
 pos_floats = st.floats(min_value=0.05, max_value=3.0, allow_nan=False)
@@ -394,6 +410,7 @@ def test_press_and_rocker_examples():
 
 def test_force_drawing_and_explorer_move_in_place():
     import matplotlib.pyplot as plt
+
     from mechlab.draw import animate, drawing_class
     from mechlab.kinetostatics.machines import press
     from mechlab.widgets.forces import press_explorer
@@ -519,8 +536,8 @@ def test_curved_slot_higher_pair_equals_the_equivalent_fourbar():
     rocker's B) carries the pin. As a higher pair, the pin's push acts along the common normal
     through the arc centre — the massless coupler's line — so with a torque on the link the
     pin force, the pivot reaction and M_b equal the four-bar's (frame turned by π)."""
-    from mechlab.kinetostatics.solve import output_axis
     from mechlab.geometry import unit
+    from mechlab.kinetostatics.solve import output_axis
     from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink
     fb = FourBar(0.1, 0.3, 0.3, 0.35)
     cs = CurvedSlotLink(fb.crank, fb.ground, CircleSlot((fb.rocker, 0.0), fb.coupler), start=1.0)
@@ -550,8 +567,8 @@ def test_curved_slot_higher_pair_equals_the_equivalent_fourbar():
 
 
 def test_verify_and_explorer_messages():
-    from mechlab.kinetostatics.solve import ForceResult
     from mechlab.kinetostatics.machines import press
+    from mechlab.kinetostatics.solve import ForceResult
     from mechlab.widgets.forces import press_explorer, rocker_explorer
     res = press(f=0.1).forces()
     assert "power balance" in res.verify() and res.power_gap < 1e-12

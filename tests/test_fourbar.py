@@ -1,9 +1,9 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings
+from strategies import fourbars, revolving_fourbars
 
 from mechlab import AssemblyError, DimensionError, FourBar, RotationError
-from strategies import fourbars, revolving_fourbars
 
 H = 1e-5
 

@@ -296,8 +296,8 @@ BUDGET = {"whole_turn_guiding": 3, "existence_region": 3, "design_outcomes": 3, 
 
 def finite(value, depth=0) -> bool:
     """Every number reachable in a result is finite (arrays of numbers, containers, dataclasses)."""
-    if depth > 4 or value is None or isinstance(value, str | bytes | type) or callable(value) and not \
-            dataclasses.is_dataclass(value):
+    if depth > 4 or value is None or isinstance(value, str | bytes | type) or (callable(value) and not \
+            dataclasses.is_dataclass(value)):
         return True
     if isinstance(value, numbers.Number):
         return bool(np.isfinite(value)) if not isinstance(value, complex) else bool(np.isfinite(value.real))

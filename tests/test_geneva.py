@@ -8,18 +8,25 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.errors import DimensionError, MechanismError
-from mechlab.synthesis.geneva import (TABLE1_COLUMNS, TABLE1_PRINTED, ReviewRow, SphericalRow, spherical_table,
-                                      table1_comparison, table1_review)
-from mechlab.kinetostatics.drive import DriveError
-from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, impact_kind
-from mechlab.mechanisms.spherical_geneva import SphericalGeneva
 from mechlab.analysis.intermittency import compare, detect_impacts, intermittency
 from mechlab.analysis.motion_laws import invariants, rise_invariants
-from mechlab.kinetostatics.geneva import crank_torque, geneva_drive, drive_angles
+from mechlab.errors import DimensionError, MechanismError
+from mechlab.kinetostatics.drive import DriveError
 from mechlab.kinetostatics.drive import drive as fdrive
+from mechlab.kinetostatics.geneva import crank_torque, drive_angles, geneva_drive
 from mechlab.mechanisms.fourbar import FourBar
+from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, impact_kind
 from mechlab.mechanisms.slotted import SlottedLink
+from mechlab.mechanisms.spherical_geneva import SphericalGeneva
+from mechlab.synthesis.geneva import (
+    TABLE1_COLUMNS,
+    TABLE1_PRINTED,
+    ReviewRow,
+    SphericalRow,
+    spherical_table,
+    table1_comparison,
+    table1_review,
+)
 
 H = 1e-5
 slots = st.integers(min_value=3, max_value=16)
@@ -493,7 +500,7 @@ def test_impact_detection_and_comparison():
     ext = intermittency(ExternalGeneva(4, 1.0), n=14401)
     assert ext.dwell_fraction == pytest.approx(0.75, abs=2e-4) and ext.index_deg == pytest.approx(90.0)
     assert ext.max_dpsi == pytest.approx(np.sqrt(2) + 1, rel=1e-9)
-    assert ext.B == pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3)
+    assert pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3) == ext.B
     shifted = intermittency(ExternalGeneva(4, 1.0), n=14401, phase=0.3)
     assert shifted.dwell_fraction == pytest.approx(0.75, abs=2e-4) and shifted.impact == "soft"
     loose = intermittency(ExternalGeneva(4, 1.0), n=14401, dwell_tol=0.5)
@@ -542,20 +549,19 @@ def test_intermittency_is_the_motion_law_invariants(cls, z):
     phi = np.pi + np.linspace(-s0, s0, 20001)
     mo = g.motion(phi)
     rise = rise_invariants(phi, mo.psi, mo.dpsi, mo.ddpsi)
-    assert r.B == pytest.approx(g.max_velocity() * 2 * s0 / h, rel=1e-3)
-    assert r.C == pytest.approx(g.max_acceleration() * (2 * s0) ** 2 / h, rel=2e-3)
-    assert (r.B, r.C, r.D) == pytest.approx(rise.values, rel=2e-3)
+    assert pytest.approx(g.max_velocity() * 2 * s0 / h, rel=1e-3) == r.B
+    assert pytest.approx(g.max_acceleration() * (2 * s0) ** 2 / h, rel=2e-3) == r.C
+    assert pytest.approx(rise.values, rel=2e-3) == (r.B, r.C, r.D)
     # the one definition: the same samples through invariants give intermittency's numbers exactly
     turn = g.motion(np.linspace(0.0, 2 * np.pi, 14401))
     same = invariants((1 - r.dwell_fraction) * 2 * np.pi, turn.psi[-1] - turn.psi[0], turn.dpsi, turn.ddpsi)
-    assert (r.B, r.C, r.D) == same.values
+    assert same.values == (r.B, r.C, r.D)
 
 # -- exercises and errata -------------------------------------------------------------------------
 
 
 def test_errata_seed004_geneva():
-    from mechlab.course.errata import table
-    from mechlab.course.errata import seed004_geneva
+    from mechlab.course.errata import seed004_geneva, table
     assert len(seed004_geneva.ERRATA) == 8
     for e in seed004_geneva.ERRATA:
         assert e.source == "004" and e.notebook == "10_geneva_spherical.ipynb"

@@ -8,7 +8,20 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab import AssemblyError, DimensionError, SingularityError
-from mechlab.geometry import PointPath, as_angles, check_length, circle_circle, crank_point, cross, dyad_rpr, dyad_rrp, dyad_rrr, fixed_point, line_circle, wrap
+from mechlab.geometry import (
+    PointPath,
+    as_angles,
+    check_length,
+    circle_circle,
+    crank_point,
+    cross,
+    dyad_rpr,
+    dyad_rrp,
+    dyad_rrr,
+    fixed_point,
+    line_circle,
+    wrap,
+)
 from mechlab.mechanisms.base import FULL_TURN, arc_set
 
 coords = st.floats(-5, 5)
@@ -149,7 +162,7 @@ def test_complex_views_share_memory():
 
 @pytest.mark.parametrize("sign", [1, -1])
 def test_rocker_dyad_agrees_with_the_general_dyad_and_with_differences(sign):
-    from mechlab.geometry import rocker_dyad, vector_angle, relative
+    from mechlab.geometry import relative, rocker_dyad, vector_angle
     phi = np.linspace(0, 2 * np.pi, 201)
     A = _moving_point(phi)
     B1, psi = rocker_dyad(A, (2.0, 0.5), 1.5, 1.2, sign, reference=1.0)

@@ -4,13 +4,13 @@ import numpy as np
 import pytest
 import sympy as sp
 from hypothesis import given, settings
+from strategies import revolving_fourbars, revolving_slider_cranks
 
 from mechlab import DimensionError, FourBar, SlottedLink
 from mechlab.analysis.equivalence import base_law
 from mechlab.analysis.half_turn import base_peaks, formula_18, limit_theorem, mirror_angle, other_half
 from mechlab.mechanisms.curved_slot import CurvedSlotLink, ParametricSlot, SampledSlot, TranslatingCurvedSlot
 from mechlab.mechanisms.sixbar_iv import example
-from strategies import revolving_fourbars, revolving_slider_cranks
 
 
 def random_grashof_fourbars(n, seed=0):

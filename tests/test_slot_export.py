@@ -7,11 +7,19 @@ import ezdxf
 import numpy as np
 import pytest
 
-from mechlab.synthesis.dwell_slot import curved_slot_dwell
-from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
 from mechlab.errors import DimensionError
-from mechlab.synthesis.slot_export import (SlotUndercutError, check_roller, min_radius_of_curvature, read_csv, read_dxf,
-                                             slot_profile, write_csv, write_dxf)
+from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
+from mechlab.synthesis.dwell_slot import curved_slot_dwell
+from mechlab.synthesis.slot_export import (
+    SlotUndercutError,
+    check_roller,
+    min_radius_of_curvature,
+    read_csv,
+    read_dxf,
+    slot_profile,
+    write_csv,
+    write_dxf,
+)
 
 DEG = np.pi / 180
 

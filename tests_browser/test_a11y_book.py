@@ -16,7 +16,6 @@ import json
 import os
 
 import pytest
-
 from conftest import ROOT, block_remote
 from test_book import HTML, PAGES, SHOTS, server  # noqa: F401  (the same pages on the same server)
 

@@ -25,7 +25,6 @@ import json
 import os
 
 import pytest
-
 from conftest import ROOT, block_remote
 from test_lab import _READY_JS, _STATE_JS, NOTEBOOKS, SHOTS, lab  # noqa: F401  (the same lab)
 

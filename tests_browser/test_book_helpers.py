@@ -9,18 +9,17 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import nbformat  # noqa: E402
-import pytest  # noqa: E402
-from matplotlib.animation import FuncAnimation  # noqa: E402
-
-from conftest import ROOT  # noqa: E402
+import matplotlib.pyplot as plt
+import nbformat
+import pytest
+from conftest import ROOT
+from matplotlib.animation import FuncAnimation
 
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
-import errata_page  # noqa: E402
-import mechbook  # noqa: E402
-from mechlab.course.errata import SOURCES, Erratum
+import errata_page
+import mechbook
 
+from mechlab.course.errata import SOURCES, Erratum
 
 
 def _jshtml() -> str:

@@ -28,11 +28,10 @@ import urllib.request
 from pathlib import Path
 
 import pytest
-
 from conftest import ROOT, block_remote, free_port
 
 sys.path.insert(0, str(ROOT))
-import course  # noqa: E402  (the script at the repository's root, which `make lab` runs)
+import course
 
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 SHOTS = ROOT / "book" / "_build" / "screenshots"

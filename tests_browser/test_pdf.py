@@ -12,7 +12,6 @@ import xml.etree.ElementTree as ET
 from functools import cache
 
 import pytest
-
 from conftest import ROOT
 
 PDF = ROOT / "book" / "_build" / "pdf" / "mechlab.pdf"

@@ -48,8 +48,22 @@ OptionalFunction = Annotated[Any, Spec("function", optional=True)]
 Sampled = Annotated[np.ndarray, Spec("samples", lo=2, hi=MAX_SAMPLES)]  # one value a crank angle
 Analogs = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)]
 
-__all__ = ["RiseLaw", "LAWS", "ALIASES", "named_law", "law_jerk", "Invariants", "law_invariants", "invariants", "rise_invariants", "PrintedInvariants",
-           "thesis_cam_rows", "thesis_mchv1_rows", "LawRow", "law_table"]
+__all__ = [
+    "ALIASES",
+    "LAWS",
+    "Invariants",
+    "LawRow",
+    "PrintedInvariants",
+    "RiseLaw",
+    "invariants",
+    "law_invariants",
+    "law_jerk",
+    "law_table",
+    "named_law",
+    "rise_invariants",
+    "thesis_cam_rows",
+    "thesis_mchv1_rows",
+]
 
 
 @dataclass(frozen=True)

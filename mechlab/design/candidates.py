@@ -210,7 +210,7 @@ class Comparison:
     refusals: tuple[Refusal, ...]
 
     @validated
-    def ranked(self, by: Annotated[str, choice(*RANKABLE)] = "motor_power") -> "Comparison":
+    def ranked(self, by: Annotated[str, choice(*RANKABLE)] = "motor_power") -> Comparison:
         """The same comparison with the candidates ordered by ``by``, smallest first (a missing J last).
 
         Parameters

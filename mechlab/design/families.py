@@ -6,8 +6,8 @@ raises :class:`Unsuitable` with the reason and the numbers.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 from scipy.optimize import brentq

@@ -7,8 +7,8 @@ in place.
 
 from __future__ import annotations
 
-import numpy as np
 import matplotlib.pyplot as plt
+import numpy as np
 from matplotlib.figure import Figure
 
 from ..design import FAMILIES, Comparison

@@ -11,10 +11,11 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
+from ..analysis.intermittency import DWELL_TOL, compare
 from ..mechanisms.geneva import wheel_outline  # noqa: F401 - where the course's readers look for it
 from ..mechanisms.spherical_geneva import SphericalGeneva
-from ..analysis.intermittency import DWELL_TOL, compare
 from . import JOINT_STYLE, LETTER_STYLE, LINK_STYLE, NUMBER_STYLE, READOUT_STYLE, TRACE_STYLE
+
 
 # ----------------------------------------------------------------------------------
 # spherical Geneva in 3-D

@@ -19,11 +19,12 @@ import numpy as np
 from ..errors import FrictionlessOnlyError
 from ..mechanisms.base import Mechanism
 from ..motion import STILL, AngularMotion, LinearMotion
-from ..validate import Point, Spec, check_value, mechanism as instance_of, number, validated
-from .model import G, Force, ForceModel, LoadError, Torque, model_for
+from ..validate import Point, Spec, check_value, number, validated
+from ..validate import mechanism as instance_of
+from .model import Force, ForceModel, G, LoadError, Torque, model_for
 from .solve import _frames, virtual_work_torque
 
-__all__ = ["balanced_load", "torque_for_load", "FrictionlessOnlyError"]
+__all__ = ["FrictionlessOnlyError", "balanced_load", "torque_for_load"]
 
 AnyMechanism = Annotated[Mechanism, instance_of(Mechanism)]
 Loads = Annotated[tuple, Spec("items", expected=(Force, Torque))]

@@ -16,17 +16,41 @@ massless, frictionless model of any mechanism from its ``structure()``;
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import Annotated, Any, Sequence
+from typing import Annotated, Any
 
 import numpy as np
-from ..errors import (DimensionError, FrictionError, LoadError, MassError, MechanismError, SelfLockingError,
-                      StructureError)
-from ..mechanisms.base import FRAME
-from ..validate import (Angle, Checked, Distance, Name, Point, Spec, angle, check_value, number, or_function)
 
-__all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque", "model_for",
-           "slender_bar", "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"]
+from ..errors import (
+    DimensionError,
+    FrictionError,
+    LoadError,
+    MassError,
+    SelfLockingError,
+    StructureError,
+)
+from ..mechanisms.base import FRAME
+from ..validate import Angle, Checked, Distance, Name, Point, Spec, angle, check_value, number, or_function
+
+__all__ = [
+    "FRAME",
+    "Body",
+    "Force",
+    "ForceModel",
+    "FrictionError",
+    "G",
+    "HigherPair",
+    "LoadError",
+    "MassError",
+    "Prismatic",
+    "Revolute",
+    "SelfLockingError",
+    "StructureError",
+    "Torque",
+    "model_for",
+    "slender_bar",
+]
 
 
 
@@ -412,7 +436,7 @@ class ForceModel(Checked):
                 return p
         raise KeyError(f"no pair {name!r}; pairs: {[p.name for p in self.pairs]}")
 
-    def with_body(self, name: str, *, mass=None, inertia=None, com=None) -> "ForceModel":
+    def with_body(self, name: str, *, mass=None, inertia=None, com=None) -> ForceModel:
         """A copy with link ``name``'s mass properties changed.
 
         Parameters
@@ -452,7 +476,7 @@ class ForceModel(Checked):
         new = replace(old, mass=m, inertia=inertia, com=old.com if com is None else com)
         return replace(self, bodies=tuple(new if b.name == name else b for b in self.bodies))
 
-    def with_friction(self, f: float, radius: float = 0.0, *, pairs: Sequence[str] | None = None) -> "ForceModel":
+    def with_friction(self, f: float, radius: float = 0.0, *, pairs: Sequence[str] | None = None) -> ForceModel:
         """A copy with friction coefficient f in the named pairs (all by default) and journal radius r.
 
         Parameters

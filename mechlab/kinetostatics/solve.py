@@ -3,19 +3,35 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Annotated, Mapping
+from typing import Annotated
+
 import numpy as np
+
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import PointPath, cross, dot, perp, relative, unit, vector_angle
 from ..mechanisms.base import output_axis  # Body(..., axis=output_axis): readers import it from here
 from ..motion import Motion, first_of
 from ..validate import Point, Spec, count, number, validated
 from ..validate import mechanism as instance_of
-from .model import (FRAME, Eps, Force, ForceModel, G, HigherPair, LoadError, Omega, Prismatic, Revolute,
-                    SelfLockingError, StructureError, Torque)
+from .model import (
+    FRAME,
+    Eps,
+    Force,
+    ForceModel,
+    G,
+    HigherPair,
+    LoadError,
+    Omega,
+    Prismatic,
+    Revolute,
+    SelfLockingError,
+    StructureError,
+    Torque,
+)
 
-__all__ = ["Reaction", "ForceResult", "solve", "virtual_work_torque", "output_axis"]
+__all__ = ["ForceResult", "Reaction", "output_axis", "solve", "virtual_work_torque"]
 
 AnyModel = Annotated[ForceModel, instance_of(ForceModel)]
 AnyMotion = Annotated[Motion, instance_of(Motion)]

@@ -17,18 +17,32 @@ narrows ``crank_ranges()`` and ``motion`` raises AssemblyError.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Annotated, Callable
+from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, SingularityError
-from ..geometry import AnglePath, PointPath, as_angles, cross, crank_point, dot, fixed_point, lift, perp
+from ..geometry import AnglePath, PointPath, as_angles, crank_point, cross, dot, fixed_point, lift, perp
 from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import Checked, Flag, Function, Length, Point, Real, Spec, mechanism, number
-from .base import FRAME, FULL_TURN, Link, Mechanism, Pair, Part, Sketch, Structure, arc_set, bars, fmt_ranges, output_axis
+from .base import (
+    FRAME,
+    FULL_TURN,
+    Link,
+    Mechanism,
+    Pair,
+    Part,
+    Sketch,
+    Structure,
+    arc_set,
+    bars,
+    fmt_ranges,
+    output_axis,
+)
 from .slotted import PivotedSlot, SineMechanism, SlottedLink
 
 # Samples of the curve used to find the working segment and the Newton brackets.

@@ -19,8 +19,8 @@ in the frame line, so ψ₋(φ) = -ψ₊(-φ), ψ'₋(φ) = ψ'₊(-φ), ψ''₋
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Annotated
 from functools import cached_property
+from typing import Annotated
 
 import numpy as np
 

@@ -5,14 +5,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from functools import cached_property
+
 import numpy as np
-from ..errors import MechanismError
+
+from ..errors import InfeasibleDesignError, MechanismError
 from ..geometry import AnglePath, as_angles, dot, dyad_rpr, dyad_rrr, fixed_point, relative, vector_angle
-from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, output_axis
 from ..motion import AngularMotion
-from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 from ..validate import Coordinate, Length, Sign
-from ..errors import InfeasibleDesignError
+from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, output_axis
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 
 __all__ = ["LambdaRockerSixBar", "LambdaSlottedSixBar"]
 

@@ -5,14 +5,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from functools import cached_property
+
 import numpy as np
-from ..errors import MechanismError
+
+from ..errors import InfeasibleDesignError, MechanismError
 from ..geometry import PointPath, as_angles, cross, dyad_rrp, unit
-from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, block_outline
 from ..motion import LinearMotion, scalar_law
-from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 from ..validate import Angle, Coordinate, Length, Sign
-from ..errors import InfeasibleDesignError
+from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, block_outline
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 
 __all__ = ["LambdaSliderSixBar", "LambdaTranslatingSlot"]
 

@@ -25,11 +25,22 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, RotationError, SingularityError
-from ..geometry import (AnglePath, PointPath, as_angles, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit,
-                        vector_angle)
-from .base import FRAME, Link, Mechanism, Pair, Structure, output_axis
+from ..geometry import (
+    AnglePath,
+    PointPath,
+    as_angles,
+    crank_point,
+    dot,
+    dyad_rrr,
+    fixed_point,
+    perp,
+    relative,
+    unit,
+    vector_angle,
+)
 from ..motion import AngularMotion
 from ..validate import Length, OptionalAngle, Point, Sign
+from .base import FRAME, Link, Mechanism, Pair, Structure, output_axis
 
 _GRID = 720
 

@@ -17,20 +17,20 @@ evaluating the law). The book's chapter on the curved-slot dwell derives it.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
 from math import comb
-from typing import Annotated, Callable
+from typing import Annotated
 
 import numpy as np
 from numpy.polynomial import Polynomial
-from ..errors import DimensionError, DwellError, DwellIntervalError, DwellRatioError, MechanismError
-from ..errors import renamed
+
+from ..errors import DwellError, DwellIntervalError, DwellRatioError, renamed
 from ..geometry import as_angles, wrap
 from ..mechanisms.base import Mechanism, Part, Sketch
 from ..motion import Table, scalar_law
 from ..validate import MAX_GRID, Checked, Distance, Length, Spec, angle, check_value, choice, count, number, validated
-
 
 TRANSITIONS = ("cubic", "quintic", "sextic")
 

@@ -19,8 +19,9 @@ The book's chapter on Chebyshev dwell synthesis derives it.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Annotated
 from functools import lru_cache
+from typing import Annotated
+
 import numpy as np
 from scipy.optimize import brentq, least_squares, minimize, minimize_scalar, root
 
@@ -29,10 +30,27 @@ from ..geometry import check_length, check_number
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
 from ..validate import Flag, Spec, angle, check_value, count, mechanism, number, validated
 
-__all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "ThesisIteration",
-           "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches",
-           "WholeTurnLine", "ExistenceMap", "TransmissionLines", "whole_turn_line", "whole_turn_guiding",
-           "existence_region", "DesignOutcomes", "design_outcomes"]
+__all__ = [
+    "CircleGuide",
+    "DesignOutcomes",
+    "ExistenceMap",
+    "StraightGuide",
+    "ThesisIteration",
+    "TransmissionLines",
+    "WholeTurnLine",
+    "band_touches",
+    "circle_guiding",
+    "design_outcomes",
+    "existence_map",
+    "existence_region",
+    "fifth_order_line",
+    "rotation_boundary",
+    "straight_guiding",
+    "thesis_iteration",
+    "transmission_lines",
+    "whole_turn_guiding",
+    "whole_turn_line",
+]
 
 MAX_SAMPLES = 100_000  # samples of a curve
 RIPPLE_FLOOR = 1e-12   # (in l) the equal-ripple equations are solved to about this; a finer band is not resolved
@@ -157,7 +175,7 @@ class CircleGuide:
         return m.C + m.axis / self.k
 
     @property
-    def guided(self) -> "GuidedLambda":
+    def guided(self) -> GuidedLambda:
         """The mechanism with its band attached (its sketch shows the band)."""
         q = self.centre
         return GuidedLambda(self.r, self.a, self.delta, 1, float(q[0]), float(q[1]), self.R0, self.R1, self.dwell)

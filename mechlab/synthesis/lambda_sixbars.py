@@ -22,15 +22,27 @@ from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq
-from ..errors import MechanismError
+
+from ..errors import InfeasibleDesignError, MechanismError, TransmissionAngleError
 from ..geometry import cross
 from ..mechanisms.base import TWO_PI
-from .lambda_guiding import CircleGuide, StraightGuide, straight_guiding
-from ..errors import InfeasibleDesignError, TransmissionAngleError
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
 from ..motion import Table, scalar_law
-from ..validate import (MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check_value, count, mechanism, number,
-                        validated)
+from ..validate import (
+    MAX_GRID,
+    Angles,
+    Distance,
+    Length,
+    Sign,
+    Spec,
+    angle,
+    check_value,
+    count,
+    mechanism,
+    number,
+    validated,
+)
+from .lambda_guiding import CircleGuide, StraightGuide, straight_guiding
 
 # A time ratio K (> 0), the working limit μ_min of a transmission angle (None: no limit), the guides
 MIN_SWING = 1e-6  # radians: a smaller swing β_m overflows the rocker's design
@@ -42,8 +54,23 @@ Grid = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_GRID)]  # one axis of 
 DwellAngle = Annotated[float, angle(0.0, TWO_PI, open=True)]  # the crank angle 2α of a dwell
 SixBar = Annotated[LambdaSlottedSixBar, mechanism((LambdaRockerSixBar, LambdaSlottedSixBar))]
 
-__all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_turn", "time_ratio_far_angle", "rise_law", "mchv3_full_turn", "dwell_extent", "slot_residual_first_order", "mchv3_full_turn_best",
-           "PivotRow", "mchv3_pivot_table", "BestPivotRow", "mchv3_best_table"]
+__all__ = [
+    "BestPivotRow",
+    "PivotRow",
+    "SixBarReport",
+    "dwell_extent",
+    "mchv1",
+    "mchv3_best_table",
+    "mchv3_full_turn",
+    "mchv3_full_turn_best",
+    "mchv3_half_turn",
+    "mchv3_oscillating",
+    "mchv3_pivot_table",
+    "report",
+    "rise_law",
+    "slot_residual_first_order",
+    "time_ratio_far_angle",
+]
 
 
 @validated

@@ -20,8 +20,8 @@ import html
 import os
 import struct
 import zlib
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import ipywidgets as W
 import matplotlib

@@ -6,7 +6,6 @@ outside the existence map shows its SynthesisError message in place of the drawi
 
 from __future__ import annotations
 
-
 from ..synthesis.lambda_guiding import circle_guiding
 from ..synthesis.lambda_sixbars import mchv1
 from . import Control, MechanismExplorer

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...synthesis.dwell_slot import DwellLaw, slotted_link_law, curved_slot_dwell
+from ...synthesis.dwell_slot import DwellLaw, curved_slot_dwell, slotted_link_law
 from . import Claim, Erratum
 
 NB = "05_dwell_curved_slot.ipynb"

@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 
 from ...analysis.equivalence import equivalent_slot
-from ...geometry import wrap
 from ...analysis.half_turn import base_peaks, formula_18
+from ...geometry import wrap
 from ...mechanisms.fourbar import FourBar
 from . import Claim, Erratum
 

@@ -2,10 +2,10 @@
 
 import numpy as np
 
+from ...analysis.motion_laws import law_invariants
+from ...mechanisms.fourbar import FourBar
 from ...mechanisms.lambda_mechanism import LambdaMechanism, classic_lambda
 from ...synthesis.lambda_guiding import circle_guiding, straight_guiding
-from ...mechanisms.fourbar import FourBar
-from ...analysis.motion_laws import law_invariants
 from . import Claim, Erratum
 
 DEG = np.pi / 180
@@ -74,8 +74,8 @@ def _classic():
 
 
 def _mchv1_row():
-    from ...synthesis.lambda_sixbars import mchv1, rise_law
     from ...analysis.motion_laws import rise_invariants
+    from ...synthesis.lambda_sixbars import mchv1, rise_law
 
     g = circle_guiding(np.pi, 1.0, 100 * DEG)
     inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG), g.dwell))
@@ -92,8 +92,8 @@ def _row_fit(delta, alpha, a, guess=None, full_swing=False):
     The rise is normalised as :func:`~mechlab.synthesis.lambda_sixbars.rise_law` measures it, from the
     end of the dwell to the far extreme; ``full_swing`` takes the stroke from the dwell's centre instead
     (adding the dwell's residual motion, about 0.013 rad at δ = 270°, 2α = 200°)."""
-    from ...synthesis.lambda_sixbars import mchv1, rise_law
     from ...analysis.motion_laws import invariants, thesis_mchv1_rows
+    from ...synthesis.lambda_sixbars import mchv1, rise_law
 
     row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
     g = circle_guiding(delta * DEG, a, 2 * alpha * DEG, guess=guess) if guess else \

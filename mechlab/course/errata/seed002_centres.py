@@ -8,10 +8,10 @@ settle which, so they are listed as unreadable passages, with the computation fo
 
 import numpy as np
 
+from ...analysis.centres import centrodes
+from ...analysis.centres.instant import instant_centres
 from ...mechanisms.antiparallelogram import Antiparallelogram
 from ...mechanisms.trammel import EllipticTrammel
-from ...analysis.centres.instant import instant_centres
-from ...analysis.centres import centrodes
 from . import Claim, Erratum
 
 NOTEBOOK = "01_instant_centres.ipynb"

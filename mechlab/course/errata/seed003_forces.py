@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...geometry import cross
 from ...kinetostatics.model import Force, model_for
 from ...kinetostatics.solve import solve
-from ...geometry import cross
 from ...mechanisms.slider_crank import SliderCrank
 from . import Claim, Erratum
 
