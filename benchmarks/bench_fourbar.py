@@ -90,13 +90,13 @@ def main():
             link, crank, B = pylinkage_fourbar(n)
             link.compile()
             link.step_fast(iterations=2)  # numba compilation, outside the timing
-            link, crank, B = pylinkage_fourbar(n)
+            link, _crank, B = pylinkage_fourbar(n)
             t_fast, traj = best_of(lambda: link.step_fast(iterations=n), repeat=3)
             idx = list(link.components).index(B)
             err_fast = np.nanmax(np.abs(traj[:, idx, :] - mo.points["B"].p))
 
             def slow():
-                lk, _, b = pylinkage_fourbar(n)
+                lk, _, _b = pylinkage_fourbar(n)
                 return np.array([pos[3] for pos in lk.step(iterations=n)])
             t_slow, pts = best_of(slow, repeat=1 if n > 10_000 else 3)
             err_slow = np.nanmax(np.abs(pts - mo.points["B"].p))

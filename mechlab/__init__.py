@@ -139,7 +139,7 @@ from .synthesis.slot_export import read_csv, read_dxf, slot_profile, write_cam_c
 
 __version__ = "0.1.0"
 
-__all__ = [
+__all__ = [  # noqa: RUF022  grouped by topic, each group under its comment, not alphabetical
     # errors
     "MechanismError", "DimensionError", "AssemblyError", "RotationError", "SingularityError",
     # mechanisms and results
@@ -168,7 +168,8 @@ __all__ = [
     "write_cam_dxf",
     # Chebyshev
     "circle_guiding", "straight_guiding", "whole_turn_line", "whole_turn_guiding", "existence_map",
-    "existence_region", "design_outcomes", "DesignOutcomes", "band_touches", "fifth_order_line", "thesis_iteration", "transmission_lines",
+    "existence_region", "design_outcomes", "DesignOutcomes", "band_touches", "fifth_order_line", "thesis_iteration",
+    "transmission_lines",
     "classic_lambda", "LambdaRockerSixBar", "LambdaSlottedSixBar", "LambdaSliderSixBar", "LambdaTranslatingSlot",
     "mchv1", "mchv2", "mchv2_far_position", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best",
     "mchv3_half_turn", "mchv3_oscillating", "mchv3_pivot_table", "mchv3_best_table",
@@ -176,7 +177,8 @@ __all__ = [
     "time_ratio_far_angle",
     "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError", "NoDesignError",
     # Geneva
-    "spherical_table", "table1_comparison", "table1_review", "TABLE1_PRINTED", "compare", "intermittency", "detect_impacts",
+    "spherical_table", "table1_comparison", "table1_review", "TABLE1_PRINTED", "compare", "intermittency",
+    "detect_impacts",
     "SlotCountError", "OffsetError",
     # forces
     "forces", "motion_laws", "design", "Kinetostatics", "ForceModel", "Body", "Revolute", "Prismatic", "HigherPair",

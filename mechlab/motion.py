@@ -807,7 +807,7 @@ class Table:
         # numbers right-aligned, words left-aligned
         numeric = [all(isinstance(getattr(r, c), Real) for r in self.rows) for c in self.columns]
         return "\n".join("  ".join(s.rjust(w) if num else s.ljust(w)
-                                   for s, w, num in zip(line, widths, numeric)).rstrip() for line in body)
+                                   for s, w, num in zip(line, widths, numeric, strict=False)).rstrip() for line in body)
 
     def _repr_html_(self) -> str:
         head = "".join(f"<th>{html.escape(c)}</th>" for c in self.headers)

@@ -283,7 +283,7 @@ def test_antiparallelogram_motion(a, g):
     m = Antiparallelogram(a, g)
     phi = np.linspace(-2 * np.pi, 2 * np.pi, 20001)
     mo = m.motion(phi)
-    O, A, B, E = (mo.points[k].p for k in "OABE")
+    _O, A, B, E = (mo.points[k].p for k in "OABE")
     assert np.abs(np.hypot(*(B - A).T) - g).max() < 1e-12 * g
     assert np.abs(np.hypot(*(B - E).T) - a).max() < 1e-12 * a
     h = phi[1] - phi[0]

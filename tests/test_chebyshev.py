@@ -347,7 +347,7 @@ def test_existence_for_delta_240_whole_turn_line_starts_at_2_sin_delta_over_4():
     """δ = 240°: the fifth-order line runs between (0, 1.0) and (0, 1.732); the whole-turn line starts at
     (0, 1.732). Decided on designs checked on the simulated coupler curve: as 2α → 360° the crank shrinks
     to 0 only near a = 1.732, while near a = 1.0 long dwells need a crank close to the rotation limit."""
-    r5, a5, _ = fifth_order_line(240 * DEG, 4000)
+    _r5, a5, _ = fifth_order_line(240 * DEG, 4000)
     assert abs(a5.min() - 1.0) < 1e-3 and abs(a5.max() - np.sqrt(3)) < 1e-3
     wt = whole_turn_line(240 * DEG)
     assert abs(wt.a[0] - np.sqrt(3)) < 0.01 and wt.r[0] < 0.01
@@ -590,7 +590,7 @@ def test_coupler_point_where_the_crank_passes_the_frame_pivot():
     m = LambdaMechanism(0.014130193050221984, 0.014142135623730949, np.pi)
     phi = np.radians(np.linspace(-0.5, 0.5, 41))
     got, B = m.coupler_point(phi), m.motion(phi).points["B"].p
-    for p, b, d in zip(phi, B, got):
+    for p, b, d in zip(phi, B, got, strict=False):
         A, C = mpmath.matrix([m.r * mpmath.cos(p), m.r * mpmath.sin(p)]), mpmath.matrix([m.a, 0])
         M, u = (A + C) / 2, (C - A) / mpmath.norm(C - A)
         h = mpmath.sqrt(1 - mpmath.norm(C - A) ** 2 / 4)

@@ -47,7 +47,7 @@ def pin_in_link(mech, mo):
 
 
 def assert_analogs(mo, up, dn, law=("psi", "dpsi", "ddpsi"), tol=1e-6):
-    f0, f1, f2 = (getattr(mo, k) for k in law)
+    _f0, f1, f2 = (getattr(mo, k) for k in law)
     u0, u1 = getattr(up, law[0]), getattr(up, law[1])
     d0, d1 = getattr(dn, law[0]), getattr(dn, law[1])
     assert np.max(np.abs((u0 - d0) / (2 * H) - f1)) < tol * (1 + np.max(np.abs(f1)))

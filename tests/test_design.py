@@ -73,7 +73,7 @@ def test_every_candidate_meets_its_specification_when_simulated_anew(spec):
     SEEN.update(c.family for c in comp.candidates)
     assert len(comp.candidates) + len(comp.refusals) == len(D.FAMILIES)
     for cand in comp.candidates:
-        phi, x, d1 = _resimulate(cand, spec)
+        _phi, x, _d1 = _resimulate(cand, spec)
         h = spec.amplitude
         if spec.motion == "index":
             assert abs(abs(x[-1] - x[0]) - h) < 1e-6 * h  # one index per crank turn
@@ -208,7 +208,7 @@ def test_curved_slot_candidate_respects_the_limit_theorem():
     spec = D.Specification("swing", 40 / 360, amplitude=np.radians(40), max_pressure_angle=np.radians(60))
     cand = D.candidates(spec, ["curved slot"]).candidates[0]
     lam = cand.design.mechanism.lam
-    phi, x, d1 = _resimulate(cand, spec)
+    _phi, _x, d1 = _resimulate(cand, spec)
     assert np.max(np.abs(d1)) >= base_peaks(lam)[0] * (1 - 1e-9)
 
 

@@ -185,7 +185,7 @@ def test_labels_sit_at_their_joints_in_every_frame_and_move_in_place(mech):
         assert drawing.readout.get_text() == f"φ = {np.degrees(drawing.motion.phi[i]):.0f}°"
         # the hatched support: a triangle with its apex at each fixed pivot
         xs, ys = drawing.ground_line.get_data()
-        apexes = {(round(x, 9), round(y, 9)) for x, y in zip(xs, ys)}
+        apexes = {(round(x, 9), round(y, 9)) for x, y in zip(xs, ys, strict=False)}
         for pivot in mech.pivots:
             x, y = drawing.motion.points[pivot].p[i]
             assert (round(x, 9), round(y, 9)) in apexes
@@ -230,7 +230,7 @@ def _frames(html):
 @pytest.mark.parametrize("figsize, dpi", [((4.5, 3.4), 55), ((12, 4), 100), ((6.5, 4.5), 100)])
 def test_animation_frames_fit_the_book_column_and_are_quantised(figsize, dpi):
     from mechlab.draw import MAX_WIDTH_PX, MIN_WIDTH_PX, PALETTE
-    fig, ax = plt.subplots(figsize=figsize, dpi=dpi)
+    _fig, ax = plt.subplots(figsize=figsize, dpi=dpi)
     anim = animate(FourBar(1, 3, 3, 4), n=4, ax=ax)
     frames = _frames(anim.to_jshtml())
     assert len(frames) == 4
@@ -538,7 +538,7 @@ def test_plot_pressure_angles_draws_each_transition_over_the_turn_and_shades_the
     (ax,) = fig.axes
     assert [line.get_label() for line in ax.lines] == list(TRANSITIONS)
     phi = np.linspace(0.0, 2 * np.pi, 181)
-    for line, tr in zip(ax.lines, TRANSITIONS):
+    for line, tr in zip(ax.lines, TRANSITIONS, strict=False):
         theta = curved_slot_dwell(0.4, 50 * deg, 140 * deg, 2.0, tr).motion(phi).pressure_angle
         assert np.allclose(line.get_xdata(), np.degrees(phi)) and np.allclose(line.get_ydata(), np.degrees(theta))
     spans = sorted(p.get_x() for p in ax.patches), sorted(p.get_x() + p.get_width() for p in ax.patches)

@@ -260,7 +260,7 @@ def test_relative_path_reads_the_pin_from_the_structure(a, d):
     S = np.sqrt(a * a + d * d + 2 * a * d * np.cos(phi))
     dS = -a * d * np.sin(phi) / S
     ddS = -(a * d * np.cos(phi) + dS**2) / S
-    for w, x in zip(rel, (S, dS, ddS)):
+    for w, x in zip(rel, (S, dS, ddS), strict=False):
         assert np.allclose(w, np.stack([x, 0 * x], -1), rtol=0, atol=1e-12 * (a + d))
 
 

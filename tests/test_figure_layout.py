@@ -213,7 +213,7 @@ def test_animate_together_draws_every_panel_at_one_scale():
 def test_spherical_geneva_drawing_numbers_its_links():
     from mechlab.mechanisms.spherical_geneva import SphericalGeneva
     g = SphericalGeneva(40.0, 15.0, 4)
-    fig, ax = plt.subplots()
+    _fig, ax = plt.subplots()
     anim = animate(g, n=6, ax=ax)
     numbers = {k: t.get_text() for k, t in anim.drawing.numbers.items()}
     assert numbers == {k: str(v) for k, v in g.structure().numbers().items()}

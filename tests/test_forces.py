@@ -27,6 +27,7 @@ from mechlab.kinetostatics.model import (
     slender_bar,
 )
 from mechlab.kinetostatics.solve import solve, virtual_work_torque
+import itertools
 
 unit_floats = st.floats(min_value=-1.0, max_value=1.0, allow_nan=False)
 pos_floats = st.floats(min_value=0.05, max_value=3.0, allow_nan=False)
@@ -261,15 +262,15 @@ def _quad_drive(f, a, b, eta, sense=1.0):
     from scipy.optimize import brentq, minimize_scalar
     x = np.linspace(a, b, 2001)
     y = f(x)
-    edges = [a, *[brentq(f, u, v, xtol=1e-15) for u, v, fu, fv in zip(x, x[1:], y, y[1:]) if fu * fv < 0], b]
+    edges = [a, *[brentq(f, u, v, xtol=1e-15) for u, v, fu, fv in zip(x, x[1:], y, y[1:], strict=False) if fu * fv < 0], b]
 
     def m(t):
         v = f(t)
         return v / eta if v * sense > 0 else v * eta
 
-    mean = sum(quad(m, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0] for u, v in zip(edges, edges[1:])) / (b - a)
+    mean = sum(quad(m, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0] for u, v in itertools.pairwise(edges)) / (b - a)
     sq = sum(quad(lambda t: m(t) ** 2, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0]
-             for u, v in zip(edges, edges[1:])) / (b - a)
+             for u, v in itertools.pairwise(edges)) / (b - a)
     # every local maximum of |m| on the grid is refined: near-equal peaks may swap order
     am = np.abs([m(t) for t in x])
     peak = float(am.max())
@@ -660,7 +661,7 @@ def _applied(links, loads, w, e, g):
     for name, L in links.items():
         b = L["body"]
         o = L["O"][0]
-        th, dth, ddth = L["th"]
+        _th, dth, ddth = L["th"]
         S, dS, ddS = L["at"](b.com)
         F = b.mass * (np.asarray(g) - (ddS * w * w + dS * e))
         M = _cross(S - o, F) - b.inertia * (ddth * w * w + dth * e)

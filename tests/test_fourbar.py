@@ -86,7 +86,7 @@ def test_grashof_and_crank_ranges_agree_with_brute_force(fb):
     # every sample of cycle() assembles; the dead points bound the range
     fb.motion(fb.cycle(101))
     if not fb.can_turn:
-        start, end = fb.crank_ranges()[0]
+        _start, end = fb.crank_ranges()[0]
         with pytest.raises(AssemblyError, match="the crank reaches only"):
             fb.motion([end + 1e-3])
 

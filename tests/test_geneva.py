@@ -27,6 +27,7 @@ from mechlab.synthesis.geneva import (
     table1_comparison,
     table1_review,
 )
+import itertools
 
 H = 1e-5
 slots = st.integers(min_value=3, max_value=16)
@@ -340,7 +341,7 @@ def test_table1_reproduces_and_documents_differences():
     assert rows[-1].alpha1 == pytest.approx(rows[-1].alpha0) and rows[-1].beta1 == pytest.approx(22.5)
     # more slots, smaller accelerations (seed conclusion 4)
     eps = [r.eps_max for r in rows]
-    assert all(a > b for a, b in zip(eps, eps[1:]))
+    assert all(a > b for a, b in itertools.pairwise(eps))
 
 
 def test_table1_review_shows_printed_and_computed_with_units_and_marks():
@@ -399,11 +400,11 @@ def _reference_drive(g, J, w, Mr, eta, k):
 
     grid = np.linspace(-s0, s0, 4001)[1:-1]
     vals = np.array([M1(x) for x in grid])
-    roots = [brentq(M1, a, b, xtol=1e-15) for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:]) if fa * fb < 0]
+    roots = [brentq(M1, a, b, xtol=1e-15) for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:], strict=False) if fa * fb < 0]
     edges = [-s0, *roots, s0]
-    mean = sum(quad(Mm, a, b, epsabs=0, epsrel=1e-12, limit=200)[0] for a, b in zip(edges, edges[1:])) / (2 * np.pi)
+    mean = sum(quad(Mm, a, b, epsabs=0, epsrel=1e-12, limit=200)[0] for a, b in itertools.pairwise(edges)) / (2 * np.pi)
     sq = sum(quad(lambda x: Mm(x) ** 2, a, b, epsabs=0, epsrel=1e-12, limit=200)[0]
-             for a, b in zip(edges, edges[1:])) / (2 * np.pi)
+             for a, b in itertools.pairwise(edges)) / (2 * np.pi)
     i = int(np.argmax(np.abs(vals)))
     lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
     peak = max(-minimize_scalar(lambda x: -abs(Mm(x)), bounds=(lo, hi), method="bounded",
@@ -520,7 +521,7 @@ def test_compare_takes_a_dwell_tolerance_per_mechanism():
     mechs = {"external": ExternalGeneva(4, 1.0), "whitworth": SlottedLink(2.0, 1.0), "internal": InternalGeneva(6, 1.0)}
     loose = {"whitworth": 0.4, "internal": 0.02}   # Whitworth λ = 2: min ψ′ / max ψ′ = (λ - 1)/(λ + 1) = 1/3
     rows = compare(mechs, n=1441, phase=1e-3, dwell_tol=loose)
-    for r, (name, m) in zip(rows, mechs.items()):
+    for r, (name, m) in zip(rows, mechs.items(), strict=False):
         assert r == intermittency(m, n=1441, phase=1e-3, dwell_tol=loose.get(name, 1e-9), name=name)
     assert rows.by("name")["whitworth"].standstill_fraction > 0 == rows.by("name")["whitworth"].dwell_fraction
     assert compare(mechs, n=1441).by("name")["whitworth"].standstill_fraction == 0
@@ -630,7 +631,7 @@ def test_spherical_drawing_and_comparison_plot():
     assert isinstance(d, SphericalGenevaDrawing) and d.ax.name == "3d" and ax not in fig.axes
     for i in range(20):
         d.set_frame(i)
-        x, y, z = (np.asarray(a) for a in d.contact.get_data_3d())
+        x, y, _z = (np.asarray(a) for a in d.contact.get_data_3d())
         assert (len(x) == 1) == bool(g.engaged(d.motion.phi[i]))
         if len(x):  # the contact point lies on one of the drawn slot arcs' meridians
             az = [np.arctan2(*np.asarray(s.get_data_3d())[1::-1, -1]) for s in d.slot_lines[:g.z]]

@@ -168,7 +168,7 @@ def test_rocker_dyad_agrees_with_the_general_dyad_and_with_differences(sign):
     B1, psi = rocker_dyad(A, (2.0, 0.5), 1.5, 1.2, sign, reference=1.0)
     B2 = dyad_rrr(A, fixed_point((2.0, 0.5), len(phi)), 1.5, 1.2, sign)
     ang = vector_angle(relative(B2, fixed_point((2.0, 0.5), len(phi))))
-    for a, b in zip(B1, B2):
+    for a, b in zip(B1, B2, strict=False):
         assert np.max(np.abs(a - b)) < 1e-12
     assert np.max(np.abs(psi.d - ang.d)) < 1e-12 and np.max(np.abs(psi.dd - ang.dd)) < 1e-11
     assert np.all(np.abs(psi.theta - 1.0) <= np.pi) and np.allclose(wrap(psi.theta - ang.theta), 0, atol=1e-14)
@@ -186,13 +186,13 @@ def test_long_inputs_split_into_blocks_and_threads_give_the_same_numbers(monkeyp
     ref = 0.3 + 0.5 * phi  # a moving reference branch, as for a rotating output
     B, psi = G.rocker_dyad(A, (2.0, 0.5), 1.9, 1.6, -1, phi, reference=ref)
     single = [crank_point(0.7, phi[i:i + 1], centre=(0.2, -0.1)) for i in (0, 4_321, 12_344)]
-    for a, i in zip(single, (0, 4_321, 12_344)):
+    for a, i in zip(single, (0, 4_321, 12_344), strict=False):
         assert np.array_equal(a.p[0], A.p[i])
         b, p = G.rocker_dyad(a, (2.0, 0.5), 1.9, 1.6, -1, reference=ref[i])
         assert np.allclose([b.p[0], b.d[0], b.dd[0]], [B.p[i], B.d[i], B.dd[i]], atol=1e-13, rtol=0)
         assert np.allclose([p.theta[0], p.d[0], p.dd[0]], [psi.theta[i], psi.d[i], psi.dd[i]], atol=1e-13, rtol=0)
     general = dyad_rrr(PointPath(A.p, np.array(A.d), np.array(A.dd)), fixed_point((2.0, 0.5), len(phi)), 1.9, 1.6, -1)
-    for a, b in zip(B, general):
+    for a, b in zip(B, general, strict=False):
         assert np.max(np.abs(a - b)) < 1e-12
     assert np.all(np.abs(psi.theta - ref) <= np.pi)
 

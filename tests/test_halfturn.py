@@ -38,7 +38,7 @@ def test_limit_theorem_on_1000_random_grashof_fourbars():
     for fb in fbs:
         chk = limit_theorem(fb, 361)
         assert chk.holds(), (fb, chk)
-        v, a = base_peaks(fb.crank / fb.ground)
+        v, _a = base_peaks(fb.crank / fb.ground)
         # the grid's base peak never exceeds the exact one, and the linkage's peak is above the exact one
         assert chk.base_peak_velocity <= v * (1 + 1e-12) and chk.peak_velocity >= v * (1 - 1e-12)
         worst_v = min(worst_v, chk.peak_velocity / v)

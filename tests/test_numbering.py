@@ -76,7 +76,7 @@ def check_numbering(mech):
         return
     phi = float(mech.cycle(7)[2]) + 0.01
     d = draw(mech, phi)
-    shown = {part.number: text.get_text() for part, text in zip(d.numbered, d.numbers)}
+    shown = {part.number: text.get_text() for part, text in zip(d.numbered, d.numbers, strict=False)}
     frame = d.numbers[len(d.numbered)].get_text()
     assert len(shown) == len(d.numbered), f"a link numbered twice: {[p.number for p in d.numbered]}"
     # the centres number the links' labels

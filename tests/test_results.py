@@ -30,7 +30,7 @@ def _leaves(value, path="result"):
     if isinstance(value, (numbers.Number, np.ndarray, np.generic)):
         yield path, value
     elif isinstance(value, PointPath):
-        yield from ((f"{path}.{k}", v) for k, v in zip(("p", "d", "dd"), value))
+        yield from ((f"{path}.{k}", v) for k, v in zip(("p", "d", "dd"), value, strict=False))
     elif isinstance(value, dict):
         for k, v in value.items():
             yield from _leaves(v, f"{path}[{k!r}]")
@@ -96,7 +96,7 @@ def test_dwell_law_methods_give_scalars_for_a_scalar(method):
     many = f(phi)
     for k in (0, 3, 6):
         one = f(float(phi[k]))
-        for (key, v), (_, w) in zip(_leaves(one), _leaves(many)):
+        for (key, v), (_, w) in zip(_leaves(one), _leaves(many), strict=False):
             assert np.ndim(v) == np.ndim(w) - 1, f"{method}: {key} has shape {np.shape(v)} at a scalar φ"
             assert np.allclose(v, w[k], atol=1e-12), key
 
@@ -220,7 +220,7 @@ def test_every_public_method_taking_phi_gives_scalars_for_a_scalar(name):
     many = f(phi)
     for k in (1, 4):
         one = f(float(phi[k]))
-        for (key, v), (_, w) in zip(_leaves(one), _leaves(many)):
+        for (key, v), (_, w) in zip(_leaves(one), _leaves(many), strict=False):
             if np.ndim(w) >= 1 and len(w) == len(phi):
                 assert np.ndim(v) == np.ndim(w) - 1, f"{name}: {key} has shape {np.shape(v)} at a scalar φ"
                 assert np.allclose(v, w[k], atol=1e-9), key

@@ -76,7 +76,7 @@ def test_dxf_round_trip(mech):
         caps = msp.query('ARC[layer=="FLANKS"]')
         assert len(caps) == 2 and all(c.dxf.radius == pytest.approx(0.1) for c in caps)
         # each cap joins the two flanks at a slot end and bulges outwards
-        for cap, i in zip(caps, (0, -1)):
+        for cap, i in zip(caps, (0, -1), strict=False):
             pts_cap = np.array([[p.x, p.y] for p in (cap.start_point, cap.end_point)])
             assert {tuple(np.round(p, 9)) for p in pts_cap} == {tuple(np.round(prof.left[i], 9)),
                                                                tuple(np.round(prof.right[i], 9))}

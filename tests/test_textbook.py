@@ -75,12 +75,12 @@ def test_scalar_in_scalar_out_and_the_output_law_for_every_family(name):
     law = many.output
     fields = ("psi", "dpsi", "ddpsi") if law.kind == "angle" else ("s", "ds", "dds")
     assert law.kind == m.output and law.name == ("ψ" if law.kind == "angle" else "s")
-    for got, field in zip((law.value, law.d, law.dd), fields):
+    for got, field in zip((law.value, law.d, law.dd), fields, strict=False):
         assert got is getattr(many, field)
     assert np.array_equal(many.velocity(3.0), 3.0 * law.d)
     one = m.motion(float(phi[2]))
     assert np.ndim(one.phi) == 0 and np.ndim(one.transmission) == 0
-    for v, ref in zip((one.output.value, one.output.d, one.output.dd), (law.value, law.d, law.dd)):
+    for v, ref in zip((one.output.value, one.output.d, one.output.dd), (law.value, law.d, law.dd), strict=False):
         assert np.ndim(v) == 0 and v == pytest.approx(ref[2], abs=1e-12)
     for k, p in one.points.items():
         assert p.p.shape == many.points[k].p.shape[1:] and np.allclose(p.p, many.points[k].p[2], atol=1e-12)

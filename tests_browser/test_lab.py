@@ -211,7 +211,7 @@ def test_notebooks_found():
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_notebook_in_jupyterlab(browser, lab, path):
-    base, token, root = lab
+    base, token, _root = lab
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
     page_errors = []
     page.on("pageerror", lambda e: page_errors.append(str(e)))

@@ -113,7 +113,7 @@ def cost(where, edges) -> float:
     """Arrows through boxes count most, then crossing arrows, then slanted arrows and the width."""
     segments = [segment(where, e) for e in edges]
     crossings = sum(not set(e) & set(f) and crosses(a, b)
-                    for i, (e, a) in enumerate(zip(edges, segments)) for f, b in zip(edges[i + 1:], segments[i + 1:]))
+                    for i, (e, a) in enumerate(zip(edges, segments, strict=False)) for f, b in zip(edges[i + 1:], segments[i + 1:], strict=False))
     xs = [x for x, _ in where.values()]
     return (100 * through_boxes(where, edges) + 10 * crossings + sum(abs(b[0] - a[0]) for a, b in segments)
             + 4 * (max(xs) - min(xs)))

@@ -167,7 +167,7 @@ def _trapezoid_half(u):
     s, c = np.sin(_W * r), np.cos(_W * r)
     flat = (y1 + C / _W * t + C * t**2 / 2, C / _W + C * t, C + 0 * u, 0 * u)
     fall = (y2 + v2 * r + C / _W**2 * (1 - c), v2 + C / _W * s, C * c, -C * _W * s)
-    return [np.select([u <= 1 / 8, u <= 3 / 8], [a, b], f) for a, b, f in zip(_sine_start(u, C), flat, fall)]
+    return [np.select([u <= 1 / 8, u <= 3 / 8], [a, b], f) for a, b, f in zip(_sine_start(u, C), flat, fall, strict=False)]
 
 
 def _sine_half(u):
@@ -176,7 +176,7 @@ def _sine_half(u):
     t = u - 1 / 8
     s, c = np.sin(_W_MS * t), np.cos(_W_MS * t)
     fall = (y1 + C / _W * t + C / _W_MS**2 * (1 - c), C / _W + C / _W_MS * s, C * c, -C * _W_MS * s)
-    return [np.where(u <= 1 / 8, a, f) for a, f in zip(_sine_start(u, C), fall)]
+    return [np.where(u <= 1 / 8, a, f) for a, f in zip(_sine_start(u, C), fall, strict=False)]
 
 
 def _odd(half, k):

@@ -303,7 +303,7 @@ class Comparison:
     def __str__(self) -> str:
         rows = self.rows()
         widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-        lines = ["  ".join(v.ljust(w) for v, w in zip(r, widths)) for r in rows]
+        lines = ["  ".join(v.ljust(w) for v, w in zip(r, widths, strict=False)) for r in rows]
         lines += [f"refused — {r}" for r in self.refusals]
         return "\n".join(lines)
 

@@ -98,7 +98,7 @@ def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model 
     100.0
     """
     _per_angle("torque", torque, phi)
-    motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
+    _motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
     M = np.broadcast_to(np.asarray(torque, dtype=float), dq.shape)
     # a still output (mechlab.motion.STILL) balances no load: masked, not infinite
     still = np.abs(dq) <= STILL * max(float(np.max(np.abs(dq))), 1.0) * np.abs(dth)
@@ -141,6 +141,6 @@ def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model 
     10.0
     """
     _per_angle("load", load, phi)
-    motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
+    _motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
     Q = np.broadcast_to(np.asarray(load, dtype=float), dq.shape)
     return _shaped(M0 - Q * dq / dth, phi)

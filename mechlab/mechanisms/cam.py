@@ -29,6 +29,7 @@ from ..geometry import AnglePath, PointPath, as_angles, check_length, check_numb
 from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import check_value, count
 from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars
+import itertools
 
 __all__ = [
     "CamAngularMotion",
@@ -570,7 +571,7 @@ def _phases(programme):
     inner = [b[0] + k * (b[1] - b[0]) for k in (0.5, *programme.law.knots)] + \
             [b[2] + k * (b[3] - b[2]) for k in (0.5, *programme.return_law.knots)]
     cuts = sorted({*b, *inner})
-    return [(a, e) for a, e in zip(cuts[:-1], cuts[1:]) if e - a > 1e-12]
+    return [(a, e) for a, e in itertools.pairwise(cuts) if e - a > 1e-12]
 
 
 def _pieces(u, Q, start, end):

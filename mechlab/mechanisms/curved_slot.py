@@ -1179,7 +1179,7 @@ class TranslatingCurvedSlot(Mechanism):
         if isinstance(self.slot, CircleSlot):
             x0, y0 = self.slot.center
             return np.stack([x0 + self._side * np.sqrt(np.clip(self.slot.radius**2 - (ys - y0) ** 2, 0, None)), ys], -1)
-        down, upper, neg_y, neg_dy = self._segments
+        down, upper, _neg_y, _neg_dy = self._segments
         ud = np.linspace(down.u_end, 0.0, n // 2)
         uu = np.linspace(0.0, upper.u_end, n - n // 2)
         t = np.concatenate([down.t_start + down.direction * ud, upper.t_start + upper.direction * uu])
@@ -1272,7 +1272,7 @@ def pin_relative_path(mech: Mechanism, phi: np.ndarray) -> PointPath:
         O, z = mo.points[base_pair.point], np.zeros(len(mo.phi))
         turn = np.full(len(mo.phi), -float(guide.angle))
         return PointPath(*(_turned(turn, a - o) - np.stack([x, z], -1)
-                           for a, o, x in zip(A, O, (mo.s, mo.ds, mo.dds))))
+                           for a, o, x in zip(A, O, (mo.s, mo.ds, mo.dds), strict=False)))
     if guide.kind != "revolute":
         raise DimensionError(f"the output {out.name} of {type(mech).__name__} neither turns about a frame pivot nor "
                              f"slides on a guide")

@@ -1031,7 +1031,7 @@ def _polish_straight(delta, a, alpha, r):
 
     def eqs(y):
         tt = [t for t, _ in pattern]
-        for i, v in zip(inner, y[1:]):
+        for i, v in zip(inner, y[1:], strict=False):
             tt[i] = v
         X, dX = _axis_x(y[0], a, delta, np.array(tt))
         return [X[0] - X[2], *dX[inner]]

@@ -623,7 +623,7 @@ def mchv3_full_turn_best(guide: Straight, side: Sign = 1,
     >>> round(float(np.degrees(residual)), 2)
     2.01
     """
-    m, e, foot = _line_frame(guide)
+    m, _e, _foot = _line_frame(guide)
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
     xc, yc = m.axis_coordinates(np.linspace(0, TWO_PI, 1441))
     t = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 121) + 1e-6

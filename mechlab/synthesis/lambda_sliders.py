@@ -167,7 +167,7 @@ def mchv2(guide: Circle, K: TimeRatio = 1.0, *, normal: Annotated[int | None, Sp
 
 
 def _mchv2(guide: CircleGuide, K: float, normal: int, mu_min: float | None) -> LambdaSliderSixBar:
-    phi_far, D1, E1 = mchv2_far_position(guide, K, normal)
+    phi_far, _D1, E1 = mchv2_far_position(guide, K, normal)
     Q, R = guide.centre, guide.R
     h = float(np.hypot(*(E1 - Q)))
     if h < 1e-9:

@@ -467,14 +467,14 @@ class MechanismExplorer(Explorer):
         angular = out.kind == "angle"
         y0 = np.degrees(np.unwrap(law[0])) if angular else law[0]
         self._law = (y0, law[1], law[2])
-        for line, y in zip(self.law_lines.values(), self._law):
+        for line, y in zip(self.law_lines.values(), self._law, strict=False):
             line.set_data(deg, y)
         law_label, rate_label, names = law_labels(out.kind, self.length_unit)
         relabel = self.ax_law.get_ylabel() != law_label
         if relabel:
             self.ax_law.set_ylabel(law_label)
             self.ax_rate.set_ylabel(rate_label)
-            for line, name in zip((self.law_lines["first"], self.law_lines["second"]), names):
+            for line, name in zip((self.law_lines["first"], self.law_lines["second"]), names, strict=False):
                 line.set_label(name)
             legend_above(self.ax_rate, fontsize=8)
         pad = 0.05 * float(np.ptp(y0)) + 1e-9
@@ -510,7 +510,7 @@ class MechanismExplorer(Explorer):
         else:
             self.frame = int(np.clip(np.searchsorted(phi, target), 0, len(phi) - 1))
         self.drawing.set_frame(self.frame)
-        for marker, y in zip(self.law_markers, self._law):
+        for marker, y in zip(self.law_markers, self._law, strict=False):
             marker.set_data([phi[self.frame]], [y[self.frame]])
 
     def _moving_artists(self):

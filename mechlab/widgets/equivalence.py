@@ -124,7 +124,7 @@ class EquivalenceExplorer(Explorer):
         self.d_link.set_frame(i)
         self.d_twin.set_frame(i)
         self.rel_pin.set_data([self.rel[i, 0]], [self.rel[i, 1]])
-        for marker, y in zip(self.markers, self.law):
+        for marker, y in zip(self.markers, self.law, strict=False):
             marker.set_data([phi[i]], [y[i]])
 
     def _moving_artists(self):

@@ -18,7 +18,7 @@ def _rotation():
     r, a = (v.ravel() for v in np.meshgrid(np.linspace(0.05, 1.35, 27), np.linspace(0.07, 1.97, 39)))  # no r = a
     cell = (r + a < 2) & (r < 1.0)  # inside the printed conditions
     r, a = r[cell], a[cell]
-    truth = np.array([FourBar(x, 1.0, 1.0, y).grashof().kind == "crank-rocker" for x, y in zip(r, a)])
+    truth = np.array([FourBar(x, 1.0, 1.0, y).grashof().kind == "crank-rocker" for x, y in zip(r, a, strict=False)])
     printed = (r < 1) & (r + a < 2)
     correct = (r < a) & (r + a < 2)
     n_bad = int(np.sum(printed & ~truth))
@@ -112,7 +112,7 @@ def _a_claim(delta, alphas, printed_a, correct_a, tol, note, full_swing=False):
     worst = [_row_fit(delta, alpha, printed_a)[0] for alpha in alphas]
     text = "; ".join(f"δ = {delta}°, α = {alpha}°, K = 1, β_m = 20°: the printed B, C, D are reproduced best at "
                      f"a = {a:.4f} (worst {100 * w:.1f} %), at a = {printed_a} only within {100 * p:.1f} %"
-                     for alpha, (w, a), p in zip(alphas, fits, worst))
+                     for alpha, (w, a), p in zip(alphas, fits, worst, strict=False))
     return Claim([a for _, a in fits], printed_a, correct_a, tol, f"{text} ({note})")
 
 

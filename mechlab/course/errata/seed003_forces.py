@@ -79,7 +79,7 @@ def _check_crank_moment() -> str:
         F_in1 = -crank.mass * k * (mo.points["A"].dd * 30.0**2 + mo.points["A"].d * eps1)
         correct = printed - float(cross(S - A, F_in1)[0]) + crank.inertia * eps1
         out.append((eps1, float(res.torque[0]), printed, correct))
-    (e0, t0, p0, c0), (e1, t1, p1, c1) = out
+    (_e0, t0, p0, _c0), (e1, t1, p1, c1) = out
     assert abs(p0 - t0) <= 1e-9 * abs(t0)  # harmless at ε1 = 0 with S on OA
     return Claim(t1, p1, c1, 1e-9 * abs(t1),
                  f"ε1 = 0: printed M_ур = {p0:.3f} N·m = power balance {t0:.3f} N·m; start-up ε1 = {e1:g} rad/s²: "
