@@ -1,5 +1,7 @@
 """Kinetostatics (mechlab.kinetostatics): power balance, equilibrium, hand-derived cases, friction, drive."""
 
+import itertools
+
 import numpy as np
 import pytest
 from hypothesis import example, given, settings
@@ -27,7 +29,6 @@ from mechlab.kinetostatics.model import (
     slender_bar,
 )
 from mechlab.kinetostatics.solve import solve, virtual_work_torque
-import itertools
 
 unit_floats = st.floats(min_value=-1.0, max_value=1.0, allow_nan=False)
 pos_floats = st.floats(min_value=0.05, max_value=3.0, allow_nan=False)

@@ -1,6 +1,7 @@
 """Geneva drives: planar external/internal and the spherical offset Geneva of seed 004."""
 
 import dataclasses
+import itertools
 
 import numpy as np
 import pytest
@@ -27,7 +28,6 @@ from mechlab.synthesis.geneva import (
     table1_comparison,
     table1_review,
 )
-import itertools
 
 H = 1e-5
 slots = st.integers(min_value=3, max_value=16)

@@ -16,6 +16,7 @@ exported profile would move.
 
 from __future__ import annotations
 
+import itertools
 import warnings
 from dataclasses import dataclass, replace
 from functools import cached_property
@@ -29,7 +30,6 @@ from ..geometry import AnglePath, PointPath, as_angles, check_length, check_numb
 from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import check_value, count
 from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars
-import itertools
 
 __all__ = [
     "CamAngularMotion",
