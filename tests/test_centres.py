@@ -195,7 +195,7 @@ def test_five_link_mechanism_with_a_higher_pair(xs):
         if by_k[p].finite.all() and np.hypot(*by_k[p].h[0, :2]) > 1e6:
             continue  # nearly parallel lines: the point is far and ill-conditioned
         assert s.max() < 1e-6, (by_k[p].name, by_k[p].h, by_t[p].h)
-    assert [s[0] for s in steps][0] == (1, 3)  # P24 first, from the normal, as in the seed
+    assert next(s[0] for s in steps) == (1, 3)  # P24 first, from the normal, as in the seed
 
 
 def test_five_link_check_line_of_the_seed():

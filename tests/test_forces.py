@@ -175,7 +175,8 @@ def test_curved_normal_callable_and_friction_in_higher_pair():
     mo = sl.motion(sl.turn(91))
     link, crank = model_for(sl).body("link"), model_for(sl).body("crank")
     from mechlab.geometry import perp, unit
-    normal = lambda m: perp(unit(m.psi))  # the slot normal, given as a function of the motion
+    def normal(m):
+        return perp(unit(m.psi))  # the slot normal, given as a function of the motion
     hp = ForceModel((crank, link), (Revolute("O", FRAME, "crank", "O"),
                                     HigherPair("A", "link", "crank", "A", normal, friction=0.1),
                                     Revolute("B", FRAME, "link", "B")), (("link",),), "crank", "O")
@@ -188,7 +189,8 @@ def test_curved_normal_callable_and_friction_in_higher_pair():
 def test_friction_lowers_efficiency_and_cycle_definitions():
     sc = SliderCrank(0.1, 0.4)
     mo = sc.motion(sc.turn(361))
-    working = lambda m: np.where(m.ds < 0, 2000.0, 0.0)   # resists the slider's return stroke only
+    def working(m):
+        return np.where(m.ds < 0, 2000.0, 0.0)   # resists the slider's return stroke only
     loads = [Force("slider", "B", lambda m: np.stack([working(m), 0 * m.s], axis=1))]
     model = model_for(sc).with_body("rod", mass=1.0).with_body("slider", mass=2.0)
     ideal = solve(model, mo, loads, omega1=10.0)

@@ -144,7 +144,8 @@ def test_physical_values_follow_the_chain_rule():
     w1, e1, t = 3.0, 2.0, np.linspace(0, 0.5, 5)
     phi = 0.2 + w1 * t + 0.5 * e1 * t**2
     dt = 1e-5
-    psi = lambda tt: fb.motion(0.2 + w1 * tt + 0.5 * e1 * tt**2).psi
+    def psi(tt):
+        return fb.motion(0.2 + w1 * tt + 0.5 * e1 * tt**2).psi
     mo = fb.motion(phi)
     omega1 = w1 + e1 * t
     num_w = (psi(t + dt) - psi(t - dt)) / (2 * dt)

@@ -64,7 +64,8 @@ def test_rrr_dyad_closes_and_its_analogs_match_differences(sign):
     phi = np.linspace(0, 2 * np.pi, 101)
     h = 1e-5
     E = fixed_point((2.0, 0.5), len(phi))
-    solve = lambda f: dyad_rrr(_moving_point(f), fixed_point((2.0, 0.5), len(f)), 1.5, 1.2, sign)
+    def solve(f):
+        return dyad_rrr(_moving_point(f), fixed_point((2.0, 0.5), len(f)), 1.5, 1.2, sign)
     B = solve(phi)
     A = _moving_point(phi)
     assert np.max(np.abs(np.hypot(*(B.p - A.p).T) - 1.5)) < 1e-12
@@ -78,7 +79,8 @@ def test_rrr_dyad_closes_and_its_analogs_match_differences(sign):
 def test_rrp_dyad_analogs_match_differences(sign):
     phi = np.linspace(0, 2 * np.pi, 101)
     h = 1e-5
-    solve = lambda f: dyad_rrp(_moving_point(f), (0.0, 0.2), 0.3, 1.0, sign)
+    def solve(f):
+        return dyad_rrp(_moving_point(f), (0.0, 0.2), 0.3, 1.0, sign)
     B, s = solve(phi)
     A = _moving_point(phi)
     assert np.max(np.abs(np.hypot(*(B.p - A.p).T) - 1.0)) < 1e-12
@@ -90,7 +92,8 @@ def test_rrp_dyad_analogs_match_differences(sign):
 def test_rpr_dyad_analogs_match_differences():
     phi = np.linspace(0, 2 * np.pi, 101)
     h = 1e-5
-    solve = lambda f: dyad_rpr(_moving_point(f), fixed_point((-1.0, 0.1), len(f)))
+    def solve(f):
+        return dyad_rpr(_moving_point(f), fixed_point((-1.0, 0.1), len(f)))
     ang, rho = solve(phi)
     (ap, rp), (am, rm) = solve(phi + h), solve(phi - h)
     assert np.max(np.abs(wrap(ap.theta - am.theta) / (2 * h) - ang.d)) < 1e-7

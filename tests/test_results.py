@@ -77,9 +77,11 @@ def test_every_public_function_taking_phi_gives_scalars_for_a_scalar(name):
     where = "args" if any(a is PHI for a in args) else "kwargs"
     if where == "args":
         i = next(i for i, a in enumerate(args) if a is PHI)
-        call = lambda phi: f(*args[:i], phi, *args[i + 1:], **kwargs)
+        def call(phi):
+            return f(*args[:i], phi, *args[i + 1:], **kwargs)
     else:
-        call = lambda phi: f(*args, **{**kwargs, "phi": phi})
+        def call(phi):
+            return f(*args, **{**kwargs, "phi": phi})
     many = call(PHI)
     for k in (0, 3):
         _assert_scalar_version(call(float(PHI[k])), many, k)

@@ -27,6 +27,7 @@ import os
 import pytest
 from conftest import ROOT, block_remote
 from test_lab import _READY_JS, _STATE_JS, NOTEBOOKS, SHOTS, lab  # noqa: F401  (the same lab)
+import contextlib
 
 AXE_JS = os.environ.get("AXE_JS") or str(ROOT / ".axe-deps" / "node_modules" / "axe-core" / "axe.min.js")
 AXE_TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "best-practice"]
@@ -160,8 +161,6 @@ def test_explorers_by_keyboard_with_named_controls(browser, lab, path):  # noqa:
         assert not failing, f"{path.name}: serious or critical axe violations in its explorers: {failing}"
         assert not remote, f"{path.name}: requests to another host: {remote}"
     finally:
-        try:
+        with contextlib.suppress(Exception):
             page.evaluate("() => window.jupyterapp.shell.currentWidget.sessionContext.shutdown()")
-        except Exception:
-            pass
         page.close()

@@ -140,7 +140,8 @@ def _piecewise(x, lo, hi):
 def _dh_dd_max():
     # double harmonic: y'y'' = (π³/4)(sin πx − ½ sin 2πx)(cos πx − cos 2πx); its largest magnitude is
     # in the deceleration (x > 2/3, where y'' < 0), found by a bounded search on [2/3, 1]
-    f = lambda x: (PI**3 / 4) * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x)) * (np.cos(PI * x) - np.cos(2 * PI * x))
+    def f(x):
+        return (PI**3 / 4) * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x)) * (np.cos(PI * x) - np.cos(2 * PI * x))
     return -minimize_scalar(f, bounds=(2 / 3, 1.0), method="bounded", options=dict(xatol=1e-12)).fun
 
 

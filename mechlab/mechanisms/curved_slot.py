@@ -255,10 +255,7 @@ def _walk(curve: SlotCurve, g_of: Callable, dg_of: Callable, t_s: float, directi
           what_tangent: str) -> _Segment:
     """From t_s, follow the curve in ``direction`` while g decreases, until g reaches g_target,
     the curve ends, or g' vanishes (the slot is tangent to the level set)."""
-    if curve.periodic:
-        length = curve.t1 - curve.t0
-    else:
-        length = (curve.t1 - t_s) if direction > 0 else (t_s - curve.t0)
+    length = curve.t1 - curve.t0 if curve.periodic else (curve.t1 - t_s if direction > 0 else t_s - curve.t0)
     if length <= 0:
         return _Segment(t_s, direction, 0.0, g_of(np.array([t_s]))[0], np.array([0.0]),
                         g_of(np.array([t_s])), "end")

@@ -241,7 +241,8 @@ def _far_extreme(mech, dwell: float) -> float:
     ref = mech.motion(np.array([np.pi])).psi[0]
     i = int(np.argmax(np.abs(mo.psi - ref)))
     lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, len(phi) - 1)]
-    f = lambda x: mech.motion(np.array([x])).dpsi[0]
+    def f(x):
+        return mech.motion(np.array([x])).dpsi[0]
     if f(lo) * f(hi) > 0:
         return float(phi[i] % TWO_PI)
     return float(brentq(f, lo, hi, xtol=1e-14) % TWO_PI)

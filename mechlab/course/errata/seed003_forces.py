@@ -91,7 +91,8 @@ def _check_mean_torque() -> str:
     losses" is printed as n·η⁻¹·Σ(...) — n must divide, not multiply."""
     model = (model_for(_SC).with_body("crank", mass=2.0, inertia=0.002, com=(0.05, 0.0))
              .with_body("rod", mass=3.0, com=(0.16, 0.0)).with_body("slider", mass=4.0))
-    load = lambda m: np.stack([np.where(m.ds < 0, 2000.0, 0.0), 0.0 * m.s], axis=1)  # pressing on the return stroke
+    def load(m):
+        return np.stack([np.where(m.ds < 0, 2000.0, 0.0), 0.0 * m.s], axis=1)  # pressing on the return stroke
     fine = _SC.turn(7201)
     M_fine = solve(model, _SC.motion(fine), [Force("slider", "B", load)], omega1=30.0).torque
     exact = float(np.trapezoid(M_fine, fine) / (2 * np.pi))
