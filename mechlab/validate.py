@@ -659,7 +659,7 @@ def _field_specs(cls) -> tuple[tuple[str, Spec], ...]:
     if specs is None:
         found = []
         for f in fields(cls):
-            owner = next(k for k in cls.__mro__ if f.name in k.__dict__.get("__annotations__", {}))
+            owner = next(k for k in cls.__mro__ if f.name in inspect.get_annotations(k))
             spec = _spec_of(f.type, vars(sys.modules[owner.__module__]))
             if spec is not None:
                 found.append((f.name, spec))

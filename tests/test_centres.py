@@ -61,7 +61,7 @@ def test_meet_of_crossing_parallel_and_coincident_lines():
     x = meet(line_through(p, q), line_through(t, u))
     assert not x.finite.any() and np.allclose(x.direction, [[2**-0.5, 2**-0.5]] * n)
     with pytest.raises(CentreAtInfinity, match="lies at infinity"):
-        x.xy
+        _ = x.xy
     assert x.masked().mask.all()
     # a point at infinity joins a finite one into the line through it in that direction
     vertical = line_through(p, at_infinity((0.0, -1.0), n))

@@ -65,13 +65,13 @@ def test_symmetry_axis_makes_pi_minus_half_delta_with_CO(m):
 
 
 def test_rotation_conditions_and_bad_input():
-    with pytest.raises(RotationError, match="r = 0.9 ≥ a = 0.8 .*double crank"):
+    with pytest.raises(RotationError, match=r"r = 0.9 ≥ a = 0.8 .*double crank"):
         LambdaMechanism(0.9, 0.8, np.pi)
-    with pytest.raises(RotationError, match="r \\+ a = 2.1 ≥ 2"):
+    with pytest.raises(RotationError, match=r"r \+ a = 2.1 ≥ 2"):
         LambdaMechanism(0.6, 1.5, np.pi)
     with pytest.raises(DimensionError):
         LambdaMechanism(-0.1, 0.8, np.pi)
-    with pytest.raises(MechanismError, match="delta must be < 6.28319 rad"):
+    with pytest.raises(MechanismError, match=r"delta must be < 6.28319 rad"):
         LambdaMechanism(0.3, 0.8, 7.0)
     r, a = rotation_boundary()
     assert np.allclose(np.minimum(a, 2 - a), r)
@@ -162,11 +162,11 @@ def test_fifth_order_contact():
 
 
 def test_infeasible_requests_raise_named_errors():
-    with pytest.raises(SynthesisError, match="spans a ∈ \\(0, 1.218\\) only"):
+    with pytest.raises(SynthesisError, match=r"spans a ∈ \(0, 1.218\) only"):
         circle_guiding(150 * DEG, 1.5, 120 * DEG)
-    with pytest.raises(SynthesisError, match="spans a ∈ \\(1, 1.732\\) only"):
+    with pytest.raises(SynthesisError, match=r"spans a ∈ \(1, 1.732\) only"):
         circle_guiding(240 * DEG, 0.9, 120 * DEG)
-    with pytest.raises(SynthesisError, match="longest dwell this frame allows is 2α = 316.7[0-9]+°, where the crank reaches the rotation limit r = min.a, 2 − a. = 0.65 "):
+    with pytest.raises(SynthesisError, match=r"longest dwell this frame allows is 2α = 316.7[0-9]+°, where the crank reaches the rotation limit r = min.a, 2 − a. = 0.65 "):
         circle_guiding(240 * DEG, 1.35, 340 * DEG)
     with pytest.raises(SynthesisError, match="no straight-line"):
         straight_guiding(150 * DEG, 0.9, 120 * DEG)
@@ -179,7 +179,7 @@ def test_infeasible_requests_raise_named_errors():
         existence_map(np.pi, n=10**6)
     with pytest.raises(DimensionError, match="maxiter"):
         thesis_iteration(np.pi, 0.8, np.pi, maxiter=0)
-    with pytest.raises(SynthesisError, match="a = 2.5 ≥ 2"):
+    with pytest.raises(SynthesisError, match=r"a = 2.5 ≥ 2"):
         circle_guiding(np.pi, 2.5, 1.0)
     with pytest.raises(MechanismError, match="dwell"):
         circle_guiding(np.pi, 0.8, 7.0)
@@ -329,7 +329,7 @@ def test_a_straight_band_is_kappa_zero_and_the_minimax_straight_line():
     straight = g.__class__(g.delta, g.a, g.dwell, g.r, 0.0, g.t3, g.t2)
     assert straight.straight and straight.kappa == 0 and np.inf == straight.R and abs(straight.E - g.E) < 1e-12
     with pytest.raises(SynthesisError, match="straight"):
-        straight.centre
+        _ = straight.centre
     # four alternations on the half dwell: it is also the minimax straight line of that dwell
     s = straight_guiding(120 * DEG, 0.5, dw0 * DEG)
     assert abs(s.r - g.r) < 1e-7 and abs(s.E - g.E) < 1e-9
@@ -509,7 +509,7 @@ def _check_outcome(delta, a, dwell):
         elif err.kind == "whole turn":
             assert dwell == 360 and not ev["span"][0] <= a <= ev["span"][1]
         else:
-            raise AssertionError(f"unexpected refusal {err.kind!r}: {err}")
+            raise AssertionError(f"unexpected refusal {err.kind!r}: {err}") from err
         return err.kind
     assert process_time() - t0 < 1.0
     rho = _sim_band(delta * DEG, a, g.r, g.k, dwell * DEG)

@@ -82,7 +82,7 @@ def test_mchv2_slider_equals_an_independent_circle_line_solve(guide):
     D = guide.mechanism.coupler_point(phi)
     got = six.motion(phi).s
     for k, (d, s_lib) in enumerate(zip(D, got, strict=False)):
-        f = lambda s: np.hypot(*(six.Q + s * six.u - d)) - six.rod  # noqa: E731
+        f = lambda s, d=d: np.hypot(*(six.Q + s * six.u - d)) - six.rod  # noqa: E731
         w = (d - six.Q) @ six.u
         # bracket the root on the assembly's side of the foot of D on the guide
         lo, hi = (w, w + 2 * six.rod) if six.assembly > 0 else (w - 2 * six.rod, w)

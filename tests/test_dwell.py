@@ -228,7 +228,7 @@ def test_cubic_dwell_window_puts_the_limit_at_both_slot_ends(lam, limit_deg):
 
 
 def test_cubic_dwell_window_refuses_when_no_dwell_is_left():
-    with pytest.raises(DwellIntervalError, match="no dwell is left for λ = 2.5"):
+    with pytest.raises(DwellIntervalError, match=r"no dwell is left for λ = 2.5"):
         cubic_dwell_window(2.5, np.radians(70.0))
     with pytest.raises(DwellRatioError):
         cubic_dwell_window(1.0, np.radians(60.0))
@@ -338,7 +338,7 @@ def test_rotating_link_dwells_at_a_pressure_angle_of_at_least_90_minus_arcsin():
     from mechlab.synthesis.dwell_slot import arc_pressure_angle
 
     for lam in (1.3, 2.0, 3.5):
-        res = minimize_scalar(lambda x: arc_pressure_angle(lam, x)[0], bounds=(0.0, np.pi), method="bounded",
+        res = minimize_scalar(lambda x, lam=lam: arc_pressure_angle(lam, x)[0], bounds=(0.0, np.pi), method="bounded",
                               options={"xatol": 1e-12})
         assert res.fun == pytest.approx(np.pi / 2 - np.arcsin(1 / lam), abs=1e-9)
         m = curved_slot_dwell(lam, 60 * DEG, 150 * DEG, transition="quintic")

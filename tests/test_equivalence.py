@@ -289,9 +289,9 @@ def test_relative_path_without_a_crank_pin_says_why(mech, words):
 # -- drawings, animation, explorer, exercises and errata of chapters 02-04 -------------------------
 import matplotlib.pyplot as plt  # noqa: E402
 
-from mechlab.draw import drawing_class
-from mechlab.draw.curved_slot import animate_equivalence, plot_against_base
-from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, TranslatingCurvedSlot
+from mechlab.draw import drawing_class  # noqa: E402  this section's imports open it
+from mechlab.draw.curved_slot import animate_equivalence, plot_against_base  # noqa: E402
+from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, TranslatingCurvedSlot  # noqa: E402
 
 
 def _slot_distance_to_pin(drawing, i):

@@ -60,7 +60,7 @@ def test_every_check_fails_when_the_value_it_guards_is_perturbed(e):
         return
     mutations = list(_mutations(out))
     assert mutations, "no entry of the printed expression misses the truth"
-    for i, m in mutations:
+    for _i, m in mutations:
         with pytest.raises(AssertionError, match="misses the truth"):
             replace(out, correct=m)
 

@@ -525,7 +525,7 @@ def test_guide_friction_self_locks_where_f_tan_beta_exceeds_one():
     f, P = 0.5, 500.0
     model = model_for(sc).with_friction(f, 0.0, pairs=["guide"])
     load = [Force("slider", "B", (-P, 0.0))]
-    with pytest.raises(SelfLockingError, match="φ = 270.00°"):
+    with pytest.raises(SelfLockingError, match=r"φ = 270.00°"):
         solve(model, sc.motion(np.radians([270.0])), load, omega1=7.0, gravity=(0.0, 0.0))
     mo = sc.motion(np.radians([90.0]))
     res = solve(model, mo, load, omega1=7.0, gravity=(0.0, 0.0))
@@ -775,8 +775,8 @@ def test_audit_friction_vanishes_linearly_and_efficiency_tends_to_one(data, mech
     for f in (1e-3, 1e-4):
         try:
             results[f] = solve(model.with_friction(f, r), mo, loads, omega1=w, eps1=e)
-        except SelfLockingError:   # cannot happen at these f unless a dead point is within reach
-            raise AssertionError(f"self-locking at f = {f} on {mech}")
+        except SelfLockingError as err:   # cannot happen at these f unless a dead point is within reach
+            raise AssertionError(f"self-locking at f = {f} on {mech}") from err
     for f, res in results.items():
         eta = res.efficiency()
         assert np.all(eta.filled(0.0) <= 1.0 + 1e-12)

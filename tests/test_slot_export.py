@@ -102,7 +102,7 @@ def test_read_dxf_gives_back_what_write_dxf_wrote(mech, tmp_path):
 def test_read_dxf_names_a_file_that_is_no_slot(tmp_path):
     from mechlab import CamProgramme, TranslatingRollerCam, write_cam_dxf
 
-    with pytest.raises(DimensionError, match="path = .*missing.dxf.* not a file"):
+    with pytest.raises(DimensionError, match=r"path = .*missing.dxf.* not a file"):
         read_dxf(tmp_path / "missing.dxf")
     (tmp_path / "text.dxf").write_text("not a drawing")
     with pytest.raises(DimensionError, match="not a readable DXF"):

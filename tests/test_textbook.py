@@ -135,7 +135,7 @@ def test_link_angle_refuses_unknown_and_coincident_joints():
     with pytest.raises(ml.SingularityError, match="O and O coincide"):
         mo.link_angle("O", "O")
     with pytest.raises(ml.DimensionError, match="not an angle"):
-        ml.SliderCrank(1, 3).motion(0.0).output.degrees
+        _ = ml.SliderCrank(1, 3).motion(0.0).output.degrees
 
 
 def test_law_repr_reads_in_degrees():
@@ -179,7 +179,7 @@ def test_nearest_assembly_picks_the_branch_of_the_sketch():
         assert ml.nearest_assembly(fb, phi, B=sketch).assembly == sign
     sc = ml.SliderCrank(1, 3, 0.5)
     assert ml.nearest_assembly(sc, 0.3, B=(-3.0, 0.5)).assembly == -1
-    with pytest.raises(ml.DimensionError, match="'Q'.*not joints"):
+    with pytest.raises(ml.DimensionError, match=r"'Q'.*not joints"):
         ml.nearest_assembly(fb, phi, Q=(0, 0))
     with pytest.raises(ml.DimensionError, match="has no assembly"):
         ml.nearest_assembly(ml.SineMechanism(1), phi, B=(0, 0))

@@ -21,13 +21,13 @@ JupyterLab's own interface is left out (it is not the course's content).
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 
 import pytest
 from conftest import ROOT, block_remote
 from test_lab import _READY_JS, _STATE_JS, NOTEBOOKS, SHOTS, lab  # noqa: F401  (the same lab)
-import contextlib
 
 AXE_JS = os.environ.get("AXE_JS") or str(ROOT / ".axe-deps" / "node_modules" / "axe-core" / "axe.min.js")
 AXE_TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "best-practice"]

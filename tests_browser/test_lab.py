@@ -15,6 +15,7 @@ PID. A screenshot of each notebook is saved under book/_build/screenshots/.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import secrets
@@ -57,7 +58,7 @@ def lab():
     port = free_port()
     env = dict(os.environ, JUPYTER_RUNTIME_DIR=str(tmp / "runtime"), JUPYTER_CONFIG_DIR=str(tmp / "config"),
                IPYTHONDIR=str(tmp / "ipython"), MPLBACKEND="module://matplotlib_inline.backend_inline")
-    log = open(tmp / "lab.log", "w")
+    log = open(tmp / "lab.log", "w")  # noqa: SIM115  JupyterLab writes it until the finally below closes it
     proc = subprocess.Popen(
         course.lab_argv(Path(sys.executable), root, port)
         + ["--ServerApp.port_retries=0", f"--IdentityProvider.token={token}", "--LabApp.expose_app_in_browser=True",
@@ -274,10 +275,8 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         assert not page_errors, f"{path.name}: page errors: {page_errors}"
         assert not remote, f"{path.name}: requests to another host: {remote}"
     finally:
-        try:  # free the kernel's memory and CPU for the next notebook
+        with contextlib.suppress(Exception):  # free the kernel's memory and CPU for the next notebook
             page.evaluate("() => window.jupyterapp.shell.currentWidget.sessionContext.shutdown()")
-        except Exception:
-            pass
         page.close()
     # the copy was used, never the tracked notebook
     assert json.loads(path.read_text())["cells"][0].get("outputs", []) == []

@@ -342,7 +342,7 @@ def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
     if not run:  # an approximate dwell: the near-standstill is the dwell the rise starts from
         start, run = near, near_run
     # residual over the asked dwell, centred on the achieved one
-    want = int(round(spec.dwell_fraction * SAMPLES))
+    want = round(float(spec.dwell_fraction * SAMPLES))
     centre = start + run // 2
     idx = np.arange(centre - want // 2, centre - want // 2 + want)
     # the unwrapped output at any sample k: x[k mod n] + shift·⌊k/n⌋

@@ -274,7 +274,7 @@ def disc_cam(spec: Specification) -> Design:
             reasons.append(f"roller {roller:g} r_b: even r_b = {hi:.4g} mm leaves the pressure angle above "
                            f"{np.degrees(spec.max_pressure_angle):.1f}°")
             continue
-        rb = lo if excess(lo, roller) <= 0 else brentq(lambda r: excess(r, roller), lo, hi, xtol=1e-6 * hi)
+        rb = lo if excess(lo, roller) <= 0 else brentq(lambda r, roller=roller: excess(r, roller), lo, hi, xtol=1e-6 * hi)
         rb *= 1 + 1e-4  # just inside the limit
         cam = build(rb, roller)
         cut = cam.undercut()

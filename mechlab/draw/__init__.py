@@ -33,7 +33,7 @@ from PIL import Image
 from ..errors import MechanismError
 from ..mechanisms.base import FRAME, Mechanism
 from ..motion import Motion
-from .access import CATEGORY_COLOURS, OKABE_ITO, alt_text, category_style, install_alt_text, set_alt
+from .access import CATEGORY_COLOURS, OKABE_ITO, alt_text, category_style, set_alt
 
 # Okabe and Ito's colour-blind-safe colours for every "C0", "C1", ... and every default line colour
 mpl.rcParams["axes.prop_cycle"] = mpl.cycler(color=list(CATEGORY_COLOURS))
@@ -366,7 +366,7 @@ class LinkageDrawing:
             text.xy = p
             text.set_position(LETTER_OFFSET * away)
         parts = self.numbered_parts(i)
-        for k, (text, part, spec) in enumerate(zip(self.numbers, parts, self.numbered, strict=False)):
+        for text, part, spec in zip(self.numbers, parts, self.numbered, strict=False):
             where, normal = _label_anchor(part, centre)
             text.set_text(str(self.link_numbers[spec.number]))
             text.xy = where

@@ -78,10 +78,8 @@ class ComparisonFigure:
             x = np.asarray(c.design.mechanism.motion(c.design.phase + phi).output.value, float)
             scale = 1.0 if comparison.spec.rotary else c.design.scale
             x = (x - x[0]) * scale / comparison.spec.amplitude
-            if comparison.spec.motion == "index":
-                x = x * np.sign(x[-1])  # a table indexing clockwise rises too
-            else:
-                x = x - x.min()
+            # a table indexing clockwise rises too
+            x = x * np.sign(x[-1]) if comparison.spec.motion == "index" else x - x.min()
             curve.set_data(np.degrees(phi), x)
         self.laws.relim()
         self.laws.autoscale_view(scalex=False)

@@ -266,7 +266,6 @@ def packaging_line(ax=None):
     u = np.array([np.cos(arm), np.sin(arm)])
     tip = B + 1.6 * u
     ax.plot(*np.array([B, tip]).T, color="#1f4e79", lw=3, zorder=3)
-    n = np.array([-u[1], u[0]])
     ax.plot(*np.array([tip - 0.05 * u, tip + 0.3 * u]).T, color="#1f4e79", lw=7, zorder=3)
     belt_y = tip[1] + 0.3 * u[1] - 0.12
     x0, x1 = B[0] - 1.6, B[0] + 2.4

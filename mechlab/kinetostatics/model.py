@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import Annotated, Any
+from typing import Annotated, Any, ClassVar
 
 import numpy as np
 
@@ -73,7 +73,7 @@ JournalRadius = Annotated[float, number(0.0, error=FrictionError)]
 class _Labelled(Checked):
     """Messages name a parameter with its owner: "mass of coupler", "friction coefficient of O"."""
 
-    _WORDS = {"inertia": "moment of inertia", "com": "centre of mass (com)", "friction": "friction coefficient",
+    _WORDS: ClassVar[dict[str, str]] = {"inertia": "moment of inertia", "com": "centre of mass (com)", "friction": "friction coefficient",
               "radius": "journal radius", "angle": "guide angle", "normal": "normal angle"}
 
     def _label(self, field: str) -> str:

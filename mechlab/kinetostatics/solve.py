@@ -680,7 +680,7 @@ def solve(model: AnyModel, motion: AnyMotion, loads: Loads = (), omega1: Omega =
     if rough:
         dirs = directions(force, normal, {})
         flips = {p.name: np.zeros(n, int) for p in rough}
-        for iterations in range(2, maxiter + 2):
+        for iterations in range(2, maxiter + 2):  # noqa: B007  the count is named in the error below
             force, couple, normal, fric, torque = pass_(dirs)
             # consistent when the linearisation is exact: ê·R = |R| and sgn(N)·N = |N|
             bad = np.zeros(n, bool)

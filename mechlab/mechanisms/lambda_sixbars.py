@@ -91,7 +91,7 @@ class LambdaRockerSixBar(Mechanism):
 
     def __post_init__(self):
         super().__post_init__()
-        self.base  # validates r, a, δ (full rotation)
+        _ = self.base  # validates r, a, δ (full rotation)
         # the dyad D-E-F must close over the whole turn
         D = self.base.coupler_point(np.linspace(0, TWO_PI, 1441))
         dist = np.hypot(*(D - self.F).T)
@@ -289,7 +289,7 @@ class LambdaSlottedSixBar(Mechanism):
 
     def __post_init__(self):
         super().__post_init__()
-        self.base
+        _ = self.base  # validates r, a, δ
         D = self.base.coupler_point(np.linspace(0, TWO_PI, 2881))
         rho = np.hypot(*(D - self.P).T)
         if abs(self.offset) > 0 and rho.min() <= abs(self.offset):

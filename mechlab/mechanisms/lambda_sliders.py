@@ -107,7 +107,7 @@ class LambdaSliderSixBar(_OnLambda):
 
     def __post_init__(self):
         super().__post_init__()
-        self.base  # validates r, a, δ (the crank turns fully)
+        _ = self.base  # validates r, a, δ (the crank turns fully)
         off = np.abs(self.offsets(_CHECK))
         i = int(np.argmax(off))
         if off[i] >= self.rod * (1 - 1e-9):
@@ -332,7 +332,7 @@ class LambdaTranslatingSlot(_OnLambda):
 
     def __post_init__(self):
         super().__post_init__()
-        self.base
+        _ = self.base  # validates r, a, δ
         if abs(self._sin) < 1e-3:
             raise MechanismError(
                 f"the output's guide ({np.degrees(self.guide):.4g}°) is parallel to its slot "

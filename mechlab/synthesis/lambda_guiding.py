@@ -730,7 +730,8 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
             return whole_turn_guiding(delta, a, _whole_turn_cached(delta))
         except SynthesisError as err:
             line = _whole_turn_cached(delta)
-            raise NoDesignError(f"{where}: {err}", "whole turn", span=(float(line.a.min()), float(line.a.max())))
+            raise NoDesignError(f"{where}: {err}", "whole turn",
+                                span=(float(line.a.min()), float(line.a.max()))) from err
     if guess is not None:
         g, _ = _solve_circle(delta, a, dwell, np.asarray(guess, dtype=float))
         if g is not None:
@@ -925,7 +926,7 @@ def _extremes(r, a, delta, alpha, n=201):
     out = [(0.0, xs[0]), (alpha, xs[-1])]
     for j in _interior_extrema(xs, ts):
         sign = 1.0 if xs[j] > xs[j - 1] else -1.0  # a maximum: minimise −x
-        res = minimize_scalar(lambda t: -sign * _axis_x(r, a, delta, t)[0], bounds=(ts[j - 1], ts[j + 1]),
+        res = minimize_scalar(lambda t, sign=sign: -sign * _axis_x(r, a, delta, t)[0], bounds=(ts[j - 1], ts[j + 1]),
                               method="bounded", options=dict(xatol=1e-13))
         out.append((float(res.x), -sign * float(res.fun)))
     return sorted(out)
@@ -1483,7 +1484,7 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
               for w in np.atleast_1d(check_value("dwells", dwells, Spec("reals")))]
     line = whole_turn_line(delta)
     mu = transmission_lines()
-    iso = {int(round(np.degrees(w))): _iso_dwell(delta, w, n) for w in dwells}
+    iso = {round(float(np.degrees(w))): _iso_dwell(delta, w, n) for w in dwells}
     return ExistenceMap(rotation_boundary(), fifth_order_line(delta)[:2], (line.r, line.a), line,
                         existence_region(delta, line), mu.mu_min, mu.mu_max, iso)
 

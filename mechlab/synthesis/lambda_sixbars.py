@@ -46,6 +46,9 @@ from .lambda_guiding import CircleGuide, StraightGuide, straight_guiding
 
 # A time ratio K (> 0), the working limit μ_min of a transmission angle (None: no limit), the guides
 MIN_SWING = 1e-6  # radians: a smaller swing β_m overflows the rocker's design
+# the grids mchv3_full_turn_best searches by default: the pivot's step beyond the guide and its depth (units of l)
+BEYONDS = np.arange(0.0, 0.5001, 0.005)
+DEPTHS = np.arange(0.005, 0.2001, 0.005)
 TimeRatio = Annotated[float, number(0.0, 1e6, open=True, error=InfeasibleDesignError)]
 MuMin = Annotated[float | None, angle(0.0, np.pi / 2, optional=True)]
 Circle = Annotated[CircleGuide, mechanism(CircleGuide)]
@@ -567,8 +570,7 @@ def slot_residual_first_order(mech: Annotated[LambdaSlottedSixBar, mechanism(Lam
 @validated
 def mchv3_full_turn_best(guide: Straight, side: Sign = 1,
                          max_speed: Annotated[float | None, number(0.0, open=True, optional=True)] = 15.0,
-                         beyonds: Grid = np.arange(0.0, 0.5001, 0.005),
-                         depths: Grid = np.arange(0.005, 0.2001, 0.005)):
+                         beyonds: Grid = BEYONDS, depths: Grid = DEPTHS):
     """МЧВ3-3М with the pivot placed for the smallest residual over the guide's dwell.
 
     Scans the pivot's position (``beyonds`` past the dwell end × ``depths`` into the curve) with the

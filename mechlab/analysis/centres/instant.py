@@ -97,7 +97,7 @@ def centre_model(mechanism, motion: Motion) -> CentreModel:
                                  f"not {', '.join(p.kind for p in held) or 'none'}")
         pin, slot = sorted(held, key=lambda p: p.kind != "revolute")
 
-        def other(p):
+        def other(p, name=name):
             return p.a if p.b == name else p.b
 
         # the slide's direction is fixed in both of its links: the slot's normal is the contact's

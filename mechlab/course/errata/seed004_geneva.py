@@ -72,7 +72,6 @@ def _check_table_z8() -> str:
     a1 = g.acceleration_extreme_alpha()
     p1 = g.position(a1)
     eps_move, at = g.max_acceleration()
-    c = _cells()
     assert a1 > g.alpha0 and p1.theta > g.beta0 and at == g.alpha0
     truth = [abs(eps_move), np.degrees(g.alpha0), np.degrees(g.beta0)]
     # the corrections to their stated digits; the printed values are rounded to two decimals
