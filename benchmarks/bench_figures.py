@@ -75,7 +75,8 @@ def animation_figures(n: int = 24) -> tuple[int, float, float]:
 
 
 def main():
-    print(f"{'explorer':28s} {'live: wall ms':>13s} {'CPU ms':>7s} {'KiB':>5s}   {'inline: wall ms':>15s} {'CPU ms':>7s}")
+    print(f"{'explorer':28s} {'live: wall ms':>13s} {'CPU ms':>7s} {'KiB':>5s}   {'inline: wall ms':>15s} "
+          f"{'CPU ms':>7s}")
     for make in EXPLORERS:
         (lw, lc, lk), (iw, ic, _) = crank_steps_ms(make, True), crank_steps_ms(make, False)
         print(f"{make.__name__:28s} {lw:13.1f} {lc:7.1f} {lk:5.1f}   {iw:15.1f} {ic:7.1f}")

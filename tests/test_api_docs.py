@@ -161,7 +161,7 @@ def test_docstring_sections(module, qualname, obj, exported):
 def test_not_yet_list_is_current():
     """A module leaves NOT_YET when its callables are documented; the list names only API modules."""
     modules = {m for m, _, _, _ in API}
-    assert modules >= NOT_YET, f"not modules of the API: {sorted(NOT_YET - modules)}"
+    assert NOT_YET <= modules, f"not modules of the API: {sorted(NOT_YET - modules)}"
     done = sorted(m for m in NOT_YET if not any(doc_problems(o, e) for mm, _, o, e in API if mm == m))
     assert not done, f"documented now, remove from NOT_YET: {done}"
 

@@ -63,7 +63,7 @@ def test_mchv1_refuses_a_dyad_outside_the_transmission_range_unless_asked(guide)
     assert mchv1(guide, 1.25, 20 * DEG, side=-1, mu_min=25 * DEG) == six
     ok = mchv1(guide, 1.0, 20 * DEG)
     r1 = report(ok, guide.dwell)
-    assert r1.mu2_min >= 30 * DEG and r1.mu2_max <= 150 * DEG
+    assert 30 * DEG <= r1.mu2_min and r1.mu2_max <= 150 * DEG
     with pytest.raises(InfeasibleDesignError, match="outside 45°…135°"):
         mchv1(guide, 1.0, 20 * DEG, mu_min=45 * DEG) if r1.mu2_min < 45 * DEG or r1.mu2_max > 135 * DEG else \
             mchv1(guide, 1.25, 20 * DEG, side=-1, mu_min=45 * DEG)
@@ -81,7 +81,7 @@ def test_mchv1_checks_the_base_four_bars_transmission_angle_too():
         mchv1(g, 1.0, 20 * DEG, mu_min=40 * DEG)
     six = mchv1(g, 1.0, 20 * DEG, mu_min=38 * DEG)   # a limit both four-bars meet
     rep = report(six, g.dwell)
-    assert rep.mu_min == pytest.approx(worst, abs=1e-4) and rep.mu2_min > 40 * DEG and rep.mu2_max < 140 * DEG
+    assert rep.mu_min == pytest.approx(worst, abs=1e-4) and 40 * DEG < rep.mu2_min and rep.mu2_max < 140 * DEG
     assert issubclass(TransmissionAngleError, InfeasibleDesignError)
 
 
@@ -259,7 +259,7 @@ def test_mchv1_random_requests_are_met_or_refused(guide, K, swing, side):
     rep = report(six, guide.dwell)
     assert abs(rep.K - K) < 1e-8
     assert abs(rep.swing - swing * DEG) < 0.02 * swing * DEG + 3 * guide.E / six.rocker
-    assert rep.mu2_min >= 30 * DEG and rep.mu2_max <= 150 * DEG  # the default mu_min
+    assert 30 * DEG <= rep.mu2_min and rep.mu2_max <= 150 * DEG  # the default mu_min
 
 
 def test_mchv3_full_turn_residual_is_first_order_h_over_s_and_inherent_for_180_degrees():
@@ -310,7 +310,8 @@ def test_mchv3_tables_give_each_pivot_its_residual_and_name_their_units():
     assert best.columns == ("dwell", "past", "depth", "residual", "peak_dpsi")   # the mechanism is no column
     row = best.by("dwell")[180]
     m, r = mchv3_full_turn_best(s)
-    assert row.residual == pytest.approx(np.degrees(r)) and row.peak_dpsi <= 15.0 and pytest.approx(m.P) == row.mechanism.P
+    assert row.residual == pytest.approx(np.degrees(r)) and row.peak_dpsi <= 15.0
+    assert row.mechanism.P == pytest.approx(m.P)
     assert 0 < row.past < 0.07 and row.depth > 0 and best.by("dwell")[140].residual < 0.6
     assert all(h.endswith("°") for h in best.headers if "dwell" in h or "residual" in h)
     with pytest.raises(MechanismError):
@@ -341,6 +342,6 @@ def test_mchv1_orients_the_rod_by_the_dwell_so_a_far_extreme_near_the_tangent_de
         assert six.rocker == pytest.approx(1.53705, abs=5e-6)
         assert 2 * six.rocker * np.sin(10 * DEG) == pytest.approx(0.53381, abs=5e-6)
         rep = report(six, guide.dwell)
-        assert pytest.approx(1.0, abs=1e-6) == rep.K and rep.swing == pytest.approx(20 * DEG, rel=0.05)
+        assert rep.K == pytest.approx(1.0, abs=1e-6) and rep.swing == pytest.approx(20 * DEG, rel=0.05)
     with pytest.raises(InfeasibleDesignError, match="transmission angle D-E-F reaches 170"):
         mchv1(guide, 1.0, 20 * DEG)

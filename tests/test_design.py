@@ -118,7 +118,8 @@ def test_a_limit_missed_in_simulation_is_a_refusal_with_its_numbers():
     assert not comp.candidates
     assert "size" in comp.refusals[0].reason and "> 100 mm" in comp.refusals[0].reason
     none = D.Specification("index", 0.75, stations=4, impacts="none")
-    assert "impacts: soft where none at worst are admitted" in D.candidates(none, ["external Geneva"]).refusals[0].reason
+    refusal = D.candidates(none, ["external Geneva"]).refusals[0]
+    assert "impacts: soft where none at worst are admitted" in refusal.reason
 
 
 @pytest.mark.parametrize("z", [3, 4, 6, 8])
@@ -129,8 +130,8 @@ def test_geneva_criteria_agree_with_its_closed_form(z):
     # the index is one rise, from the end of the exact dwell to the start of the next: the rest of the turn
     assert c.dwell_fraction == pytest.approx(g.dwell_fraction, abs=1e-7)
     motion_angle, h = 2 * np.pi * (1 - c.dwell_fraction), 2 * np.pi / z
-    assert pytest.approx(g.max_velocity() * motion_angle / h, rel=2.5e-3) == c.B
-    assert pytest.approx(g.max_acceleration() * motion_angle**2 / h, rel=3e-3) == c.C
+    assert c.B == pytest.approx(g.max_velocity() * motion_angle / h, rel=2.5e-3)
+    assert c.C == pytest.approx(g.max_acceleration() * motion_angle**2 / h, rel=3e-3)
     assert c.impact == "soft" and c.acceleration_jump > 0.01 and c.velocity_jump == 0.0
     assert c.dwell_residual < 1e-3
 
@@ -161,11 +162,11 @@ def test_criteria_reproduce_the_cycloidal_invariants():
     mech = _CycloidalRiseReturn(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
     c = D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1))
     law = law_invariants("cycloidal (sine)")
-    assert (pytest.approx(2.0), pytest.approx(2 * np.pi)) == (law.B, law.C)
+    assert (law.B, law.C) == (pytest.approx(2.0), pytest.approx(2 * np.pi))
     # the rise is measured from where the exact dwell ends (its end refined between samples) up to the top
-    assert pytest.approx((law.B, law.C, law.D), rel=1e-3) == (c.B, c.C, c.D)
+    assert (c.B, c.C, c.D) == pytest.approx((law.B, law.C, law.D), rel=1e-3)
     # no closed-form jerk in this motion: a central difference of x″
-    assert pytest.approx(4 * np.pi**2, rel=3e-3) == c.J
+    assert c.J == pytest.approx(4 * np.pi**2, rel=3e-3)
     assert c.impact == "none"
     # the exact dwell is the stand-in's: a third of the turn
     assert c.dwell_fraction == pytest.approx(1 / 3, abs=1e-6)
@@ -196,11 +197,11 @@ def test_criteria_take_the_jerk_from_the_motions_closed_form():
     # and it is that jerk (scaling it scales J; a central difference of x″ would not follow)
     spec = D.Specification("swing", 1 / 3, amplitude=0.5)
     mech = _CycloidalWithJerk(2 * np.pi * (1 - spec.dwell_fraction), 0.5)
-    assert pytest.approx(4 * np.pi**2,
-                                                                                                 rel=1e-5) == D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J
+    assert D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J == pytest.approx(4 * np.pi**2,
+                                                                                                 rel=1e-5)
     mech.factor = 1.5
-    assert pytest.approx(6 * np.pi**2,
-                                                                                                 rel=1e-5) == D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J
+    assert D.evaluate(mech, spec, scale=1.0, structure=D.Counts(1, 1, 1)).J == pytest.approx(6 * np.pi**2,
+                                                                                                 rel=1e-5)
 
 
 def test_curved_slot_candidate_respects_the_limit_theorem():
@@ -308,7 +309,7 @@ def test_the_cam_candidate_carries_its_law_and_exports_its_profile(motion, ampli
     cand = D.candidates(spec, ["disc cam"]).candidates[0]
     law = law_invariants("cycloidal (sine)")
     c = cand.criteria
-    assert pytest.approx((law.B, law.C, 4 * np.pi**2), rel=1e-5) == (c.B, c.C, c.J)
+    assert (c.B, c.C, c.J) == pytest.approx((law.B, law.C, 4 * np.pi**2), rel=1e-5)
     assert c.dwell_fraction == pytest.approx(0.3, abs=1e-6)
     assert c.pressure_angle <= spec.max_pressure_angle and c.impact == "none"
     # the base circle is the smallest within the limit: 2 % smaller breaks it

@@ -359,7 +359,8 @@ def test_dwell_explorer_gives_the_mechanism_a_column_of_its_proportions():
     across, up = (x1 - x0) / (vx1 - vx0), (y1 - y0) / (vy1 - vy0)
     assert min(across, up) > 0.85 * max(across, up) and max(across, up) > 0.6, (across, up)
     box = ex.ax_mech.get_window_extent()
-    assert box.width / (vx1 - vx0) > 135   # pixels per unit length at the explorer's 80 dpi (110 with the common layout)
+    # pixels per unit length at the explorer's 80 dpi (110 with the common layout)
+    assert box.width / (vx1 - vx0) > 135
     plt.close("all")
 
 @pytest.mark.parametrize("law", [False, True])

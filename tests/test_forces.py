@@ -265,7 +265,8 @@ def _quad_drive(f, a, b, eta, sense=1.0):
     from scipy.optimize import brentq, minimize_scalar
     x = np.linspace(a, b, 2001)
     y = f(x)
-    edges = [a, *[brentq(f, u, v, xtol=1e-15) for u, v, fu, fv in zip(x, x[1:], y, y[1:], strict=False) if fu * fv < 0], b]
+    edges = [a, *[brentq(f, u, v, xtol=1e-15)
+                  for u, v, fu, fv in zip(x, x[1:], y, y[1:], strict=False) if fu * fv < 0], b]
 
     def m(t):
         v = f(t)
@@ -843,7 +844,8 @@ def test_class_iv_drive_puts_the_masses_where_the_chapter_says_in_model_for_fram
          Body("link4", "E", ("E", "R"), mass=3.0, inertia=0.2, com=(0.4, 0.1))),
         (Revolute("O", FRAME, "crank", "O"), Revolute("A", "crank", "link2", "A"),
          Revolute("Q", "link2", "link3", "Q"), Revolute("P", "link2", "link5", "P"),
-         Revolute("R", "link3", "link4", "R"), Revolute("T", "link5", "link4", "T"), Revolute("E", FRAME, "link4", "E")),
+         Revolute("R", "link3", "link4", "R"), Revolute("T", "link5", "link4", "T"),
+         Revolute("E", FRAME, "link4", "E")),
         groups=(("link2", "link3", "link5", "link4"),), crank="crank", pivot="O")
     k = class_iv_drive(omega1=7.0, T=15.0)
     mo = k.motion(k.turn(73))

@@ -400,7 +400,8 @@ def _reference_drive(g, J, w, Mr, eta, k):
 
     grid = np.linspace(-s0, s0, 4001)[1:-1]
     vals = np.array([M1(x) for x in grid])
-    roots = [brentq(M1, a, b, xtol=1e-15) for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:], strict=False) if fa * fb < 0]
+    roots = [brentq(M1, a, b, xtol=1e-15)
+             for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:], strict=False) if fa * fb < 0]
     edges = [-s0, *roots, s0]
     mean = sum(quad(Mm, a, b, epsabs=0, epsrel=1e-12, limit=200)[0] for a, b in itertools.pairwise(edges)) / (2 * np.pi)
     sq = sum(quad(lambda x: Mm(x) ** 2, a, b, epsabs=0, epsrel=1e-12, limit=200)[0]
@@ -501,7 +502,7 @@ def test_impact_detection_and_comparison():
     ext = intermittency(ExternalGeneva(4, 1.0), n=14401)
     assert ext.dwell_fraction == pytest.approx(0.75, abs=2e-4) and ext.index_deg == pytest.approx(90.0)
     assert ext.max_dpsi == pytest.approx(np.sqrt(2) + 1, rel=1e-9)
-    assert pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3) == ext.B
+    assert ext.B == pytest.approx((np.sqrt(2) + 1) * (np.pi / 2) / (np.pi / 2), rel=1e-3)
     shifted = intermittency(ExternalGeneva(4, 1.0), n=14401, phase=0.3)
     assert shifted.dwell_fraction == pytest.approx(0.75, abs=2e-4) and shifted.impact == "soft"
     loose = intermittency(ExternalGeneva(4, 1.0), n=14401, dwell_tol=0.5)
@@ -550,13 +551,13 @@ def test_intermittency_is_the_motion_law_invariants(cls, z):
     phi = np.pi + np.linspace(-s0, s0, 20001)
     mo = g.motion(phi)
     rise = rise_invariants(phi, mo.psi, mo.dpsi, mo.ddpsi)
-    assert pytest.approx(g.max_velocity() * 2 * s0 / h, rel=1e-3) == r.B
-    assert pytest.approx(g.max_acceleration() * (2 * s0) ** 2 / h, rel=2e-3) == r.C
-    assert pytest.approx(rise.values, rel=2e-3) == (r.B, r.C, r.D)
+    assert r.B == pytest.approx(g.max_velocity() * 2 * s0 / h, rel=1e-3)
+    assert r.C == pytest.approx(g.max_acceleration() * (2 * s0) ** 2 / h, rel=2e-3)
+    assert (r.B, r.C, r.D) == pytest.approx(rise.values, rel=2e-3)
     # the one definition: the same samples through invariants give intermittency's numbers exactly
     turn = g.motion(np.linspace(0.0, 2 * np.pi, 14401))
     same = invariants((1 - r.dwell_fraction) * 2 * np.pi, turn.psi[-1] - turn.psi[0], turn.dpsi, turn.ddpsi)
-    assert same.values == (r.B, r.C, r.D)
+    assert (r.B, r.C, r.D) == same.values
 
 # -- exercises and errata -------------------------------------------------------------------------
 
@@ -588,7 +589,8 @@ def test_planar_drawing_matches_the_motion():
             assert dist.max() <= g.outer_radius + 1e-9 and np.isclose(dist.min(), g.slot_bottom - w, rtol=1e-3)
             assert len(outer) == 0
         else:
-            assert np.isclose(dist.max(), g.slot_bottom + w, rtol=1e-3) and np.isclose(dist.min(), g.inner_radius, rtol=1e-9)
+            assert np.isclose(dist.max(), g.slot_bottom + w, rtol=1e-3)
+            assert np.isclose(dist.min(), g.inner_radius, rtol=1e-9)
             assert np.allclose(np.hypot(*outer.T), g.outer_radius)
         fig, ax = plt.subplots()
         d = drawing_class(g)(ax, g, n=24)

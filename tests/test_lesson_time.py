@@ -95,7 +95,8 @@ def test_an_added_exercise_adds_its_kinds_minutes(kind, heading):
     after = lesson_time.estimate(nb)
     words = lesson_time.prose_counts(text)[0]
     assert after.exercises == {kind: 1}
-    assert after.exact - before.exact == pytest.approx(lesson_time.EXERCISE[kind] + words / lesson_time.WORDS_PER_MINUTE)
+    expected = lesson_time.EXERCISE[kind] + words / lesson_time.WORDS_PER_MINUTE
+    assert after.exact - before.exact == pytest.approx(expected)
 
 
 def test_what_is_no_exercise_and_what_costs_nothing():

@@ -138,7 +138,8 @@ def test_design_counts_come_from_the_structure():
     expected = {"external Geneva": (2, 2, 2), "internal Geneva": (2, 2, 2), "spherical Geneva": (2, 2, 2),
                 "curved slot": (3, 3, 1),
                 "disc cam": (3, 3, 1), "lambda six-bar, type 1 (rocker dwell)": (5, 7, 0),
-                "lambda six-bar, type 2 (slider dwell)": (5, 7, 0), "lambda six-bar, type 3 (half-turn index)": (5, 7, 0),
+                "lambda six-bar, type 2 (slider dwell)": (5, 7, 0),
+                "lambda six-bar, type 3 (half-turn index)": (5, 7, 0),
                 "lambda six-bar, type 5 (translating-slot dwell)": (5, 7, 0)}
     for name, counts in expected.items():
         if name in seen:

@@ -173,7 +173,8 @@ def test_no_named_tuple_class_in_the_library():
             continue   # they import the plotting stack; they define no results
         module = importlib.import_module(info.name)
         found += [f"{info.name}.{k}" for k, v in vars(module).items()
-                  if inspect.isclass(v) and v.__module__ == info.name and issubclass(v, tuple) and hasattr(v, "_fields")]
+                  if inspect.isclass(v) and v.__module__ == info.name and issubclass(v, tuple)
+                  and hasattr(v, "_fields")]
     assert found == []
 
 

@@ -150,7 +150,8 @@ def test_explorers_by_keyboard_with_named_controls(browser, lab, path):  # noqa:
         report["axe_explorers"] = violations
         FOUND[path.stem] = report
         SHOTS.mkdir(parents=True, exist_ok=True)
-        counts = {where: {impact: sum(len(v["nodes"]) for r in FOUND.values() for v in r[where] if v["impact"] == impact)
+        counts = {where: {impact: sum(len(v["nodes"]) for r in FOUND.values() for v in r[where]
+                                      if v["impact"] == impact)
                           for impact in ("critical", "serious", "moderate", "minor")}
                   for where in ("axe", "axe_explorers")}
         (SHOTS / "a11y_lab.json").write_text(json.dumps({"chapters": len(FOUND), "nodes by impact, every output":

@@ -304,7 +304,7 @@ CLIPPING_PAGE = """<style>
   <div class="widget-slider"><label class="widget-label" id="inner"><span>pressure angle ≤ (deg) at the end</span></label></div>
   <div class="widget-slider"><label class="widget-label" id="inpad">pressure angle ≤ (deg)</label></div>
   <div class="widget-slider"><label class="widget-label" id="fits">crank angle φ (deg)</label></div>
-</div>"""
+</div>"""  # noqa: E501  one element a line, as the widgets draw it: no white space inside a label
 # sizes two labels around their text: "inpad" 4 px short of it (the text runs into the 8 px padding and
 # the ellipsis cuts it), "fits" 4 px more than it needs; returns scrollWidth and clientWidth of each label
 _SIZE_AROUND_TEXT_JS = """() => {

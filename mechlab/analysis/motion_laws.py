@@ -168,7 +168,8 @@ def _trapezoid_half(u):
     s, c = np.sin(_W * r), np.cos(_W * r)
     flat = (y1 + C / _W * t + C * t**2 / 2, C / _W + C * t, C + 0 * u, 0 * u)
     fall = (y2 + v2 * r + C / _W**2 * (1 - c), v2 + C / _W * s, C * c, -C * _W * s)
-    return [np.select([u <= 1 / 8, u <= 3 / 8], [a, b], f) for a, b, f in zip(_sine_start(u, C), flat, fall, strict=False)]
+    return [np.select([u <= 1 / 8, u <= 3 / 8], [a, b], f)
+            for a, b, f in zip(_sine_start(u, C), flat, fall, strict=False)]
 
 
 def _sine_half(u):

@@ -317,8 +317,8 @@ class Comparison:
 
 
 @validated
-def candidates(spec: AnySpecification, families: Annotated[tuple | None, Spec("items", expected=str, optional=True)] = None
-               ) -> Comparison:
+def candidates(spec: AnySpecification,
+               families: Annotated[tuple | None, Spec("items", expected=str, optional=True)] = None) -> Comparison:
     """Synthesise a design of every family (or of ``families``, names of :data:`FAMILIES`) for ``spec``.
 
     Each design is simulated and judged by :func:`~mechlab.design.criteria.evaluate`; a family

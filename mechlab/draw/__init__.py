@@ -282,7 +282,8 @@ class LinkageDrawing:
             self.note = ax.text(0.02, 0.95, "", transform=ax.transAxes, **NOTE_STYLE)
         roles = [*(("link", p.role) for p in self.bars), *(("extra", p.role) for p in self.drawn),
                  *(("fill", "fill") for _ in self.filled)]
-        artists = [*self.link_lines[:len(self.bars)], *self.extra_lines[:len(self.drawn)], *self.fills[:len(self.filled)]]
+        artists = [*self.link_lines[:len(self.bars)], *self.extra_lines[:len(self.drawn)],
+                   *self.fills[:len(self.filled)]]
         for artist, (kind, role) in zip(artists, roles, strict=False):
             if self._roles.get(artist) != role:   # restyled only when its role changes
                 default = LINK_STYLE if kind == "link" else EXTRA_STYLE
@@ -681,7 +682,8 @@ def animate_together(mechanisms, titles=(), n: int = 24, interval: int = 150, tr
     def frame(i):
         return [artist for drawing in drawings for artist in drawing.set_frame(i)]
 
-    names = [title or _kind_words(mech) for mech, title in zip(mechanisms, list(titles) + [None] * len(mechanisms), strict=False)]
+    names = [title or _kind_words(mech)
+             for mech, title in zip(mechanisms, list(titles) + [None] * len(mechanisms), strict=False)]
     set_alt(fig, f"{len(mechanisms)} kinematic diagrams side by side, moving in step over one cycle: "
             + "; ".join(names) + ".")
     anim = Animation(fig, frame, frames=n, interval=interval, blit=False)
@@ -783,7 +785,8 @@ def plot_cam_laws(names=None, n: int = 401):
     for name in names:
         for ax, y in zip(axes, LAWS[name](x), strict=False):
             ax.plot(x, y, label=name)
-    for ax, label in zip(axes, ("lift Y (fraction of h)", "velocity analog Y′", "acceleration analog Y″"), strict=False):
+    labels = ("lift Y (fraction of h)", "velocity analog Y′", "acceleration analog Y″")
+    for ax, label in zip(axes, labels, strict=False):
         ax.set_xlabel("x = φ / Φ (fraction of the rise)")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
@@ -903,7 +906,8 @@ def plot_design_outcomes(maps):
     panels = []
     for m in maps:
         kinds, counts = np.unique(m.kind, return_counts=True)
-        tally = ", ".join(f"{c} {OUTCOME_STYLE[k][2]}" for k, c in sorted(zip(kinds, counts, strict=False), key=lambda kc: -kc[1]))
+        tally = ", ".join(f"{c} {OUTCOME_STYLE[k][2]}"
+                          for k, c in sorted(zip(kinds, counts, strict=False), key=lambda kc: -kc[1]))
         panels.append(f"δ = {np.degrees(m.delta):.0f}°: {tally}")
     return set_alt(fig, f"Outcome map of {m.kind.size} design requests per panel, frame a against dwell 2α, each "
                    f"marked by what the design returned (a marker shape per kind). {'; '.join(panels)}.")

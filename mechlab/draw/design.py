@@ -42,7 +42,8 @@ class ComparisonFigure:
         self._angles = np.append(angles, angles[0])
         self.radar.set_xticks(angles, [label for _, label in SPOKES], fontsize=9)
         self.radar.tick_params(axis="x", pad=10)
-        for text, angle in zip(self.radar.get_xticklabels(), angles, strict=False):   # each label outward of its spoke's end
+        # each label outward of its spoke's end
+        for text, angle in zip(self.radar.get_xticklabels(), angles, strict=False):
             c = np.cos(angle)
             text.set_horizontalalignment("left" if c > 0.2 else "right" if c < -0.2 else "center")
         self.radar.set_ylim(0.0, 1.05)

@@ -68,7 +68,8 @@ class ForcePlanDrawing:
                                      zorder=5)
         for old in getattr(self, "_keys", []):
             old.remove()
-        self._keys = [self.ax.plot([], [], color=c, lw=3, label=f"R {k}")[0] for k, c in zip(names, colours, strict=False)]
+        self._keys = [self.ax.plot([], [], color=c, lw=3, label=f"R {k}")[0]
+                      for k, c in zip(names, colours, strict=False)]
         self.ax.legend(handles=self._keys, loc="lower right", fontsize=8, framealpha=0.7)
         self.set_frame(0)
         return motion
@@ -82,7 +83,8 @@ class ForcePlanDrawing:
         self.quiver.set_UVC(uv[:, 0], uv[:, 1])
         u = self.force_unit
         self.text.set_text(f"φ = {np.degrees(self.result.phi[i]):.0f}°   M_b = {self.result.torque[i]:.3g} {u}·m\n"
-                           + "  ".join(f"|R {k}| = {r.magnitude[i]:.3g} {u}" for k, r in zip(self.names, R, strict=False)))
+                           + "  ".join(f"|R {k}| = {r.magnitude[i]:.3g} {u}"
+                                       for k, r in zip(self.names, R, strict=False)))
         return self.artists
 
     @property

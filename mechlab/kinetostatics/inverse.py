@@ -60,8 +60,8 @@ def _per_angle(name: str, values, phi) -> None:
 
 
 @validated
-def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model = None, loads: Loads = (), omega1: Omega = 1.0,
-                  eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ma.MaskedArray:
+def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model = None, loads: Loads = (),
+                  omega1: Omega = 1.0, eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ma.MaskedArray:
     """The load Q on the mechanism's output (its :attr:`~mechlab.motion.Motion.output` coordinate) that the
     driving torque ``torque`` balances at crank angles ``phi``: Q = (M₀ − M)·θ′/q′.
 
@@ -108,8 +108,8 @@ def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model 
 
 
 @validated
-def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model = None, loads: Loads = (), omega1: Omega = 1.0,
-                    eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ndarray:
+def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model = None, loads: Loads = (),
+                    omega1: Omega = 1.0, eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ndarray:
     """The driving torque curve M(φ) = M₀ − Q·q′/θ′ that balances the load ``load`` (Q) on the mechanism's
     output, with the other loads, at crank angles ``phi`` (the forward problem of :func:`balanced_load`).
 

@@ -73,8 +73,9 @@ JournalRadius = Annotated[float, number(0.0, error=FrictionError)]
 class _Labelled(Checked):
     """Messages name a parameter with its owner: "mass of coupler", "friction coefficient of O"."""
 
-    _WORDS: ClassVar[dict[str, str]] = {"inertia": "moment of inertia", "com": "centre of mass (com)", "friction": "friction coefficient",
-              "radius": "journal radius", "angle": "guide angle", "normal": "normal angle"}
+    _WORDS: ClassVar[dict[str, str]] = {
+        "inertia": "moment of inertia", "com": "centre of mass (com)", "friction": "friction coefficient",
+        "radius": "journal radius", "angle": "guide angle", "normal": "normal angle"}
 
     def _label(self, field: str) -> str:
         return field if field == "name" else f"{self._WORDS.get(field, field)} of {self.name}"
@@ -330,7 +331,8 @@ class ForceModel(Checked):
         if self.crank not in names:
             raise StructureError(f"crank {self.crank!r} is not a body; bodies: {names}")
         if any(b not in known for b in self.numbering) or len(set(self.numbering)) != len(self.numbering):
-            raise StructureError(f"numbering {self.numbering} must name bodies or the frame, each once; bodies: {names}")
+            raise StructureError(f"numbering {self.numbering} must name bodies or the frame, each once; bodies: "
+                                 f"{names}")
         listed = [b for g in self.groups for b in g] + [self.crank]
         if sorted(listed) != sorted(names):
             raise StructureError(f"every body except the crank must be in exactly one group: groups "

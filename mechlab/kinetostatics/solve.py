@@ -437,7 +437,8 @@ class ForceResult:
             a_drive = np.trapezoid(w * self.torque * s, self.phi)
             a_loss = np.trapezoid(w * self.losses, self.phi)
             if not a_drive * np.sign(self.phi[-1] - self.phi[0]) > 0:
-                raise MechanismError(f"cycle efficiency undefined: the drive's work over the cycle is {a_drive:.4g} ≤ 0")
+                raise MechanismError(f"cycle efficiency undefined: the drive's work over the cycle is {a_drive:.4g} ≤ "
+                                     f"0")
             return float(1.0 - a_loss / a_drive)
         raise ValueError(f"how must be 'mean' or 'work', got {how!r}")
 

@@ -216,7 +216,8 @@ class SampledSlot(SlotCurve):
         seg = np.hypot(*np.diff(pts, axis=0).T)
         if np.any(seg <= 0):
             i = int(np.argmin(seg))
-            raise DimensionError(f"slot samples {i} and {i + 1} coincide: the chord-length parameter needs distinct points")
+            raise DimensionError(f"slot samples {i} and {i + 1} coincide: the chord-length parameter needs distinct "
+                                 f"points")
         t = np.concatenate([[0.0], np.cumsum(seg)])
         from scipy.interpolate import CubicSpline  # imported here: scipy.interpolate is slow to import
 
@@ -945,7 +946,8 @@ class TranslatingCurvedSlot(Mechanism):
         if self.start is None:
             if len(roots) > 1:
                 raise DimensionError(f"the slot crosses the x axis {len(roots)} times (t = "
-                                     + ", ".join(f"{x:.6g}" for x in roots) + "): give start= to say where the pin is at φ = 0")
+                                     + ", ".join(f"{x:.6g}" for x in roots) + "): give start= to say where the pin is "
+                                                                              "at φ = 0")
             t_s = roots[0]
         else:
             t_s = min(roots, key=lambda x: abs(x - float(self.start)))
@@ -985,7 +987,8 @@ class TranslatingCurvedSlot(Mechanism):
     def _range_reason(self) -> str:
         lo, hi = self._y_range()
         if isinstance(self.slot, CircleSlot):
-            return (f"the circular slot spans heights [{lo:.4g}, {hi:.4g}], the pin [{-self.crank:.4g}, {self.crank:.4g}]; "
+            return (f"the circular slot spans heights [{lo:.4g}, {hi:.4g}], the pin [{-self.crank:.4g}, "
+                    f"{self.crank:.4g}]; "
                     f"at its top and bottom the slot is parallel to the guide (pressure angle 90°)")
         return (f"the pin would leave the slot or jam: the usable slot spans heights [{lo:.6g}, {hi:.6g}], "
                 f"the pin needs [{-self.crank:.6g}, {self.crank:.6g}]")
@@ -1196,9 +1199,9 @@ def _slot_in_parameter(path, p, inverse, lo: float, hi: float) -> ParametricSlot
     """The relative path as a slot over its own parameter p ∈ [lo, hi] (the pin's distance from the pivot, or its
     height above the guide), whose value p(φ) reaches lo and hi where the pin reverses on the slot.
 
-    ``path(φ)`` → PointPath (w, w', w'') in φ; ``p(φ)`` → (p, p', p''), ``inverse(p)`` → φ on that half turn. Chain rule:
-    w_p = w'/p', w_pp = (w'' - w_p·p'')/p'²; at a reversal (p' = 0) w_p = w''/p'' (l'Hôpital), and w_pp, which
-    needs the third analog, is set to 0: there the pin's own rate p'(φ) is zero, so it multiplies zero. Past
+    ``path(φ)`` → PointPath (w, w', w'') in φ; ``p(φ)`` → (p, p', p''), ``inverse(p)`` → φ on that half turn.
+    Chain rule: w_p = w'/p', w_pp = (w'' - w_p·p'')/p'²; at a reversal (p' = 0) w_p = w''/p'' (l'Hôpital), and
+    w_pp, which needs the third analog, is set to 0: there the pin's own rate p'(φ) is zero, so it multiplies zero. Past
     the ends the slot runs on along its end tangent (the pin never goes there; the walk along the slot
     needs a crossing of the end circle, not a touch).
     """
@@ -1236,7 +1239,8 @@ def crank_pin(mech: Mechanism) -> tuple[Structure, Pair, Pair]:
     crank = st.input
     base_pair = next((p for p in st.pairs if FRAME in (p.a, p.b) and crank in (p.a, p.b)), None)
     if base_pair is None or base_pair.kind != "revolute" or st.input_rate != 1.0:
-        how = "is not joined to the frame" if base_pair is None else f"is joined to the frame by a {base_pair.kind} pair"
+        how = ("is not joined to the frame" if base_pair is None
+               else f"is joined to the frame by a {base_pair.kind} pair")
         raise DimensionError(f"{name} has no crank turning about a frame pivot (its input, the {crank}, {how}, "
                              f"dθ/dφ = {st.input_rate:g}): no crank pin to follow")
     if st.output == crank:

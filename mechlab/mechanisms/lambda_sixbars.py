@@ -458,7 +458,9 @@ class LambdaSlottedSixBar(Mechanism):
         def bar(i):
             u = np.array([np.cos(psi[i]), np.sin(psi[i])])
             base = P[i] + offset * np.array([-u[1], u[0]])  # the slot is on the left of P for offset > 0
-            return np.array([P[i], base, base + reach * u]) if offset else np.array([P[i] - reach * u, P[i] + reach * u])
+            if offset:
+                return np.array([P[i], base, base + reach * u])
+            return np.array([P[i] - reach * u, P[i] + reach * u])
 
         return replace(sk, parts=sk.parts + (
             Part("output", bar, "output"), Part("extra", lambda i: path),

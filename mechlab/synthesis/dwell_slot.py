@@ -1443,7 +1443,8 @@ def dwell_limit(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2)], 
 
 
 @validated
-def cubic_dwell_window(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2, open=True)]) -> tuple[float, float]:
+def cubic_dwell_window(lam: Ratio,
+                       theta_max: Annotated[float, angle(0.0, np.pi / 2, open=True)]) -> tuple[float, float]:
     """The longest dwell [φ1, φ2] (radians) of the cubic transition whose pressure angle stays ≤ ``theta_max``
     at both slot ends, where the cubic's is largest (chapter 5, from Zinchenko et al. (2013) (21), (23)):
     tan θ(0) = 2(1 + λ)/φ1 and tan θ(π) = 2|1 - λ|/(π - φ2), so φ1 = 2(1 + λ)/tan θ_max and

@@ -760,13 +760,15 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
                 "rotation", dwell_max=top, r_limit=min(a, 2 - a))
         if reach.resolved and reach.dwell < dwell and reach.x[0] > 0.97 * min(a, 2 - a):
             raise NoDesignError(
-                f"{where}: the designs of this frame end at 2α = {np.degrees(reach.dwell):.6g}° (the continuation stops "
+                f"{where}: the designs of this frame end at 2α = {np.degrees(reach.dwell):.6g}° (the continuation "
+                f"stops "
                 f"there, to 0.005°), with the crank r = {reach.x[0]:.6g} next to the rotation limit r = min(a, 2 − a) "
                 f"= {min(a, 2 - a):.6g} (a dead point)", "rotation", dwell_max=reach.dwell, r_limit=min(a, 2 - a))
     if reach is not None and start is None and reach.dwell > dwell:
         why = ("its crank reaches the rotation limit r = a" if reach.x[0] > 0.98 * min(a, 2 - a) else
                "the family of designs from the whole-turn line folds back")
-        raise NoDesignError(f"{where}: above point A designs start at 2α = {np.degrees(reach.dwell):.6g}° (to 0.01°; {why})",
+        raise NoDesignError(f"{where}: above point A designs start at 2α = {np.degrees(reach.dwell):.6g}° (to 0.01°; "
+                            f"{why})",
                             "fold", dwell_min=reach.dwell, r=float(reach.x[0]))
     if start is not None and depth < 3 and (x := _from_inside(delta, a, dwell, depth)) is not None:
         g, _ = _solve_circle(delta, a, dwell, x)

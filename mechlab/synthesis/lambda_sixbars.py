@@ -142,8 +142,8 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
     of F for a given K): +1 (the default) to the left of O1→E1, −1 to the right. The thesis fixes F by
     its figure only; +1 is kept as the default for continuity with earlier results, and the other side
     gives a different mechanism (at (δ, a, 2α) = (180°, 0.5, 240°), K = 1, β_m = 20°, side −1 has B, C, D
-    9 %, 0.6 % and 28 % larger): pass ``side`` to choose, and compare both with :func:`report`. Raises InfeasibleDesignError
-    (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
+    9 %, 0.6 % and 28 % larger): pass ``side`` to choose, and compare both with :func:`report`. Raises
+    InfeasibleDesignError (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
     ``mu_min`` is None — TransmissionAngleError (an InfeasibleDesignError) when the transmission angle
     of the base four-bar or the angle D-E-F of the attached dyad leaves the working range
     [μ_min, 180° − μ_min] over the turn (Kinitsky (1994), §1.8: 30° ≤ μ ≤ 150°, the figure "cnm" of

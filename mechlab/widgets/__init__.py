@@ -421,7 +421,8 @@ class MechanismExplorer(Explorer):
                                                        description="assembly")
         self.play = self._play()
         grid = self.fig.add_gridspec(2, 2, width_ratios=[mechanism_width, 1], left=0.01, right=0.98,
-                                     bottom=0.12 * 4.4 / figsize[1], top=1 - (0.1 if title else 0.03) * 4.4 / figsize[1],
+                                     bottom=0.12 * 4.4 / figsize[1],
+                                     top=1 - (0.1 if title else 0.03) * 4.4 / figsize[1],
                                      wspace=0.28, hspace=0.2)
         self.ax_mech = self.fig.add_subplot(grid[:, 0])
         self.ax_law = self.fig.add_subplot(grid[0, 1])

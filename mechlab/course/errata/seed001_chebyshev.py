@@ -57,7 +57,8 @@ def _dh_power():
     # the truth from the closed form written out here, not from the library's law functions:
     # y = ½[(1 − cos πx) − ¼(1 − cos 2πx)], y' = (π/2)(sin πx − ½ sin 2πx), y'' = (π²/2)(cos πx − cos 2πx)
     x = np.linspace(0, 1, 200001)
-    power = (np.pi**3 / 4) * (np.sin(np.pi * x) - 0.5 * np.sin(2 * np.pi * x)) * (np.cos(np.pi * x) - np.cos(2 * np.pi * x))
+    power = ((np.pi**3 / 4) * (np.sin(np.pi * x) - 0.5 * np.sin(2 * np.pi * x))
+             * (np.cos(np.pi * x) - np.cos(2 * np.pi * x)))
     absmax, signed = np.abs(power).max(), power.max()
     return Claim(absmax, 7.00, 9.89, 0.005,
                  f"max |y'y''| = {absmax:.4f} on 200001 points of the closed form (the definition that reproduces "
