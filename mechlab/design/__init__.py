@@ -13,21 +13,21 @@ from .families import FAMILIES, Design, Unsuitable
 from .spec import Specification, SpecificationError
 
 __all__ = [
-                         "FAMILIES",
-                         "Candidate",
-                         "Comparison",
-                         "Counts",
-                         "Criteria",
-                         "Design",
-                         "LimitVerdict",
-                         "Refusal",
-                         "Specification",
-                         "SpecificationError",
-                         "SpecificationReport",
-                         "Unsuitable",
-                         "candidates",
-                         "check_design",
-                         "evaluate",
+    "FAMILIES",
+    "Candidate",
+    "Comparison",
+    "Counts",
+    "Criteria",
+    "Design",
+    "LimitVerdict",
+    "Refusal",
+    "Specification",
+    "SpecificationError",
+    "SpecificationReport",
+    "Unsuitable",
+    "candidates",
+    "check_design",
+    "evaluate",
 ]
 
 

@@ -17,7 +17,7 @@ from typing import Annotated
 import numpy as np
 from scipy.optimize import brentq
 
-from ..errors import DimensionError, SlotCountError
+from ..errors import DimensionError, OffsetError, SlotCountError  # noqa: F401  OffsetError: re-exported from here
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
 from ..motion import AngularMotion, Quantity, Table, scalar_law
 from ..validate import MAX_SLOTS, Length, check_value, choice, count, length, number
