@@ -17,6 +17,7 @@ the lab needs.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import datetime
 import hashlib
 import json
@@ -313,7 +314,7 @@ def sync(source: Path, work: Path, today: str | None = None) -> list[str]:
         elif offered.get(key) == new:
             pass  # this update was placed beside it by an earlier sync
         else:
-            side = beside_name(rel, today, lambda p: (work / p).exists() and digest(work / p) != new)
+            side = beside_name(rel, today, lambda p, new=new: (work / p).exists() and digest(work / p) != new)
             if not (work / side).exists():
                 copy_file(src, work / side)
             offered[key] = new
@@ -377,10 +378,8 @@ def cmd_lab(args) -> None:
     run_sync(args)
     server = subprocess.Popen(lab_argv(python, Path(args.workdir), args.port))
     while True:
-        try:
+        with contextlib.suppress(KeyboardInterrupt):  # Ctrl-C reaches JupyterLab too, which asks whether to stop
             sys.exit(server.wait())
-        except KeyboardInterrupt:
-            pass  # Ctrl-C reaches JupyterLab too, which asks whether to stop
 
 
 def pytest_beside(python: Path, beside: list[str], chain: list[list[str]]) -> None:

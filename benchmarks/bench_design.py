@@ -33,7 +33,7 @@ def best(f, repeat=5):
 def main():
     print(f"{'specification':32s} {'candidates(spec)':>17s}   per family: synthesis + evaluation (s)")
     for name, spec in SPECS.items():
-        total = best(lambda: D.candidates(spec))
+        total = best(lambda spec=spec: D.candidates(spec))
         parts = []
         for family, designer in D.FAMILIES.items():
             t0 = time.perf_counter()

@@ -23,15 +23,15 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-from mechlab import FourBar  # noqa: E402
-from mechlab.draw import animate, frame_dpi  # noqa: E402
-from mechlab.widgets import fourbar_explorer  # noqa: E402
-from mechlab.widgets.centres import fourbar_centrode_explorer  # noqa: E402
-from mechlab.widgets.chebyshev import mchv1_explorer  # noqa: E402
-from mechlab.widgets.dwell import dwell_explorer  # noqa: E402
-from mechlab.widgets.equivalence import fourbar_equivalence  # noqa: E402
-from mechlab.widgets.forces import press_explorer  # noqa: E402
-from mechlab.widgets.geneva import planar_geneva_explorer, spherical_geneva_explorer  # noqa: E402
+from mechlab import FourBar
+from mechlab.draw import animate, frame_dpi
+from mechlab.widgets import fourbar_explorer
+from mechlab.widgets.centres import fourbar_centrode_explorer
+from mechlab.widgets.chebyshev import mchv1_explorer
+from mechlab.widgets.dwell import dwell_explorer
+from mechlab.widgets.equivalence import fourbar_equivalence
+from mechlab.widgets.forces import press_explorer
+from mechlab.widgets.geneva import planar_geneva_explorer, spherical_geneva_explorer
 
 EXPLORERS = (fourbar_explorer, fourbar_equivalence, fourbar_centrode_explorer, dwell_explorer, mchv1_explorer,
              planar_geneva_explorer, spherical_geneva_explorer, press_explorer)
@@ -75,7 +75,8 @@ def animation_figures(n: int = 24) -> tuple[int, float, float]:
 
 
 def main():
-    print(f"{'explorer':28s} {'live: wall ms':>13s} {'CPU ms':>7s} {'KiB':>5s}   {'inline: wall ms':>15s} {'CPU ms':>7s}")
+    print(f"{'explorer':28s} {'live: wall ms':>13s} {'CPU ms':>7s} {'KiB':>5s}   {'inline: wall ms':>15s} "
+          f"{'CPU ms':>7s}")
     for make in EXPLORERS:
         (lw, lc, lk), (iw, ic, _) = crank_steps_ms(make, True), crank_steps_ms(make, False)
         print(f"{make.__name__:28s} {lw:13.1f} {lc:7.1f} {lk:5.1f}   {iw:15.1f} {ic:7.1f}")

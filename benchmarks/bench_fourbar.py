@@ -11,6 +11,7 @@ structure (ml.Linkage: a crank and an RRR dyad) is timed beside the closed form,
 from __future__ import annotations
 
 import contextlib
+import itertools
 import math
 import sys
 import time
@@ -18,10 +19,9 @@ import time
 import matplotlib
 
 matplotlib.use("Agg")
-import numpy as np  # noqa: E402
+import numpy as np
 
-from mechlab import Crank, FourBar, Linkage
-from mechlab import geometry
+from mechlab import Crank, FourBar, Linkage, geometry
 
 CRANK, COUPLER, ROCKER, GROUND = 1.0, 3.0, 3.0, 4.0
 
@@ -75,29 +75,29 @@ def main():
 
     for n in (3_600, 360_000):
         phi = np.arange(1, n + 1) * (2 * math.pi / n)
-        t_ml, mo = best_of(lambda: fb.motion(phi))
+        t_ml, mo = best_of(lambda phi=phi: fb.motion(phi))
         with single_thread():
-            t_one, _ = best_of(lambda: fb.motion(phi))
+            t_one, _ = best_of(lambda phi=phi: fb.motion(phi))
         # the joints' analogs are built when first read: time them too, for an honest total
-        def with_point_analogs():
+        def with_point_analogs(phi=phi):
             m = fb.motion(phi)
             return [(m.points[k].d, m.points[k].dd) for k in "AB"]
         t_all, _ = best_of(with_point_analogs)
-        t_built, mo_built = best_of(lambda: built.motion(phi))
+        t_built, mo_built = best_of(lambda phi=phi: built.motion(phi))
         err_built = max(np.abs(mo_built.psi - mo.psi).max(), np.abs(mo_built.ddpsi - mo.ddpsi).max())
         row = {"n": n, "mechlab": t_ml, "one_thread": t_one, "with_point_analogs": t_all, "built": t_built,
                "err_built": err_built}
         if have_pylinkage:
-            link, crank, B = pylinkage_fourbar(n)
+            link, _crank, B = pylinkage_fourbar(n)
             link.compile()
             link.step_fast(iterations=2)  # numba compilation, outside the timing
-            link, crank, B = pylinkage_fourbar(n)
-            t_fast, traj = best_of(lambda: link.step_fast(iterations=n), repeat=3)
+            link, _crank, B = pylinkage_fourbar(n)
+            t_fast, traj = best_of(lambda link=link, n=n: link.step_fast(iterations=n), repeat=3)
             idx = list(link.components).index(B)
             err_fast = np.nanmax(np.abs(traj[:, idx, :] - mo.points["B"].p))
 
-            def slow():
-                lk, _, b = pylinkage_fourbar(n)
+            def slow(n=n):
+                lk, _, _b = pylinkage_fourbar(n)
                 return np.array([pos[3] for pos in lk.step(iterations=n)])
             t_slow, pts = best_of(slow, repeat=1 if n > 10_000 else 3)
             err_slow = np.nanmax(np.abs(pts - mo.points["B"].p))
@@ -123,13 +123,13 @@ def main():
     ex.fig.canvas.draw()
     lengths = np.linspace(2.9, 3.1, 40)
 
-    def dims_update(i=[0]):
-        i[0] += 1
-        ex.sliders["coupler"].value = float(lengths[i[0] % len(lengths)])  # recompute, move artists, draw
+    dims_step, angle_step = itertools.count(1), itertools.count(1)  # each update sets a new value
 
-    def angle_update(i=[0]):
-        i[0] += 1
-        ex.angle.value = float(i[0] % 360)
+    def dims_update():
+        ex.sliders["coupler"].value = float(lengths[next(dims_step) % len(lengths)])  # recompute, move artists, draw
+
+    def angle_update():
+        ex.angle.value = float(next(angle_step) % 360)
     t_dims, _ = best_of(lambda: [dims_update() for _ in range(20)], repeat=3)
     t_angle, _ = best_of(lambda: [angle_update() for _ in range(20)], repeat=3)
     print(f"widget update (Agg, {ex.fig.get_size_inches()[0]:.0f}×{ex.fig.get_size_inches()[1]:.0f} in at "

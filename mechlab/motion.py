@@ -13,9 +13,9 @@ from __future__ import annotations
 import functools
 import html
 import inspect
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, is_dataclass, replace
 from numbers import Real
-from typing import Callable, Mapping
 
 import numpy as np
 
@@ -187,7 +187,7 @@ class Motion:
 
     phi: np.ndarray
     points: Mapping[str, PointPath]
-    _transmission: np.ndarray | Callable[["Motion"], np.ndarray] = field(repr=False)
+    _transmission: np.ndarray | Callable[[Motion], np.ndarray] = field(repr=False)
 
     @property
     def transmission(self) -> np.ndarray:
@@ -327,7 +327,7 @@ class Motion:
         ang = vector_angle(v)
         return Law(f"θ({start}→{end})", np.unwrap(ang.theta), ang.d, ang.dd, "angle")
 
-    def placed(self, origin=(0.0, 0.0), angle: float = 0.0) -> "Motion":
+    def placed(self, origin=(0.0, 0.0), angle: float = 0.0) -> Motion:
         """The motion seen in a frame where the mechanism's own frame sits at ``origin``, turned by ``angle``.
 
         Positions rotate by ``angle`` and translate by ``origin``; their analogs rotate; φ, an output angle ψ
@@ -373,13 +373,13 @@ class Motion:
     def _placed_output(self, angle: float) -> dict:
         return {}
 
-    def _with(self, **changes) -> "Motion":
+    def _with(self, **changes) -> Motion:
         values = {f.name: getattr(self, f.name) for f in fields(self)}
         values["_transmission"] = self.transmission
         values.update(changes)
         return type(self)(**values)
 
-    def _map(self, take) -> "Motion":
+    def _map(self, take) -> Motion:
         """The same motion with ``take`` applied to every array (positions and analogs row-wise)."""
         points = {k: PointPath(take(p.p), take(p.d), take(p.dd)) for k, p in self.points.items()}
         values = {f.name: take(getattr(self, f.name)) for f in fields(self)
@@ -389,7 +389,7 @@ class Motion:
     def _first(self):
         return self._map(lambda a: a[0])
 
-    def as_arrays(self) -> "Motion":
+    def as_arrays(self) -> Motion:
         """The motion over an array of crank angles: a motion at a scalar φ becomes one at [φ].
 
         Returns
@@ -807,7 +807,7 @@ class Table:
         # numbers right-aligned, words left-aligned
         numeric = [all(isinstance(getattr(r, c), Real) for r in self.rows) for c in self.columns]
         return "\n".join("  ".join(s.rjust(w) if num else s.ljust(w)
-                                   for s, w, num in zip(line, widths, numeric)).rstrip() for line in body)
+                                   for s, w, num in zip(line, widths, numeric, strict=False)).rstrip() for line in body)
 
     def _repr_html_(self) -> str:
         head = "".join(f"<th>{html.escape(c)}</th>" for c in self.headers)

@@ -29,8 +29,7 @@ from typing import Annotated, Any, get_args, get_origin
 
 import numpy as np
 
-from .errors import DimensionError
-from .errors import renamed
+from .errors import DimensionError, renamed
 
 # Lengths and other magnitudes beyond these overflow or underflow in the solvers' squares and products.
 MAGNITUDE = (1e-100, 1e100)
@@ -644,7 +643,7 @@ def _spec_of(annotation, namespace) -> Spec | None:
         if "Annotated" not in annotation and not annotation[:1].isupper():  # float, np.ndarray, …: no Spec
             return None
         try:
-            annotation = eval(annotation, namespace)  # noqa: S307 - the module's own annotation text
+            annotation = eval(annotation, namespace)
         except NameError:  # a name imported only for type checking: not a declaration
             return None
     if get_origin(annotation) is Annotated:
@@ -660,7 +659,7 @@ def _field_specs(cls) -> tuple[tuple[str, Spec], ...]:
     if specs is None:
         found = []
         for f in fields(cls):
-            owner = next(k for k in cls.__mro__ if f.name in k.__dict__.get("__annotations__", {}))
+            owner = next(k for k in cls.__mro__ if f.name in inspect.get_annotations(k))
             spec = _spec_of(f.type, vars(sys.modules[owner.__module__]))
             if spec is not None:
                 found.append((f.name, spec))

@@ -54,4 +54,4 @@ def fine_grid(mechanism, n=20001):
     return phi, phi[1] - phi[0]
 
 
-__all__ = ["revolving_fourbars", "fourbars", "revolving_slider_cranks", "central_difference", "fine_grid", "np"]
+__all__ = ["central_difference", "fine_grid", "fourbars", "np", "revolving_fourbars", "revolving_slider_cranks"]

@@ -16,7 +16,7 @@ import pytest
 import mechlab.design as D
 from mechlab import ExternalGeneva, FourBar
 from mechlab.draw import OUTCOME_STYLE, alt_text, animate, draw, plot_design_outcomes, plot_law
-from mechlab.draw.access import (CATEGORY_COLOURS, CVD_MATRICES, delta_e, install_alt_text, set_alt, simulate_cvd)
+from mechlab.draw.access import CATEGORY_COLOURS, CVD_MATRICES, delta_e, install_alt_text, set_alt, simulate_cvd
 from mechlab.draw.design import STYLES, comparison_figure
 from mechlab.errors import MechanismError
 from mechlab.synthesis.lambda_guiding import design_outcomes
@@ -130,7 +130,8 @@ def test_the_simulation_matches_machado_et_al():
 def _contrast(a, b):
     """WCAG 2.1's contrast ratio of two colours."""
     lum = [float(np.array([0.2126, 0.7152, 0.0722]) @ np.where(
-        (c := np.asarray(matplotlib.colors.to_rgb(x))) <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)) for x in (a, b)]
+        (c := np.asarray(matplotlib.colors.to_rgb(x))) <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4))
+        for x in (a, b)]
     return (max(lum) + 0.05) / (min(lum) + 0.05)
 
 
@@ -174,7 +175,8 @@ def test_chapter_12_families_differ_by_dash_and_marker_and_colour():
 
 
 def _controls(widget):
-    """The controls (sliders, toggle buttons, drop-downs) in an ipywidgets tree: its value widgets but text and pictures."""
+    """The controls (sliders, toggle buttons, drop-downs) in an ipywidgets tree: its value widgets but text
+    and pictures."""
     import ipywidgets as W
     found = [widget] if isinstance(widget, W.ValueWidget) and not isinstance(widget, (W.HTML, W.Play, W.Image)) else []
     for child in getattr(widget, "children", ()) or ():

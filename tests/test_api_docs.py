@@ -49,7 +49,7 @@ def public_api() -> list[tuple[str, str, object, bool]]:
         api.append((obj.__module__, obj.__qualname__, obj, True))
         if inspect.isclass(obj):
             for name, member in vars(obj).items():
-                if not name.startswith("_") and isinstance(member, (property, staticmethod, classmethod)) or (
+                if (not name.startswith("_") and isinstance(member, (property, staticmethod, classmethod))) or (
                         not name.startswith("_") and inspect.isfunction(member)):
                     api.append((obj.__module__, f"{obj.__qualname__}.{name}", (obj, name), False))
     return sorted(api, key=lambda item: (item[0], item[1]))
@@ -87,7 +87,7 @@ def _documented_names(section) -> list[str]:
 def _signature_names(func, skip_first: bool) -> list[str]:
     names = []
     for i, p in enumerate(inspect.signature(func).parameters.values()):
-        if i == 0 and skip_first or p.name.startswith("_"):  # a private field is not the caller's to pass
+        if (i == 0 and skip_first) or p.name.startswith("_"):  # a private field is not the caller's to pass
             continue
         prefix = "*" if p.kind is p.VAR_POSITIONAL else "**" if p.kind is p.VAR_KEYWORD else ""
         names.append(prefix + p.name)

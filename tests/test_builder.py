@@ -205,7 +205,8 @@ def test_built_fourbar_equals_the_closed_form(fb, shift):
     ratio = max(lengths) / min(lengths)
     tol = 1e-12 * max(1.0, ratio / 5, (ratio / 8) ** 2)
     assert close(a.psi, b.psi, tol) and close(a.dpsi, b.dpsi, tol) and close(a.transmission, b.transmission, tol)
-    # ψ'' at twice that: FourBar(3, 4, 0.25, 1)'s own ψ'' lies 9.5e-13 from a 40-digit closed form, the built one's 3.5e-13
+    # ψ'' at twice that: FourBar(3, 4, 0.25, 1)'s own ψ'' lies 9.5e-13 from a 40-digit closed form,
+    # the built one's 3.5e-13
     assert close(a.ddpsi, b.ddpsi, 2 * tol)
     # the joints' positions and first analogs at tol, their second analogs at 2·tol as ψ'' (FourBar(5, 7, 0.2012, 2):
     # B's second analog 7.9e-10 apart on 97.8, ψ'' 8.6e-12 relative)

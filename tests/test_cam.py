@@ -8,7 +8,8 @@ import ezdxf
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, Phase, assume, given, settings, strategies as st
+from hypothesis import HealthCheck, Phase, assume, given, settings
+from hypothesis import strategies as st
 
 import mechlab as ml
 from mechlab.analysis.motion_laws import LAWS

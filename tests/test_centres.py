@@ -8,21 +8,37 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from mechlab import (AssemblyError, DimensionError, FourBar, MechanismError, SineMechanism, SingularityError,
-                     SliderCrank, SlottedLink)
-from mechlab.mechanisms.antiparallelogram import Antiparallelogram
-from mechlab.analysis.centres.homogeneous import Centre, CentreAtInfinity, IndeterminateCentre, segments, separation
-from mechlab.mechanisms.trammel import EllipticTrammel
-from mechlab.analysis.centres.kennedy import centre_count
-from mechlab.analysis.centres.instant import instant_centres
-from mechlab.analysis.centres.centrodes import rolling_speeds
-from mechlab.analysis.centres import centrodes
-from mechlab.analysis.centres import kennedy
-from mechlab.analysis.centres.homogeneous import at_infinity, finite, in_frame, line_through, meet
-from mechlab.analysis.centres.kennedy import five_link_higher_pair
-from mechlab.geometry import relative, vector_angle
 from strategies import central_difference, fourbars, revolving_fourbars, revolving_slider_cranks
+
+from mechlab import (
+    AssemblyError,
+    DimensionError,
+    FourBar,
+    MechanismError,
+    SineMechanism,
+    SingularityError,
+    SliderCrank,
+    SlottedLink,
+)
+from mechlab.analysis.centres import centrodes, kennedy
+from mechlab.analysis.centres.centrodes import rolling_speeds
+from mechlab.analysis.centres.homogeneous import (
+    Centre,
+    CentreAtInfinity,
+    IndeterminateCentre,
+    at_infinity,
+    finite,
+    in_frame,
+    line_through,
+    meet,
+    segments,
+    separation,
+)
+from mechlab.analysis.centres.instant import instant_centres
+from mechlab.analysis.centres.kennedy import centre_count, five_link_higher_pair
+from mechlab.geometry import relative, vector_angle
+from mechlab.mechanisms.antiparallelogram import Antiparallelogram
+from mechlab.mechanisms.trammel import EllipticTrammel
 
 SETTINGS = settings(max_examples=40, deadline=None)
 
@@ -45,7 +61,7 @@ def test_meet_of_crossing_parallel_and_coincident_lines():
     x = meet(line_through(p, q), line_through(t, u))
     assert not x.finite.any() and np.allclose(x.direction, [[2**-0.5, 2**-0.5]] * n)
     with pytest.raises(CentreAtInfinity, match="lies at infinity"):
-        x.xy
+        _ = x.xy
     assert x.masked().mask.all()
     # a point at infinity joins a finite one into the line through it in that direction
     vertical = line_through(p, at_infinity((0.0, -1.0), n))
@@ -179,7 +195,7 @@ def test_five_link_mechanism_with_a_higher_pair(xs):
         if by_k[p].finite.all() and np.hypot(*by_k[p].h[0, :2]) > 1e6:
             continue  # nearly parallel lines: the point is far and ill-conditioned
         assert s.max() < 1e-6, (by_k[p].name, by_k[p].h, by_t[p].h)
-    assert [s[0] for s in steps][0] == (1, 3)  # P24 first, from the normal, as in the seed
+    assert next(s[0] for s in steps) == (1, 3)  # P24 first, from the normal, as in the seed
 
 
 def test_five_link_check_line_of_the_seed():
@@ -267,7 +283,7 @@ def test_antiparallelogram_motion(a, g):
     m = Antiparallelogram(a, g)
     phi = np.linspace(-2 * np.pi, 2 * np.pi, 20001)
     mo = m.motion(phi)
-    O, A, B, E = (mo.points[k].p for k in "OABE")
+    _O, A, B, E = (mo.points[k].p for k in "OABE")
     assert np.abs(np.hypot(*(B - A).T) - g).max() < 1e-12 * g
     assert np.abs(np.hypot(*(B - E).T) - a).max() < 1e-12 * a
     h = phi[1] - phi[0]
@@ -369,6 +385,7 @@ def test_lookup_errors():
 # -- drawings, widgets, exercises, errata ----------------------------------------------------------------
 def test_centrode_animation_moves_the_same_artists():
     import matplotlib.pyplot as plt
+
     from mechlab.draw.centres import animate_centrodes, draw_centres
 
     anim = animate_centrodes(Antiparallelogram(1.0, 2.0), "coupler", n=8)

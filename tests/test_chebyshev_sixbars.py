@@ -5,11 +5,17 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.errors import InfeasibleDesignError, TransmissionAngleError
+from mechlab.errors import InfeasibleDesignError, MechanismError, TransmissionAngleError
 from mechlab.mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
 from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
-from mechlab.synthesis.lambda_sixbars import mchv1, mchv3_full_turn, mchv3_half_turn, mchv3_oscillating, report, time_ratio_far_angle
-from mechlab.errors import MechanismError
+from mechlab.synthesis.lambda_sixbars import (
+    mchv1,
+    mchv3_full_turn,
+    mchv3_half_turn,
+    mchv3_oscillating,
+    report,
+    time_ratio_far_angle,
+)
 
 DEG = np.pi / 180
 
@@ -190,8 +196,8 @@ DECODED_A = {(120, 50): 0.75, (120, 75): 0.75, (270, 100): 1.43}  # printed 0.8,
 
 @pytest.mark.parametrize("delta,alpha", REPRODUCED)
 def test_thesis_mchv1_rows_reproduced(delta, alpha):
-    from mechlab.synthesis.lambda_sixbars import rise_law
     from mechlab.analysis.motion_laws import rise_invariants, thesis_mchv1_rows
+    from mechlab.synthesis.lambda_sixbars import rise_law
 
     row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
     g = circle_guiding(delta * DEG, DECODED_A.get((delta, alpha), row[2]), 2 * alpha * DEG)
@@ -257,7 +263,12 @@ def test_mchv1_random_requests_are_met_or_refused(guide, K, swing, side):
 
 
 def test_mchv3_full_turn_residual_is_first_order_h_over_s_and_inherent_for_180_degrees():
-    from mechlab.synthesis.lambda_sixbars import dwell_extent, mchv3_full_turn, mchv3_full_turn_best, slot_residual_first_order
+    from mechlab.synthesis.lambda_sixbars import (
+        dwell_extent,
+        mchv3_full_turn,
+        mchv3_full_turn_best,
+        slot_residual_first_order,
+    )
 
     s = straight_guiding(np.pi, 0.8, np.pi)
     dw = np.pi + np.linspace(-np.pi / 2, np.pi / 2, 2001) + 1e-6
@@ -283,8 +294,7 @@ def test_mchv3_full_turn_residual_is_first_order_h_over_s_and_inherent_for_180_d
 
 
 def test_mchv3_tables_give_each_pivot_its_residual_and_name_their_units():
-    from mechlab.synthesis.lambda_sixbars import (dwell_extent, mchv3_best_table, mchv3_full_turn_best,
-                                                  mchv3_pivot_table)
+    from mechlab.synthesis.lambda_sixbars import dwell_extent, mchv3_best_table, mchv3_full_turn_best, mchv3_pivot_table
 
     s = straight_guiding(np.pi, 0.8, np.pi)
     pivots = mchv3_pivot_table(s, beyonds=[0.0, 0.03, 0.06], n=2001)
@@ -300,7 +310,8 @@ def test_mchv3_tables_give_each_pivot_its_residual_and_name_their_units():
     assert best.columns == ("dwell", "past", "depth", "residual", "peak_dpsi")   # the mechanism is no column
     row = best.by("dwell")[180]
     m, r = mchv3_full_turn_best(s)
-    assert row.residual == pytest.approx(np.degrees(r)) and row.peak_dpsi <= 15.0 and row.mechanism.P == pytest.approx(m.P)
+    assert row.residual == pytest.approx(np.degrees(r)) and row.peak_dpsi <= 15.0
+    assert row.mechanism.P == pytest.approx(m.P)
     assert 0 < row.past < 0.07 and row.depth > 0 and best.by("dwell")[140].residual < 0.6
     assert all(h.endswith("°") for h in best.headers if "dwell" in h or "residual" in h)
     with pytest.raises(MechanismError):

@@ -7,12 +7,19 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from mechlab.errors import InfeasibleDesignError
-from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
-from mechlab.mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
-from mechlab.synthesis.lambda_sliders import mchv2, mchv2_far_position, mchv2_stroke, mchv5, slider_invariants, slider_report, slider_rise
-from mechlab.errors import DimensionError, MechanismError
 from mechlab.analysis.motion_laws import rise_invariants
+from mechlab.errors import DimensionError, InfeasibleDesignError, MechanismError
+from mechlab.mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
+from mechlab.synthesis.lambda_guiding import circle_guiding, straight_guiding
+from mechlab.synthesis.lambda_sliders import (
+    mchv2,
+    mchv2_far_position,
+    mchv2_stroke,
+    mchv5,
+    slider_invariants,
+    slider_report,
+    slider_rise,
+)
 
 DEG = np.pi / 180
 
@@ -74,8 +81,8 @@ def test_mchv2_slider_equals_an_independent_circle_line_solve(guide):
     phi = np.array([0.3, 1.7, np.pi - 0.4, np.pi, 4.0, 5.9])
     D = guide.mechanism.coupler_point(phi)
     got = six.motion(phi).s
-    for k, (d, s_lib) in enumerate(zip(D, got)):
-        f = lambda s: np.hypot(*(six.Q + s * six.u - d)) - six.rod  # noqa: E731
+    for k, (d, s_lib) in enumerate(zip(D, got, strict=False)):
+        f = lambda s, d=d: np.hypot(*(six.Q + s * six.u - d)) - six.rod  # noqa: E731
         w = (d - six.Q) @ six.u
         # bracket the root on the assembly's side of the foot of D on the guide
         lo, hi = (w, w + 2 * six.rod) if six.assembly > 0 else (w - 2 * six.rod, w)
@@ -87,7 +94,7 @@ def test_mchv2_slider_equals_an_independent_circle_line_solve(guide):
 def test_mchv2_achieves_K_stroke_and_dwell(guide, K):
     six = mchv2(guide, K, mu_min=None)
     rep = slider_report(six)
-    phi_far, D1, E1 = mchv2_far_position(guide, K)
+    phi_far, _D1, E1 = mchv2_far_position(guide, K)
     h = np.hypot(*(E1 - guide.centre))
     assert abs(rep.K - K) < 1e-9
     assert abs(six.motion(np.array([phi_far])).s[0] - h) < 1e-12

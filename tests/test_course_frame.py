@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
-from mechlab.draw.machines import MACHINES, schematic  # noqa: E402
-from mechlab.errors import MechanismError  # noqa: E402
+from mechlab.draw.machines import MACHINES, schematic
+from mechlab.errors import MechanismError
 
 ROOT = Path(__file__).parent.parent
 sys.path.insert(0, str(ROOT / "tools"))
@@ -45,7 +45,8 @@ def is_check(cell):
 
 
 def asserts_in(code: str) -> int:
-    """Asserts, and `raise AssertionError` (an assert in disguise: a teaching cell shows the error, a check cell checks it)."""
+    """Asserts, and `raise AssertionError` (an assert in disguise: a teaching cell shows the error, a check
+    cell checks it)."""
     return sum(isinstance(node, ast.Assert) or (isinstance(node, ast.Raise) and "AssertionError" in ast.unparse(node))
                for node in ast.walk(ast.parse(code)))
 
@@ -471,7 +472,8 @@ def test_the_scan_would_see_a_typed_result():
     assert typed_results("the reactions peak near φ = 270°, with C = 5.77.", code) == ["270", "5.77"]
     assert typed_results("λ = 0.5 and φ1 = 60°; a half turn is 180° (7.8, 7.9), §7.1", code) == []
     assert typed_results("the printed 53.15°, $\\beta = 24.85°$ and\n 41.60 are off; `127.0.0.1`", code) == []
-    assert typed_results("(7.6, the pole) rounds to 0.45. The printed 0.46 is off. It misses by 0.01.", code) == ["0.45", "0.01"]
+    assert typed_results("(7.6, the pole) rounds to 0.45. The printed 0.46 is off. It misses by 0.01.",
+                         code) == ["0.45", "0.01"]
 
 
 # -- widgets that ask -------------------------------------------------------------------------------------------
@@ -540,7 +542,8 @@ def test_the_glossary_symbols_are_used_in_the_chapters_it_lists():
         if listed.strip() == "all":
             continue
         pattern = symbol_pattern(symbol)
-        wrong += [f"{symbol} not in chapter {n}" for n in sorted(chapter_numbers(listed)) if not pattern.search(texts[n])]
+        wrong += [f"{symbol} not in chapter {n}" for n in sorted(chapter_numbers(listed))
+                  if not pattern.search(texts[n])]
     assert not wrong, wrong
 
 

@@ -4,10 +4,16 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import revolving_fourbars, revolving_slider_cranks
 
 from mechlab import AssemblyError, DimensionError, FourBar, SingularityError
-from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, ParametricSlot, SampledSlot, TranslatingCurvedSlot
-from strategies import revolving_fourbars, revolving_slider_cranks
+from mechlab.mechanisms.curved_slot import (
+    CircleSlot,
+    CurvedSlotLink,
+    ParametricSlot,
+    SampledSlot,
+    TranslatingCurvedSlot,
+)
 
 H = 1e-5
 
@@ -41,7 +47,7 @@ def pin_in_link(mech, mo):
 
 
 def assert_analogs(mo, up, dn, law=("psi", "dpsi", "ddpsi"), tol=1e-6):
-    f0, f1, f2 = (getattr(mo, k) for k in law)
+    _f0, f1, f2 = (getattr(mo, k) for k in law)
     u0, u1 = getattr(up, law[0]), getattr(up, law[1])
     d0, d1 = getattr(dn, law[0]), getattr(dn, law[1])
     assert np.max(np.abs((u0 - d0) / (2 * H) - f1)) < tol * (1 + np.max(np.abs(f1)))

@@ -17,7 +17,6 @@ from mechlab.geometry import PointPath
 from mechlab.mechanisms.cam import CamAngularMotion
 from mechlab.motion import AngularMotion
 
-
 SEEN: set[str] = set()  # families that produced a candidate in the property test
 
 
@@ -74,7 +73,7 @@ def test_every_candidate_meets_its_specification_when_simulated_anew(spec):
     SEEN.update(c.family for c in comp.candidates)
     assert len(comp.candidates) + len(comp.refusals) == len(D.FAMILIES)
     for cand in comp.candidates:
-        phi, x, d1 = _resimulate(cand, spec)
+        _phi, x, _d1 = _resimulate(cand, spec)
         h = spec.amplitude
         if spec.motion == "index":
             assert abs(abs(x[-1] - x[0]) - h) < 1e-6 * h  # one index per crank turn
@@ -119,7 +118,8 @@ def test_a_limit_missed_in_simulation_is_a_refusal_with_its_numbers():
     assert not comp.candidates
     assert "size" in comp.refusals[0].reason and "> 100 mm" in comp.refusals[0].reason
     none = D.Specification("index", 0.75, stations=4, impacts="none")
-    assert "impacts: soft where none at worst are admitted" in D.candidates(none, ["external Geneva"]).refusals[0].reason
+    refusal = D.candidates(none, ["external Geneva"]).refusals[0]
+    assert "impacts: soft where none at worst are admitted" in refusal.reason
 
 
 @pytest.mark.parametrize("z", [3, 4, 6, 8])
@@ -209,7 +209,7 @@ def test_curved_slot_candidate_respects_the_limit_theorem():
     spec = D.Specification("swing", 40 / 360, amplitude=np.radians(40), max_pressure_angle=np.radians(60))
     cand = D.candidates(spec, ["curved slot"]).candidates[0]
     lam = cand.design.mechanism.lam
-    phi, x, d1 = _resimulate(cand, spec)
+    _phi, _x, d1 = _resimulate(cand, spec)
     assert np.max(np.abs(d1)) >= base_peaks(lam)[0] * (1 - 1e-9)
 
 

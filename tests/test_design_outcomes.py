@@ -57,7 +57,7 @@ def test_each_outcome_of_a_request_gets_its_kind(monkeypatch):
 
 
 def test_bad_requests_are_named():
-    with pytest.raises(DimensionError, match="fractions must be ≤ 1, got 1.5"):
+    with pytest.raises(DimensionError, match=r"fractions must be ≤ 1, got 1.5"):
         design_outcomes(150 * DEG, fractions=(1.5,))
     with pytest.raises(DimensionError, match="dwells must be ≥ 0 rad"):
         design_outcomes(150 * DEG, dwells=(-1.0,))

@@ -185,7 +185,7 @@ def test_labels_sit_at_their_joints_in_every_frame_and_move_in_place(mech):
         assert drawing.readout.get_text() == f"φ = {np.degrees(drawing.motion.phi[i]):.0f}°"
         # the hatched support: a triangle with its apex at each fixed pivot
         xs, ys = drawing.ground_line.get_data()
-        apexes = {(round(x, 9), round(y, 9)) for x, y in zip(xs, ys)}
+        apexes = {(round(x, 9), round(y, 9)) for x, y in zip(xs, ys, strict=False)}
         for pivot in mech.pivots:
             x, y = drawing.motion.points[pivot].p[i]
             assert (round(x, 9), round(y, 9)) in apexes
@@ -230,7 +230,7 @@ def _frames(html):
 @pytest.mark.parametrize("figsize, dpi", [((4.5, 3.4), 55), ((12, 4), 100), ((6.5, 4.5), 100)])
 def test_animation_frames_fit_the_book_column_and_are_quantised(figsize, dpi):
     from mechlab.draw import MAX_WIDTH_PX, MIN_WIDTH_PX, PALETTE
-    fig, ax = plt.subplots(figsize=figsize, dpi=dpi)
+    _fig, ax = plt.subplots(figsize=figsize, dpi=dpi)
     anim = animate(FourBar(1, 3, 3, 4), n=4, ax=ax)
     frames = _frames(anim.to_jshtml())
     assert len(frames) == 4
@@ -359,7 +359,8 @@ def test_dwell_explorer_gives_the_mechanism_a_column_of_its_proportions():
     across, up = (x1 - x0) / (vx1 - vx0), (y1 - y0) / (vy1 - vy0)
     assert min(across, up) > 0.85 * max(across, up) and max(across, up) > 0.6, (across, up)
     box = ex.ax_mech.get_window_extent()
-    assert box.width / (vx1 - vx0) > 135   # pixels per unit length at the explorer's 80 dpi (110 with the common layout)
+    # pixels per unit length at the explorer's 80 dpi (110 with the common layout)
+    assert box.width / (vx1 - vx0) > 135
     plt.close("all")
 
 @pytest.mark.parametrize("law", [False, True])
@@ -538,7 +539,7 @@ def test_plot_pressure_angles_draws_each_transition_over_the_turn_and_shades_the
     (ax,) = fig.axes
     assert [line.get_label() for line in ax.lines] == list(TRANSITIONS)
     phi = np.linspace(0.0, 2 * np.pi, 181)
-    for line, tr in zip(ax.lines, TRANSITIONS):
+    for line, tr in zip(ax.lines, TRANSITIONS, strict=False):
         theta = curved_slot_dwell(0.4, 50 * deg, 140 * deg, 2.0, tr).motion(phi).pressure_angle
         assert np.allclose(line.get_xdata(), np.degrees(phi)) and np.allclose(line.get_ydata(), np.degrees(theta))
     spans = sorted(p.get_x() for p in ax.patches), sorted(p.get_x() + p.get_width() for p in ax.patches)
@@ -566,8 +567,8 @@ def test_plot_slot_draws_the_profile_in_units_of_the_pivot_distance():
 
 
 def test_comparison_cuts_an_axis_that_one_spike_would_squash_and_says_so():
-    from mechlab import ExternalGeneva, InternalGeneva
     import mechlab.draw.geneva as G
+    from mechlab import ExternalGeneva, InternalGeneva
 
     class Scaled:
         """The external Geneva with its analogs ``k`` times larger."""

@@ -5,13 +5,22 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.synthesis.dwell_slot import (TRANSITIONS, DwellError, DwellIntervalError, DwellLaw, DwellRatioError,
-                                          slotted_link_law,
-                                          compare_transitions, cubic_dwell_window, curved_slot_dwell, dwell_limit,
-                                          two_branch_slot)
 from mechlab.errors import DimensionError, MechanismError, SingularityError
 from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
 from mechlab.mechanisms.slotted import SlottedLink
+from mechlab.synthesis.dwell_slot import (
+    TRANSITIONS,
+    DwellError,
+    DwellIntervalError,
+    DwellLaw,
+    DwellRatioError,
+    compare_transitions,
+    cubic_dwell_window,
+    curved_slot_dwell,
+    dwell_limit,
+    slotted_link_law,
+    two_branch_slot,
+)
 
 DEG = np.pi / 180
 
@@ -219,7 +228,7 @@ def test_cubic_dwell_window_puts_the_limit_at_both_slot_ends(lam, limit_deg):
 
 
 def test_cubic_dwell_window_refuses_when_no_dwell_is_left():
-    with pytest.raises(DwellIntervalError, match="no dwell is left for λ = 2.5"):
+    with pytest.raises(DwellIntervalError, match=r"no dwell is left for λ = 2.5"):
         cubic_dwell_window(2.5, np.radians(70.0))
     with pytest.raises(DwellRatioError):
         cubic_dwell_window(1.0, np.radians(60.0))
@@ -274,8 +283,7 @@ def test_bad_transition_and_pivot():
 
 # -- errata, exercises, drawing, widget ----------------------------------------------------
 def test_errata_of_section_3_hold():
-    from mechlab.course.errata import collect, table
-    from mechlab.course.errata import seed000_dwell
+    from mechlab.course.errata import collect, seed000_dwell, table
 
     assert len(seed000_dwell.ERRATA) >= 6
     for e in seed000_dwell.ERRATA:
@@ -330,7 +338,7 @@ def test_rotating_link_dwells_at_a_pressure_angle_of_at_least_90_minus_arcsin():
     from mechlab.synthesis.dwell_slot import arc_pressure_angle
 
     for lam in (1.3, 2.0, 3.5):
-        res = minimize_scalar(lambda x: arc_pressure_angle(lam, x)[0], bounds=(0.0, np.pi), method="bounded",
+        res = minimize_scalar(lambda x, lam=lam: arc_pressure_angle(lam, x)[0], bounds=(0.0, np.pi), method="bounded",
                               options={"xatol": 1e-12})
         assert res.fun == pytest.approx(np.pi / 2 - np.arcsin(1 / lam), abs=1e-9)
         m = curved_slot_dwell(lam, 60 * DEG, 150 * DEG, transition="quintic")

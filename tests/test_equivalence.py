@@ -3,17 +3,27 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings
+from strategies import revolving_fourbars, revolving_slider_cranks
+from test_protocol import SkewYoke
 
 import mechlab as ml
 from mechlab import DimensionError, FourBar, SineMechanism, SliderCrank, SlottedLink
-from mechlab.analysis.equivalence import EquivalentSlot, assembly_symmetry, base_law, base_mechanism, equivalence_error, equivalent_slot, law_difference, other_assembly, relative_path
+from mechlab.analysis.equivalence import (
+    EquivalentSlot,
+    assembly_symmetry,
+    base_law,
+    base_mechanism,
+    equivalence_error,
+    equivalent_slot,
+    law_difference,
+    other_assembly,
+    relative_path,
+)
 from mechlab.analysis.half_turn import formula_18
 from mechlab.geometry import PointPath, as_angles, crank_point, fixed_point, relative, vector_angle
 from mechlab.mechanisms.base import FRAME, Link, Mechanism, Pair, Structure
 from mechlab.mechanisms.sixbar_iv import example
 from mechlab.motion import AngularMotion
-from strategies import revolving_fourbars, revolving_slider_cranks
-from test_protocol import SkewYoke
 
 H = 1e-5
 
@@ -250,7 +260,7 @@ def test_relative_path_reads_the_pin_from_the_structure(a, d):
     S = np.sqrt(a * a + d * d + 2 * a * d * np.cos(phi))
     dS = -a * d * np.sin(phi) / S
     ddS = -(a * d * np.cos(phi) + dS**2) / S
-    for w, x in zip(rel, (S, dS, ddS)):
+    for w, x in zip(rel, (S, dS, ddS), strict=False):
         assert np.allclose(w, np.stack([x, 0 * x], -1), rtol=0, atol=1e-12 * (a + d))
 
 
@@ -279,9 +289,9 @@ def test_relative_path_without_a_crank_pin_says_why(mech, words):
 # -- drawings, animation, explorer, exercises and errata of chapters 02-04 -------------------------
 import matplotlib.pyplot as plt  # noqa: E402
 
-from mechlab.draw import drawing_class
-from mechlab.draw.curved_slot import animate_equivalence, plot_against_base
-from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, TranslatingCurvedSlot
+from mechlab.draw import drawing_class  # noqa: E402  this section's imports open it
+from mechlab.draw.curved_slot import animate_equivalence, plot_against_base  # noqa: E402
+from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink, TranslatingCurvedSlot  # noqa: E402
 
 
 def _slot_distance_to_pin(drawing, i):

@@ -6,7 +6,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from mechlab.course.errata import KINDS, Claim, Erratum, collect, count_by_kind, table
+from mechlab.course.errata import Claim, Erratum, collect, table
 
 ERRATA = collect()
 
@@ -60,7 +60,7 @@ def test_every_check_fails_when_the_value_it_guards_is_perturbed(e):
         return
     mutations = list(_mutations(out))
     assert mutations, "no entry of the printed expression misses the truth"
-    for i, m in mutations:
+    for _i, m in mutations:
         with pytest.raises(AssertionError, match="misses the truth"):
             replace(out, correct=m)
 

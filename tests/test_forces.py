@@ -1,16 +1,34 @@
 """Kinetostatics (mechlab.kinetostatics): power balance, equilibrium, hand-derived cases, friction, drive."""
 
+import itertools
+
 import numpy as np
 import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
+from strategies import revolving_fourbars, revolving_slider_cranks
 
 from mechlab import FourBar, MechanismError, SineMechanism, SliderCrank, SlottedLink
-from mechlab.kinetostatics.model import FRAME, Body, Force, ForceModel, FrictionError, HigherPair, LoadError, MassError, Prismatic, Revolute, SelfLockingError, StructureError, Torque, model_for, slender_bar
 from mechlab.kinetostatics.drive import DriveError, cycle_mean, drive
 from mechlab.kinetostatics.machines import Kinetostatics
+from mechlab.kinetostatics.model import (
+    FRAME,
+    Body,
+    Force,
+    ForceModel,
+    FrictionError,
+    HigherPair,
+    LoadError,
+    MassError,
+    Prismatic,
+    Revolute,
+    SelfLockingError,
+    StructureError,
+    Torque,
+    model_for,
+    slender_bar,
+)
 from mechlab.kinetostatics.solve import solve, virtual_work_torque
-from strategies import revolving_fourbars, revolving_slider_cranks
 
 unit_floats = st.floats(min_value=-1.0, max_value=1.0, allow_nan=False)
 pos_floats = st.floats(min_value=0.05, max_value=3.0, allow_nan=False)
@@ -157,7 +175,8 @@ def test_curved_normal_callable_and_friction_in_higher_pair():
     mo = sl.motion(sl.turn(91))
     link, crank = model_for(sl).body("link"), model_for(sl).body("crank")
     from mechlab.geometry import perp, unit
-    normal = lambda m: perp(unit(m.psi))  # the slot normal, given as a function of the motion
+    def normal(m):
+        return perp(unit(m.psi))  # the slot normal, given as a function of the motion
     hp = ForceModel((crank, link), (Revolute("O", FRAME, "crank", "O"),
                                     HigherPair("A", "link", "crank", "A", normal, friction=0.1),
                                     Revolute("B", FRAME, "link", "B")), (("link",),), "crank", "O")
@@ -170,7 +189,8 @@ def test_curved_normal_callable_and_friction_in_higher_pair():
 def test_friction_lowers_efficiency_and_cycle_definitions():
     sc = SliderCrank(0.1, 0.4)
     mo = sc.motion(sc.turn(361))
-    working = lambda m: np.where(m.ds < 0, 2000.0, 0.0)   # resists the slider's return stroke only
+    def working(m):
+        return np.where(m.ds < 0, 2000.0, 0.0)   # resists the slider's return stroke only
     loads = [Force("slider", "B", lambda m: np.stack([working(m), 0 * m.s], axis=1))]
     model = model_for(sc).with_body("rod", mass=1.0).with_body("slider", mass=2.0)
     ideal = solve(model, mo, loads, omega1=10.0)
@@ -245,15 +265,16 @@ def _quad_drive(f, a, b, eta, sense=1.0):
     from scipy.optimize import brentq, minimize_scalar
     x = np.linspace(a, b, 2001)
     y = f(x)
-    edges = [a, *[brentq(f, u, v, xtol=1e-15) for u, v, fu, fv in zip(x, x[1:], y, y[1:]) if fu * fv < 0], b]
+    edges = [a, *[brentq(f, u, v, xtol=1e-15)
+                  for u, v, fu, fv in zip(x, x[1:], y, y[1:], strict=False) if fu * fv < 0], b]
 
     def m(t):
         v = f(t)
         return v / eta if v * sense > 0 else v * eta
 
-    mean = sum(quad(m, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0] for u, v in zip(edges, edges[1:])) / (b - a)
+    mean = sum(quad(m, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0] for u, v in itertools.pairwise(edges)) / (b - a)
     sq = sum(quad(lambda t: m(t) ** 2, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0]
-             for u, v in zip(edges, edges[1:])) / (b - a)
+             for u, v in itertools.pairwise(edges)) / (b - a)
     # every local maximum of |m| on the grid is refined: near-equal peaks may swap order
     am = np.abs([m(t) for t in x])
     peak = float(am.max())
@@ -394,6 +415,7 @@ def test_press_and_rocker_examples():
 
 def test_force_drawing_and_explorer_move_in_place():
     import matplotlib.pyplot as plt
+
     from mechlab.draw import animate, drawing_class
     from mechlab.kinetostatics.machines import press
     from mechlab.widgets.forces import press_explorer
@@ -504,7 +526,7 @@ def test_guide_friction_self_locks_where_f_tan_beta_exceeds_one():
     f, P = 0.5, 500.0
     model = model_for(sc).with_friction(f, 0.0, pairs=["guide"])
     load = [Force("slider", "B", (-P, 0.0))]
-    with pytest.raises(SelfLockingError, match="φ = 270.00°"):
+    with pytest.raises(SelfLockingError, match=r"φ = 270.00°"):
         solve(model, sc.motion(np.radians([270.0])), load, omega1=7.0, gravity=(0.0, 0.0))
     mo = sc.motion(np.radians([90.0]))
     res = solve(model, mo, load, omega1=7.0, gravity=(0.0, 0.0))
@@ -519,8 +541,8 @@ def test_curved_slot_higher_pair_equals_the_equivalent_fourbar():
     rocker's B) carries the pin. As a higher pair, the pin's push acts along the common normal
     through the arc centre — the massless coupler's line — so with a torque on the link the
     pin force, the pivot reaction and M_b equal the four-bar's (frame turned by π)."""
-    from mechlab.kinetostatics.solve import output_axis
     from mechlab.geometry import unit
+    from mechlab.kinetostatics.solve import output_axis
     from mechlab.mechanisms.curved_slot import CircleSlot, CurvedSlotLink
     fb = FourBar(0.1, 0.3, 0.3, 0.35)
     cs = CurvedSlotLink(fb.crank, fb.ground, CircleSlot((fb.rocker, 0.0), fb.coupler), start=1.0)
@@ -550,8 +572,8 @@ def test_curved_slot_higher_pair_equals_the_equivalent_fourbar():
 
 
 def test_verify_and_explorer_messages():
-    from mechlab.kinetostatics.solve import ForceResult
     from mechlab.kinetostatics.machines import press
+    from mechlab.kinetostatics.solve import ForceResult
     from mechlab.widgets.forces import press_explorer, rocker_explorer
     res = press(f=0.1).forces()
     assert "power balance" in res.verify() and res.power_gap < 1e-12
@@ -643,7 +665,7 @@ def _applied(links, loads, w, e, g):
     for name, L in links.items():
         b = L["body"]
         o = L["O"][0]
-        th, dth, ddth = L["th"]
+        _th, dth, ddth = L["th"]
         S, dS, ddS = L["at"](b.com)
         F = b.mass * (np.asarray(g) - (ddS * w * w + dS * e))
         M = _cross(S - o, F) - b.inertia * (ddth * w * w + dth * e)
@@ -754,8 +776,8 @@ def test_audit_friction_vanishes_linearly_and_efficiency_tends_to_one(data, mech
     for f in (1e-3, 1e-4):
         try:
             results[f] = solve(model.with_friction(f, r), mo, loads, omega1=w, eps1=e)
-        except SelfLockingError:   # cannot happen at these f unless a dead point is within reach
-            raise AssertionError(f"self-locking at f = {f} on {mech}")
+        except SelfLockingError as err:   # cannot happen at these f unless a dead point is within reach
+            raise AssertionError(f"self-locking at f = {f} on {mech}") from err
     for f, res in results.items():
         eta = res.efficiency()
         assert np.all(eta.filled(0.0) <= 1.0 + 1e-12)
@@ -822,7 +844,8 @@ def test_class_iv_drive_puts_the_masses_where_the_chapter_says_in_model_for_fram
          Body("link4", "E", ("E", "R"), mass=3.0, inertia=0.2, com=(0.4, 0.1))),
         (Revolute("O", FRAME, "crank", "O"), Revolute("A", "crank", "link2", "A"),
          Revolute("Q", "link2", "link3", "Q"), Revolute("P", "link2", "link5", "P"),
-         Revolute("R", "link3", "link4", "R"), Revolute("T", "link5", "link4", "T"), Revolute("E", FRAME, "link4", "E")),
+         Revolute("R", "link3", "link4", "R"), Revolute("T", "link5", "link4", "T"),
+         Revolute("E", FRAME, "link4", "E")),
         groups=(("link2", "link3", "link5", "link4"),), crank="crank", pivot="O")
     k = class_iv_drive(omega1=7.0, T=15.0)
     mo = k.motion(k.turn(73))

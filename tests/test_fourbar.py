@@ -1,9 +1,9 @@
 import numpy as np
 import pytest
 from hypothesis import given, settings
+from strategies import fourbars, revolving_fourbars
 
 from mechlab import AssemblyError, DimensionError, FourBar, RotationError
-from strategies import fourbars, revolving_fourbars
 
 H = 1e-5
 
@@ -86,7 +86,7 @@ def test_grashof_and_crank_ranges_agree_with_brute_force(fb):
     # every sample of cycle() assembles; the dead points bound the range
     fb.motion(fb.cycle(101))
     if not fb.can_turn:
-        start, end = fb.crank_ranges()[0]
+        _start, end = fb.crank_ranges()[0]
         with pytest.raises(AssemblyError, match="the crank reaches only"):
             fb.motion([end + 1e-3])
 
@@ -144,7 +144,8 @@ def test_physical_values_follow_the_chain_rule():
     w1, e1, t = 3.0, 2.0, np.linspace(0, 0.5, 5)
     phi = 0.2 + w1 * t + 0.5 * e1 * t**2
     dt = 1e-5
-    psi = lambda tt: fb.motion(0.2 + w1 * tt + 0.5 * e1 * tt**2).psi
+    def psi(tt):
+        return fb.motion(0.2 + w1 * tt + 0.5 * e1 * tt**2).psi
     mo = fb.motion(phi)
     omega1 = w1 + e1 * t
     num_w = (psi(t + dt) - psi(t - dt)) / (2 * dt)

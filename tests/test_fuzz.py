@@ -167,7 +167,8 @@ CASES = {
     "mchv3_pivot_table": lambda: (ml.mchv3_pivot_table, (guides()[1],),
                                   {"beyonds": np.array([0.06]), "depth": 0.05, "n": 61}),
     "mchv3_best_table": lambda: (ml.mchv3_best_table, (np.array([np.pi]),),
-                                 {"delta": np.pi, "a": 0.8, "beyonds": np.array([0.06]), "depths": np.array([0.04, 0.05])}),
+                                 {"delta": np.pi, "a": 0.8, "beyonds": np.array([0.06]),
+                                  "depths": np.array([0.04, 0.05])}),
     "mchv5": lambda: (ml.mchv5, (guides()[1],), {"stroke": None, "side": 1, "max_pressure": 60 * DEG}),
     "slot_residual_first_order": lambda: (ml.slot_residual_first_order, (designs()[2], guides()[1], PHI), {}),
     "slider_report": lambda: (ml.slider_report, (designs()[1],), {"dwell": 120 * DEG}),
@@ -285,19 +286,20 @@ CASES = {
 }
 
 # the slow ones get fewer examples
-BUDGET = {"whole_turn_guiding": 3, "existence_region": 3, "design_outcomes": 3, "existence_map": 3, "whole_turn_line": 4,
-          "design.candidates": 8, "design.check_design": 8, "design.evaluate": 10, "design.Comparison.ranked": 4,
+BUDGET = {"whole_turn_guiding": 3, "existence_region": 3, "design_outcomes": 3, "existence_map": 3,
+          "whole_turn_line": 4, "design.candidates": 8, "design.check_design": 8, "design.evaluate": 10,
+          "design.Comparison.ranked": 4,
           "design.Comparison.to_csv": 4, "rise_law": 8, "dwell_extent": 8, "mchv3_half_turn": 4,
-          "dwell_limit": 4, "mchv3_full_turn_best": 6, "mchv3_best_table": 4, "mchv3_pivot_table": 6, "compare_transitions": 4, "mchv2_stroke": 6, "mchv1": 8,
-          "mchv2": 8,
+          "dwell_limit": 4, "mchv3_full_turn_best": 6, "mchv3_best_table": 4, "mchv3_pivot_table": 6,
+          "compare_transitions": 4, "mchv2_stroke": 6, "mchv1": 8, "mchv2": 8,
           "slider_invariants": 6, "slider_report": 6, "compare": 6, "intermittency": 8, "SixBarIV": 8,
           "LambdaSlottedSixBar": 8, "mchv3_full_turn": 8, "Kinetostatics.forces": 8}
 
 
 def finite(value, depth=0) -> bool:
     """Every number reachable in a result is finite (arrays of numbers, containers, dataclasses)."""
-    if depth > 4 or value is None or isinstance(value, str | bytes | type) or callable(value) and not \
-            dataclasses.is_dataclass(value):
+    if depth > 4 or value is None or isinstance(value, str | bytes | type) or (callable(value) and not \
+            dataclasses.is_dataclass(value)):
         return True
     if isinstance(value, numbers.Number):
         return bool(np.isfinite(value)) if not isinstance(value, complex) else bool(np.isfinite(value.real))
@@ -427,9 +429,9 @@ def test_every_family_found_is_fuzzed():
 
 # Exported classes whose instances are results, built by the library and never from user input (a Motion is
 # made by motion(), a Criteria by evaluate()); every other exported callable needs a case above.
-RESULTS = {"DesignOutcomes", "Mechanism", "Grashof", "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
-           "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive", "motion_laws.Invariants", "motion_laws.PrintedInvariants",
-           "motion_laws.LawRow",
+RESULTS = {"DesignOutcomes", "Mechanism", "Grashof", "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes",
+           "Table", "Quantity", "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive",
+           "motion_laws.Invariants", "motion_laws.PrintedInvariants", "motion_laws.LawRow",
            "design.Comparison", "design.Candidate", "design.Refusal",
            "design.SpecificationReport", "design.LimitVerdict", "design.Criteria", "design.Design"}
 def exported_callables() -> dict[str, object]:

@@ -1,6 +1,7 @@
 """Geneva drives: planar external/internal and the spherical offset Geneva of seed 004."""
 
 import dataclasses
+import itertools
 
 import numpy as np
 import pytest
@@ -8,18 +9,25 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mechlab.errors import DimensionError, MechanismError
-from mechlab.synthesis.geneva import (TABLE1_COLUMNS, TABLE1_PRINTED, ReviewRow, SphericalRow, spherical_table,
-                                      table1_comparison, table1_review)
-from mechlab.kinetostatics.drive import DriveError
-from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, impact_kind
-from mechlab.mechanisms.spherical_geneva import SphericalGeneva
 from mechlab.analysis.intermittency import compare, detect_impacts, intermittency
 from mechlab.analysis.motion_laws import invariants, rise_invariants
-from mechlab.kinetostatics.geneva import crank_torque, geneva_drive, drive_angles
+from mechlab.errors import DimensionError, MechanismError
+from mechlab.kinetostatics.drive import DriveError
 from mechlab.kinetostatics.drive import drive as fdrive
+from mechlab.kinetostatics.geneva import crank_torque, drive_angles, geneva_drive
 from mechlab.mechanisms.fourbar import FourBar
+from mechlab.mechanisms.geneva import ExternalGeneva, InternalGeneva, OffsetError, SlotCountError, impact_kind
 from mechlab.mechanisms.slotted import SlottedLink
+from mechlab.mechanisms.spherical_geneva import SphericalGeneva
+from mechlab.synthesis.geneva import (
+    TABLE1_COLUMNS,
+    TABLE1_PRINTED,
+    ReviewRow,
+    SphericalRow,
+    spherical_table,
+    table1_comparison,
+    table1_review,
+)
 
 H = 1e-5
 slots = st.integers(min_value=3, max_value=16)
@@ -333,7 +341,7 @@ def test_table1_reproduces_and_documents_differences():
     assert rows[-1].alpha1 == pytest.approx(rows[-1].alpha0) and rows[-1].beta1 == pytest.approx(22.5)
     # more slots, smaller accelerations (seed conclusion 4)
     eps = [r.eps_max for r in rows]
-    assert all(a > b for a, b in zip(eps, eps[1:]))
+    assert all(a > b for a, b in itertools.pairwise(eps))
 
 
 def test_table1_review_shows_printed_and_computed_with_units_and_marks():
@@ -392,11 +400,12 @@ def _reference_drive(g, J, w, Mr, eta, k):
 
     grid = np.linspace(-s0, s0, 4001)[1:-1]
     vals = np.array([M1(x) for x in grid])
-    roots = [brentq(M1, a, b, xtol=1e-15) for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:]) if fa * fb < 0]
+    roots = [brentq(M1, a, b, xtol=1e-15)
+             for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:], strict=False) if fa * fb < 0]
     edges = [-s0, *roots, s0]
-    mean = sum(quad(Mm, a, b, epsabs=0, epsrel=1e-12, limit=200)[0] for a, b in zip(edges, edges[1:])) / (2 * np.pi)
+    mean = sum(quad(Mm, a, b, epsabs=0, epsrel=1e-12, limit=200)[0] for a, b in itertools.pairwise(edges)) / (2 * np.pi)
     sq = sum(quad(lambda x: Mm(x) ** 2, a, b, epsabs=0, epsrel=1e-12, limit=200)[0]
-             for a, b in zip(edges, edges[1:])) / (2 * np.pi)
+             for a, b in itertools.pairwise(edges)) / (2 * np.pi)
     i = int(np.argmax(np.abs(vals)))
     lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
     peak = max(-minimize_scalar(lambda x: -abs(Mm(x)), bounds=(lo, hi), method="bounded",
@@ -513,7 +522,7 @@ def test_compare_takes_a_dwell_tolerance_per_mechanism():
     mechs = {"external": ExternalGeneva(4, 1.0), "whitworth": SlottedLink(2.0, 1.0), "internal": InternalGeneva(6, 1.0)}
     loose = {"whitworth": 0.4, "internal": 0.02}   # Whitworth λ = 2: min ψ′ / max ψ′ = (λ - 1)/(λ + 1) = 1/3
     rows = compare(mechs, n=1441, phase=1e-3, dwell_tol=loose)
-    for r, (name, m) in zip(rows, mechs.items()):
+    for r, (name, m) in zip(rows, mechs.items(), strict=False):
         assert r == intermittency(m, n=1441, phase=1e-3, dwell_tol=loose.get(name, 1e-9), name=name)
     assert rows.by("name")["whitworth"].standstill_fraction > 0 == rows.by("name")["whitworth"].dwell_fraction
     assert compare(mechs, n=1441).by("name")["whitworth"].standstill_fraction == 0
@@ -554,8 +563,7 @@ def test_intermittency_is_the_motion_law_invariants(cls, z):
 
 
 def test_errata_seed004_geneva():
-    from mechlab.course.errata import table
-    from mechlab.course.errata import seed004_geneva
+    from mechlab.course.errata import seed004_geneva, table
     assert len(seed004_geneva.ERRATA) == 8
     for e in seed004_geneva.ERRATA:
         assert e.source == "004" and e.notebook == "10_geneva_spherical.ipynb"
@@ -581,7 +589,8 @@ def test_planar_drawing_matches_the_motion():
             assert dist.max() <= g.outer_radius + 1e-9 and np.isclose(dist.min(), g.slot_bottom - w, rtol=1e-3)
             assert len(outer) == 0
         else:
-            assert np.isclose(dist.max(), g.slot_bottom + w, rtol=1e-3) and np.isclose(dist.min(), g.inner_radius, rtol=1e-9)
+            assert np.isclose(dist.max(), g.slot_bottom + w, rtol=1e-3)
+            assert np.isclose(dist.min(), g.inner_radius, rtol=1e-9)
             assert np.allclose(np.hypot(*outer.T), g.outer_radius)
         fig, ax = plt.subplots()
         d = drawing_class(g)(ax, g, n=24)
@@ -624,7 +633,7 @@ def test_spherical_drawing_and_comparison_plot():
     assert isinstance(d, SphericalGenevaDrawing) and d.ax.name == "3d" and ax not in fig.axes
     for i in range(20):
         d.set_frame(i)
-        x, y, z = (np.asarray(a) for a in d.contact.get_data_3d())
+        x, y, _z = (np.asarray(a) for a in d.contact.get_data_3d())
         assert (len(x) == 1) == bool(g.engaged(d.motion.phi[i]))
         if len(x):  # the contact point lies on one of the drawn slot arcs' meridians
             az = [np.arctan2(*np.asarray(s.get_data_3d())[1::-1, -1]) for s in d.slot_lines[:g.z]]

@@ -8,7 +8,20 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechlab import AssemblyError, DimensionError, SingularityError
-from mechlab.geometry import PointPath, as_angles, check_length, circle_circle, crank_point, cross, dyad_rpr, dyad_rrp, dyad_rrr, fixed_point, line_circle, wrap
+from mechlab.geometry import (
+    PointPath,
+    as_angles,
+    check_length,
+    circle_circle,
+    crank_point,
+    cross,
+    dyad_rpr,
+    dyad_rrp,
+    dyad_rrr,
+    fixed_point,
+    line_circle,
+    wrap,
+)
 from mechlab.mechanisms.base import FULL_TURN, arc_set
 
 coords = st.floats(-5, 5)
@@ -51,7 +64,8 @@ def test_rrr_dyad_closes_and_its_analogs_match_differences(sign):
     phi = np.linspace(0, 2 * np.pi, 101)
     h = 1e-5
     E = fixed_point((2.0, 0.5), len(phi))
-    solve = lambda f: dyad_rrr(_moving_point(f), fixed_point((2.0, 0.5), len(f)), 1.5, 1.2, sign)
+    def solve(f):
+        return dyad_rrr(_moving_point(f), fixed_point((2.0, 0.5), len(f)), 1.5, 1.2, sign)
     B = solve(phi)
     A = _moving_point(phi)
     assert np.max(np.abs(np.hypot(*(B.p - A.p).T) - 1.5)) < 1e-12
@@ -65,7 +79,8 @@ def test_rrr_dyad_closes_and_its_analogs_match_differences(sign):
 def test_rrp_dyad_analogs_match_differences(sign):
     phi = np.linspace(0, 2 * np.pi, 101)
     h = 1e-5
-    solve = lambda f: dyad_rrp(_moving_point(f), (0.0, 0.2), 0.3, 1.0, sign)
+    def solve(f):
+        return dyad_rrp(_moving_point(f), (0.0, 0.2), 0.3, 1.0, sign)
     B, s = solve(phi)
     A = _moving_point(phi)
     assert np.max(np.abs(np.hypot(*(B.p - A.p).T) - 1.0)) < 1e-12
@@ -77,7 +92,8 @@ def test_rrp_dyad_analogs_match_differences(sign):
 def test_rpr_dyad_analogs_match_differences():
     phi = np.linspace(0, 2 * np.pi, 101)
     h = 1e-5
-    solve = lambda f: dyad_rpr(_moving_point(f), fixed_point((-1.0, 0.1), len(f)))
+    def solve(f):
+        return dyad_rpr(_moving_point(f), fixed_point((-1.0, 0.1), len(f)))
     ang, rho = solve(phi)
     (ap, rp), (am, rm) = solve(phi + h), solve(phi - h)
     assert np.max(np.abs(wrap(ap.theta - am.theta) / (2 * h) - ang.d)) < 1e-7
@@ -149,13 +165,13 @@ def test_complex_views_share_memory():
 
 @pytest.mark.parametrize("sign", [1, -1])
 def test_rocker_dyad_agrees_with_the_general_dyad_and_with_differences(sign):
-    from mechlab.geometry import rocker_dyad, vector_angle, relative
+    from mechlab.geometry import relative, rocker_dyad, vector_angle
     phi = np.linspace(0, 2 * np.pi, 201)
     A = _moving_point(phi)
     B1, psi = rocker_dyad(A, (2.0, 0.5), 1.5, 1.2, sign, reference=1.0)
     B2 = dyad_rrr(A, fixed_point((2.0, 0.5), len(phi)), 1.5, 1.2, sign)
     ang = vector_angle(relative(B2, fixed_point((2.0, 0.5), len(phi))))
-    for a, b in zip(B1, B2):
+    for a, b in zip(B1, B2, strict=False):
         assert np.max(np.abs(a - b)) < 1e-12
     assert np.max(np.abs(psi.d - ang.d)) < 1e-12 and np.max(np.abs(psi.dd - ang.dd)) < 1e-11
     assert np.all(np.abs(psi.theta - 1.0) <= np.pi) and np.allclose(wrap(psi.theta - ang.theta), 0, atol=1e-14)
@@ -173,13 +189,13 @@ def test_long_inputs_split_into_blocks_and_threads_give_the_same_numbers(monkeyp
     ref = 0.3 + 0.5 * phi  # a moving reference branch, as for a rotating output
     B, psi = G.rocker_dyad(A, (2.0, 0.5), 1.9, 1.6, -1, phi, reference=ref)
     single = [crank_point(0.7, phi[i:i + 1], centre=(0.2, -0.1)) for i in (0, 4_321, 12_344)]
-    for a, i in zip(single, (0, 4_321, 12_344)):
+    for a, i in zip(single, (0, 4_321, 12_344), strict=False):
         assert np.array_equal(a.p[0], A.p[i])
         b, p = G.rocker_dyad(a, (2.0, 0.5), 1.9, 1.6, -1, reference=ref[i])
         assert np.allclose([b.p[0], b.d[0], b.dd[0]], [B.p[i], B.d[i], B.dd[i]], atol=1e-13, rtol=0)
         assert np.allclose([p.theta[0], p.d[0], p.dd[0]], [psi.theta[i], psi.d[i], psi.dd[i]], atol=1e-13, rtol=0)
     general = dyad_rrr(PointPath(A.p, np.array(A.d), np.array(A.dd)), fixed_point((2.0, 0.5), len(phi)), 1.9, 1.6, -1)
-    for a, b in zip(B, general):
+    for a, b in zip(B, general, strict=False):
         assert np.max(np.abs(a - b)) < 1e-12
     assert np.all(np.abs(psi.theta - ref) <= np.pi)
 

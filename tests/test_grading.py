@@ -251,7 +251,8 @@ def test_a_submission_never_gets_credit_for_another_submissions_file(release, tm
     for name in ("TMPDIR", "TMP", "TEMP"):
         monkeypatch.setenv(name, str(temp))
     _run("grade", str(subs), "--out", str(out), "--timeout", str(TIMEOUT))
-    rows = {r["student_id"]: r for r in csv.DictReader(open(out / "grades.csv", newline=""))}
+    with open(out / "grades.csv", newline="") as fh:
+        rows = {r["student_id"]: r for r in csv.DictReader(fh)}
     pts = _auto_points(SLOT)                                        # the explanation waits for the lecturer
     assert float(rows["alice"]["raw_score"]) == pts
     assert float(rows["mallory"]["raw_score"]) == pts - 4           # the design exercise's 4 points

@@ -78,7 +78,7 @@ class Loop:
         return dx, ddx
 
     def solve_at(self, x0, phi, p):
-        x, info, ier, msg = fsolve(self.F, np.asarray(x0, float), args=(phi, p), fprime=self.J,
+        x, _info, _ier, _msg = fsolve(self.F, np.asarray(x0, float), args=(phi, p), fprime=self.J,
                                    full_output=True, xtol=1e-14)
         for _ in range(2):  # two Newton polish steps
             J = self.J(x, phi, p)
@@ -479,7 +479,7 @@ def test_instant_centres_slider_crank(m):
     a, l, e, k = m.crank, m.rod, m.offset, m.assembly
     sn = (e - a * np.sin(phis[0])) / l
     th0 = np.arcsin(sn) if k > 0 else np.pi - np.arcsin(sn)
-    x, d, _ = slider_loop().follow((th0, a * np.cos(phis[0]) + l * np.cos(th0)), phis, (a, l, e))
+    _x, d, _ = slider_loop().follow((th0, a * np.cos(phis[0]) + l * np.cos(th0)), phis, (a, l, e))
     ic = ml.instant_centres(m, phis)
     try:
         out, om = ic.output_analog(), ic.angular_analog("rod")
@@ -495,7 +495,7 @@ def test_instant_centres_slider_crank(m):
 def test_instant_centres_slotted_and_sine(a, dist):
     assume(abs(a / dist - 1) > 0.05)
     phis = np.linspace(0.05, 2 * np.pi - 0.05, 37)
-    x, d, _ = slotted_loop().follow((0.0, a + dist), np.concatenate([[0.0], phis]), (a, dist))
+    _x, d, _ = slotted_loop().follow((0.0, a + dist), np.concatenate([[0.0], phis]), (a, dist))
     ic = ml.instant_centres(ml.SlottedLink(a, dist), phis)
     _cmp(ic.output_analog(), d[1:, 0], 1e-7 * max(1, np.max(np.abs(d))), "ψ' of the slotted link from the centres")
     icy = ml.instant_centres(ml.SineMechanism(a), phis)
@@ -1174,7 +1174,7 @@ def test_non_assemblable_fourbar_is_refused_or_every_reachable_angle_is_finite(a
         assert np.all(np.isfinite(arr))
     # an angle outside the ranges is refused by name, with numbers
     if not fb.can_turn:
-        s0, e0 = fb.crank_ranges()[0]
+        _s0, _e0 = fb.crank_ranges()[0]
         out = [p for p in np.linspace(0, 2 * np.pi, 73)
                if not any(0 < np.mod(p - b, 2 * np.pi) < e - b for b, e in fb.crank_ranges())]
         if out:
@@ -1270,9 +1270,9 @@ def test_crank_angle_shapes_documented_by_as_angles(name):
         out = _law(mo)
         assert all(np.shape(o) == () for o in (*out, mo.phi, mo.transmission))
         assert all(p.p.shape == p.d.shape == p.dd.shape == (2,) for p in mo.points.values())
-        assert all(abs(o - r[0]) < 1e-12 for o, r in zip(out, ref))
+        assert all(abs(o - r[0]) < 1e-12 for o, r in zip(out, ref, strict=False))
     out = _law(m.motion([1.0, 2.0]))
-    assert all(np.allclose(o, r, atol=1e-12) for o, r in zip(out, ref))
+    assert all(np.allclose(o, r, atol=1e-12) for o, r in zip(out, ref, strict=False))
     for bad in (np.ones((2, 2)), np.ones((1, 1)), [float("nan")], [1.0, float("inf")]):
         with pytest.raises(ml.DimensionError):
             m.motion(bad)

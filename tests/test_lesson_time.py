@@ -95,7 +95,8 @@ def test_an_added_exercise_adds_its_kinds_minutes(kind, heading):
     after = lesson_time.estimate(nb)
     words = lesson_time.prose_counts(text)[0]
     assert after.exercises == {kind: 1}
-    assert after.exact - before.exact == pytest.approx(lesson_time.EXERCISE[kind] + words / lesson_time.WORDS_PER_MINUTE)
+    expected = lesson_time.EXERCISE[kind] + words / lesson_time.WORDS_PER_MINUTE
+    assert after.exact - before.exact == pytest.approx(expected)
 
 
 def test_what_is_no_exercise_and_what_costs_nothing():
@@ -146,7 +147,7 @@ def test_write_states_the_model_in_a_copy_of_the_course(tmp_path):
     times = [lesson_time.estimate(lesson_time.read(tmp_path / "notebooks" / f"{s}.ipynb")).minutes
              for s in ("00_first", "01_second")]
     assert times[1] > times[0]
-    for stem, minutes in zip(("00_first", "01_second"), times):
+    for stem, minutes in zip(("00_first", "01_second"), times, strict=False):
         assert lesson_time.stated(lesson_time.read(tmp_path / "notebooks" / f"{stem}.ipynb")) == minutes
     intro = (tmp_path / "book" / "intro.md").read_text()
     assert f"| start | {times[0]} min | — | — |" in intro and f"| go on | {times[1]} min | — | 0 |" in intro
@@ -169,7 +170,7 @@ def test_writing_a_time_changes_only_that_line(path):
     old = path.read_text()
     said = lesson_time.stated(lesson_time.read(path))
     new = lesson_time.set_time(old, said + 5)
-    diff = [(a, b) for a, b in zip(old.splitlines(), new.splitlines()) if a != b]
+    diff = [(a, b) for a, b in zip(old.splitlines(), new.splitlines(), strict=False) if a != b]
     assert len(old.splitlines()) == len(new.splitlines()) and len(diff) == 1, diff
     assert lesson_time.stated(nbformat.reads(new, as_version=4)) == said + 5
 

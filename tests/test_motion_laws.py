@@ -5,8 +5,8 @@ import dataclasses
 import numpy as np
 import pytest
 
-from mechlab.errors import MechanismError
 from mechlab.analysis.motion_laws import LAWS, law_invariants, rise_invariants, thesis_cam_rows
+from mechlab.errors import MechanismError
 
 
 @pytest.mark.parametrize("name", list(LAWS))
@@ -28,7 +28,7 @@ def test_law_is_a_rise_with_consistent_analogs(name):
 def test_invariants_match_closed_forms(name):
     law = LAWS[name]
     got = law_invariants(law)
-    for g, c in zip(got.values, law.closed):
+    for g, c in zip(got.values, law.closed, strict=False):
         if c is not None:
             assert abs(g - c) < 1e-7 * max(1, c)
 
@@ -46,7 +46,7 @@ def test_thesis_rows_where_they_agree():
     for row in thesis_cam_rows():
         name = row.law
         got = law_invariants(name)
-        for g, p in zip(got.values, row.values):
+        for g, p in zip(got.values, row.values, strict=False):
             if p is None:
                 continue
             if (name, p) in MISPRINTS:
@@ -150,7 +150,7 @@ PUBLISHED = {
 @pytest.mark.parametrize("name", sorted(PUBLISHED))
 def test_law_table_gives_the_published_factors_to_four_digits(name):
     row = law_table([name]).by("law")[name]
-    for got, want in zip((row.B, row.C, row.J), PUBLISHED[name]):
+    for got, want in zip((row.B, row.C, row.J), PUBLISHED[name], strict=False):
         if np.isinf(want):
             assert got is None and np.isinf(law_jerk(name))   # the table shows an unbounded jerk as None
         else:

@@ -92,10 +92,10 @@ def test_it_is_found_as_a_family():
 def test_motion_against_the_closed_form(want):
     mo = RAM.motion(PHI)
     for k, joint in enumerate("BCD"):
-        for got, w in zip((mo.points[joint].p, mo.points[joint].d, mo.points[joint].dd), want):
+        for got, w in zip((mo.points[joint].p, mo.points[joint].d, mo.points[joint].dd), want, strict=False):
             assert np.abs(got - w[:, 2 * k:2 * k + 2]).max() <= 1e-10 * max(1.0, np.abs(w).max()), joint
     # the output: the ram's height above G, with its analogs
-    for got, w in zip((mo.s, mo.ds, mo.dds), want):
+    for got, w in zip((mo.s, mo.ds, mo.dds), want, strict=False):
         assert np.abs(got - w[:, 5]).max() <= 1e-10 * max(1.0, np.abs(w[:, 5]).max())
     assert float(np.ptp(RAM.motion(RAM.turn(721)).s)) > 1.0   # a real stroke, not a ram standing still
 

@@ -77,7 +77,7 @@ def check_numbering(mech):
         return
     phi = float(mech.cycle(7)[2]) + 0.01
     d = draw(mech, phi)
-    shown = {part.number: text.get_text() for part, text in zip(d.numbered, d.numbers)}
+    shown = {part.number: text.get_text() for part, text in zip(d.numbered, d.numbers, strict=False)}
     frame = d.numbers[len(d.numbered)].get_text()
     assert len(shown) == len(d.numbered), f"a link numbered twice: {[p.number for p in d.numbered]}"
     # the centres number the links' labels
@@ -139,7 +139,8 @@ def test_design_counts_come_from_the_structure():
     expected = {"external Geneva": (2, 2, 2), "internal Geneva": (2, 2, 2), "spherical Geneva": (2, 2, 2),
                 "curved slot": (3, 3, 1),
                 "disc cam": (3, 3, 1), "lambda six-bar, type 1 (rocker dwell)": (5, 7, 0),
-                "lambda six-bar, type 2 (slider dwell)": (5, 7, 0), "lambda six-bar, type 3 (half-turn index)": (5, 7, 0),
+                "lambda six-bar, type 2 (slider dwell)": (5, 7, 0),
+                "lambda six-bar, type 3 (half-turn index)": (5, 7, 0),
                 "lambda six-bar, type 5 (translating-slot dwell)": (5, 7, 0)}
     for name, counts in expected.items():
         if name in seen:

@@ -30,7 +30,7 @@ def _leaves(value, path="result"):
     if isinstance(value, (numbers.Number, np.ndarray, np.generic)):
         yield path, value
     elif isinstance(value, PointPath):
-        yield from ((f"{path}.{k}", v) for k, v in zip(("p", "d", "dd"), value))
+        yield from ((f"{path}.{k}", v) for k, v in zip(("p", "d", "dd"), value, strict=False))
     elif isinstance(value, dict):
         for k, v in value.items():
             yield from _leaves(v, f"{path}[{k!r}]")
@@ -77,9 +77,11 @@ def test_every_public_function_taking_phi_gives_scalars_for_a_scalar(name):
     where = "args" if any(a is PHI for a in args) else "kwargs"
     if where == "args":
         i = next(i for i, a in enumerate(args) if a is PHI)
-        call = lambda phi: f(*args[:i], phi, *args[i + 1:], **kwargs)
+        def call(phi):
+            return f(*args[:i], phi, *args[i + 1:], **kwargs)
     else:
-        call = lambda phi: f(*args, **{**kwargs, "phi": phi})
+        def call(phi):
+            return f(*args, **{**kwargs, "phi": phi})
     many = call(PHI)
     for k in (0, 3):
         _assert_scalar_version(call(float(PHI[k])), many, k)
@@ -96,7 +98,7 @@ def test_dwell_law_methods_give_scalars_for_a_scalar(method):
     many = f(phi)
     for k in (0, 3, 6):
         one = f(float(phi[k]))
-        for (key, v), (_, w) in zip(_leaves(one), _leaves(many)):
+        for (key, v), (_, w) in zip(_leaves(one), _leaves(many), strict=False):
             assert np.ndim(v) == np.ndim(w) - 1, f"{method}: {key} has shape {np.shape(v)} at a scalar φ"
             assert np.allclose(v, w[k], atol=1e-12), key
 
@@ -171,7 +173,8 @@ def test_no_named_tuple_class_in_the_library():
             continue   # they import the plotting stack; they define no results
         module = importlib.import_module(info.name)
         found += [f"{info.name}.{k}" for k, v in vars(module).items()
-                  if inspect.isclass(v) and v.__module__ == info.name and issubclass(v, tuple) and hasattr(v, "_fields")]
+                  if inspect.isclass(v) and v.__module__ == info.name and issubclass(v, tuple)
+                  and hasattr(v, "_fields")]
     assert found == []
 
 
@@ -220,7 +223,7 @@ def test_every_public_method_taking_phi_gives_scalars_for_a_scalar(name):
     many = f(phi)
     for k in (1, 4):
         one = f(float(phi[k]))
-        for (key, v), (_, w) in zip(_leaves(one), _leaves(many)):
+        for (key, v), (_, w) in zip(_leaves(one), _leaves(many), strict=False):
             if np.ndim(w) >= 1 and len(w) == len(phi):
                 assert np.ndim(v) == np.ndim(w) - 1, f"{name}: {key} has shape {np.shape(v)} at a scalar φ"
                 assert np.allclose(v, w[k], atol=1e-9), key

@@ -3,9 +3,9 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import revolving_slider_cranks
 
 from mechlab import DimensionError, RotationError, SineMechanism, SliderCrank, SlottedLink
-from strategies import revolving_slider_cranks
 
 H = 1e-5
 

@@ -7,11 +7,19 @@ import ezdxf
 import numpy as np
 import pytest
 
-from mechlab.synthesis.dwell_slot import curved_slot_dwell
-from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
 from mechlab.errors import DimensionError
-from mechlab.synthesis.slot_export import (SlotUndercutError, check_roller, min_radius_of_curvature, read_csv, read_dxf,
-                                             slot_profile, write_csv, write_dxf)
+from mechlab.mechanisms.curved_slot import CurvedSlotLink, SampledSlot
+from mechlab.synthesis.dwell_slot import curved_slot_dwell
+from mechlab.synthesis.slot_export import (
+    SlotUndercutError,
+    check_roller,
+    min_radius_of_curvature,
+    read_csv,
+    read_dxf,
+    slot_profile,
+    write_csv,
+    write_dxf,
+)
 
 DEG = np.pi / 180
 
@@ -68,7 +76,7 @@ def test_dxf_round_trip(mech):
         caps = msp.query('ARC[layer=="FLANKS"]')
         assert len(caps) == 2 and all(c.dxf.radius == pytest.approx(0.1) for c in caps)
         # each cap joins the two flanks at a slot end and bulges outwards
-        for cap, i in zip(caps, (0, -1)):
+        for cap, i in zip(caps, (0, -1), strict=False):
             pts_cap = np.array([[p.x, p.y] for p in (cap.start_point, cap.end_point)])
             assert {tuple(np.round(p, 9)) for p in pts_cap} == {tuple(np.round(prof.left[i], 9)),
                                                                tuple(np.round(prof.right[i], 9))}
@@ -94,7 +102,7 @@ def test_read_dxf_gives_back_what_write_dxf_wrote(mech, tmp_path):
 def test_read_dxf_names_a_file_that_is_no_slot(tmp_path):
     from mechlab import CamProgramme, TranslatingRollerCam, write_cam_dxf
 
-    with pytest.raises(DimensionError, match="path = .*missing.dxf.* not a file"):
+    with pytest.raises(DimensionError, match=r"path = .*missing.dxf.* not a file"):
         read_dxf(tmp_path / "missing.dxf")
     (tmp_path / "text.dxf").write_text("not a drawing")
     with pytest.raises(DimensionError, match="not a readable DXF"):

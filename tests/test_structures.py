@@ -133,7 +133,7 @@ def test_the_spherical_geneva_has_no_planar_structure_and_says_so():
     st = g.structure()
     assert st.spatial and st.mobility() == 1 and [st.mobility(k) for k in st.groups] == [0]
     for ask in (st.planar, lambda: instant_centres(g, [0.1, 0.2]), lambda: model_for(g)):
-        with pytest.raises(SpatialMechanismError, match="spatial mechanism .* no planar structure"):
+        with pytest.raises(SpatialMechanismError, match=r"spatial mechanism .* no planar structure"):
             ask()
 
 

@@ -75,12 +75,12 @@ def test_scalar_in_scalar_out_and_the_output_law_for_every_family(name):
     law = many.output
     fields = ("psi", "dpsi", "ddpsi") if law.kind == "angle" else ("s", "ds", "dds")
     assert law.kind == m.output and law.name == ("ψ" if law.kind == "angle" else "s")
-    for got, field in zip((law.value, law.d, law.dd), fields):
+    for got, field in zip((law.value, law.d, law.dd), fields, strict=False):
         assert got is getattr(many, field)
     assert np.array_equal(many.velocity(3.0), 3.0 * law.d)
     one = m.motion(float(phi[2]))
     assert np.ndim(one.phi) == 0 and np.ndim(one.transmission) == 0
-    for v, ref in zip((one.output.value, one.output.d, one.output.dd), (law.value, law.d, law.dd)):
+    for v, ref in zip((one.output.value, one.output.d, one.output.dd), (law.value, law.d, law.dd), strict=False):
         assert np.ndim(v) == 0 and v == pytest.approx(ref[2], abs=1e-12)
     for k, p in one.points.items():
         assert p.p.shape == many.points[k].p.shape[1:] and np.allclose(p.p, many.points[k].p[2], atol=1e-12)
@@ -135,7 +135,7 @@ def test_link_angle_refuses_unknown_and_coincident_joints():
     with pytest.raises(ml.SingularityError, match="O and O coincide"):
         mo.link_angle("O", "O")
     with pytest.raises(ml.DimensionError, match="not an angle"):
-        ml.SliderCrank(1, 3).motion(0.0).output.degrees
+        _ = ml.SliderCrank(1, 3).motion(0.0).output.degrees
 
 
 def test_law_repr_reads_in_degrees():
@@ -179,7 +179,7 @@ def test_nearest_assembly_picks_the_branch_of_the_sketch():
         assert ml.nearest_assembly(fb, phi, B=sketch).assembly == sign
     sc = ml.SliderCrank(1, 3, 0.5)
     assert ml.nearest_assembly(sc, 0.3, B=(-3.0, 0.5)).assembly == -1
-    with pytest.raises(ml.DimensionError, match="'Q'.*not joints"):
+    with pytest.raises(ml.DimensionError, match=r"'Q'.*not joints"):
         ml.nearest_assembly(fb, phi, Q=(0, 0))
     with pytest.raises(ml.DimensionError, match="has no assembly"):
         ml.nearest_assembly(ml.SineMechanism(1), phi, B=(0, 0))

@@ -355,7 +355,8 @@ def _widget_modules():
     import pkgutil
 
     from mechlab import widgets
-    return [widgets] + [importlib.import_module(f"mechlab.widgets.{m.name}") for m in pkgutil.iter_modules(widgets.__path__)]
+    return [widgets] + [importlib.import_module(f"mechlab.widgets.{m.name}")
+                        for m in pkgutil.iter_modules(widgets.__path__)]
 
 
 def _explorer_factories() -> dict:

@@ -16,7 +16,6 @@ import json
 import os
 
 import pytest
-
 from conftest import ROOT, block_remote
 from test_book import HTML, PAGES, SHOTS, server  # noqa: F401  (the same pages on the same server)
 
@@ -26,7 +25,8 @@ FAILING = {"serious", "critical"}
 FOUND: dict[str, list[dict]] = {}
 
 _RUN_JS = """async (tags) => {
-  const result = await axe.run({exclude: [['.theme-switch-button']]}, {runOnly: {type: 'tag', values: tags}, resultTypes: ['violations']});
+  const result = await axe.run({exclude: [['.theme-switch-button']]},
+                               {runOnly: {type: 'tag', values: tags}, resultTypes: ['violations']});
   return result.violations.map(v => ({id: v.id, impact: v.impact, help: v.help,
     nodes: v.nodes.map(n => n.target.join(' ') + ' :: ' + (n.failureSummary || '').split('\\n').slice(1).join(' '))}));
 }"""

@@ -21,11 +21,11 @@ JupyterLab's own interface is left out (it is not the course's content).
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 
 import pytest
-
 from conftest import ROOT, block_remote
 from test_lab import _READY_JS, _STATE_JS, NOTEBOOKS, SHOTS, lab  # noqa: F401  (the same lab)
 
@@ -150,7 +150,8 @@ def test_explorers_by_keyboard_with_named_controls(browser, lab, path):  # noqa:
         report["axe_explorers"] = violations
         FOUND[path.stem] = report
         SHOTS.mkdir(parents=True, exist_ok=True)
-        counts = {where: {impact: sum(len(v["nodes"]) for r in FOUND.values() for v in r[where] if v["impact"] == impact)
+        counts = {where: {impact: sum(len(v["nodes"]) for r in FOUND.values() for v in r[where]
+                                      if v["impact"] == impact)
                           for impact in ("critical", "serious", "moderate", "minor")}
                   for where in ("axe", "axe_explorers")}
         (SHOTS / "a11y_lab.json").write_text(json.dumps({"chapters": len(FOUND), "nodes by impact, every output":
@@ -161,8 +162,6 @@ def test_explorers_by_keyboard_with_named_controls(browser, lab, path):  # noqa:
         assert not failing, f"{path.name}: serious or critical axe violations in its explorers: {failing}"
         assert not remote, f"{path.name}: requests to another host: {remote}"
     finally:
-        try:
+        with contextlib.suppress(Exception):
             page.evaluate("() => window.jupyterapp.shell.currentWidget.sessionContext.shutdown()")
-        except Exception:
-            pass
         page.close()

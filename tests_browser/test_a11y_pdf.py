@@ -16,7 +16,6 @@ import zlib
 from pathlib import Path
 
 import pytest
-
 from conftest import ROOT
 
 PDF = ROOT / "book" / "_build" / "pdf" / "mechlab.pdf"
@@ -52,6 +51,7 @@ def test_a_small_page_prints_tagged_with_its_figures_described(browser, tmp_path
 
     matplotlib.use("Agg")
     import print_pdf  # tools/ (conftest puts it on the path)
+
     from mechlab import ExternalGeneva, FourBar
     from mechlab.draw import alt_text, animate, draw
 

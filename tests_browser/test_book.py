@@ -20,7 +20,6 @@ import threading
 from urllib.parse import urlparse
 
 import pytest
-
 from conftest import LOCAL_HOSTS, ROOT, block_remote
 
 HTML = ROOT / "book" / "_build" / "html"

@@ -9,18 +9,17 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import nbformat  # noqa: E402
-import pytest  # noqa: E402
-from matplotlib.animation import FuncAnimation  # noqa: E402
-
-from conftest import ROOT  # noqa: E402
+import matplotlib.pyplot as plt
+import nbformat
+import pytest
+from conftest import ROOT
+from matplotlib.animation import FuncAnimation
 
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
-import errata_page  # noqa: E402
-import mechbook  # noqa: E402
-from mechlab.course.errata import SOURCES, Erratum
+import errata_page
+import mechbook
 
+from mechlab.course.errata import SOURCES, Erratum
 
 
 def _jshtml() -> str:
@@ -161,16 +160,16 @@ def test_kernel_startup_shows_widgets_statically(tmp_path, monkeypatch):
         nbformat.v4.new_code_cell("from mechlab.widgets import fourbar_explorer\n"
                                   "fourbar_explorer(question='when does the crank stop turning?')")]
     NotebookClient(nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}).execute()
-    box = [o for o in nb.cells[0].outputs if o.get("output_type") == "execute_result"][0]["data"]
+    box = next(o for o in nb.cells[0].outputs if o.get("output_type") == "execute_result")["data"]
     assert "application/vnd.jupyter.widget-view+json" in box  # the live view is still there for JupyterLab
     html = box["text/html"]
     assert html.count('<img src="data:image/png;base64,') == 1
     assert "length = 2.5" in html and "make lab" in html
-    alone = [o for o in nb.cells[1].outputs if o.get("output_type") == "execute_result"][0]["data"]["text/html"]
+    alone = next(o for o in nb.cells[1].outputs if o.get("output_type") == "execute_result")["data"]["text/html"]
     assert "<img" not in alone and "make lab" in alone
     assert "inline" in nb.cells[2].outputs[0]["text"]  # %matplotlib widget fell back to inline
     # a mechlab explorer: drawn statically, its question and status line kept, no "play = 0"
-    explorer = [o for o in nb.cells[3].outputs if o.get("output_type") == "display_data"][0]["data"]["text/html"]
+    explorer = next(o for o in nb.cells[3].outputs if o.get("output_type") == "display_data")["data"]["text/html"]
     assert explorer.count('<img src="data:image/png;base64,') == 1
     assert "<b>Investigate:</b> when does the crank stop turning?" in explorer
     assert "transmission angle μ: 60.0° … 112.9°" in explorer

@@ -7,9 +7,8 @@ import re
 from urllib.parse import parse_qs, urlparse
 
 import pytest
-from sphinx.cmd.build import build_main
-
 from conftest import ROOT
+from sphinx.cmd.build import build_main
 
 CONF = f"""
 import sys

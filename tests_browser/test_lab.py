@@ -15,6 +15,7 @@ PID. A screenshot of each notebook is saved under book/_build/screenshots/.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import secrets
@@ -28,11 +29,10 @@ import urllib.request
 from pathlib import Path
 
 import pytest
-
 from conftest import ROOT, block_remote, free_port
 
 sys.path.insert(0, str(ROOT))
-import course  # noqa: E402  (the script at the repository's root, which `make lab` runs)
+import course
 
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 SHOTS = ROOT / "book" / "_build" / "screenshots"
@@ -58,7 +58,7 @@ def lab():
     port = free_port()
     env = dict(os.environ, JUPYTER_RUNTIME_DIR=str(tmp / "runtime"), JUPYTER_CONFIG_DIR=str(tmp / "config"),
                IPYTHONDIR=str(tmp / "ipython"), MPLBACKEND="module://matplotlib_inline.backend_inline")
-    log = open(tmp / "lab.log", "w")
+    log = open(tmp / "lab.log", "w")  # noqa: SIM115  JupyterLab writes it until the finally below closes it
     proc = subprocess.Popen(
         course.lab_argv(Path(sys.executable), root, port)
         + ["--ServerApp.port_retries=0", f"--IdentityProvider.token={token}", "--LabApp.expose_app_in_browser=True",
@@ -212,7 +212,7 @@ def test_notebooks_found():
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_notebook_in_jupyterlab(browser, lab, path):
-    base, token, root = lab
+    base, token, _root = lab
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
     page_errors = []
     page.on("pageerror", lambda e: page_errors.append(str(e)))
@@ -275,10 +275,8 @@ def test_notebook_in_jupyterlab(browser, lab, path):
         assert not page_errors, f"{path.name}: page errors: {page_errors}"
         assert not remote, f"{path.name}: requests to another host: {remote}"
     finally:
-        try:  # free the kernel's memory and CPU for the next notebook
+        with contextlib.suppress(Exception):  # free the kernel's memory and CPU for the next notebook
             page.evaluate("() => window.jupyterapp.shell.currentWidget.sessionContext.shutdown()")
-        except Exception:
-            pass
         page.close()
     # the copy was used, never the tracked notebook
     assert json.loads(path.read_text())["cells"][0].get("outputs", []) == []
@@ -306,7 +304,7 @@ CLIPPING_PAGE = """<style>
   <div class="widget-slider"><label class="widget-label" id="inner"><span>pressure angle ≤ (deg) at the end</span></label></div>
   <div class="widget-slider"><label class="widget-label" id="inpad">pressure angle ≤ (deg)</label></div>
   <div class="widget-slider"><label class="widget-label" id="fits">crank angle φ (deg)</label></div>
-</div>"""
+</div>"""  # noqa: E501  one element a line, as the widgets draw it: no white space inside a label
 # sizes two labels around their text: "inpad" 4 px short of it (the text runs into the 8 px padding and
 # the ellipsis cuts it), "fits" 4 px more than it needs; returns scrollWidth and clientWidth of each label
 _SIZE_AROUND_TEXT_JS = """() => {

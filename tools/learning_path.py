@@ -7,9 +7,10 @@ A chapter's needs are the chapters that its "Prerequisites" section links to; a 
 book/intro.md. An arrow joins a chapter to the one that needs it, left out where a longer chain
 of arrows already leads there. At most LANES boxes stand side by side, so that the labels stay
 readable where the book shows the picture (its 752 px column). The times in that table are the time
-model's (tools/lesson_time.py, whose ``--write`` rewrites the table and redraws this picture). tests/test_course_frame.py checks that
-every need comes earlier in the path, that the committed picture is the one this script draws, that
-no arrow runs through a box and that every label is at least 11 px high in that column.
+model's (tools/lesson_time.py, whose ``--write`` rewrites the table and redraws this picture).
+tests/test_course_frame.py checks that every need comes earlier in the path, that the committed picture
+is the one this script draws, that no arrow runs through a box and that every label is at least 11 px
+high in that column.
 """
 
 from __future__ import annotations
@@ -26,8 +27,8 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.patches import FancyArrowPatch, FancyBboxPatch  # noqa: E402
+import matplotlib.pyplot as plt
+from matplotlib.patches import FancyArrowPatch, FancyBboxPatch
 
 ROOT = Path(__file__).resolve().parent.parent
 FIGURE = ROOT / "book" / "figures" / "learning_path.svg"
@@ -113,7 +114,8 @@ def cost(where, edges) -> float:
     """Arrows through boxes count most, then crossing arrows, then slanted arrows and the width."""
     segments = [segment(where, e) for e in edges]
     crossings = sum(not set(e) & set(f) and crosses(a, b)
-                    for i, (e, a) in enumerate(zip(edges, segments)) for f, b in zip(edges[i + 1:], segments[i + 1:]))
+                    for i, (e, a) in enumerate(zip(edges, segments, strict=False))
+                    for f, b in zip(edges[i + 1:], segments[i + 1:], strict=False))
     xs = [x for x, _ in where.values()]
     return (100 * through_boxes(where, edges) + 10 * crossings + sum(abs(b[0] - a[0]) for a, b in segments)
             + 4 * (max(xs) - min(xs)))

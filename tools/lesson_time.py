@@ -23,8 +23,8 @@ cost nothing: the student may skip them.
   output or figure) plus :data:`CODE_LINE` for each non-blank line (reading code that calls a library
   one does not know yet: about 5 lines a minute).
 - *widgets*: each explorer (a call to one of :func:`widget_functions`, the explorers of
-  ``mechlab.widgets``) costs :data:`WIDGET`; one asked with a ``question=`` costs :data:`WIDGET_QUESTION` instead (read it, move the sliders until
-  the answer shows, write it down).
+  ``mechlab.widgets``) costs :data:`WIDGET`; one asked with a ``question=`` costs :data:`WIDGET_QUESTION`
+  instead (read it, move the sliders until the answer shows, write it down).
 - *exercises*: each of the chapter's own exercises costs :data:`EXERCISE` minutes by its kind —
   predict (a choice and its reason), explain (a few sentences), compute (a number with its unit),
   debug (find and fix the slip in given code), design (a mechanism meeting a specification), code
@@ -292,7 +292,8 @@ def intro_text(intro: str, lesson: dict[str, int], homework: dict[str, int | Non
         extra = homework.get(stem)
         return f"{m.group(1)}{lesson[stem]} min | {f'{extra} min' if extra else '—'} |{m.group(4)}"
     intro = INTRO_ROW.sub(row, intro)
-    intro = re.sub(r"^\| chapter \| you learn to \| time \|(?: exercises \|)? needs \|\n\|---\|---\|---\|(?:---\|)?---\|",
+    intro = re.sub(r"^\| chapter \| you learn to \| time \|(?: exercises \|)? needs "
+                   r"\|\n\|---\|---\|---\|(?:---\|)?---\|",
                    "| chapter | you learn to | time | exercises | needs |\n|---|---|---|---|---|", intro, flags=re.M)
     total, extra = sum(lesson.values()), sum(v or 0 for v in homework.values())
     sentence = (f"In all {total} minutes of lessons, about {total / 60:.0f} hours; the exercises (one nbgrader "

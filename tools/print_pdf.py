@@ -22,9 +22,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from playwright.sync_api import sync_playwright
-
 from chromium import CHROMIUM, CHROMIUM_ARGS, block_remote
+from playwright.sync_api import sync_playwright
 
 FRAMES = 4  # frames of an animation in its printed strip
 MARGIN_MM = 15

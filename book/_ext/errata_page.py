@@ -1,8 +1,8 @@
 """The book's Errata page: every :class:`mechlab.course.errata.Erratum`, its evidence recomputed now.
 
 Executed by ``book/errata.md`` at build time. Each row links to the code cell of the
-chapter's companion (or, where it has none, of the chapter) that demonstrates the mistake: the first code cell of that notebook
-that uses ``errata`` (its ``table``/``check``), addressed by the ``cell-<index>`` anchor
+chapter's companion (or, where it has none, of the chapter) that demonstrates the mistake: the first code
+cell of that notebook that uses ``errata`` (its ``table``/``check``), addressed by the ``cell-<index>`` anchor
 that ``_ext/mechbook.py`` puts on every code cell.
 """
 
@@ -64,7 +64,8 @@ def chapter_link(notebook_name: str, notebooks_dir: Path = NOTEBOOKS, prefix: st
         raise ValueError(f"erratum names notebook {notebook_name!r}, which is not in {notebooks_dir}")
     # errata are reference, not lesson: they stand in the chapter's companion where it has one
     companion = Path(notebooks_dir) / "companion" / f"{path.stem}_companion.ipynb"
-    shown, folder = (companion, "companion/") if companion.is_file() and demo_cell(companion) is not None else (path, "")
+    has_companion = companion.is_file() and demo_cell(companion) is not None
+    shown, folder = (companion, "companion/") if has_companion else (path, "")
     cell = demo_cell(shown)
     anchor = f"#cell-{cell}" if cell is not None else ""
     href = f"{prefix}{folder}{shown.stem}.html{anchor}"

@@ -18,17 +18,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Annotated
 
-
 import numpy as np
 
 from ..errors import DimensionError
-from .equivalence import base_law, base_mechanism
 from ..geometry import AnglePath, as_angles, wrap
 from ..mechanisms.base import AnyMechanism
 from ..mechanisms.slotted import SineMechanism
 from ..motion import scalar_law
 from ..validate import Angles, count, number, validated
-
+from .equivalence import base_law, base_mechanism
 
 # λ = l_OA / l_OB of the base mechanism
 Ratio = Annotated[float, number(1e-6, 1e6, why="λ = l_OA / l_OB, positive")]

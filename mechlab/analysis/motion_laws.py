@@ -48,8 +48,22 @@ OptionalFunction = Annotated[Any, Spec("function", optional=True)]
 Sampled = Annotated[np.ndarray, Spec("samples", lo=2, hi=MAX_SAMPLES)]  # one value a crank angle
 Analogs = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_SAMPLES)]
 
-__all__ = ["RiseLaw", "LAWS", "ALIASES", "named_law", "law_jerk", "Invariants", "law_invariants", "invariants", "rise_invariants", "PrintedInvariants",
-           "thesis_cam_rows", "thesis_mchv1_rows", "LawRow", "law_table"]
+__all__ = [
+    "ALIASES",
+    "LAWS",
+    "Invariants",
+    "LawRow",
+    "PrintedInvariants",
+    "RiseLaw",
+    "invariants",
+    "law_invariants",
+    "law_jerk",
+    "law_table",
+    "named_law",
+    "rise_invariants",
+    "thesis_cam_rows",
+    "thesis_mchv1_rows",
+]
 
 
 @dataclass(frozen=True)
@@ -126,7 +140,8 @@ def _piecewise(x, lo, hi):
 def _dh_dd_max():
     # double harmonic: y'y'' = (π³/4)(sin πx − ½ sin 2πx)(cos πx − cos 2πx); its largest magnitude is
     # in the deceleration (x > 2/3, where y'' < 0), found by a bounded search on [2/3, 1]
-    f = lambda x: (PI**3 / 4) * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x)) * (np.cos(PI * x) - np.cos(2 * PI * x))
+    def f(x):
+        return (PI**3 / 4) * (np.sin(PI * x) - 0.5 * np.sin(2 * PI * x)) * (np.cos(PI * x) - np.cos(2 * PI * x))
     return -minimize_scalar(f, bounds=(2 / 3, 1.0), method="bounded", options=dict(xatol=1e-12)).fun
 
 
@@ -153,7 +168,8 @@ def _trapezoid_half(u):
     s, c = np.sin(_W * r), np.cos(_W * r)
     flat = (y1 + C / _W * t + C * t**2 / 2, C / _W + C * t, C + 0 * u, 0 * u)
     fall = (y2 + v2 * r + C / _W**2 * (1 - c), v2 + C / _W * s, C * c, -C * _W * s)
-    return [np.select([u <= 1 / 8, u <= 3 / 8], [a, b], f) for a, b, f in zip(_sine_start(u, C), flat, fall)]
+    return [np.select([u <= 1 / 8, u <= 3 / 8], [a, b], f)
+            for a, b, f in zip(_sine_start(u, C), flat, fall, strict=False)]
 
 
 def _sine_half(u):
@@ -162,7 +178,7 @@ def _sine_half(u):
     t = u - 1 / 8
     s, c = np.sin(_W_MS * t), np.cos(_W_MS * t)
     fall = (y1 + C / _W * t + C / _W_MS**2 * (1 - c), C / _W + C / _W_MS * s, C * c, -C * _W_MS * s)
-    return [np.where(u <= 1 / 8, a, f) for a, f in zip(_sine_start(u, C), fall)]
+    return [np.where(u <= 1 / 8, a, f) for a, f in zip(_sine_start(u, C), fall, strict=False)]
 
 
 def _odd(half, k):

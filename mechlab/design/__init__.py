@@ -7,15 +7,28 @@ synthesis), simulates each design and compares them on the same criteria
 """
 
 from ..errors import renamed
-from .candidates import (Candidate, Comparison, LimitVerdict, Refusal, SpecificationReport, candidates,
-                         check_design)
+from .candidates import Candidate, Comparison, LimitVerdict, Refusal, SpecificationReport, candidates, check_design
 from .criteria import Counts, Criteria, evaluate
 from .families import FAMILIES, Design, Unsuitable
 from .spec import Specification, SpecificationError
 
-__all__ = ["Specification", "SpecificationError", "candidates", "Comparison", "Candidate", "Refusal", "check_design",
-           "SpecificationReport", "LimitVerdict", "Criteria",
-           "Counts", "evaluate", "FAMILIES", "Design", "Unsuitable"]
+__all__ = [
+    "FAMILIES",
+    "Candidate",
+    "Comparison",
+    "Counts",
+    "Criteria",
+    "Design",
+    "LimitVerdict",
+    "Refusal",
+    "Specification",
+    "SpecificationError",
+    "SpecificationReport",
+    "Unsuitable",
+    "candidates",
+    "check_design",
+    "evaluate",
+]
 
 
 # old names kept for a release: one Structure (mechlab.mechanisms.base) describes a mechanism, and the exercises'

@@ -210,7 +210,7 @@ class Comparison:
     refusals: tuple[Refusal, ...]
 
     @validated
-    def ranked(self, by: Annotated[str, choice(*RANKABLE)] = "motor_power") -> "Comparison":
+    def ranked(self, by: Annotated[str, choice(*RANKABLE)] = "motor_power") -> Comparison:
         """The same comparison with the candidates ordered by ``by``, smallest first (a missing J last).
 
         Parameters
@@ -303,7 +303,7 @@ class Comparison:
     def __str__(self) -> str:
         rows = self.rows()
         widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-        lines = ["  ".join(v.ljust(w) for v, w in zip(r, widths)) for r in rows]
+        lines = ["  ".join(v.ljust(w) for v, w in zip(r, widths, strict=False)) for r in rows]
         lines += [f"refused — {r}" for r in self.refusals]
         return "\n".join(lines)
 
@@ -317,8 +317,8 @@ class Comparison:
 
 
 @validated
-def candidates(spec: AnySpecification, families: Annotated[tuple | None, Spec("items", expected=str, optional=True)] = None
-               ) -> Comparison:
+def candidates(spec: AnySpecification,
+               families: Annotated[tuple | None, Spec("items", expected=str, optional=True)] = None) -> Comparison:
     """Synthesise a design of every family (or of ``families``, names of :data:`FAMILIES`) for ``spec``.
 
     Each design is simulated and judged by :func:`~mechlab.design.criteria.evaluate`; a family

@@ -250,7 +250,8 @@ def exact_dwell(mechanism, phi: np.ndarray, d1: np.ndarray, scale: float = 1.0) 
     if run == n:
         return 0, n, lo, lo + 2 * np.pi
     hi = lo + (run - 1) * step
-    return start, run, _still_end(mechanism, lo, lo - step, vmax, scale), _still_end(mechanism, hi, hi + step, vmax, scale)
+    return (start, run, _still_end(mechanism, lo, lo - step, vmax, scale),
+            _still_end(mechanism, hi, hi + step, vmax, scale))
 
 
 def _jumps(mechanism, phase: float, d1: np.ndarray, d2: np.ndarray) -> tuple[float, float]:
@@ -342,7 +343,7 @@ def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
     if not run:  # an approximate dwell: the near-standstill is the dwell the rise starts from
         start, run = near, near_run
     # residual over the asked dwell, centred on the achieved one
-    want = int(round(spec.dwell_fraction * SAMPLES))
+    want = round(float(spec.dwell_fraction * SAMPLES))
     centre = start + run // 2
     idx = np.arange(centre - want // 2, centre - want // 2 + want)
     # the unwrapped output at any sample k: x[k mod n] + shift·⌊k/n⌋
@@ -382,7 +383,8 @@ def evaluate(mechanism: AnyMovable, spec: AnySpecification, *, scale: Length,
     w = spec.omega1
     torque = load * (d1 * si) * (d2 * si) * w**2 + spec.resisting * np.abs(d1 * si)
     motor = drive(torque, phi, w, overload=spec.overload)
-    return Criteria(dwell_fraction=float(dwell), standstill_fraction=near_run / SAMPLES, dwell_residual=residual, B=inv.B, C=inv.C, D=inv.D,
+    return Criteria(dwell_fraction=float(dwell), standstill_fraction=near_run / SAMPLES, dwell_residual=residual,
+                    B=inv.B, C=inv.C, D=inv.D,
                     J=jerk, velocity_jump=v_jump, acceleration_jump=a_jump, impact=impact,
                     pressure_angle=float(pressure_angle), size=size, peak_torque=motor.peak_torque,
                     rms_torque=motor.rms_torque, motor_power=motor.nominal_power, structure=structure)

@@ -6,8 +6,8 @@ raises :class:`Unsuitable` with the reason and the numbers.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 from scipy.optimize import brentq
@@ -228,7 +228,8 @@ def mchv2_slider(spec: Specification) -> Design:
     stroke."""
     _needs(spec, "stroke", what="translates its output")
     six = _lambda_designs(spec, lambda d, a: mchv2(circle_guiding(d, a, spec.dwell_angle), 1.0,
-                                                   mu_min=np.pi / 2 - spec.max_pressure_angle), "lambda six-bar, type 2")[0]
+                                                   mu_min=np.pi / 2 - spec.max_pressure_angle), "lambda six-bar, type "
+                                                                                                "2")[0]
     return _stroke_design(spec, six, "lambda six-bar, type 2 (slider dwell)")
 
 
@@ -274,7 +275,8 @@ def disc_cam(spec: Specification) -> Design:
             reasons.append(f"roller {roller:g} r_b: even r_b = {hi:.4g} mm leaves the pressure angle above "
                            f"{np.degrees(spec.max_pressure_angle):.1f}°")
             continue
-        rb = lo if excess(lo, roller) <= 0 else brentq(lambda r: excess(r, roller), lo, hi, xtol=1e-6 * hi)
+        rb = (lo if excess(lo, roller) <= 0
+              else brentq(lambda r, roller=roller: excess(r, roller), lo, hi, xtol=1e-6 * hi))
         rb *= 1 + 1e-4  # just inside the limit
         cam = build(rb, roller)
         cut = cam.undercut()

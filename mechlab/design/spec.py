@@ -7,7 +7,7 @@ from typing import Annotated
 
 import numpy as np
 
-from ..errors import DimensionError, SpecificationError
+from ..errors import SpecificationError
 from ..validate import Checked, Spec, choice, count, mechanism
 
 MOTIONS = ("index", "swing", "stroke")

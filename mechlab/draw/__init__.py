@@ -33,7 +33,7 @@ from PIL import Image
 from ..errors import MechanismError
 from ..mechanisms.base import FRAME, Mechanism
 from ..motion import Motion
-from .access import CATEGORY_COLOURS, OKABE_ITO, alt_text, category_style, install_alt_text, set_alt
+from .access import CATEGORY_COLOURS, OKABE_ITO, alt_text, category_style, set_alt
 
 # Okabe and Ito's colour-blind-safe colours for every "C0", "C1", ... and every default line colour
 mpl.rcParams["axes.prop_cycle"] = mpl.cycler(color=list(CATEGORY_COLOURS))
@@ -170,7 +170,7 @@ class Animation(FuncAnimation):
                         fig.draw_artist(artist)
                 writer.add_frame(canvas.buffer_rgba())
         finally:
-            for artist, was in zip(moving, animated):
+            for artist, was in zip(moving, animated, strict=False):
                 artist.set_animated(was)
             fig.set_dpi(own_dpi)
             fig.set_canvas(own_canvas)
@@ -282,8 +282,9 @@ class LinkageDrawing:
             self.note = ax.text(0.02, 0.95, "", transform=ax.transAxes, **NOTE_STYLE)
         roles = [*(("link", p.role) for p in self.bars), *(("extra", p.role) for p in self.drawn),
                  *(("fill", "fill") for _ in self.filled)]
-        artists = [*self.link_lines[:len(self.bars)], *self.extra_lines[:len(self.drawn)], *self.fills[:len(self.filled)]]
-        for artist, (kind, role) in zip(artists, roles):
+        artists = [*self.link_lines[:len(self.bars)], *self.extra_lines[:len(self.drawn)],
+                   *self.fills[:len(self.filled)]]
+        for artist, (kind, role) in zip(artists, roles, strict=False):
             if self._roles.get(artist) != role:   # restyled only when its role changes
                 default = LINK_STYLE if kind == "link" else EXTRA_STYLE
                 artist.set(**{"visible": True, **ROLE_STYLES.get(role, default)})
@@ -331,7 +332,7 @@ class LinkageDrawing:
         """Move every artist to frame i of the bound motion; returns the artists."""
         points = self.motion.points
         pts = {k: v.p[i] for k, v in points.items()}
-        for line, part in zip(self.link_lines, self.bars):
+        for line, part in zip(self.link_lines, self.bars, strict=False):
             xy = part.points(points, i)
             line.set_data(xy[:, 0], xy[:, 1])
         pivots = self.sketch.pivots
@@ -341,9 +342,9 @@ class LinkageDrawing:
             self.ground_line.set_data(*ground_symbols(piv, self._ground_size).T)
         moving = np.array([v for k, v in pts.items() if k not in pivots] or [[np.nan, np.nan]])
         self.joint_marks.set_data(moving[:, 0], moving[:, 1])
-        for line, seg in zip(self.extra_lines, self.extras(i)):
+        for line, seg in zip(self.extra_lines, self.extras(i), strict=False):
             line.set_data(seg[:, 0], seg[:, 1])
-        for patch, part in zip(self.fills, self.filled):
+        for patch, part in zip(self.fills, self.filled, strict=False):
             patch.set_xy(part.at(i))
         if self.noted:
             self.note.set_text(self.noted[0].at(i))
@@ -366,7 +367,7 @@ class LinkageDrawing:
             text.xy = p
             text.set_position(LETTER_OFFSET * away)
         parts = self.numbered_parts(i)
-        for k, (text, part, spec) in enumerate(zip(self.numbers, parts, self.numbered)):
+        for text, part, spec in zip(self.numbers, parts, self.numbered, strict=False):
             where, normal = _label_anchor(part, centre)
             text.set_text(str(self.link_numbers[spec.number]))
             text.xy = where
@@ -403,7 +404,7 @@ class LinkageDrawing:
             taken.append(anchor + scale * offset)
 
     def _place_lengths(self, pts):
-        for text, bar in zip(self.lengths, self.bars):
+        for text, bar in zip(self.lengths, self.bars, strict=False):
             names = bar.at
             a, b = pts[names[0]], pts[names[1]]
             where, normal = _label_anchor(np.array([a, b]), None)
@@ -422,7 +423,7 @@ class LinkageDrawing:
 
     def lines_of(self, role: str) -> list:
         """The lines drawing the parts of one role (e.g. "slot"), in the sketch's order."""
-        return [line for line, part in zip(self.extra_lines, self.drawn) if part.role == role]
+        return [line for line, part in zip(self.extra_lines, self.drawn, strict=False) if part.role == role]
 
     @property
     def label_artists(self):
@@ -659,7 +660,7 @@ def animate_together(mechanisms, titles=(), n: int = 24, interval: int = 150, tr
     fig, axes = plt.subplots(1, len(mechanisms), figsize=figsize or (3.2 * len(mechanisms), 3.2), dpi=dpi,
                              squeeze=False)
     drawings = []
-    for ax, mech, title in zip(axes[0], mechanisms, list(titles) + [None] * len(mechanisms)):
+    for ax, mech, title in zip(axes[0], mechanisms, list(titles) + [None] * len(mechanisms), strict=False):
         drawing = drawing_class(mech)(ax, mech, trace=trace, n=n, labels=labels, readout=True)
         _diagram_axes(ax)
         if title:
@@ -675,13 +676,14 @@ def animate_together(mechanisms, titles=(), n: int = 24, interval: int = 150, tr
         grid.set_width_ratios(boxes[:, 1] - boxes[:, 0])
         for ax in axes[0]:
             ax.set_position(ax.get_subplotspec().get_position(fig))
-    for drawing, box in zip(drawings, boxes):
+    for drawing, box in zip(drawings, boxes, strict=False):
         fill_axes(drawing.ax, box)
 
     def frame(i):
         return [artist for drawing in drawings for artist in drawing.set_frame(i)]
 
-    names = [title or _kind_words(mech) for mech, title in zip(mechanisms, list(titles) + [None] * len(mechanisms))]
+    names = [title or _kind_words(mech)
+             for mech, title in zip(mechanisms, list(titles) + [None] * len(mechanisms), strict=False)]
     set_alt(fig, f"{len(mechanisms)} kinematic diagrams side by side, moving in step over one cycle: "
             + "; ".join(names) + ".")
     anim = Animation(fig, frame, frames=n, interval=interval, blit=False)
@@ -707,7 +709,7 @@ def plot_law(motion: Motion, axes=None, label: str | None = None, **style):
         names = (f"{sym} (length)", f"{sym}′ = d{sym}/dφ (length/rad)", f"{sym}″ (length/rad²)")
     deg = np.degrees(motion.phi)
     lines = []
-    for ax, y, name in zip(axes, law, names):
+    for ax, y, name in zip(axes, law, names, strict=False):
         lines.append(ax.plot(deg, y, label=label, **style)[0])
         ax.set_ylabel(name)
         ax.grid(True, alpha=0.3)
@@ -730,7 +732,7 @@ def plot_pressure_angles(lam, phi1, phi2, pivot_distance=1.0, n: int = 721, ax=N
     phi = designs[0].turn(n)
     if ax is None:
         _, ax = plt.subplots(figsize=(7, 2.8))
-    for tr, m in zip(TRANSITIONS, designs):
+    for tr, m in zip(TRANSITIONS, designs, strict=False):
         ax.plot(np.degrees(phi), np.degrees(m.motion(phi).pressure_angle), label=tr)
     a, b = np.degrees(designs[0].phi1), np.degrees(designs[0].phi2)
     ax.axvspan(a, b, color="#e08214", alpha=0.12)
@@ -781,9 +783,10 @@ def plot_cam_laws(names=None, n: int = 401):
     x = np.linspace(0.0, 1.0, check_value("n", n, count(2)))
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.9), layout="constrained")
     for name in names:
-        for ax, y in zip(axes, LAWS[name](x)):
+        for ax, y in zip(axes, LAWS[name](x), strict=False):
             ax.plot(x, y, label=name)
-    for ax, label in zip(axes, ("lift Y (fraction of h)", "velocity analog Y′", "acceleration analog Y″")):
+    labels = ("lift Y (fraction of h)", "velocity analog Y′", "acceleration analog Y″")
+    for ax, label in zip(axes, labels, strict=False):
         ax.set_xlabel("x = φ / Φ (fraction of the rise)")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
@@ -880,7 +883,7 @@ def plot_design_outcomes(maps):
     axes, spare = grid.ravel()[:len(maps)], grid.ravel()[len(maps):]
     for ax in spare:
         ax.axis("off")
-    for ax, m in zip(axes, maps):
+    for ax, m in zip(axes, maps, strict=False):
         for i, a in enumerate(m.a):
             for j, dw in enumerate(np.degrees(m.dwell)):
                 marker, colour, _ = OUTCOME_STYLE[m.kind[i, j]]
@@ -903,7 +906,8 @@ def plot_design_outcomes(maps):
     panels = []
     for m in maps:
         kinds, counts = np.unique(m.kind, return_counts=True)
-        tally = ", ".join(f"{c} {OUTCOME_STYLE[k][2]}" for k, c in sorted(zip(kinds, counts), key=lambda kc: -kc[1]))
+        tally = ", ".join(f"{c} {OUTCOME_STYLE[k][2]}"
+                          for k, c in sorted(zip(kinds, counts, strict=False), key=lambda kc: -kc[1]))
         panels.append(f"δ = {np.degrees(m.delta):.0f}°: {tally}")
     return set_alt(fig, f"Outcome map of {m.kind.size} design requests per panel, frame a against dwell 2α, each "
                    f"marked by what the design returned (a marker shape per kind). {'; '.join(panels)}.")
@@ -926,7 +930,7 @@ def plot_existence_map(em, delta: float, course=COURSE_TRANSMISSION):
     ax.plot(*em.rotation, "k", label="r = a, r + a = 2")
     ax.plot(*em.whole, color=OKABE_ITO["vermillion"], lw=2.5, label="2α = 360° (whole curve)")
     ax.plot(*em.fifth, color=OKABE_ITO["orange"], lw=1.5, ls=(0, (6, 2)), label="fifth-order contact")
-    for (key, curve), style in zip(em.iso_dwell.items(), ISO_DWELL_STYLES):
+    for (key, curve), style in zip(em.iso_dwell.items(), ISO_DWELL_STYLES, strict=False):
         ax.plot(*curve, **{**style, "ls": "-"}, ms=4, lw=1, label=f"2α = {key}°")
     ax.plot(*em.mu_min, "0.5", ls=":", label="μ = 30°, 150°")
     ax.plot(*em.mu_max, "0.5", ls=":")

@@ -11,9 +11,9 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
+from ..analysis.centres import centrodes
 from ..analysis.centres.centrodes import Centrodes
 from ..analysis.centres.instant import InstantCentres
-from ..analysis.centres import centrodes
 from . import Animation, drawing_class, fill_axes
 
 FIXED_STYLE = dict(color="#8c564b", lw=1.6, zorder=1)

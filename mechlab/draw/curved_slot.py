@@ -75,7 +75,7 @@ def plot_against_base(mechanism, phi=None, axes=None):
     if axes is None:
         _, axes = plt.subplots(1, 3, figsize=(10, 2.8))
     deg = np.degrees(phi)
-    for ax, y, yk, name in zip(axes, law, (k.theta, k.d, k.dd), names):
+    for ax, y, yk, name in zip(axes, law, (k.theta, k.d, k.dd), names, strict=False):
         if angular and name.startswith("ψ "):   # continuous, in degrees, the base law on the same branch
             y, yk = np.unwrap(y), np.unwrap(yk)
             y, yk = np.degrees(y), np.degrees(yk + 2 * np.pi * np.round((y[0] - yk[0]) / (2 * np.pi)))

@@ -7,8 +7,8 @@ in place.
 
 from __future__ import annotations
 
-import numpy as np
 import matplotlib.pyplot as plt
+import numpy as np
 from matplotlib.figure import Figure
 
 from ..design import FAMILIES, Comparison
@@ -42,7 +42,8 @@ class ComparisonFigure:
         self._angles = np.append(angles, angles[0])
         self.radar.set_xticks(angles, [label for _, label in SPOKES], fontsize=9)
         self.radar.tick_params(axis="x", pad=10)
-        for text, angle in zip(self.radar.get_xticklabels(), angles):   # each label outward of its spoke's end
+        # each label outward of its spoke's end
+        for text, angle in zip(self.radar.get_xticklabels(), angles, strict=False):
             c = np.cos(angle)
             text.set_horizontalalignment("left" if c > 0.2 else "right" if c < -0.2 else "center")
         self.radar.set_ylim(0.0, 1.05)
@@ -78,10 +79,8 @@ class ComparisonFigure:
             x = np.asarray(c.design.mechanism.motion(c.design.phase + phi).output.value, float)
             scale = 1.0 if comparison.spec.rotary else c.design.scale
             x = (x - x[0]) * scale / comparison.spec.amplitude
-            if comparison.spec.motion == "index":
-                x = x * np.sign(x[-1])  # a table indexing clockwise rises too
-            else:
-                x = x - x.min()
+            # a table indexing clockwise rises too
+            x = x * np.sign(x[-1]) if comparison.spec.motion == "index" else x - x.min()
             curve.set_data(np.degrees(phi), x)
         self.laws.relim()
         self.laws.autoscale_view(scalex=False)

@@ -68,7 +68,8 @@ class ForcePlanDrawing:
                                      zorder=5)
         for old in getattr(self, "_keys", []):
             old.remove()
-        self._keys = [self.ax.plot([], [], color=c, lw=3, label=f"R {k}")[0] for k, c in zip(names, colours)]
+        self._keys = [self.ax.plot([], [], color=c, lw=3, label=f"R {k}")[0]
+                      for k, c in zip(names, colours, strict=False)]
         self.ax.legend(handles=self._keys, loc="lower right", fontsize=8, framealpha=0.7)
         self.set_frame(0)
         return motion
@@ -82,7 +83,8 @@ class ForcePlanDrawing:
         self.quiver.set_UVC(uv[:, 0], uv[:, 1])
         u = self.force_unit
         self.text.set_text(f"φ = {np.degrees(self.result.phi[i]):.0f}°   M_b = {self.result.torque[i]:.3g} {u}·m\n"
-                           + "  ".join(f"|R {k}| = {r.magnitude[i]:.3g} {u}" for k, r in zip(self.names, R)))
+                           + "  ".join(f"|R {k}| = {r.magnitude[i]:.3g} {u}"
+                                       for k, r in zip(self.names, R, strict=False)))
         return self.artists
 
     @property
@@ -135,7 +137,7 @@ def plot_efficiency(result, ax=None, levels=None, **style):
     ax.set_xticks(np.arange(0, 361, 90))
     ax.grid(True, alpha=0.3)
     if levels:
-        for (name, value), (colour, dash) in zip(levels.items(), LEVEL_STYLES):
+        for (name, value), (colour, dash) in zip(levels.items(), LEVEL_STYLES, strict=False):
             ax.axhline(value, color=colour, ls=dash, label=f"{name} = {value:.3f}")
         ax.legend(loc="lower left", fontsize=8)
     return ax

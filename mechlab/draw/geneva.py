@@ -11,10 +11,11 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
+from ..analysis.intermittency import DWELL_TOL, compare
 from ..mechanisms.geneva import wheel_outline  # noqa: F401 - where the course's readers look for it
 from ..mechanisms.spherical_geneva import SphericalGeneva
-from ..analysis.intermittency import DWELL_TOL, compare
 from . import JOINT_STYLE, LETTER_STYLE, LINK_STYLE, NUMBER_STYLE, READOUT_STYLE, TRACE_STYLE
+
 
 # ----------------------------------------------------------------------------------
 # spherical Geneva in 3-D
@@ -167,12 +168,12 @@ def plot_comparison(mechanisms: dict, axes=None, n: int = 721, phase: float = 0.
         still = (f"dwell {inv.dwell_fraction:.2f}" if inv.dwell_fraction > 0
                  else f"near-standstill {inv.standstill_fraction:.2f}")
         label = f"{name}: {still}, impact: {inv.impact}"
-        for ax, y, lab, kept in zip(axes, (sense * mo.dpsi, sense * mo.ddpsi), (label, name), curves):
+        for ax, y, lab, kept in zip(axes, (sense * mo.dpsi, sense * mo.ddpsi), (label, name), curves, strict=False):
             kept.append((ax.plot(np.degrees(phi), y, label=lab)[0], name, y))
     axes[0].set_ylabel("ψ′ = dψ/dφ (–)")
     axes[1].set_ylabel("ψ″ = d²ψ/dφ² (1/rad)")
     axes[1].set_xlabel("crank angle φ (degrees)")
-    for ax, kept in zip(axes, curves):
+    for ax, kept in zip(axes, curves, strict=False):
         ax.grid(True, alpha=0.3)
         if clip is not None and len(kept) > 2:   # with two curves neither is the odd one out
             _clip_outlier(ax, kept, clip)

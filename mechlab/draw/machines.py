@@ -220,7 +220,7 @@ def forging_press(ax=None):
     ax.plot(*np.array([A, B]).T, **LINK_STYLE)
     ax.plot(*np.array([A, B]).T, "o", ms=6, mfc="white", mec="#1f4e79", mew=1.5, zorder=4)
     ax.plot(*O, "^", ms=11, color="#555555", zorder=2)
-    for name, p, dx in zip("OAB", (O, A, B), (-0.4, 0.12, 0.12)):   # O left of its crank
+    for name, p, dx in zip("OAB", (O, A, B), (-0.4, 0.12, 0.12), strict=False):   # O left of its crank
         ax.text(p[0] + dx, p[1] + 0.05, name, fontsize=11, fontweight="bold", color="#1f4e79", zorder=7,
                 bbox=LETTER_BOX)
     ax.add_patch(Circle(O, 1.45, fill=False, edgecolor="#555555", lw=1.2, ls="--", zorder=0))
@@ -266,7 +266,6 @@ def packaging_line(ax=None):
     u = np.array([np.cos(arm), np.sin(arm)])
     tip = B + 1.6 * u
     ax.plot(*np.array([B, tip]).T, color="#1f4e79", lw=3, zorder=3)
-    n = np.array([-u[1], u[0]])
     ax.plot(*np.array([tip - 0.05 * u, tip + 0.3 * u]).T, color="#1f4e79", lw=7, zorder=3)
     belt_y = tip[1] + 0.3 * u[1] - 0.12
     x0, x1 = B[0] - 1.6, B[0] + 2.4

@@ -3,15 +3,16 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Annotated, Sequence
+from typing import Annotated
 
 import numpy as np
 
 from ..errors import DimensionError, DriveError, MechanismError
 from ..validate import MAX_SAMPLES, Real, Spec, number, validated
 
-__all__ = ["Drive", "DriveError", "drive", "motor_torque", "cycle_mean"]
+__all__ = ["Drive", "DriveError", "cycle_mean", "drive", "motor_torque"]
 
 
 # --------------------------------------------------------------------------- drive

@@ -4,11 +4,12 @@
 from __future__ import annotations
 
 import numpy as np
+
 from ..errors import DimensionError
-from .drive import Drive
-from .drive import drive as _drive
 from ..geometry import check_length
 from ..mechanisms.geneva import TWO_PI
+from .drive import Drive
+from .drive import drive as _drive
 
 
 # ----------------------------------------------------------------------------------

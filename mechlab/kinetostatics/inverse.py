@@ -19,11 +19,12 @@ import numpy as np
 from ..errors import FrictionlessOnlyError
 from ..mechanisms.base import Mechanism
 from ..motion import STILL, AngularMotion, LinearMotion
-from ..validate import Point, Spec, check_value, mechanism as instance_of, number, validated
-from .model import G, Force, ForceModel, LoadError, Torque, model_for
+from ..validate import Point, Spec, check_value, number, validated
+from ..validate import mechanism as instance_of
+from .model import Force, ForceModel, G, LoadError, Torque, model_for
 from .solve import _frames, virtual_work_torque
 
-__all__ = ["balanced_load", "torque_for_load", "FrictionlessOnlyError"]
+__all__ = ["FrictionlessOnlyError", "balanced_load", "torque_for_load"]
 
 AnyMechanism = Annotated[Mechanism, instance_of(Mechanism)]
 Loads = Annotated[tuple, Spec("items", expected=(Force, Torque))]
@@ -59,8 +60,8 @@ def _per_angle(name: str, values, phi) -> None:
 
 
 @validated
-def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model = None, loads: Loads = (), omega1: Omega = 1.0,
-                  eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ma.MaskedArray:
+def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model = None, loads: Loads = (),
+                  omega1: Omega = 1.0, eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ma.MaskedArray:
     """The load Q on the mechanism's output (its :attr:`~mechlab.motion.Motion.output` coordinate) that the
     driving torque ``torque`` balances at crank angles ``phi``: Q = (M₀ − M)·θ′/q′.
 
@@ -97,7 +98,7 @@ def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model 
     100.0
     """
     _per_angle("torque", torque, phi)
-    motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
+    _motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
     M = np.broadcast_to(np.asarray(torque, dtype=float), dq.shape)
     # a still output (mechlab.motion.STILL) balances no load: masked, not infinite
     still = np.abs(dq) <= STILL * max(float(np.max(np.abs(dq))), 1.0) * np.abs(dth)
@@ -107,8 +108,8 @@ def balanced_load(mechanism: AnyMechanism, torque: Values, phi, *, model: Model 
 
 
 @validated
-def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model = None, loads: Loads = (), omega1: Omega = 1.0,
-                    eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ndarray:
+def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model = None, loads: Loads = (),
+                    omega1: Omega = 1.0, eps1: Omega = 0.0, gravity: Point = (0.0, -G)) -> np.ndarray:
     """The driving torque curve M(φ) = M₀ − Q·q′/θ′ that balances the load ``load`` (Q) on the mechanism's
     output, with the other loads, at crank angles ``phi`` (the forward problem of :func:`balanced_load`).
 
@@ -140,6 +141,6 @@ def torque_for_load(mechanism: AnyMechanism, load: Values, phi, *, model: Model 
     10.0
     """
     _per_angle("load", load, phi)
-    motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
+    _motion, dq, dth, M0 = _setup(mechanism, phi, model, loads, omega1, eps1, gravity)
     Q = np.broadcast_to(np.asarray(load, dtype=float), dq.shape)
     return _shaped(M0 - Q * dq / dth, phi)

@@ -15,14 +15,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-
 import numpy as np
 
+from ..mechanisms.lambda_sixbars import LambdaRockerSixBar
 from .machines import Kinetostatics
 from .model import ForceModel, Torque, model_for
-from ..mechanisms.lambda_sixbars import LambdaRockerSixBar
 
-__all__ = ["mchv1_model", "mchv1_drive", "mchv1_forces", "ForceInvariants"]
+__all__ = ["ForceInvariants", "mchv1_drive", "mchv1_forces", "mchv1_model"]
 
 
 def mchv1_model(six: LambdaRockerSixBar, inertia: float, friction: float = 0.0, radius: float = 0.0) -> ForceModel:

@@ -3,19 +3,20 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Annotated, Any, Callable
+from typing import Annotated, Any
 
 import numpy as np
 
-from ..motion import Motion, scalar_law
 from ..mechanisms.base import Mechanism
+from ..motion import Motion, scalar_law
 from ..validate import Distance, Length, OptionalAngles, Point, Real, Spec, number, validated
 from ..validate import mechanism as mechanism_of
 from .model import MAX_OMEGA, Eps, Force, ForceModel, G, LoadError, Omega, Torque, _nonneg, model_for, slender_bar
 from .solve import ForceResult, solve
 
-__all__ = ["Kinetostatics", "rpm_to_rad", "press_load", "press", "rocker_drive", "class_iv_drive"]
+__all__ = ["Kinetostatics", "class_iv_drive", "press", "press_load", "rocker_drive", "rpm_to_rad"]
 
 Rpm = Annotated[float, number(0.0, MAX_OMEGA * 60 / (2 * np.pi), why="rev/min")]
 Size = Annotated[float, number(0.0)]  # a mass, a load, a friction coefficient: ≥ 0

@@ -16,17 +16,41 @@ massless, frictionless model of any mechanism from its ``structure()``;
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import Annotated, Any, Sequence
+from typing import Annotated, Any, ClassVar
 
 import numpy as np
-from ..errors import (DimensionError, FrictionError, LoadError, MassError, MechanismError, SelfLockingError,
-                      StructureError)
-from ..mechanisms.base import FRAME
-from ..validate import (Angle, Checked, Distance, Name, Point, Spec, angle, check_value, number, or_function)
 
-__all__ = ["FRAME", "G", "Body", "Revolute", "Prismatic", "HigherPair", "ForceModel", "Force", "Torque", "model_for",
-           "slender_bar", "MassError", "FrictionError", "LoadError", "StructureError", "SelfLockingError"]
+from ..errors import (
+    DimensionError,
+    FrictionError,
+    LoadError,
+    MassError,
+    SelfLockingError,
+    StructureError,
+)
+from ..mechanisms.base import FRAME
+from ..validate import Angle, Checked, Distance, Name, Point, Spec, angle, check_value, number, or_function
+
+__all__ = [
+    "FRAME",
+    "Body",
+    "Force",
+    "ForceModel",
+    "FrictionError",
+    "G",
+    "HigherPair",
+    "LoadError",
+    "MassError",
+    "Prismatic",
+    "Revolute",
+    "SelfLockingError",
+    "StructureError",
+    "Torque",
+    "model_for",
+    "slender_bar",
+]
 
 
 
@@ -49,8 +73,9 @@ JournalRadius = Annotated[float, number(0.0, error=FrictionError)]
 class _Labelled(Checked):
     """Messages name a parameter with its owner: "mass of coupler", "friction coefficient of O"."""
 
-    _WORDS = {"inertia": "moment of inertia", "com": "centre of mass (com)", "friction": "friction coefficient",
-              "radius": "journal radius", "angle": "guide angle", "normal": "normal angle"}
+    _WORDS: ClassVar[dict[str, str]] = {
+        "inertia": "moment of inertia", "com": "centre of mass (com)", "friction": "friction coefficient",
+        "radius": "journal radius", "angle": "guide angle", "normal": "normal angle"}
 
     def _label(self, field: str) -> str:
         return field if field == "name" else f"{self._WORDS.get(field, field)} of {self.name}"
@@ -306,7 +331,8 @@ class ForceModel(Checked):
         if self.crank not in names:
             raise StructureError(f"crank {self.crank!r} is not a body; bodies: {names}")
         if any(b not in known for b in self.numbering) or len(set(self.numbering)) != len(self.numbering):
-            raise StructureError(f"numbering {self.numbering} must name bodies or the frame, each once; bodies: {names}")
+            raise StructureError(f"numbering {self.numbering} must name bodies or the frame, each once; bodies: "
+                                 f"{names}")
         listed = [b for g in self.groups for b in g] + [self.crank]
         if sorted(listed) != sorted(names):
             raise StructureError(f"every body except the crank must be in exactly one group: groups "
@@ -412,7 +438,7 @@ class ForceModel(Checked):
                 return p
         raise KeyError(f"no pair {name!r}; pairs: {[p.name for p in self.pairs]}")
 
-    def with_body(self, name: str, *, mass=None, inertia=None, com=None) -> "ForceModel":
+    def with_body(self, name: str, *, mass=None, inertia=None, com=None) -> ForceModel:
         """A copy with link ``name``'s mass properties changed.
 
         Parameters
@@ -452,7 +478,7 @@ class ForceModel(Checked):
         new = replace(old, mass=m, inertia=inertia, com=old.com if com is None else com)
         return replace(self, bodies=tuple(new if b.name == name else b for b in self.bodies))
 
-    def with_friction(self, f: float, radius: float = 0.0, *, pairs: Sequence[str] | None = None) -> "ForceModel":
+    def with_friction(self, f: float, radius: float = 0.0, *, pairs: Sequence[str] | None = None) -> ForceModel:
         """A copy with friction coefficient f in the named pairs (all by default) and journal radius r.
 
         Parameters

@@ -3,19 +3,35 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Annotated, Mapping
+from typing import Annotated
+
 import numpy as np
+
 from ..errors import DimensionError, MechanismError, SingularityError
 from ..geometry import PointPath, cross, dot, perp, relative, unit, vector_angle
 from ..mechanisms.base import output_axis  # Body(..., axis=output_axis): readers import it from here
 from ..motion import Motion, first_of
 from ..validate import Point, Spec, count, number, validated
 from ..validate import mechanism as instance_of
-from .model import (FRAME, Eps, Force, ForceModel, G, HigherPair, LoadError, Omega, Prismatic, Revolute,
-                    SelfLockingError, StructureError, Torque)
+from .model import (
+    FRAME,
+    Eps,
+    Force,
+    ForceModel,
+    G,
+    HigherPair,
+    LoadError,
+    Omega,
+    Prismatic,
+    Revolute,
+    SelfLockingError,
+    StructureError,
+    Torque,
+)
 
-__all__ = ["Reaction", "ForceResult", "solve", "virtual_work_torque", "output_axis"]
+__all__ = ["ForceResult", "Reaction", "output_axis", "solve", "virtual_work_torque"]
 
 AnyModel = Annotated[ForceModel, instance_of(ForceModel)]
 AnyMotion = Annotated[Motion, instance_of(Motion)]
@@ -421,7 +437,8 @@ class ForceResult:
             a_drive = np.trapezoid(w * self.torque * s, self.phi)
             a_loss = np.trapezoid(w * self.losses, self.phi)
             if not a_drive * np.sign(self.phi[-1] - self.phi[0]) > 0:
-                raise MechanismError(f"cycle efficiency undefined: the drive's work over the cycle is {a_drive:.4g} ≤ 0")
+                raise MechanismError(f"cycle efficiency undefined: the drive's work over the cycle is {a_drive:.4g} ≤ "
+                                     f"0")
             return float(1.0 - a_loss / a_drive)
         raise ValueError(f"how must be 'mean' or 'work', got {how!r}")
 
@@ -664,7 +681,7 @@ def solve(model: AnyModel, motion: AnyMotion, loads: Loads = (), omega1: Omega =
     if rough:
         dirs = directions(force, normal, {})
         flips = {p.name: np.zeros(n, int) for p in rough}
-        for iterations in range(2, maxiter + 2):
+        for iterations in range(2, maxiter + 2):  # noqa: B007  the count is named in the error below
             force, couple, normal, fric, torque = pass_(dirs)
             # consistent when the linearisation is exact: ê·R = |R| and sgn(N)·N = |N|
             bad = np.zeros(n, bool)

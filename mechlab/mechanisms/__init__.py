@@ -20,8 +20,30 @@ from .slotted import SineMechanism, SlottedLink
 from .spherical_geneva import SphericalGeneva
 from .trammel import EllipticTrammel
 
-__all__ = ["Mechanism", "FourBar", "Grashof", "SliderCrank", "SlottedLink", "SineMechanism",
-           "CurvedSlotLink", "TranslatingCurvedSlot", "CircleSlot", "ParametricSlot", "SampledSlot", "SixBarIV",
-           "EllipticTrammel", "Antiparallelogram", "LambdaMechanism", "LambdaRockerSixBar", "LambdaSlottedSixBar",
-           "LambdaSliderSixBar", "LambdaTranslatingSlot", "ExternalGeneva", "InternalGeneva", "SphericalGeneva",
-           "TranslatingRollerCam", "OscillatingRollerCam", "CamUndercutError"]
+__all__ = [
+    "Antiparallelogram",
+    "CamUndercutError",
+    "CircleSlot",
+    "CurvedSlotLink",
+    "EllipticTrammel",
+    "ExternalGeneva",
+    "FourBar",
+    "Grashof",
+    "InternalGeneva",
+    "LambdaMechanism",
+    "LambdaRockerSixBar",
+    "LambdaSliderSixBar",
+    "LambdaSlottedSixBar",
+    "LambdaTranslatingSlot",
+    "Mechanism",
+    "OscillatingRollerCam",
+    "ParametricSlot",
+    "SampledSlot",
+    "SineMechanism",
+    "SixBarIV",
+    "SliderCrank",
+    "SlottedLink",
+    "SphericalGeneva",
+    "TranslatingCurvedSlot",
+    "TranslatingRollerCam",
+]

@@ -4,13 +4,15 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+
 import numpy as np
+
 from ..errors import DimensionError
 from ..geometry import PointPath, as_angles, dot, fixed_point, unit
-from .base import Mechanism
-from .fourbar import FourBar
 from ..motion import AngularMotion, scalar_law
 from ..validate import Length, Samples, validated
+from .base import Mechanism
+from .fourbar import FourBar
 
 
 @dataclass(frozen=True)

@@ -16,6 +16,7 @@ exported profile would move.
 
 from __future__ import annotations
 
+import itertools
 import warnings
 from dataclasses import dataclass, replace
 from functools import cached_property
@@ -30,8 +31,16 @@ from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import check_value, count
 from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars
 
-__all__ = ["TranslatingRollerCam", "OscillatingRollerCam", "CamProfile", "Undercut", "CamUndercutError", "CamPeak",
-           "CamLinearMotion", "CamAngularMotion"]
+__all__ = [
+    "CamAngularMotion",
+    "CamLinearMotion",
+    "CamPeak",
+    "CamProfile",
+    "CamUndercutError",
+    "OscillatingRollerCam",
+    "TranslatingRollerCam",
+    "Undercut",
+]
 
 # Newton on the contact stops when the step in the profile parameter is below this (radians)
 _NEWTON_TOL = 1e-11
@@ -377,7 +386,7 @@ class RollerCam(Mechanism):
         i = int(np.argmax(v))
         return float(v[i]), float(t[i])
 
-    def max_pressure_angle(self) -> "CamPeak":
+    def max_pressure_angle(self) -> CamPeak:
         """The largest |pressure angle| of the design over the turn and the cam angle where it occurs.
 
         Exact: at a root of dα/dφ (closed form) bracketed on each rise and return and found by Brent's
@@ -399,7 +408,7 @@ class RollerCam(Mechanism):
         value, phi = self._peak(self._pressure_and_rate, np.abs)
         return CamPeak("pressure angle", value, phi)
 
-    def min_radius_of_curvature(self) -> "CamPeak":
+    def min_radius_of_curvature(self) -> CamPeak:
         """The smallest convex radius of curvature of the pitch curve (1/κmax, lengths as the cam's) and the
         cam angle where it occurs; the profile's is this minus the roller radius (undercut if ≤ 0).
 
@@ -562,7 +571,7 @@ def _phases(programme):
     inner = [b[0] + k * (b[1] - b[0]) for k in (0.5, *programme.law.knots)] + \
             [b[2] + k * (b[3] - b[2]) for k in (0.5, *programme.return_law.knots)]
     cuts = sorted({*b, *inner})
-    return [(a, e) for a, e in zip(cuts[:-1], cuts[1:]) if e - a > 1e-12]
+    return [(a, e) for a, e in itertools.pairwise(cuts) if e - a > 1e-12]
 
 
 def _pieces(u, Q, start, end):

@@ -17,18 +17,32 @@ narrows ``crank_ranges()`` and ``motion`` raises AssemblyError.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Annotated, Callable
+from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, SingularityError
-from ..geometry import AnglePath, PointPath, as_angles, cross, crank_point, dot, fixed_point, lift, perp
+from ..geometry import AnglePath, PointPath, as_angles, crank_point, cross, dot, fixed_point, lift, perp
 from ..motion import AngularMotion, LinearMotion, scalar_law
 from ..validate import Checked, Flag, Function, Length, Point, Real, Spec, mechanism, number
-from .base import FRAME, FULL_TURN, Link, Mechanism, Pair, Part, Sketch, Structure, arc_set, bars, fmt_ranges, output_axis
+from .base import (
+    FRAME,
+    FULL_TURN,
+    Link,
+    Mechanism,
+    Pair,
+    Part,
+    Sketch,
+    Structure,
+    arc_set,
+    bars,
+    fmt_ranges,
+    output_axis,
+)
 from .slotted import PivotedSlot, SineMechanism, SlottedLink
 
 # Samples of the curve used to find the working segment and the Newton brackets.
@@ -202,7 +216,8 @@ class SampledSlot(SlotCurve):
         seg = np.hypot(*np.diff(pts, axis=0).T)
         if np.any(seg <= 0):
             i = int(np.argmin(seg))
-            raise DimensionError(f"slot samples {i} and {i + 1} coincide: the chord-length parameter needs distinct points")
+            raise DimensionError(f"slot samples {i} and {i + 1} coincide: the chord-length parameter needs distinct "
+                                 f"points")
         t = np.concatenate([[0.0], np.cumsum(seg)])
         from scipy.interpolate import CubicSpline  # imported here: scipy.interpolate is slow to import
 
@@ -241,10 +256,7 @@ def _walk(curve: SlotCurve, g_of: Callable, dg_of: Callable, t_s: float, directi
           what_tangent: str) -> _Segment:
     """From t_s, follow the curve in ``direction`` while g decreases, until g reaches g_target,
     the curve ends, or g' vanishes (the slot is tangent to the level set)."""
-    if curve.periodic:
-        length = curve.t1 - curve.t0
-    else:
-        length = (curve.t1 - t_s) if direction > 0 else (t_s - curve.t0)
+    length = curve.t1 - curve.t0 if curve.periodic else (curve.t1 - t_s if direction > 0 else t_s - curve.t0)
     if length <= 0:
         return _Segment(t_s, direction, 0.0, g_of(np.array([t_s]))[0], np.array([0.0]),
                         g_of(np.array([t_s])), "end")
@@ -934,7 +946,8 @@ class TranslatingCurvedSlot(Mechanism):
         if self.start is None:
             if len(roots) > 1:
                 raise DimensionError(f"the slot crosses the x axis {len(roots)} times (t = "
-                                     + ", ".join(f"{x:.6g}" for x in roots) + "): give start= to say where the pin is at φ = 0")
+                                     + ", ".join(f"{x:.6g}" for x in roots) + "): give start= to say where the pin is "
+                                                                              "at φ = 0")
             t_s = roots[0]
         else:
             t_s = min(roots, key=lambda x: abs(x - float(self.start)))
@@ -974,7 +987,8 @@ class TranslatingCurvedSlot(Mechanism):
     def _range_reason(self) -> str:
         lo, hi = self._y_range()
         if isinstance(self.slot, CircleSlot):
-            return (f"the circular slot spans heights [{lo:.4g}, {hi:.4g}], the pin [{-self.crank:.4g}, {self.crank:.4g}]; "
+            return (f"the circular slot spans heights [{lo:.4g}, {hi:.4g}], the pin [{-self.crank:.4g}, "
+                    f"{self.crank:.4g}]; "
                     f"at its top and bottom the slot is parallel to the guide (pressure angle 90°)")
         return (f"the pin would leave the slot or jam: the usable slot spans heights [{lo:.6g}, {hi:.6g}], "
                 f"the pin needs [{-self.crank:.6g}, {self.crank:.6g}]")
@@ -1165,7 +1179,7 @@ class TranslatingCurvedSlot(Mechanism):
         if isinstance(self.slot, CircleSlot):
             x0, y0 = self.slot.center
             return np.stack([x0 + self._side * np.sqrt(np.clip(self.slot.radius**2 - (ys - y0) ** 2, 0, None)), ys], -1)
-        down, upper, neg_y, neg_dy = self._segments
+        down, upper, _neg_y, _neg_dy = self._segments
         ud = np.linspace(down.u_end, 0.0, n // 2)
         uu = np.linspace(0.0, upper.u_end, n - n // 2)
         t = np.concatenate([down.t_start + down.direction * ud, upper.t_start + upper.direction * uu])
@@ -1185,9 +1199,9 @@ def _slot_in_parameter(path, p, inverse, lo: float, hi: float) -> ParametricSlot
     """The relative path as a slot over its own parameter p ∈ [lo, hi] (the pin's distance from the pivot, or its
     height above the guide), whose value p(φ) reaches lo and hi where the pin reverses on the slot.
 
-    ``path(φ)`` → PointPath (w, w', w'') in φ; ``p(φ)`` → (p, p', p''), ``inverse(p)`` → φ on that half turn. Chain rule:
-    w_p = w'/p', w_pp = (w'' - w_p·p'')/p'²; at a reversal (p' = 0) w_p = w''/p'' (l'Hôpital), and w_pp, which
-    needs the third analog, is set to 0: there the pin's own rate p'(φ) is zero, so it multiplies zero. Past
+    ``path(φ)`` → PointPath (w, w', w'') in φ; ``p(φ)`` → (p, p', p''), ``inverse(p)`` → φ on that half turn.
+    Chain rule: w_p = w'/p', w_pp = (w'' - w_p·p'')/p'²; at a reversal (p' = 0) w_p = w''/p'' (l'Hôpital), and
+    w_pp, which needs the third analog, is set to 0: there the pin's own rate p'(φ) is zero, so it multiplies zero. Past
     the ends the slot runs on along its end tangent (the pin never goes there; the walk along the slot
     needs a crossing of the end circle, not a touch).
     """
@@ -1225,7 +1239,8 @@ def crank_pin(mech: Mechanism) -> tuple[Structure, Pair, Pair]:
     crank = st.input
     base_pair = next((p for p in st.pairs if FRAME in (p.a, p.b) and crank in (p.a, p.b)), None)
     if base_pair is None or base_pair.kind != "revolute" or st.input_rate != 1.0:
-        how = "is not joined to the frame" if base_pair is None else f"is joined to the frame by a {base_pair.kind} pair"
+        how = ("is not joined to the frame" if base_pair is None
+               else f"is joined to the frame by a {base_pair.kind} pair")
         raise DimensionError(f"{name} has no crank turning about a frame pivot (its input, the {crank}, {how}, "
                              f"dθ/dφ = {st.input_rate:g}): no crank pin to follow")
     if st.output == crank:
@@ -1258,7 +1273,7 @@ def pin_relative_path(mech: Mechanism, phi: np.ndarray) -> PointPath:
         O, z = mo.points[base_pair.point], np.zeros(len(mo.phi))
         turn = np.full(len(mo.phi), -float(guide.angle))
         return PointPath(*(_turned(turn, a - o) - np.stack([x, z], -1)
-                           for a, o, x in zip(A, O, (mo.s, mo.ds, mo.dds))))
+                           for a, o, x in zip(A, O, (mo.s, mo.ds, mo.dds), strict=False)))
     if guide.kind != "revolute":
         raise DimensionError(f"the output {out.name} of {type(mech).__name__} neither turns about a frame pivot nor "
                              f"slides on a guide")

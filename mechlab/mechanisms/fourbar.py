@@ -19,8 +19,8 @@ in the frame line, so ψ₋(φ) = -ψ₊(-φ), ψ'₋(φ) = ψ'₊(-φ), ψ''₋
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Annotated
 from functools import cached_property
+from typing import Annotated
 
 import numpy as np
 
@@ -98,10 +98,7 @@ class Grashof:
             The comparison of s + l with p + q (``<``, ``=`` within 1e-12 relative, or ``>``).
         """
         lhs, rhs = self.s + self.l, self.p + self.q
-        if abs(lhs - rhs) <= _CHANGE_POINT_TOL * rhs:
-            rel = "="
-        else:
-            rel = "<" if lhs < rhs else ">"
+        rel = "=" if abs(lhs - rhs) <= _CHANGE_POINT_TOL * rhs else ("<" if lhs < rhs else ">")
         return f"s + l = {lhs:.2f} {rel} p + q = {rhs:.2f}"
 
     @property

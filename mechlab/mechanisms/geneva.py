@@ -16,11 +16,12 @@ from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq
-from ..errors import DimensionError, OffsetError, SlotCountError
+
+from ..errors import DimensionError, OffsetError, SlotCountError  # noqa: F401  OffsetError: re-exported from here
 from ..geometry import AnglePath, PointPath, as_angles, crank_point, fixed_point, lift, relative, vector_angle
-from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
 from ..motion import AngularMotion, Quantity, Table, scalar_law
 from ..validate import MAX_SLOTS, Length, check_value, choice, count, length, number
+from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, output_axis
 
 LENGTH_UNITS = ("mm", "cm", "m", "in")   # the units a design table may name
 

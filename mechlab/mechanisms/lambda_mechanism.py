@@ -4,17 +4,19 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Annotated
 from functools import cached_property
+from typing import Annotated
+
 import numpy as np
+
 from ..errors import RotationError
 from ..geometry import PointPath, as_angles, dot, perp, unit
-from .fourbar import FourBar
-from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure
 from ..motion import AngularMotion, scalar_law
 from ..validate import Coordinate, Distance, Length, Sign, Spec, angle, check_value
+from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure
+from .fourbar import FourBar
 
-__all__ = ["LambdaMechanism", "GuidedLambda", "classic_lambda"]
+__all__ = ["GuidedLambda", "LambdaMechanism", "classic_lambda"]
 
 # δ = ∠ABD and a designed dwell 2α, radians
 Delta = Annotated[float, angle(0.0, 2 * np.pi, open=True)]

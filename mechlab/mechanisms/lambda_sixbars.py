@@ -5,14 +5,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from functools import cached_property
+
 import numpy as np
-from ..errors import MechanismError
+
+from ..errors import InfeasibleDesignError, MechanismError
 from ..geometry import AnglePath, as_angles, dot, dyad_rpr, dyad_rrr, fixed_point, relative, vector_angle
-from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, output_axis
 from ..motion import AngularMotion
-from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 from ..validate import Coordinate, Length, Sign
-from ..errors import InfeasibleDesignError
+from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, output_axis
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 
 __all__ = ["LambdaRockerSixBar", "LambdaSlottedSixBar"]
 
@@ -90,7 +91,7 @@ class LambdaRockerSixBar(Mechanism):
 
     def __post_init__(self):
         super().__post_init__()
-        self.base  # validates r, a, δ (full rotation)
+        _ = self.base  # validates r, a, δ (full rotation)
         # the dyad D-E-F must close over the whole turn
         D = self.base.coupler_point(np.linspace(0, TWO_PI, 1441))
         dist = np.hypot(*(D - self.F).T)
@@ -288,7 +289,7 @@ class LambdaSlottedSixBar(Mechanism):
 
     def __post_init__(self):
         super().__post_init__()
-        self.base
+        _ = self.base  # validates r, a, δ
         D = self.base.coupler_point(np.linspace(0, TWO_PI, 2881))
         rho = np.hypot(*(D - self.P).T)
         if abs(self.offset) > 0 and rho.min() <= abs(self.offset):
@@ -457,7 +458,9 @@ class LambdaSlottedSixBar(Mechanism):
         def bar(i):
             u = np.array([np.cos(psi[i]), np.sin(psi[i])])
             base = P[i] + offset * np.array([-u[1], u[0]])  # the slot is on the left of P for offset > 0
-            return np.array([P[i], base, base + reach * u]) if offset else np.array([P[i] - reach * u, P[i] + reach * u])
+            if offset:
+                return np.array([P[i], base, base + reach * u])
+            return np.array([P[i] - reach * u, P[i] + reach * u])
 
         return replace(sk, parts=sk.parts + (
             Part("output", bar, "output"), Part("extra", lambda i: path),

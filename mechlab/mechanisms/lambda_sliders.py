@@ -5,14 +5,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from functools import cached_property
+
 import numpy as np
-from ..errors import MechanismError
+
+from ..errors import InfeasibleDesignError, MechanismError
 from ..geometry import PointPath, as_angles, cross, dyad_rrp, unit
-from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, block_outline
 from ..motion import LinearMotion, scalar_law
-from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 from ..validate import Angle, Coordinate, Length, Sign
-from ..errors import InfeasibleDesignError
+from .base import FRAME, TWO_PI, Link, Mechanism, Pair, Part, Sketch, Structure, bars, block_outline
+from .lambda_mechanism import Delta, Dwell, LambdaMechanism, dwell_path, in_dwell, lambda_links, lambda_pairs
 
 __all__ = ["LambdaSliderSixBar", "LambdaTranslatingSlot"]
 
@@ -106,7 +107,7 @@ class LambdaSliderSixBar(_OnLambda):
 
     def __post_init__(self):
         super().__post_init__()
-        self.base  # validates r, a, δ (the crank turns fully)
+        _ = self.base  # validates r, a, δ (the crank turns fully)
         off = np.abs(self.offsets(_CHECK))
         i = int(np.argmax(off))
         if off[i] >= self.rod * (1 - 1e-9):
@@ -331,7 +332,7 @@ class LambdaTranslatingSlot(_OnLambda):
 
     def __post_init__(self):
         super().__post_init__()
-        self.base
+        _ = self.base  # validates r, a, δ
         if abs(self._sin) < 1e-3:
             raise MechanismError(
                 f"the output's guide ({np.degrees(self.guide):.4g}°) is parallel to its slot "

@@ -25,11 +25,22 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import AssemblyError, DimensionError, RotationError, SingularityError
-from ..geometry import (AnglePath, PointPath, as_angles, crank_point, dot, dyad_rrr, fixed_point, perp, relative, unit,
-                        vector_angle)
-from .base import FRAME, Link, Mechanism, Pair, Structure, output_axis
+from ..geometry import (
+    AnglePath,
+    PointPath,
+    as_angles,
+    crank_point,
+    dot,
+    dyad_rrr,
+    fixed_point,
+    perp,
+    relative,
+    unit,
+    vector_angle,
+)
 from ..motion import AngularMotion
 from ..validate import Length, OptionalAngle, Point, Sign
+from .base import FRAME, Link, Mechanism, Pair, Structure, output_axis
 
 _GRID = 720
 
@@ -238,8 +249,8 @@ class SixBarIV(Mechanism):
 
     def _velocity(self, A: PointPath, x):
         """x' from J x' = -F_φ; also returns J/2 for the second derivative."""
-        Q, P, R, T, E = self._joints(A.p, x)
-        F, J2 = self._residual(A.p, x)
+        Q, P, R, T, _E = self._joints(A.p, x)
+        _F, J2 = self._residual(A.p, x)
         J = 0.5 * J2
         rhs = -np.stack([dot(Q - R, A.d), dot(P - T, A.d)], axis=-1)
         return np.linalg.solve(J, rhs[..., None])[..., 0], J

@@ -15,13 +15,13 @@ from dataclasses import dataclass
 from typing import Annotated
 
 import numpy as np
+
 from ..errors import DimensionError, MechanismError, SpatialMechanismError  # noqa: F401 (re-exported)
 from ..geometry import AnglePath, PointPath, as_angles, vector_angle
-from .base import FRAME, Link, Mechanism, Pair, Structure
-from .geneva import LENGTH_UNITS
 from ..motion import AngularMotion, Quantity, Table, scalar_law
 from ..validate import Length, check_value, choice, length, number, validated
-from .geneva import Impact, OffsetError, Slots, TWO_PI, mid_motion_angle
+from .base import FRAME, Link, Mechanism, Pair, Structure
+from .geneva import LENGTH_UNITS, TWO_PI, Impact, OffsetError, Slots, mid_motion_angle
 
 
 # ----------------------------------------------------------------------------------

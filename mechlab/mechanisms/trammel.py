@@ -14,11 +14,11 @@ from dataclasses import dataclass
 from typing import Annotated
 
 import numpy as np
+
 from ..geometry import PointPath, as_angles, fixed_point, unit
-from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, block_outline
 from ..motion import LinearMotion, scalar_law
 from ..validate import Length, angle
-
+from .base import FRAME, Link, Mechanism, Pair, Part, Sketch, Structure, block_outline
 
 # Guides closer than this to parallel (radians) are rejected: the rod could not move.
 _MIN_GUIDE_ANGLE = 1e-6

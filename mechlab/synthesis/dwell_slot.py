@@ -17,20 +17,20 @@ evaluating the law). The book's chapter on the curved-slot dwell derives it.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
 from math import comb
-from typing import Annotated, Callable
+from typing import Annotated
 
 import numpy as np
 from numpy.polynomial import Polynomial
-from ..errors import DimensionError, DwellError, DwellIntervalError, DwellRatioError, MechanismError
-from ..errors import renamed
+
+from ..errors import DwellError, DwellIntervalError, DwellRatioError, renamed
 from ..geometry import as_angles, wrap
 from ..mechanisms.base import Mechanism, Part, Sketch
 from ..motion import Table, scalar_law
 from ..validate import MAX_GRID, Checked, Distance, Length, Spec, angle, check_value, choice, count, number, validated
-
 
 TRANSITIONS = ("cubic", "quintic", "sextic")
 
@@ -1443,7 +1443,8 @@ def dwell_limit(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2)], 
 
 
 @validated
-def cubic_dwell_window(lam: Ratio, theta_max: Annotated[float, angle(0.0, np.pi / 2, open=True)]) -> tuple[float, float]:
+def cubic_dwell_window(lam: Ratio,
+                       theta_max: Annotated[float, angle(0.0, np.pi / 2, open=True)]) -> tuple[float, float]:
     """The longest dwell [φ1, φ2] (radians) of the cubic transition whose pressure angle stays ≤ ``theta_max``
     at both slot ends, where the cubic's is largest (chapter 5, from Zinchenko et al. (2013) (21), (23)):
     tan θ(0) = 2(1 + λ)/φ1 and tan θ(π) = 2|1 - λ|/(π - φ2), so φ1 = 2(1 + λ)/tan θ_max and

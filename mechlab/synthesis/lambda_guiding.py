@@ -19,8 +19,9 @@ The book's chapter on Chebyshev dwell synthesis derives it.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Annotated
 from functools import lru_cache
+from typing import Annotated
+
 import numpy as np
 from scipy.optimize import brentq, least_squares, minimize, minimize_scalar, root
 
@@ -29,10 +30,27 @@ from ..geometry import check_length, check_number
 from ..mechanisms.lambda_mechanism import GuidedLambda, LambdaMechanism, _angle
 from ..validate import Flag, Spec, angle, check_value, count, mechanism, number, validated
 
-__all__ = ["CircleGuide", "StraightGuide", "circle_guiding", "straight_guiding", "thesis_iteration", "ThesisIteration",
-           "fifth_order_line", "existence_map", "rotation_boundary", "transmission_lines", "band_touches",
-           "WholeTurnLine", "ExistenceMap", "TransmissionLines", "whole_turn_line", "whole_turn_guiding",
-           "existence_region", "DesignOutcomes", "design_outcomes"]
+__all__ = [
+    "CircleGuide",
+    "DesignOutcomes",
+    "ExistenceMap",
+    "StraightGuide",
+    "ThesisIteration",
+    "TransmissionLines",
+    "WholeTurnLine",
+    "band_touches",
+    "circle_guiding",
+    "design_outcomes",
+    "existence_map",
+    "existence_region",
+    "fifth_order_line",
+    "rotation_boundary",
+    "straight_guiding",
+    "thesis_iteration",
+    "transmission_lines",
+    "whole_turn_guiding",
+    "whole_turn_line",
+]
 
 MAX_SAMPLES = 100_000  # samples of a curve
 RIPPLE_FLOOR = 1e-12   # (in l) the equal-ripple equations are solved to about this; a finer band is not resolved
@@ -157,7 +175,7 @@ class CircleGuide:
         return m.C + m.axis / self.k
 
     @property
-    def guided(self) -> "GuidedLambda":
+    def guided(self) -> GuidedLambda:
         """The mechanism with its band attached (its sketch shows the band)."""
         q = self.centre
         return GuidedLambda(self.r, self.a, self.delta, 1, float(q[0]), float(q[1]), self.R0, self.R1, self.dwell)
@@ -712,7 +730,8 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
             return whole_turn_guiding(delta, a, _whole_turn_cached(delta))
         except SynthesisError as err:
             line = _whole_turn_cached(delta)
-            raise NoDesignError(f"{where}: {err}", "whole turn", span=(float(line.a.min()), float(line.a.max())))
+            raise NoDesignError(f"{where}: {err}", "whole turn",
+                                span=(float(line.a.min()), float(line.a.max()))) from err
     if guess is not None:
         g, _ = _solve_circle(delta, a, dwell, np.asarray(guess, dtype=float))
         if g is not None:
@@ -741,13 +760,15 @@ def _circle(delta, a, dwell, guess, minimax, depth=0):
                 "rotation", dwell_max=top, r_limit=min(a, 2 - a))
         if reach.resolved and reach.dwell < dwell and reach.x[0] > 0.97 * min(a, 2 - a):
             raise NoDesignError(
-                f"{where}: the designs of this frame end at 2α = {np.degrees(reach.dwell):.6g}° (the continuation stops "
+                f"{where}: the designs of this frame end at 2α = {np.degrees(reach.dwell):.6g}° (the continuation "
+                f"stops "
                 f"there, to 0.005°), with the crank r = {reach.x[0]:.6g} next to the rotation limit r = min(a, 2 − a) "
                 f"= {min(a, 2 - a):.6g} (a dead point)", "rotation", dwell_max=reach.dwell, r_limit=min(a, 2 - a))
     if reach is not None and start is None and reach.dwell > dwell:
         why = ("its crank reaches the rotation limit r = a" if reach.x[0] > 0.98 * min(a, 2 - a) else
                "the family of designs from the whole-turn line folds back")
-        raise NoDesignError(f"{where}: above point A designs start at 2α = {np.degrees(reach.dwell):.6g}° (to 0.01°; {why})",
+        raise NoDesignError(f"{where}: above point A designs start at 2α = {np.degrees(reach.dwell):.6g}° (to 0.01°; "
+                            f"{why})",
                             "fold", dwell_min=reach.dwell, r=float(reach.x[0]))
     if start is not None and depth < 3 and (x := _from_inside(delta, a, dwell, depth)) is not None:
         g, _ = _solve_circle(delta, a, dwell, x)
@@ -907,7 +928,7 @@ def _extremes(r, a, delta, alpha, n=201):
     out = [(0.0, xs[0]), (alpha, xs[-1])]
     for j in _interior_extrema(xs, ts):
         sign = 1.0 if xs[j] > xs[j - 1] else -1.0  # a maximum: minimise −x
-        res = minimize_scalar(lambda t: -sign * _axis_x(r, a, delta, t)[0], bounds=(ts[j - 1], ts[j + 1]),
+        res = minimize_scalar(lambda t, sign=sign: -sign * _axis_x(r, a, delta, t)[0], bounds=(ts[j - 1], ts[j + 1]),
                               method="bounded", options=dict(xatol=1e-13))
         out.append((float(res.x), -sign * float(res.fun)))
     return sorted(out)
@@ -1013,7 +1034,7 @@ def _polish_straight(delta, a, alpha, r):
 
     def eqs(y):
         tt = [t for t, _ in pattern]
-        for i, v in zip(inner, y[1:]):
+        for i, v in zip(inner, y[1:], strict=False):
             tt[i] = v
         X, dX = _axis_x(y[0], a, delta, np.array(tt))
         return [X[0] - X[2], *dX[inner]]
@@ -1465,7 +1486,7 @@ def existence_map(delta: float, dwells=(np.radians(60), np.radians(120), np.radi
               for w in np.atleast_1d(check_value("dwells", dwells, Spec("reals")))]
     line = whole_turn_line(delta)
     mu = transmission_lines()
-    iso = {int(round(np.degrees(w))): _iso_dwell(delta, w, n) for w in dwells}
+    iso = {round(float(np.degrees(w))): _iso_dwell(delta, w, n) for w in dwells}
     return ExistenceMap(rotation_boundary(), fifth_order_line(delta)[:2], (line.r, line.a), line,
                         existence_region(delta, line), mu.mu_min, mu.mu_max, iso)
 

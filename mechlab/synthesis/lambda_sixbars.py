@@ -22,18 +22,33 @@ from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq
-from ..errors import MechanismError
+
+from ..errors import InfeasibleDesignError, MechanismError, TransmissionAngleError
 from ..geometry import cross
 from ..mechanisms.base import TWO_PI
-from .lambda_guiding import CircleGuide, StraightGuide, straight_guiding
-from ..errors import InfeasibleDesignError, TransmissionAngleError
 from ..mechanisms.lambda_sixbars import LambdaRockerSixBar, LambdaSlottedSixBar
 from ..motion import Table, scalar_law
-from ..validate import (MAX_GRID, Angles, Distance, Length, Sign, Spec, angle, check_value, count, mechanism, number,
-                        validated)
+from ..validate import (
+    MAX_GRID,
+    Angles,
+    Distance,
+    Length,
+    Sign,
+    Spec,
+    angle,
+    check_value,
+    count,
+    mechanism,
+    number,
+    validated,
+)
+from .lambda_guiding import CircleGuide, StraightGuide, straight_guiding
 
 # A time ratio K (> 0), the working limit μ_min of a transmission angle (None: no limit), the guides
 MIN_SWING = 1e-6  # radians: a smaller swing β_m overflows the rocker's design
+# the grids mchv3_full_turn_best searches by default: the pivot's step beyond the guide and its depth (units of l)
+BEYONDS = np.arange(0.0, 0.5001, 0.005)
+DEPTHS = np.arange(0.005, 0.2001, 0.005)
 TimeRatio = Annotated[float, number(0.0, 1e6, open=True, error=InfeasibleDesignError)]
 MuMin = Annotated[float | None, angle(0.0, np.pi / 2, optional=True)]
 Circle = Annotated[CircleGuide, mechanism(CircleGuide)]
@@ -42,8 +57,23 @@ Grid = Annotated[np.ndarray, Spec("samples", lo=1, hi=MAX_GRID)]  # one axis of 
 DwellAngle = Annotated[float, angle(0.0, TWO_PI, open=True)]  # the crank angle 2α of a dwell
 SixBar = Annotated[LambdaSlottedSixBar, mechanism((LambdaRockerSixBar, LambdaSlottedSixBar))]
 
-__all__ = ["mchv1", "SixBarReport", "report", "mchv3_oscillating", "mchv3_half_turn", "time_ratio_far_angle", "rise_law", "mchv3_full_turn", "dwell_extent", "slot_residual_first_order", "mchv3_full_turn_best",
-           "PivotRow", "mchv3_pivot_table", "BestPivotRow", "mchv3_best_table"]
+__all__ = [
+    "BestPivotRow",
+    "PivotRow",
+    "SixBarReport",
+    "dwell_extent",
+    "mchv1",
+    "mchv3_best_table",
+    "mchv3_full_turn",
+    "mchv3_full_turn_best",
+    "mchv3_half_turn",
+    "mchv3_oscillating",
+    "mchv3_pivot_table",
+    "report",
+    "rise_law",
+    "slot_residual_first_order",
+    "time_ratio_far_angle",
+]
 
 
 @validated
@@ -112,8 +142,8 @@ def mchv1(guide: Circle, K: TimeRatio, swing: float, *, side: Sign = 1,
     of F for a given K): +1 (the default) to the left of O1→E1, −1 to the right. The thesis fixes F by
     its figure only; +1 is kept as the default for continuity with earlier results, and the other side
     gives a different mechanism (at (δ, a, 2α) = (180°, 0.5, 240°), K = 1, β_m = 20°, side −1 has B, C, D
-    9 %, 0.6 % and 28 % larger): pass ``side`` to choose, and compare both with :func:`report`. Raises InfeasibleDesignError
-    (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
+    9 %, 0.6 % and 28 % larger): pass ``side`` to choose, and compare both with :func:`report`. Raises
+    InfeasibleDesignError (naming the condition) when K, β_m or the geometry admit no mechanism, and — unless
     ``mu_min`` is None — TransmissionAngleError (an InfeasibleDesignError) when the transmission angle
     of the base four-bar or the angle D-E-F of the attached dyad leaves the working range
     [μ_min, 180° − μ_min] over the turn (Kinitsky (1994), §1.8: 30° ≤ μ ≤ 150°, the figure "cnm" of
@@ -214,7 +244,8 @@ def _far_extreme(mech, dwell: float) -> float:
     ref = mech.motion(np.array([np.pi])).psi[0]
     i = int(np.argmax(np.abs(mo.psi - ref)))
     lo, hi = phi[max(i - 1, 0)], phi[min(i + 1, len(phi) - 1)]
-    f = lambda x: mech.motion(np.array([x])).dpsi[0]
+    def f(x):
+        return mech.motion(np.array([x])).dpsi[0]
     if f(lo) * f(hi) > 0:
         return float(phi[i] % TWO_PI)
     return float(brentq(f, lo, hi, xtol=1e-14) % TWO_PI)
@@ -539,8 +570,7 @@ def slot_residual_first_order(mech: Annotated[LambdaSlottedSixBar, mechanism(Lam
 @validated
 def mchv3_full_turn_best(guide: Straight, side: Sign = 1,
                          max_speed: Annotated[float | None, number(0.0, open=True, optional=True)] = 15.0,
-                         beyonds: Grid = np.arange(0.0, 0.5001, 0.005),
-                         depths: Grid = np.arange(0.005, 0.2001, 0.005)):
+                         beyonds: Grid = BEYONDS, depths: Grid = DEPTHS):
     """МЧВ3-3М with the pivot placed for the smallest residual over the guide's dwell.
 
     Scans the pivot's position (``beyonds`` past the dwell end × ``depths`` into the curve) with the
@@ -596,7 +626,7 @@ def mchv3_full_turn_best(guide: Straight, side: Sign = 1,
     >>> round(float(np.degrees(residual)), 2)
     2.01
     """
-    m, e, foot = _line_frame(guide)
+    m, _e, _foot = _line_frame(guide)
     half = abs(m.axis_coordinates(np.array([np.pi + guide.dwell / 2]))[1][0])
     xc, yc = m.axis_coordinates(np.linspace(0, TWO_PI, 1441))
     t = np.pi + np.linspace(-guide.dwell / 2, guide.dwell / 2, 121) + 1e-6

@@ -23,21 +23,29 @@ from typing import Annotated
 
 import numpy as np
 from scipy.optimize import brentq
-from ..errors import MechanismError
-from ..mechanisms.base import TWO_PI
-from ..motion import AngularMotion
+
 from ..analysis.motion_laws import Invariants, rise_invariants
-from .lambda_guiding import CircleGuide, StraightGuide
-from ..errors import InfeasibleDesignError
-from .lambda_sixbars import Circle, MuMin, Straight, TimeRatio, report, rise_law, time_ratio_far_angle
+from ..errors import InfeasibleDesignError, MechanismError
+from ..mechanisms.base import TWO_PI
 from ..mechanisms.lambda_sliders import LambdaSliderSixBar, LambdaTranslatingSlot
+from ..motion import AngularMotion
 from ..validate import Length, Sign, Spec, angle, mechanism, number, validated
+from .lambda_guiding import CircleGuide, StraightGuide
+from .lambda_sixbars import Circle, MuMin, Straight, TimeRatio, report, rise_law, time_ratio_far_angle
 
 Slider = Annotated[LambdaSliderSixBar, mechanism((LambdaSliderSixBar, LambdaTranslatingSlot))]
 OptionalDwell = Annotated[float | None, angle(0.0, 2 * np.pi, open=True, optional=True)]
 
-__all__ = ["mchv2", "mchv2_stroke", "mchv2_far_position", "mchv5", "SliderReport",
-           "slider_report", "slider_rise", "slider_invariants"]
+__all__ = [
+    "SliderReport",
+    "mchv2",
+    "mchv2_far_position",
+    "mchv2_stroke",
+    "mchv5",
+    "slider_invariants",
+    "slider_report",
+    "slider_rise",
+]
 
 
 @validated
@@ -159,7 +167,7 @@ def mchv2(guide: Circle, K: TimeRatio = 1.0, *, normal: Annotated[int | None, Sp
 
 
 def _mchv2(guide: CircleGuide, K: float, normal: int, mu_min: float | None) -> LambdaSliderSixBar:
-    phi_far, D1, E1 = mchv2_far_position(guide, K, normal)
+    phi_far, _D1, E1 = mchv2_far_position(guide, K, normal)
     Q, R = guide.centre, guide.R
     h = float(np.hypot(*(E1 - Q)))
     if h < 1e-9:

@@ -30,7 +30,7 @@ from typing import Annotated, Any
 
 import numpy as np
 
-from ..errors import DimensionError, MechanismError, SlotUndercutError
+from ..errors import DimensionError, SlotUndercutError
 from ..mechanisms.cam import OscillatingRollerCam, TranslatingRollerCam
 from ..validate import FilePath, Spec, count, length, validated
 from ..validate import mechanism as mechanism_of

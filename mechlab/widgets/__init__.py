@@ -20,8 +20,8 @@ import html
 import os
 import struct
 import zlib
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import ipywidgets as W
 import matplotlib
@@ -421,7 +421,8 @@ class MechanismExplorer(Explorer):
                                                        description="assembly")
         self.play = self._play()
         grid = self.fig.add_gridspec(2, 2, width_ratios=[mechanism_width, 1], left=0.01, right=0.98,
-                                     bottom=0.12 * 4.4 / figsize[1], top=1 - (0.1 if title else 0.03) * 4.4 / figsize[1],
+                                     bottom=0.12 * 4.4 / figsize[1],
+                                     top=1 - (0.1 if title else 0.03) * 4.4 / figsize[1],
                                      wspace=0.28, hspace=0.2)
         self.ax_mech = self.fig.add_subplot(grid[:, 0])
         self.ax_law = self.fig.add_subplot(grid[0, 1])
@@ -467,14 +468,14 @@ class MechanismExplorer(Explorer):
         angular = out.kind == "angle"
         y0 = np.degrees(np.unwrap(law[0])) if angular else law[0]
         self._law = (y0, law[1], law[2])
-        for line, y in zip(self.law_lines.values(), self._law):
+        for line, y in zip(self.law_lines.values(), self._law, strict=False):
             line.set_data(deg, y)
         law_label, rate_label, names = law_labels(out.kind, self.length_unit)
         relabel = self.ax_law.get_ylabel() != law_label
         if relabel:
             self.ax_law.set_ylabel(law_label)
             self.ax_rate.set_ylabel(rate_label)
-            for line, name in zip((self.law_lines["first"], self.law_lines["second"]), names):
+            for line, name in zip((self.law_lines["first"], self.law_lines["second"]), names, strict=False):
                 line.set_label(name)
             legend_above(self.ax_rate, fontsize=8)
         pad = 0.05 * float(np.ptp(y0)) + 1e-9
@@ -510,7 +511,7 @@ class MechanismExplorer(Explorer):
         else:
             self.frame = int(np.clip(np.searchsorted(phi, target), 0, len(phi) - 1))
         self.drawing.set_frame(self.frame)
-        for marker, y in zip(self.law_markers, self._law):
+        for marker, y in zip(self.law_markers, self._law, strict=False):
             marker.set_data([phi[self.frame]], [y[self.frame]])
 
     def _moving_artists(self):

@@ -50,7 +50,8 @@ class CamExplorer(MechanismExplorer):
         k = cam.curvature(phi)
         rho = 1 / k.max() - cam.roller_radius
         return (f"pressure angle: largest {alpha.max():.1f}° (rise), {alpha.min():.1f}° (return)"
-                f"<br>smallest radius of curvature of the profile: {rho:.1f} mm at φ = {np.degrees(phi[np.argmax(k)]):.0f}°")
+                f"<br>smallest radius of curvature of the profile: {rho:.1f} mm at φ = "
+                f"{np.degrees(phi[np.argmax(k)]):.0f}°")
 
 
 def cam_explorer(**kwargs) -> CamExplorer:

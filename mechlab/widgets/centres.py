@@ -3,12 +3,12 @@ links, the pole moving along them as the crank turns (Kozhevnikov, §7.2)."""
 
 from __future__ import annotations
 
-from ..mechanisms.antiparallelogram import Antiparallelogram
-from ..mechanisms.trammel import EllipticTrammel
 from ..analysis.centres import centrodes
 from ..draw.centres import CentrodeOverlay
 from ..errors import MechanismError
+from ..mechanisms.antiparallelogram import Antiparallelogram
 from ..mechanisms.fourbar import FourBar
+from ..mechanisms.trammel import EllipticTrammel
 from . import Control, MechanismExplorer
 
 
@@ -96,4 +96,4 @@ def antiparallelogram_explorer(crank=1.0, ground=2.0, *, link="rocker", referenc
                             question=question)
 
 
-__all__ = ["CentrodeExplorer", "fourbar_centrode_explorer", "trammel_explorer", "antiparallelogram_explorer"]
+__all__ = ["CentrodeExplorer", "antiparallelogram_explorer", "fourbar_centrode_explorer", "trammel_explorer"]

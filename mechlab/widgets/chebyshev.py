@@ -6,7 +6,6 @@ outside the existence map shows its SynthesisError message in place of the drawi
 
 from __future__ import annotations
 
-
 from ..synthesis.lambda_guiding import circle_guiding
 from ..synthesis.lambda_sixbars import mchv1
 from . import Control, MechanismExplorer
@@ -44,8 +43,8 @@ def mchv1_explorer(delta=150.0, a=0.9, dwell=120.0, K=1.0, swing=20.0, mu_min=30
         "swing": Control("swing β_m", 5.0, 90.0, 1.0, swing, "deg"),
         "mu_min": Control("least μ, 0 = any", 0.0, 45.0, 1.0, mu_min, "deg"),
     }
-    return MechanismExplorer(_mchv1, controls, trace="D", n=n, title="Lambda six-bar with rocker output (type 1)", live=live,
-                             question=question)
+    return MechanismExplorer(_mchv1, controls, trace="D", n=n, title="Lambda six-bar with rocker output (type 1)",
+                             live=live, question=question)
 
 
 __all__ = ["lambda_explorer", "mchv1_explorer"]

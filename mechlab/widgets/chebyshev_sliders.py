@@ -43,7 +43,8 @@ def mchv5_explorer(delta=180.0, a=0.8, dwell=180.0, gamma=0.0, n=121, *, live: b
         "dwell": Control("dwell 2α", 20.0, 200.0, 2.0, dwell, "deg"),
         "gamma": Control("guide angle γ", -60.0, 60.0, 1.0, gamma, "deg"),
     }
-    return MechanismExplorer(_mchv5, controls, trace="D", n=n, title="Lambda six-bar with translating slotted output (type 5)",
+    return MechanismExplorer(_mchv5, controls, trace="D", n=n, title="Lambda six-bar with translating slotted output "
+                                                                     "(type 5)",
                              live=live, question=question)
 
 

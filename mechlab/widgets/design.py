@@ -44,8 +44,8 @@ class ChoosingExplorer:
         s["dwell_fraction"] = W.FloatSlider(value=round(spec.dwell_fraction, 2), min=0.05, max=0.9, step=0.01,
                                             description="dwell (of the turn)", style=_STYLE, layout=_LAYOUT,
                                             continuous_update=False)
-        s["rpm"] = W.FloatSlider(value=round(spec.rpm / 5.0) * 5.0, min=5.0, max=200.0, step=5.0, description="crank speed (rpm)",
-                                 style=_STYLE, layout=_LAYOUT, continuous_update=False)
+        s["rpm"] = W.FloatSlider(value=round(spec.rpm / 5.0) * 5.0, min=5.0, max=200.0, step=5.0,
+                                 description="crank speed (rpm)", style=_STYLE, layout=_LAYOUT, continuous_update=False)
         s["max_pressure_angle"] = W.FloatSlider(value=round(np.degrees(spec.max_pressure_angle)), min=20.0,
                                                 max=85.0, step=1.0, description="pressure angle ≤ (deg)",
                                                 style=_STYLE, layout=_LAYOUT, continuous_update=False)

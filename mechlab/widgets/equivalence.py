@@ -9,16 +9,16 @@ A geometry that cannot be built (or whose crank cannot turn) shows its
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import ipywidgets as W
 import numpy as np
 
+from ..analysis.equivalence import base_law, equivalent_slot, law_difference, relative_path
+from ..analysis.half_turn import limit_theorem
 from ..draw import drawing_class, fill_axes, mechanism_name
 from ..draw.curved_slot import SLOT_STYLE
-from ..analysis.equivalence import base_law, equivalent_slot, law_difference, relative_path
 from ..errors import MechanismError
-from ..analysis.half_turn import limit_theorem
 from ..mechanisms.fourbar import FourBar
 from ..mechanisms.slider_crank import SliderCrank
 from . import Control, Explorer, legend_above
@@ -124,7 +124,7 @@ class EquivalenceExplorer(Explorer):
         self.d_link.set_frame(i)
         self.d_twin.set_frame(i)
         self.rel_pin.set_data([self.rel[i, 0]], [self.rel[i, 1]])
-        for marker, y in zip(self.markers, self.law):
+        for marker, y in zip(self.markers, self.law, strict=False):
             marker.set_data([phi[i]], [y[i]])
 
     def _moving_artists(self):

@@ -12,7 +12,7 @@ pages) and redraws the canvas itself under ipympl.
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

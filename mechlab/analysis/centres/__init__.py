@@ -9,13 +9,28 @@
 * :class:`EllipticTrammel`, :class:`Antiparallelogram` — the mechanisms of §7.2.
 """
 
+from ...mechanisms.antiparallelogram import Antiparallelogram
+from ...mechanisms.trammel import EllipticTrammel
 from .centrodes import Centrodes, centrodes, pole_from_two_points, rolling_speeds
 from .homogeneous import Centre, CentreAtInfinity, IndeterminateCentre, segments, separation
 from .instant import InstantCentres, instant_centres
 from .kennedy import centre_count, centres_from_twists, kennedy
-from ...mechanisms.antiparallelogram import Antiparallelogram
-from ...mechanisms.trammel import EllipticTrammel
 
-__all__ = ["instant_centres", "InstantCentres", "centrodes", "Centrodes", "rolling_speeds",
-           "pole_from_two_points", "Centre", "CentreAtInfinity", "IndeterminateCentre", "segments", "separation",
-           "kennedy", "centres_from_twists", "centre_count", "EllipticTrammel", "Antiparallelogram"]
+__all__ = [
+    "Antiparallelogram",
+    "Centre",
+    "CentreAtInfinity",
+    "Centrodes",
+    "EllipticTrammel",
+    "IndeterminateCentre",
+    "InstantCentres",
+    "centre_count",
+    "centres_from_twists",
+    "centrodes",
+    "instant_centres",
+    "kennedy",
+    "pole_from_two_points",
+    "rolling_speeds",
+    "segments",
+    "separation",
+]

@@ -21,13 +21,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...geometry import AnglePath, PointPath, perp, unit
-from .homogeneous import Centre, CentreAtInfinity, in_frame
-from .instant import InstantCentres, instant_centres
-from ...mechanisms.base import AnyMechanism
 from ...errors import MechanismError
+from ...geometry import AnglePath, PointPath, perp, unit
+from ...mechanisms.base import AnyMechanism
 from ...motion import scalar_law
 from ...validate import Name, OptionalAngles, validated
+from .homogeneous import Centre, CentreAtInfinity, in_frame
+from .instant import InstantCentres, instant_centres
 
 
 def point_in_frame(p: PointPath, origin: PointPath, angle: AnglePath) -> PointPath:

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...errors import CentreAtInfinity, DimensionError, IndeterminateCentre, SingularityError
+from ...errors import CentreAtInfinity, DimensionError, IndeterminateCentre
 from ...validate import Checked, Name, Spec, check_value
 
 ROWS = Spec("points", lo=0, width=3)  # homogeneous rows (x, y, w)
@@ -168,7 +168,7 @@ class Centre(Checked):
         """The centre at the first crank angle, as at a scalar φ (``h`` of shape (3,))."""
         return Centre(self.h[0], self.name)
 
-    def __getitem__(self, idx) -> "Centre":
+    def __getitem__(self, idx) -> Centre:
         return Centre(np.atleast_2d(self.h[idx]), self.name)
 
 

@@ -19,19 +19,19 @@ the crank, ω_1·perp(P1k - P1f).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Annotated, Mapping
+from typing import Annotated
 
 import numpy as np
 
 from ...errors import MechanismError, SingularityError
 from ...geometry import AnglePath, PointPath, as_angles, dot, fixed_point, perp, unit
-from ...mechanisms.base import FRAME, Structure
+from ...mechanisms.base import FRAME, AnyMechanism, Structure
 from ...motion import Motion, scalar_law
+from ...validate import OptionalAngles, choice, validated
 from .homogeneous import Centre, at_infinity, finite, line_with_direction
 from .kennedy import Pair, centres_from_twists, kennedy, pair
-from ...mechanisms.base import AnyMechanism
-from ...validate import OptionalAngles, choice, validated
 
 
 @dataclass(frozen=True, eq=False)
@@ -97,7 +97,7 @@ def centre_model(mechanism, motion: Motion) -> CentreModel:
                                  f"not {', '.join(p.kind for p in held) or 'none'}")
         pin, slot = sorted(held, key=lambda p: p.kind != "revolute")
 
-        def other(p):
+        def other(p, name=name):
             return p.a if p.b == name else p.b
 
         # the slide's direction is fixed in both of its links: the slot's normal is the contact's

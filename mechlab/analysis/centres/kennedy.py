@@ -17,14 +17,15 @@ centre degenerates, :class:`~mechlab.analysis.centres.homogeneous.IndeterminateC
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from itertools import combinations
-from typing import Annotated, Mapping, Sequence
+from typing import Annotated
 
 import numpy as np
 
 from ...errors import DimensionError, MechanismError, SingularityError
-from ...validate import Length, Spec, count, validated
 from ...geometry import perp
+from ...validate import Length, Spec, count, validated
 from .homogeneous import COINCIDENT_TOL, Centre, IndeterminateCentre, meet_quality, normalise
 
 Pair = tuple[int, int]

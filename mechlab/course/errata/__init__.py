@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
@@ -103,7 +103,7 @@ class Erratum:
     where: str
     printed: str
     correct: str
-    check: Callable[[], "Claim | str"]
+    check: Callable[[], Claim | str]
     notebook: str = ""
     kind: str = "mistake"
 

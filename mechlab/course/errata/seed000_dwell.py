@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...synthesis.dwell_slot import DwellLaw, slotted_link_law, curved_slot_dwell
+from ...synthesis.dwell_slot import DwellLaw, curved_slot_dwell, slotted_link_law
 from . import Claim, Erratum
 
 NB = "05_dwell_curved_slot.ipynb"
@@ -52,7 +52,9 @@ def _beta_left():
     printed_d1 = K0.d[1] - k                                # β'(φ1) printed; the dwell needs β' = ψ_K'(φ1)
     b = law.beta(np.array([0.0, P1]))
     corrected = [K0.psi[0] - c + k * P1**3, K0.d[1] - 3 * k * (P1 - P1) ** 2]
-    return Claim([0.0, K0.d[1]], [printed0, printed_d1], corrected, 1e-12, text=(f"λ = 0.5, φ1 = 60°: the printed β(0) = {np.degrees(printed0):.3f}° (must be ψ_K(0) - ψ(0) = 0) and "
+    return Claim([0.0, K0.d[1]], [printed0, printed_d1], corrected, 1e-12,
+                 text=(f"λ = 0.5, φ1 = 60°: the printed β(0) = {np.degrees(printed0):.3f}° (must be ψ_K(0) - ψ(0) = 0) "
+                       f"and "
             f"β'(φ1) = {printed_d1:.4f} ≠ ψ_K'(φ1) = {K0.d[1]:.4f} (the slot would not join the dwell arc "
             f"smoothly); the corrected β gives β(0) = {b[0][0]:.1e}, β'(φ1) = {b[1][1]:.4f}"))
 
@@ -64,8 +66,9 @@ def _beta_right():
     printed_dbeta_pi = Kpi.d - LAM / ((1 - LAM) * W**2) * W**2   # derivative of the printed cubic term at π
     psi_d_printed = Kpi.d - printed_dbeta_pi
     correct = law.beta(np.pi)[1]
-    return Claim(Kpi.d, psi_d_printed, Kpi.d - correct, 1e-12, text=(f"λ = 0.5, φ2 = 150°: with the printed β, β'(π) = {printed_dbeta_pi:+.3f} and ψ'(π) = ψ_K'(π) - β'(π) = "
-            f"{psi_d_printed:+.3f} instead of ψ_K'(π) = {Kpi.d:+.3f} (a velocity jump of "
+    return Claim(Kpi.d, psi_d_printed, Kpi.d - correct, 1e-12,
+                 text=(f"λ = 0.5, φ2 = 150°: with the printed β, β'(π) = {printed_dbeta_pi:+.3f} and ψ'(π) = ψ_K'(π) - "
+                       f"β'(π) = {psi_d_printed:+.3f} instead of ψ_K'(π) = {Kpi.d:+.3f} (a velocity jump of "
             f"{abs(2 * printed_dbeta_pi):.3f}·ω1 at φ = π); corrected β'(π) = {correct:.1e}"))
 
 
@@ -89,8 +92,9 @@ def _distance():
     A = m.motion(0.0).points["A"].p
     true = float(np.hypot(*(A - np.array([-lOB, 0.0]))))
     correct = np.sqrt((lOA * np.cos(0.0) + lOB) ** 2 + (lOA * np.sin(0.0)) ** 2)
-    return Claim(true, printed, correct, 1e-12, text=(f"l_OA = 0.5, l_OB = 1, φ = 0: the printed S(0) = {printed:.3f} is the pin's nearest distance, but in the "
-            f"frame of (18) (B at (-l_OB, 0)) A is farthest from B at φ = 0: |AB| = {true:.3f}"))
+    return Claim(true, printed, correct, 1e-12,
+                 text=(f"l_OA = 0.5, l_OB = 1, φ = 0: the printed S(0) = {printed:.3f} is the pin's nearest distance, "
+                       f"but in the frame of (18) (B at (-l_OB, 0)) A is farthest from B at φ = 0: |AB| = {true:.3f}"))
 
 
 def _pressure_at_phi1():
@@ -99,7 +103,9 @@ def _pressure_at_phi1():
     psiK = slotted_link_law(LAM, P1).psi
     printed = np.pi / 2 - (P1 - m.law.psi_dwell)
     correct = abs(np.pi / 2 - (P1 - psiK))
-    return Claim(theta, printed, correct, 1e-12, text=(f"λ = 0.5, [60°, 150°]: through the slot θ(φ1) = {np.degrees(theta):.3f}°; the printed formula with "
+    return Claim(theta, printed, correct, 1e-12,
+                 text=(f"λ = 0.5, [60°, 150°]: through the slot θ(φ1) = {np.degrees(theta):.3f}°; the printed formula "
+                       f"with "
             f"ψ1 = ψ_B = {np.degrees(m.law.psi_dwell):.3f}° gives {np.degrees(printed):.3f}°; with the angle of the "
             f"line BA, ψ_K(φ1) = {np.degrees(psiK):.3f}°, it gives {np.degrees(correct):.3f}°"))
 
@@ -116,7 +122,8 @@ def _limit_120():
     assert abs(edge.max_pressure_angle()[0] - np.radians(60.0)) < 1e-6 and np.degrees(q2 - q1) < 60.0
     return (f"λ = 0.5, [60°, 150°] (a 90° dwell): the worst pressure angle is {np.degrees(th):.2f}° at the slot's "
             f"far end φ = 0, tan θ = 2(1 + λ)/φ1, whatever the dwell length; keeping θ ≤ 60° at both ends allows "
-            f"at most [{np.degrees(q1):.1f}°, {np.degrees(q2):.1f}°], a {np.degrees(q2 - q1):.1f}° dwell, with the cubic")
+            f"at most [{np.degrees(q1):.1f}°, {np.degrees(q2):.1f}°], a {np.degrees(q2 - q1):.1f}° dwell, with the "
+            f"cubic")
 
 
 ERRATA = [

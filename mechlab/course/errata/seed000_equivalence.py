@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 
 from ...analysis.equivalence import equivalent_slot
-from ...geometry import wrap
 from ...analysis.half_turn import base_peaks, formula_18
+from ...geometry import wrap
 from ...mechanisms.fourbar import FourBar
 from . import Claim, Erratum
 
@@ -33,7 +33,8 @@ def _check_13() -> str:
     correct = base.psi[1] - beta.theta[0]            # ψ_K(φ*) - β = -ψ_K(φ) - β
     other = -base.psi[0] - beta.theta[0]
     assert abs(wrap(other - actual)) < 1e-12
-    return Claim(0.0, wrap(printed - actual), wrap(correct - actual), 1e-12, text=(f"φ = 60°: ψ(φ*) = {np.degrees(actual):.4f}°, ψ_K(φ*) - β = {np.degrees(correct):.4f}°, "
+    return Claim(0.0, wrap(printed - actual), wrap(correct - actual), 1e-12,
+                 text=(f"φ = 60°: ψ(φ*) = {np.degrees(actual):.4f}°, ψ_K(φ*) - β = {np.degrees(correct):.4f}°, "
             f"printed ψ_K(φ*) + β = {np.degrees(printed):.4f}° (off by 2β = {np.degrees(2 * beta.theta[0]):.4f}°); "
             f"compared: the wrapped difference from the simulated ψ(φ*)"))
 
@@ -65,7 +66,8 @@ def _check_peak() -> str:
 ERRATA = [
     Erratum(source="000", where="formula (13)",
             printed=r"$\psi(\varphi^*) = \psi_K(\varphi^*) + \beta = -\psi_K(\varphi) - \beta$",
-            correct=r"$\psi(\varphi^*) = \psi_K(\varphi^*) - \beta = -\psi_K(\varphi) - \beta$ (the middle sign; Table 2 is right)",
+            correct=r"$\psi(\varphi^*) = \psi_K(\varphi^*) - \beta = -\psi_K(\varphi) - \beta$ (the middle sign; Table "
+                    r"2 is right)",
             check=_check_13, notebook=NOTEBOOK),
     Erratum(source="000", where="formula (15), final expression",
             printed=r"$\psi'(\varphi^*) = -\psi'_K(\varphi) + \beta'(\varphi)$",
@@ -73,6 +75,7 @@ ERRATA = [
             check=_check_15, notebook=NOTEBOOK),
     Erratum(source="000", where="§3, after (25): peak of the base mechanism's velocity analog",
             printed=r"the maximum of the base mechanism's $\psi'_K$ is $\lambda/(\lambda-1)$",
-            correct=r"the peak of $|\psi'_K|$ is $\lambda/|1-\lambda|$; for $\lambda<1$, $\lambda/(\lambda-1)<0$ is the minimum and the maximum is $\lambda/(\lambda+1)$",
+            correct=r"the peak of $|\psi'_K|$ is $\lambda/|1-\lambda|$; for $\lambda<1$, $\lambda/(\lambda-1)<0$ is "
+                    r"the minimum and the maximum is $\lambda/(\lambda+1)$",
             check=_check_peak, notebook=NOTEBOOK),
 ]

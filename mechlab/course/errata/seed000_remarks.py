@@ -7,7 +7,7 @@ import numpy as np
 from ...analysis.equivalence import equivalent_slot
 from ...mechanisms.fourbar import FourBar
 from ...mechanisms.slotted import SlottedLink
-from ...synthesis.dwell_slot import slotted_link_law, curved_slot_dwell, two_branch_slot
+from ...synthesis.dwell_slot import curved_slot_dwell, slotted_link_law, two_branch_slot
 from . import Claim, Erratum
 
 NB05 = "05_dwell_curved_slot.ipynb"

@@ -2,10 +2,10 @@
 
 import numpy as np
 
+from ...analysis.motion_laws import law_invariants
+from ...mechanisms.fourbar import FourBar
 from ...mechanisms.lambda_mechanism import LambdaMechanism, classic_lambda
 from ...synthesis.lambda_guiding import circle_guiding, straight_guiding
-from ...mechanisms.fourbar import FourBar
-from ...analysis.motion_laws import law_invariants
 from . import Claim, Erratum
 
 DEG = np.pi / 180
@@ -18,7 +18,7 @@ def _rotation():
     r, a = (v.ravel() for v in np.meshgrid(np.linspace(0.05, 1.35, 27), np.linspace(0.07, 1.97, 39)))  # no r = a
     cell = (r + a < 2) & (r < 1.0)  # inside the printed conditions
     r, a = r[cell], a[cell]
-    truth = np.array([FourBar(x, 1.0, 1.0, y).grashof().kind == "crank-rocker" for x, y in zip(r, a)])
+    truth = np.array([FourBar(x, 1.0, 1.0, y).grashof().kind == "crank-rocker" for x, y in zip(r, a, strict=False)])
     printed = (r < 1) & (r + a < 2)
     correct = (r < a) & (r + a < 2)
     n_bad = int(np.sum(printed & ~truth))
@@ -57,7 +57,8 @@ def _dh_power():
     # the truth from the closed form written out here, not from the library's law functions:
     # y = ½[(1 − cos πx) − ¼(1 − cos 2πx)], y' = (π/2)(sin πx − ½ sin 2πx), y'' = (π²/2)(cos πx − cos 2πx)
     x = np.linspace(0, 1, 200001)
-    power = (np.pi**3 / 4) * (np.sin(np.pi * x) - 0.5 * np.sin(2 * np.pi * x)) * (np.cos(np.pi * x) - np.cos(2 * np.pi * x))
+    power = ((np.pi**3 / 4) * (np.sin(np.pi * x) - 0.5 * np.sin(2 * np.pi * x))
+             * (np.cos(np.pi * x) - np.cos(2 * np.pi * x)))
     absmax, signed = np.abs(power).max(), power.max()
     return Claim(absmax, 7.00, 9.89, 0.005,
                  f"max |y'y''| = {absmax:.4f} on 200001 points of the closed form (the definition that reproduces "
@@ -74,8 +75,8 @@ def _classic():
 
 
 def _mchv1_row():
-    from ...synthesis.lambda_sixbars import mchv1, rise_law
     from ...analysis.motion_laws import rise_invariants
+    from ...synthesis.lambda_sixbars import mchv1, rise_law
 
     g = circle_guiding(np.pi, 1.0, 100 * DEG)
     inv = rise_invariants(*rise_law(mchv1(g, 1.0, 20 * DEG), g.dwell))
@@ -92,8 +93,8 @@ def _row_fit(delta, alpha, a, guess=None, full_swing=False):
     The rise is normalised as :func:`~mechlab.synthesis.lambda_sixbars.rise_law` measures it, from the
     end of the dwell to the far extreme; ``full_swing`` takes the stroke from the dwell's centre instead
     (adding the dwell's residual motion, about 0.013 rad at δ = 270°, 2α = 200°)."""
-    from ...synthesis.lambda_sixbars import mchv1, rise_law
     from ...analysis.motion_laws import invariants, thesis_mchv1_rows
+    from ...synthesis.lambda_sixbars import mchv1, rise_law
 
     row = next(r for r in thesis_mchv1_rows() if r[:2] == (delta, alpha))
     g = circle_guiding(delta * DEG, a, 2 * alpha * DEG, guess=guess) if guess else \
@@ -112,7 +113,7 @@ def _a_claim(delta, alphas, printed_a, correct_a, tol, note, full_swing=False):
     worst = [_row_fit(delta, alpha, printed_a)[0] for alpha in alphas]
     text = "; ".join(f"δ = {delta}°, α = {alpha}°, K = 1, β_m = 20°: the printed B, C, D are reproduced best at "
                      f"a = {a:.4f} (worst {100 * w:.1f} %), at a = {printed_a} only within {100 * p:.1f} %"
-                     for alpha, (w, a), p in zip(alphas, fits, worst))
+                     for alpha, (w, a), p in zip(alphas, fits, worst, strict=False))
     return Claim([a for _, a in fits], printed_a, correct_a, tol, f"{text} ({note})")
 
 

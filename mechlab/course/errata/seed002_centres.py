@@ -8,10 +8,10 @@ settle which, so they are listed as unreadable passages, with the computation fo
 
 import numpy as np
 
+from ...analysis.centres import centrodes
+from ...analysis.centres.instant import instant_centres
 from ...mechanisms.antiparallelogram import Antiparallelogram
 from ...mechanisms.trammel import EllipticTrammel
-from ...analysis.centres.instant import instant_centres
-from ...analysis.centres import centrodes
 from . import Claim, Erratum
 
 NOTEBOOK = "01_instant_centres.ipynb"
@@ -39,7 +39,8 @@ def _trammel_y_coordinate() -> str:
     # away from α = β/2, where cos(β − α) = cos α and the printed y happens to be right
     far = np.abs(alpha - beta / 2) > 0.2
     return Claim(np.abs(P[far, 1]), np.abs(printed_y[far]), np.abs(l * np.cos(alpha[far]) / np.sin(beta)), 1e-9,
-                 text=(f"l = 1, β = 60°, α = {np.degrees(alpha[i]):.1f}°: pole P14 = ({P[i, 0]:.4f}, {P[i, 1]:.4f}) (Kennedy), "
+                 text=(f"l = 1, β = 60°, α = {np.degrees(alpha[i]):.1f}°: pole P14 = ({P[i, 0]:.4f}, {P[i, 1]:.4f}) "
+                       f"(Kennedy), "
             f"|y| = l cos α / sin β = {abs(np.cos(alpha[i])) / np.sin(beta):.4f}; printed l cos(β-α)/sin β = "
             f"{printed_y[i]:.4f}; printed x² + y² ranges over [{r2.min():.3f}, {r2.max():.3f}] l² instead of "
             f"the constant l²/sin²β = {1 / np.sin(beta) ** 2:.4f} l² of (7.12); |y| compared at {far.sum()} "
@@ -65,7 +66,9 @@ def _antiparallelogram_pole() -> str:
     # the printed rule (lines AB and BE meet at the joint B) and the corrected one (OA ∩ EB), by their own
     # line intersections, against Kennedy's P24
     meet = np.array([_meet(O[i], A[i], E[i], B[i]) for i in range(len(phi))])
-    return Claim(p24.xy, B, meet, 1e-9, text=(f"antiparallelogram crank = rocker = 1, coupler = frame = 2, φ = 45°: P24 = ({p24.xy[1, 0]:.4f}, "
+    return Claim(p24.xy, B, meet, 1e-9,
+                 text=(f"antiparallelogram crank = rocker = 1, coupler = frame = 2, φ = 45°: P24 = "
+                       f"({p24.xy[1, 0]:.4f}, "
             f"{p24.xy[1, 1]:.4f}) = OA ∩ EB (Kennedy and twists agree to 1e-12); the joint B = "
             f"({B[1, 0]:.4f}, {B[1, 1]:.4f}) where adjacent lines meet is {gap[1]:.4f} away and moves with "
             f"velocity analog {vB[1]:.4f} ≠ 0"))

@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...geometry import cross
 from ...kinetostatics.model import Force, model_for
 from ...kinetostatics.solve import solve
-from ...geometry import cross
 from ...mechanisms.slider_crank import SliderCrank
 from . import Claim, Erratum
 
@@ -53,11 +53,13 @@ def _check_rod_tangential() -> str:
     M_in2 = -rod.inertia * ddth * 30.0**2
     m_G = float(cross(S - B, G2)[0])
     m_F2 = float(cross(S - B, F_in2)[0])                          # F_И2·h_И2 with its sign
-    m_F4 = 0.0                                                    # the slider's inertia force acts along the guide through C
+    # the slider's inertia force acts along the guide through C: no moment about B
+    m_F4 = 0.0
     correct = -(m_G + m_F2 + M_in2) / l2
     printed = -(m_G + m_F4 + M_in2) / l2
-    return Claim(R_t, printed, correct, 1e-9 * abs(R_t), text=(f"slider-crank 0.10/0.40 m, rod 3 kg, ω1 = 30 rad/s, φ = 60°: group solution R_B^t = {R_t:.3f} N; "
-            f"(1) with h_И2: {correct:.3f} N; with h_И4 (= 0, slider force through C): {printed:.3f} N"))
+    return Claim(R_t, printed, correct, 1e-9 * abs(R_t),
+                 text=(f"slider-crank 0.10/0.40 m, rod 3 kg, ω1 = 30 rad/s, φ = 60°: group solution R_B^t = {R_t:.3f} "
+                       f"N; (1) with h_И2: {correct:.3f} N; with h_И4 (= 0, slider force through C): {printed:.3f} N"))
 
 
 def _check_crank_moment() -> str:
@@ -79,7 +81,7 @@ def _check_crank_moment() -> str:
         F_in1 = -crank.mass * k * (mo.points["A"].dd * 30.0**2 + mo.points["A"].d * eps1)
         correct = printed - float(cross(S - A, F_in1)[0]) + crank.inertia * eps1
         out.append((eps1, float(res.torque[0]), printed, correct))
-    (e0, t0, p0, c0), (e1, t1, p1, c1) = out
+    (_e0, t0, p0, _c0), (e1, t1, p1, c1) = out
     assert abs(p0 - t0) <= 1e-9 * abs(t0)  # harmless at ε1 = 0 with S on OA
     return Claim(t1, p1, c1, 1e-9 * abs(t1),
                  f"ε1 = 0: printed M_ур = {p0:.3f} N·m = power balance {t0:.3f} N·m; start-up ε1 = {e1:g} rad/s²: "
@@ -91,7 +93,8 @@ def _check_mean_torque() -> str:
     losses" is printed as n·η⁻¹·Σ(...) — n must divide, not multiply."""
     model = (model_for(_SC).with_body("crank", mass=2.0, inertia=0.002, com=(0.05, 0.0))
              .with_body("rod", mass=3.0, com=(0.16, 0.0)).with_body("slider", mass=4.0))
-    load = lambda m: np.stack([np.where(m.ds < 0, 2000.0, 0.0), 0.0 * m.s], axis=1)  # pressing on the return stroke
+    def load(m):
+        return np.stack([np.where(m.ds < 0, 2000.0, 0.0), 0.0 * m.s], axis=1)  # pressing on the return stroke
     fine = _SC.turn(7201)
     M_fine = solve(model, _SC.motion(fine), [Force("slider", "B", load)], omega1=30.0).torque
     exact = float(np.trapezoid(M_fine, fine) / (2 * np.pi))
@@ -101,7 +104,8 @@ def _check_mean_torque() -> str:
     correct = float(np.sum(M) / (n * eta))
     printed = float(n / eta * np.sum(M))
     assert abs(printed / correct - n * n) < 1e-9 * n * n
-    return Claim(exact / eta, printed, correct, 0.05 * abs(exact / eta), text=(f"press torque at n = {n} positions, η = {eta}: Σ M_i/(nη) = {correct:.3f} N·m (cycle mean/η "
+    return Claim(exact / eta, printed, correct, 0.05 * abs(exact / eta),
+                 text=(f"press torque at n = {n} positions, η = {eta}: Σ M_i/(nη) = {correct:.3f} N·m (cycle mean/η "
             f"{exact / eta:.3f}); printed n·η⁻¹·Σ M_i = {printed:.1f} N·m, n² = {n * n} times too large; tolerance "
             f"5 % for sampling {n} positions"))
 
@@ -109,14 +113,20 @@ def _check_mean_torque() -> str:
 ERRATA = [
     Erratum(source="003", where="slider-crank with an additional link, formula (1)",
             printed=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}4} \mu_l - M_{\text{И}2})/l_2$",
-            correct=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}2} \mu_l - M_{\text{И}2})/l_2$ (the arm of the rod's own inertia force, as in the moment equation above it)",
+            correct=r"$R_B^t = (G_2 h_2 \mu_l - F_{\text{И}2} h_{\text{И}2} \mu_l - M_{\text{И}2})/l_2$ (the arm of "
+                    r"the rod's own inertia force, as in the moment equation above it)",
             check=_check_rod_tangential, notebook=NOTEBOOK),
-    Erratum(source="003", where="slider-crank with an additional link, the drawing of the leading link, moment equation about B",
+    Erratum(source="003", where="slider-crank with an additional link, the drawing of the leading link, moment "
+                                "equation about B",
             printed=r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l$",
-            correct=r"exact under the source's uniform rotation (ε1 = 0, centre of mass on OB); in general $M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l \pm F_{\text{И}1} h_{\text{И}1} \mu_l \pm M_{\text{И}1}$: with a crank acceleration (a start-up) the crank's inertia force, which the force equation includes, also has a moment about B",
+            correct=r"exact under the source's uniform rotation (ε1 = 0, centre of mass on OB); in general "
+                    r"$M_{\text{ур}} = G_1 h_G \mu_l - R_A h_A \mu_l \pm F_{\text{И}1} h_{\text{И}1} \mu_l \pm "
+                    r"M_{\text{И}1}$: with a crank acceleration (a start-up) the crank's inertia force, which the "
+                    r"force equation includes, also has a moment about B",
             check=_check_crank_moment, notebook=NOTEBOOK, kind="remark"),
     Erratum(source="004", where="last section, mean crank torque with friction losses",
             printed=r"$M_{cp} \approx n\,\eta^{-1} \sum P_i \rho_i \omega/\omega_{KP}$",
-            correct=r"$M_{cp} \approx (n\,\eta)^{-1} \sum P_i \rho_i \omega/\omega_{KP}$ (the mean of the n sampled torques, as in $M_{cp} = \sum R_i\rho_i/n$ above it)",
+            correct=r"$M_{cp} \approx (n\,\eta)^{-1} \sum P_i \rho_i \omega/\omega_{KP}$ (the mean of the n sampled "
+                    r"torques, as in $M_{cp} = \sum R_i\rho_i/n$ above it)",
             check=_check_mean_torque, notebook=NOTEBOOK),
 ]

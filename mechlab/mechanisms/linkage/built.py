@@ -18,8 +18,19 @@ from ...errors import AssemblyError, DimensionError, JointError, MechanismError,
 from ...geometry import AnglePath, as_angles
 from ...motion import AngularMotion, LinearMotion, Motion
 from ...validate import Spec, check_value, mechanism
-from ..base import (FRAME, FULL_TURN, TWO_PI, Mechanism, Part, Sketch, Structure, block_outline,
-                    branch_references, fmt_ranges, lift_on_ranges)
+from ..base import (
+    FRAME,
+    FULL_TURN,
+    TWO_PI,
+    Mechanism,
+    Part,
+    Sketch,
+    Structure,
+    block_outline,
+    branch_references,
+    fmt_ranges,
+    lift_on_ranges,
+)
 from .groups import PRP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
 
 # Crank angles sampled to find where a linkage assembles; each boundary is then bisected to 1e-13 rad.

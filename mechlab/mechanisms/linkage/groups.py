@@ -17,8 +17,20 @@ from typing import Annotated, Any, ClassVar
 import numpy as np
 
 from ...errors import AssemblyError, SingularityError, StructureError
-from ...geometry import (DEAD_POINT_TOL, AnglePath, PointPath, _abs2, _im_conj, _re_conj, as_complex, as_xy,
-                         crank_point, fixed_point, relative, vector_angle)
+from ...geometry import (
+    DEAD_POINT_TOL,
+    AnglePath,
+    PointPath,
+    _abs2,
+    _im_conj,
+    _re_conj,
+    as_complex,
+    as_xy,
+    crank_point,
+    fixed_point,
+    relative,
+    vector_angle,
+)
 from ...validate import Angle, Checked, Distance, Length, Name, Sign, Spec, mechanism
 from ..base import FRAME, Link, Pair
 
