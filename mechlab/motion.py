@@ -161,19 +161,15 @@ class Motion:
     ``(2,)``), an array of n angles a motion of arrays (positions ``(n, 2)``). ``output`` is the output law
     whatever its kind; :meth:`link_angle` gives any link's angle.
 
+    The transmission angle (:attr:`transmission`) is given as an array or, by a mechanism, as a function
+    of the motion (the private ``_transmission`` field), evaluated on first use.
+
     Parameters
     ----------
     phi : numpy.ndarray or float
         Crank angles φ (radians).
     points : Mapping[str, PointPath]
         Joint names to their :class:`~mechlab.geometry.PointPath` (positions and first and second analogs).
-
-    Attributes
-    ----------
-    transmission : numpy.ndarray
-        The transmission angle μ in [0, π] at every φ (radians; π/2 is ideal). A mechanism may pass a
-        function of the motion instead of the array (the private ``_transmission`` field): it is evaluated
-        on first use.
 
     Examples
     --------
