@@ -46,8 +46,8 @@ from pathlib import Path
 import nbformat
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import report  # noqa: E402  (this folder's scripts)
-import variants  # noqa: E402
+import report
+import variants
 
 HERE = Path(__file__).resolve().parent
 GRADES = "grades.csv"

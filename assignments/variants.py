@@ -1,25 +1,23 @@
-"""A variant per student: each student's numbers, drawn from the student id and the assignment, written
-into that student's copy of the assignment's source before nbgrader sees it.
+"""A variant per student: each student's numbers, drawn from the student id and the assignment, written into that
+student's copy of the assignment's source before nbgrader sees it.
 
-How (after PrairieLearn's split of a question into the parameters a student sees and the answers the
-server keeps, and what nbgrader's maintainers say of its design in nbgrader issues #1153 and #1433: one
-source, one release, the hidden tests re-inserted from the master at autograde): the source notebook is
-a template. Its cell tagged ``metadata.mechlab.variant`` (``{"R": [40, 80, 5], …}``: low, high, step)
-holds the shared numbers as ``V = {...}``; markdown cells say ``{{R}}`` where a number goes.
-:func:`render` writes one student's master: that cell with the student's numbers and id, the
-placeholders filled, every check cell's visible line replaced by ``self_check(CHECKS[key], answer);``
-(for a code exercise ``self_check(CHECKS[key], the_function);``, its token holding the hidden cases'
-inputs and the digests of the reference's outputs) and a cell ``CHECKS = {key: token}`` (source hidden in
-JupyterLab) after the numbers, each token sealed (:mod:`mechlab.course.exercises.selfcheck`) from the very
-call its hidden test makes (run here with :func:`~mechlab.course.exercises.recording`). ``make student`` releases each student's
-master; ``make grade`` releases the master of the student id nbgrader files the submission under, so
-nbgrader's own OverwriteCells puts that student's numbers back in the locked cells and the hidden
-tests grade against them, whatever the submitted notebook says (a hand-edited or another student's
-``V`` is flagged by :func:`whose`).
+How (after PrairieLearn's split of a question into the parameters a student sees and the answers the server keeps, and
+what nbgrader's maintainers say of its design in nbgrader issues #1153 and #1433: one source, one release, the hidden
+tests re-inserted from the master at autograde): the source notebook is a template. Its cell tagged
+``metadata.mechlab.variant`` (``{"R": [40, 80, 5], …}``: low, high, step) holds the shared numbers as ``V = {...}``;
+markdown cells say ``{{R}}`` where a number goes. :func:`render` writes one student's master: that cell with the
+student's numbers and id, the placeholders filled, every check cell's visible line replaced by
+``self_check(CHECKS[key], answer);`` (for a code exercise ``self_check(CHECKS[key], the_function);``, its token
+holding the hidden cases' inputs and the digests of the reference's outputs) and a cell ``CHECKS = {key: token}``
+(source hidden in JupyterLab) after the numbers, each token sealed (:mod:`mechlab.course.exercises.selfcheck`) from
+the very call its hidden test makes (run here with :func:`~mechlab.course.exercises.recording`). ``make student``
+releases each student's master; ``make grade`` releases the master of the student id nbgrader files the submission
+under, so nbgrader's own OverwriteCells puts that student's numbers back in the locked cells and the hidden tests
+grade against them, whatever the submitted notebook says (a hand-edited or another student's ``V`` is flagged by
+:func:`whose`).
 
-Numbers are ``low + k·step`` with k from SHA-256 of (assignment, student id, draw): the same on every
-machine and run. A draw whose checks give a non-finite expected value is drawn again (``draw`` 1, 2, …).
-"""
+Numbers are ``low + k·step`` with k from SHA-256 of (assignment, student id, draw): the same on every machine and run.
+A draw whose checks give a non-finite expected value is drawn again (``draw`` 1, 2, …)."""
 
 from __future__ import annotations
 
@@ -65,7 +63,7 @@ def draw(ranges: dict, aid: str, student: str, attempt: int = 0) -> dict:
     """The student's numbers: each ``low + k·step`` (k uniform on the grid) from SHA-256 of the ids."""
     out = {}
     for name, (low, high, step) in sorted(ranges.items()):
-        n = int(round((high - low) / step)) + 1
+        n = round((high - low) / step) + 1
         h = int.from_bytes(hashlib.sha256(f"{aid}|{student}|{attempt}|{name}".encode()).digest()[:8], "big")
         value = low + (h % n) * step
         out[name] = int(value) if all(float(x).is_integer() for x in (low, step)) else round(value, 10)
@@ -185,7 +183,7 @@ def render(src, aid: str, student: str = SHARED, values: dict | None = None):
         hidden = "".join(HIDDEN.findall(c.source))
         gid = c.metadata.get("nbgrader", {}).get("grade_id", c.get("id", str(k)))
         lines = []
-        for j, (call, answer) in enumerate(zip(calls, _answer(hidden, len(calls)))):
+        for j, (call, answer) in enumerate(zip(calls, _answer(hidden, len(calls)), strict=False)):
             try:
                 sealed[f"{gid}:{j}"] = seal(call, salt(aid, student, gid, j))
             except TypeError as err:     # every auto-graded answer is checked in the notebook: no exception
@@ -199,7 +197,8 @@ def render(src, aid: str, student: str = SHARED, values: dict | None = None):
         at = nb.cells.index(variant_cell(nb) or next(c for c in nb.cells if c.cell_type == "code")) + 1
         cell = nbformat.v4.new_code_cell(
             "# what the check cells compare your answers with, sealed (no number in it): run it, do not edit it\n"
-            "from mechlab.course.exercises import self_check\n\nCHECKS = {\n" + "".join(f"    {k!r}: {_wrapped(v)},\n" for k, v in sealed.items()) + "}\n")
+            "from mechlab.course.exercises import self_check\n\nCHECKS = {\n"
+            + "".join(f"    {k!r}: {_wrapped(v)},\n" for k, v in sealed.items()) + "}\n")
         cell["id"] = "sealed-checks"
         cell.metadata.update({"jupyter": {"source_hidden": True}, "nbgrader": {
             "grade": False, "grade_id": "sealed_checks", "locked": True, "schema_version": 3, "solution": False,
@@ -221,7 +220,7 @@ def numbers(nb) -> tuple[dict, str | None]:
     return values, (m.group(1) if m else None)
 
 
-def whose(nb, aid: str, student: str, masters: dict[str, "nbformat.NotebookNode"]) -> str:
+def whose(nb, aid: str, student: str, masters: dict[str, nbformat.NotebookNode]) -> str:
     """"" when the submission's numbers are the student's own; else a flag naming what is wrong: another
     student's numbers (``masters`` maps ids to their rendered masters), or numbers edited by hand."""
     got, named = numbers(nb)

@@ -12,9 +12,22 @@ import pytest
 
 import mechlab as ml
 from mechlab.course import exercises as ex
-from mechlab.course.exercises import (NotYet, cam_design, check, check_choice, check_form, dwell_slot_design,
-                                      fourbar_design, function_check, geneva_design, guide_design, output_design,
-                                      press_design, sixbar_design, tolerance)
+from mechlab.course.exercises import (
+    NotYet,
+    cam_design,
+    check,
+    check_choice,
+    check_form,
+    dwell_slot_design,
+    fourbar_design,
+    function_check,
+    geneva_design,
+    guide_design,
+    output_design,
+    press_design,
+    sixbar_design,
+    tolerance,
+)
 from mechlab.synthesis.slot_export import write_dxf
 
 SOURCE = Path(__file__).resolve().parents[1] / "assignments" / "source"
@@ -187,9 +200,14 @@ def test_cam_design():
 
 
 def test_function_check():
-    ref = lambda z: ml.ExternalGeneva(z, 1.0).max_velocity()
+    def ref(z):
+        return ml.ExternalGeneva(z, 1.0).max_velocity()
+
     cases = [(z,) for z in range(3, 10)]
-    good = lambda z: np.sin(np.pi / z) / (1 - np.sin(np.pi / z))
+
+    def good(z):
+        return np.sin(np.pi / z) / (1 - np.sin(np.pi / z))
+
     assert function_check(good, ref, cases, name="peak", rtol=1e-9)
     wrong = function_check(lambda z: np.sin(np.pi / z), ref, cases, name="peak")
     assert not wrong and "peak(3) is not what the reference gives" in repr(wrong) and "6.464" not in repr(wrong)
@@ -284,6 +302,7 @@ def _design_cells(nb):
 def _corners(path):
     """Each corner of the variant ranges of the numbers a design exercise reads (the other numbers: the source's)."""
     import itertools
+
     import nbformat
     nb = nbformat.read(path, as_version=4)
     cell = next(c for c in nb.cells if "variant" in c.metadata.get("mechlab", {}))
@@ -293,7 +312,7 @@ def _corners(path):
     for answer, checker in _design_cells(nb):
         used = sorted(set(re.findall(r"V\[\"(\w+)\"\]", answer.source + checker.source)) & set(ranges))
         for corner in itertools.product(*[(ranges[k][0], ranges[k][1]) for k in used]):
-            yield nb, answer, checker, {**base["V"], **dict(zip(used, corner))}
+            yield nb, answer, checker, {**base["V"], **dict(zip(used, corner, strict=False))}
 
 
 @pytest.mark.parametrize("path", [p for p in _notebooks() if any(True for _ in _corners(p))], ids=lambda p: p.stem)

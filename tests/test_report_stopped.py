@@ -13,7 +13,6 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "assignments"))
 import report  # noqa: E402  (assignments/ is a folder of scripts, not a package)
-
 from test_grading import DEPS, SOURCE, _answer_line, _auto_points, _fill, _run  # noqa: E402
 
 AID = "forces"    # quick to grade; its exercise 2 is the answer the looping student never gets to
@@ -31,7 +30,8 @@ def test_an_answer_without_verdict_reads_stopped_only_where_a_cell_was_stopped(t
     assert table == {("M", "right"): 1, ("M", "stopped: ran over 60 s"): 1,
                      ("M", "no verdict (cell did not finish)"): 1, ("N", "right"): 2, ("N", "wrong"): 1}
     report.write(subs, {AID: ["M", "N"]}, tmp_path)
-    outcomes = [r["outcome"] for r in csv.DictReader(open(tmp_path / "class_report.csv", newline=""))]
+    with open(tmp_path / "class_report.csv", newline="") as f:
+        outcomes = [r["outcome"] for r in csv.DictReader(f)]
     assert "stopped: ben: ran over 60 s in ex2" in outcomes
     assert not [o for o in outcomes if o.startswith("flag:")]          # a loop is not a copy
     page = (tmp_path / "class_report.html").read_text()
@@ -52,13 +52,15 @@ def test_a_looping_submission_is_reported_stopped(tmp_path):
         (subs / who).mkdir(parents=True)
         nbformat.write(nb, subs / who / f"{AID}.ipynb")
     _run("grade", str(subs), "--out", str(out), "--timeout", "5")
-    rows = list(csv.DictReader(open(out / "class_report.csv", newline="")))
+    with open(out / "class_report.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
     share = {(r["answer"], r["outcome"]): float(r["share"]) for r in rows if r["share"]}
     assert share[("balancing torque", "right")] == 0.5
     assert share[("balancing torque", "stopped: ran over 5 s")] == 0.5
     assert share[("guide reaction on the plan", "right")] == 1.0        # the cells after the loop still graded
     assert [r["outcome"] for r in rows if not r["answer"] and r["outcome"].startswith("stopped:")] == [
         "stopped: looping: ran over 5 s in ex2"]
-    grades = {r["student_id"]: float(r["raw_score"]) for r in csv.DictReader(open(out / "grades.csv", newline=""))}
+    with open(out / "grades.csv", newline="") as f:
+        grades = {r["student_id"]: float(r["raw_score"]) for r in csv.DictReader(f)}
     assert grades == {"right": _auto_points(AID), "looping": _auto_points(AID) - 2}
     assert "ran for more than 5 s and was stopped" in (out / "feedback" / "looping" / f"{AID}.html").read_text()

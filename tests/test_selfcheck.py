@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from mechlab.course.exercises import check, check_choice, self_check, tolerance
-from mechlab.course.exercises.selfcheck import classify, slip_candidates, lookups, seal, windows
+from mechlab.course.exercises.selfcheck import classify, lookups, seal, slip_candidates, windows
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCE = ROOT / "assignments" / "source"
@@ -92,7 +92,7 @@ def test_self_check_names_what_the_grader_names_and_reveals_nothing(aid, student
     checks = [call for _, calls in variants._checks(nb) for call in calls if call["kind"] != "function"]
     tokens = _tokens(nb)
     assert len(tokens) == len(checks) >= 2, aid
-    for (token, _), call in zip(tokens, checks):
+    for (token, _), call in zip(tokens, checks, strict=False):
         if call["kind"] == "choice":
             for option in call["options"]:
                 mine, _ = _said(token, option)
@@ -134,9 +134,9 @@ def test_the_editions_check_cells_run_on_their_own(aid):
     lines = [line for c in nb.cells for line in variants.HIDDEN.sub("", c.source).splitlines()
              if line.startswith("self_check(") and line.split("], ")[1].rstrip(");") not in functions]
     assert len(lines) == len(calls)
-    for line, call in zip(lines, calls):
+    for line, call in zip(lines, calls, strict=False):
         answer = re.search(r"\], (.+)\);$", line).group(1)
-        env[answer] = call["expected"] if call["kind"] == "number" else call["expected"]
+        env[answer] = call["expected"]
         out = io.StringIO()
         with contextlib.redirect_stdout(out):
             exec(line, env)
@@ -151,7 +151,7 @@ def _near_other(value, plant, call) -> bool:
     mine = plant if plant in order else None
     look = lookups(value, call["significant"])
     earlier = order[:order.index(mine)] if mine else []
-    return any(look & bins for (kind, label, _, bins), name in zip(table, order) if name in earlier)
+    return any(look & bins for (kind, label, _, bins), name in zip(table, order, strict=False) if name in earlier)
 
 
 @pytest.mark.parametrize("aid", IDS)

@@ -36,7 +36,8 @@ DECIMAL = re.compile(r"-?\d+\.\d+(?:e[-+]?\d+)?")
 
 
 def _exercises(aid):
-    """(rendered master, [(cell, hidden test, token or None if the cell has none)]) of each function check of ``aid``."""
+    """(rendered master, [(cell, hidden test, token or None if the cell has none)]) of each function check
+    of ``aid``."""
     nb = variants.render(nbformat.read(SOURCE / aid / f"{aid}.ipynb", as_version=4), aid, "ada")
     sealed = next(c for c in nb.cells if c.get("id") == "sealed-checks")
     env: dict = {}
@@ -144,7 +145,7 @@ def test_the_edition_holds_neither_the_reference_nor_its_outputs(aid):
     env = _setup(nb)
     edition = "\n".join(variants.SOLUTION.sub("", variants.HIDDEN.sub("", c.source)) for c in nb.cells)
     tokens = "\n".join(json.dumps(json.loads(base64.b64decode(t))) for _, _, t in exercises)
-    for cell, hidden, token in exercises:
+    for _cell, hidden, _token in exercises:
         assert "_reference" not in edition
         body = [line.strip() for line in hidden.splitlines() if line.strip().startswith("return ")]
         assert body and not any(line in edition for line in body), (aid, body)

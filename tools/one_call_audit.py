@@ -2,27 +2,24 @@
 
     python tools/one_call_audit.py [assignment ...]      # prints one line per graded answer, exit 1 if any is
 
-Method. For each auto-graded number of each assignment (the shared variant, rendered as the student sees
-it) the expected value is taken from the hidden test's own ``check`` call (recorded, as ``make student``
-does). The prompt's inputs are the numbers of the exercise's text (and those of the student's numbers ``V`` it
-names without stating them), each angle given in degrees also in radians. Then every public callable of mechlab and of its sub-modules
+Method. For each auto-graded number of each assignment (the shared variant, rendered as the student sees it) the
+expected value is taken from the hidden test's own ``check`` call (recorded, as ``make student`` does). The prompt's
+inputs are the numbers of the exercise's text (and those of the student's numbers ``V`` it names without stating
+them), each angle given in degrees also in radians. Then every public callable of mechlab and of its sub-modules
 (course, widgets and drawing left out) is tried on them:
 
 * functions and classes with k required positional parameters: called on every ordered choice of k
   inputs for k ≤ 3, and on every run of k consecutive inputs in the prompt's order for k ≤ 6;
 * on each object a class returns: every public attribute and zero-argument method;
 
-and every finite scalar result (or one-element array) is compared with the expected value, as it is and
-in the usual other units (degrees ↔ radians, ×1000, ÷1000), to a relative 1e-9 (a call that answers gives
-the hidden test's own value; the grader's 3-figure window would let chance hits through). A hit names
-the call. A code exercise is flagged when its hidden reference calls ``ml.`` (checked against a
-public function instead of an independent reference).
+and every finite scalar result (or one-element array) is compared with the expected value, as it is and in the usual
+other units (degrees ↔ radians, ×1000, ÷1000), to a relative 1e-9 (a call that answers gives the hidden test's own
+value; the grader's 3-figure window would let chance hits through). A hit names the call. A code exercise is flagged
+when its hidden reference calls ``ml.`` (checked against a public function instead of an independent reference).
 
-Limits. Keyword-only parameters keep their defaults; a result needing an index (``motion(φ).dpsi[0]``),
-arithmetic on a result (× ω1) or two calls is not "one call" and is not looked for; a call running over
-0.2 s is abandoned. The search is exhaustive over what it tries, not over every program a student could
-write.
-"""
+Limits. Keyword-only parameters keep their defaults; a result needing an index (``motion(φ).dpsi[0]``), arithmetic on
+a result (× ω1) or two calls is not "one call" and is not looked for; a call running over 0.2 s is abandoned. The
+search is exhaustive over what it tries, not over every program a student could write."""
 
 from __future__ import annotations
 
@@ -43,8 +40,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT), str(ROOT / "assignments")]
 
-import mechlab  # noqa: E402
 import variants  # noqa: E402
+
+import mechlab  # noqa: E402
 
 SKIP = ("mechlab.course", "mechlab.widgets", "mechlab.draw")
 NUMBER = re.compile(r"(?<![\w.])-?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?![\w])")
@@ -68,11 +66,11 @@ def public_callables() -> dict[str, object]:
     for mod in mods:
         for name in getattr(mod, "__all__", None) or [n for n in dir(mod) if not n.startswith("_")]:
             obj = getattr(mod, name, None)
-            if (inspect.isfunction(obj) or inspect.isclass(obj)) and getattr(obj, "__module__", "").startswith(
-                    "mechlab") and not issubclass(obj if inspect.isclass(obj) else object, BaseException):
-                if id(obj) not in seen:
-                    seen.add(id(obj))
-                    found[f"{mod.__name__}.{name}"] = obj
+            public = (inspect.isfunction(obj) or inspect.isclass(obj)) and getattr(obj, "__module__", "").startswith(
+                "mechlab") and not issubclass(obj if inspect.isclass(obj) else object, BaseException)
+            if public and id(obj) not in seen:
+                seen.add(id(obj))
+                found[f"{mod.__name__}.{name}"] = obj
     return found
 
 
@@ -102,7 +100,7 @@ def _scalars(value, depth=0):
                 if _arity(attr) != 0 or inspect.isclass(attr):
                     continue
                 attr = attr()
-        except Exception:  # noqa: BLE001 - any failure: this call does not answer
+        except Exception:
             continue
         x = _scalar(attr)
         if x is not None:
@@ -147,7 +145,7 @@ def sweep(inputs: list[float], calls: dict[str, object]) -> tuple[np.ndarray, li
                         hits = list(_scalars(fn(*[int(a) if float(a).is_integer() else a for a in args])))
                     finally:
                         signal.setitimer(signal.ITIMER_REAL, 0)
-                except (Exception, _Slow):  # noqa: BLE001 - a call that fails or runs long answers nothing
+                except (Exception, _Slow):
                     continue
                 call = f"{name}({', '.join(f'{a:g}' for a in args)})"
                 for label, x in hits:
@@ -208,7 +206,7 @@ def audit(aid: str, calls: dict[str, object]) -> list[tuple[str, str, str | None
         for call in recorded:
             if call["kind"] == "number":
                 rows.append((aid, call["name"], answered_by(call["expected"], swept[inputs])))
-    for k, c in enumerate(nb.cells):
+    for c in nb.cells:
         hidden = "".join(variants.HIDDEN.findall(c.source))
         m = re.search(r"function_check\((\w+),\s*(.*?),\s*_cases", hidden, re.S)
         if m:

@@ -6,15 +6,43 @@ the checkers of :mod:`.design` run a student's design or function through mechla
 specification with its numbers. This package stores no answer.
 """
 
-from .design import (DesignReport, Requirement, cam_design, dwell_slot_design, fourbar_design, function_check,
-                     geneva_design, guide_design, output_design, press_design, sixbar_design)
 from ...errors import renamed
+from .design import (
+                     DesignReport,
+                     Requirement,
+                     cam_design,
+                     dwell_slot_design,
+                     fourbar_design,
+                     function_check,
+                     geneva_design,
+                     guide_design,
+                     output_design,
+                     press_design,
+                     sixbar_design,
+)
 from .feedback import NotYet, Verdict, check, check_choice, check_form, recording, self_check, tolerance
 
-__all__ = ["check", "check_choice", "check_form", "self_check", "recording", "tolerance", "Verdict", "NotYet",
-           "Requirement", "DesignReport",
-           "fourbar_design", "output_design", "cam_design", "guide_design", "dwell_slot_design", "sixbar_design",
-           "geneva_design", "press_design", "function_check"]
+__all__ = [
+                     "DesignReport",
+                     "NotYet",
+                     "Requirement",
+                     "Verdict",
+                     "cam_design",
+                     "check",
+                     "check_choice",
+                     "check_form",
+                     "dwell_slot_design",
+                     "fourbar_design",
+                     "function_check",
+                     "geneva_design",
+                     "guide_design",
+                     "output_design",
+                     "press_design",
+                     "recording",
+                     "self_check",
+                     "sixbar_design",
+                     "tolerance",
+]
 
 # the old name (validate.Spec is what a parameter may be)
 __getattr__ = renamed(__name__, Spec=(Requirement, "mechlab.course.exercises.Requirement"))

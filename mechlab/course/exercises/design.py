@@ -9,14 +9,13 @@ reported in degrees; lengths in the design's own unit.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Iterable, Sequence
 
 import numpy as np
 
-from ...errors import MechanismError
-from ...errors import renamed
+from ...errors import MechanismError, renamed
 from . import feedback
 from .feedback import NotYet
 from .selfcheck import record, value_bin
@@ -198,7 +197,8 @@ def cam_design(cam, *, max_pressure: float, max_base_radius: float | None = None
         prog = cam.programme
         got = (float(prog.stroke), _deg(prog.rise), _deg(prog.outer_dwell), _deg(prog.ret))
         specs += [Requirement(name, value, "≈", want, unit, tol=tol) for name, value, want, unit, tol in
-                  zip(("stroke", "rise", "outer dwell", "return"), got, motion, ("", "°", "°", "°"), (0.05, 0.5, 0.5, 0.5))]
+                  zip(("stroke", "rise", "outer dwell", "return"), got, motion, ("", "°", "°", "°"),
+                      (0.05, 0.5, 0.5, 0.5), strict=False)]
     cut = cam.undercut()
     return DesignReport(title, tuple(specs), "" if cut is None else f"the profile is undercut: {cut}")
 
@@ -207,8 +207,9 @@ def dwell_slot_design(mech, *, min_dwell: float, max_pressure: float, dxf: str |
                       n: int = 721) -> DesignReport:
     """A curved-slot dwell mechanism (Zinchenko et al., 2013, §3): dwell φ2 − φ1 ≥ ``min_dwell`` (degrees),
     the largest pressure angle over the turn < ``max_pressure`` (degrees), and — when ``dxf`` is given — that
-    file, which must lie in the working folder (the notebook's own, a submission's own when graded), a readable DXF whose centre line (layer CENTRE) lies within 1e-3 pivot distances of the designed
-    slot's centre line."""
+    file, which must lie in the working folder (the notebook's own, a submission's own when graded), a
+    readable DXF whose centre line (layer CENTRE) lies within 1e-3 pivot distances of the designed slot's
+    centre line."""
     from ...synthesis.dwell_slot import DwellSlotMechanism
 
     title = "curved-slot dwell design"

@@ -99,8 +99,8 @@ def _parsed(answer, name: str, unit: str) -> float | Verdict:
 
 
 def _number(answer) -> float | None:
-    if isinstance(answer, bool) or not isinstance(answer, (Real, np.number)) and not (
-            isinstance(answer, np.ndarray) and answer.size == 1):
+    if isinstance(answer, bool) or (not isinstance(answer, (Real, np.number)) and not (
+            isinstance(answer, np.ndarray) and answer.size == 1)):
         return None
     x = float(np.asarray(answer).reshape(()))
     return x if math.isfinite(x) else None
@@ -290,7 +290,7 @@ def function_outcome(fn, name: str, cases: list, expected: list, *, rtol: float,
         return Verdict(False, "missing", f"✗ {name}: no answer yet — define the function {name}."), 0
     if not callable(fn):
         return Verdict(False, "form", f"✗ {name}: expected a function, got {type(fn).__name__}."), 0
-    for k, (case, (shape, stored)) in enumerate(zip(cases, expected)):
+    for k, (case, (shape, stored)) in enumerate(zip(cases, expected, strict=False)):
         where = f"case {k + 1} of {n}: {name}{_args(case)}"
         try:
             out = fn(*case)

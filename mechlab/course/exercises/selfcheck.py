@@ -1,24 +1,22 @@
 """Feedback at once: the grader's verdict in the student's notebook, without the expected value in it.
 
-Why keyed hashes of quantised candidates (and not a salted hash of the rounded answer, nor a compiled
-model): the grader must be able to say *which* slip an answer is (degrees for radians, the other
-assembly, …), so the notebook needs one test per candidate value — the right one and every named slip —
-and it must agree with the grader to the last bin. Each candidate is replaced by the set of grid bins
-that the grader accepts for it (:func:`windows`: the textbook tolerance on a grid ten times finer than the
-third significant figure for the right value, a 1 % window on a logarithmic grid of 0.2 % steps for
-"close" and the slips). A bin is written ``"<grid>|<decade or sign>|<index>"`` and stored only as the first 4 bytes of
-HMAC-SHA256(salt, bin). The self-check hashes the few bins the student's answer falls in (its own decade
-and the two next to it on the fine grid, one logarithmic bin) and looks them up, kind by kind, in the grader's order. The grader
-(:func:`mechlab.course.exercises.check`) runs the same :func:`classify` on the bins in clear, so the two
-verdicts are the same function of the answer; they could differ only on a 32-bit hash collision
-(≈ 1e-7 per check). A recompiled model would carry the answer in code a student can run on other numbers; the hashes carry
-no number: reading a token gives the salt, the slips' names and bin digests. Limits, said plainly: a check
-that answers "right" at once is an oracle, so a student who loops over the ~9000 bins of a decade can
-find the right bin (as with any immediate feedback; the hidden tests still decide the grade, and a
-variant per student makes the value useless to anyone else). The token reveals how many bins each slip window
-has, hence roughly the slip's decade; it reveals neither the value nor its sign. Code exercises (a function
-checked on hidden cases) are sealed the same way, per case and output element: see :func:`seal_function`.
-"""
+Why keyed hashes of quantised candidates (and not a salted hash of the rounded answer, nor a compiled model): the
+grader must be able to say *which* slip an answer is (degrees for radians, the other assembly, …), so the notebook
+needs one test per candidate value — the right one and every named slip — and it must agree with the grader to the
+last bin. Each candidate is replaced by the set of grid bins that the grader accepts for it (:func:`windows`: the
+textbook tolerance on a grid ten times finer than the third significant figure for the right value, a 1 % window on a
+logarithmic grid of 0.2 % steps for "close" and the slips). A bin is written ``"<grid>|<decade or sign>|<index>"`` and
+stored only as the first 4 bytes of HMAC-SHA256(salt, bin). The self-check hashes the few bins the student's answer
+falls in (its own decade and the two next to it on the fine grid, one logarithmic bin) and looks them up, kind by
+kind, in the grader's order. The grader (:func:`mechlab.course.exercises.check`) runs the same :func:`classify` on the
+bins in clear, so the two verdicts are the same function of the answer; they could differ only on a 32-bit hash
+collision (≈ 1e-7 per check). A recompiled model would carry the answer in code a student can run on other numbers;
+the hashes carry no number: reading a token gives the salt, the slips' names and bin digests. Limits, said plainly: a
+check that answers "right" at once is an oracle, so a student who loops over the ~9000 bins of a decade can find the
+right bin (as with any immediate feedback; the hidden tests still decide the grade, and a variant per student makes
+the value useless to anyone else). The token reveals how many bins each slip window has, hence roughly the slip's
+decade; it reveals neither the value nor its sign. Code exercises (a function checked on hidden cases) are sealed the
+same way, per case and output element: see :func:`seal_function`."""
 
 from __future__ import annotations
 
@@ -29,7 +27,7 @@ import importlib
 import json
 import math
 import os
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 
@@ -141,12 +139,13 @@ def _stream(key: bytes, option: str, n: int) -> bytes:
 def _encrypt(key: bytes, option: str, hint: str, right: bool) -> str:
     """A choice's verdict readable only by whoever types that option: ("1" if right else "0") + its hint."""
     plain = (("1" if right else "0") + hint).encode()
-    return base64.b64encode(bytes(a ^ b for a, b in zip(plain, _stream(key, option, len(plain))))).decode()
+    stream = _stream(key, option, len(plain))
+    return base64.b64encode(bytes(a ^ b for a, b in zip(plain, stream, strict=True))).decode()
 
 
 def _decrypt(key: bytes, option: str, sealed: str) -> tuple[bool, str]:
     raw = base64.b64decode(sealed)
-    plain = bytes(a ^ b for a, b in zip(raw, _stream(key, option, len(raw)))).decode()
+    plain = bytes(a ^ b for a, b in zip(raw, _stream(key, option, len(raw)), strict=False)).decode()
     return plain[0] == "1", plain[1:]
 
 
