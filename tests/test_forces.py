@@ -903,3 +903,13 @@ def test_inverse_kinetostatics_refuses_friction_and_bad_input_by_name():
         balanced_load("slider", 10.0, [1.0])
     with pytest.raises(DimensionError, match="phi"):
         balanced_load(sc, 10.0, [np.nan])
+
+
+def test_an_unknown_efficiency_kind_is_a_named_error():
+    """cycle_efficiency(how=...) outside "mean" and "work": the library's DimensionError, not a bare ValueError."""
+    from mechlab.errors import DimensionError
+    from mechlab.kinetostatics.machines import press
+
+    result = press(P=2000.0, work_fraction=0.3).forces(np.linspace(0.0, 2 * np.pi, 73))
+    with pytest.raises(DimensionError, match="how must be 'mean' or 'work'"):
+        result.cycle_efficiency(how="average")

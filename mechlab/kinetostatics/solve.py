@@ -407,12 +407,10 @@ class ForceResult:
         Raises
         ------
         DimensionError
-            If ``moving`` does not match ``phi``'s shape.
+            If ``moving`` does not match ``phi``'s shape, or ``how`` is neither ``"mean"`` nor ``"work"``.
         MechanismError
             If the drive delivers no power where the output moves (``"mean"``) or no work over the cycle
             (``"work"``).
-        ValueError
-            For another ``how``.
 
         Examples
         --------
@@ -440,7 +438,7 @@ class ForceResult:
                 raise MechanismError(f"cycle efficiency undefined: the drive's work over the cycle is {a_drive:.4g} ≤ "
                                      f"0")
             return float(1.0 - a_loss / a_drive)
-        raise ValueError(f"how must be 'mean' or 'work', got {how!r}")
+        raise DimensionError(f"how must be 'mean' or 'work', got {how!r}")
 
 
 # --------------------------------------------------------------------------- solver
