@@ -419,8 +419,9 @@ def cmd_test(args) -> None:
 
 
 # Every chapter in JupyterLab (a server, a kernel, the browser) and the book's pages and PDF (the browser on files)
-# each keep about one core busy, with waits: with two cores they run beside each other.
-BROWSER_BESIDE = ["tests_browser/test_lab.py"]
+# each keep about one core busy, with waits: with two cores they run beside each other. The explorers' keyboard
+# test opens the chapters in JupyterLab too (in CI: book pages 660 s against the lab's 261 s before it moved here).
+BROWSER_BESIDE = ["tests_browser/test_lab.py", "tests_browser/test_a11y_explorers.py"]
 
 
 def cmd_test_browser(args) -> None:
