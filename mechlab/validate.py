@@ -441,7 +441,7 @@ def number(lo=None, hi=None, *, open: bool = False, optional: bool = False, erro
     Returns
     -------
     Spec
-        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+        The declaration, for ``Annotated[type, spec]`` or :func:`check_value`.
 
     Examples
     --------
@@ -472,7 +472,7 @@ def length(*, zero: bool = False, hi=None, optional: bool = False, error=Dimensi
     Returns
     -------
     Spec
-        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+        The declaration, for ``Annotated[type, spec]`` or :func:`check_value`.
 
     Examples
     --------
@@ -501,7 +501,7 @@ def angle(lo=None, hi=None, *, open: bool = False, optional: bool = False, error
     Returns
     -------
     Spec
-        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+        The declaration, for ``Annotated[type, spec]`` or :func:`check_value`.
 
     Examples
     --------
@@ -530,7 +530,7 @@ def count(lo: int = 1, limit: int = MAX_SAMPLES, *, optional: bool = False, erro
     Returns
     -------
     Spec
-        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+        The declaration, for ``Annotated[type, spec]`` or :func:`check_value`.
 
     Examples
     --------
@@ -584,7 +584,7 @@ def mechanism(expected, *, optional: bool = False, error=TypeError, why=""):
     Returns
     -------
     Spec
-        The declaration, for ``Annotated[type, spec]`` or :func:`check`.
+        The declaration, for ``Annotated[type, spec]`` or :func:`check_value`.
 
     Examples
     --------
