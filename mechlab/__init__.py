@@ -90,6 +90,7 @@ from .mechanisms.geneva import OffsetError, SlotCountError
 from .mechanisms.lambda_mechanism import classic_lambda
 from .mechanisms.linkage import PRP, RPR, RRP, RRR, Crank, Guide, Linkage, Point
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
+from .synthesis.atlas import Atlas, AtlasDesign, build_atlas, load_atlas
 from .synthesis.cam_design import CamProgramme
 from .synthesis.dwell_slot import (
     TRANSITIONS,
@@ -176,6 +177,8 @@ __all__ = [  # noqa: RUF022  grouped by topic, each group under its comment, not
     "slot_residual_first_order", "mchv5", "dwell_extent", "rise_law",
     "time_ratio_far_angle",
     "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError", "NoDesignError",
+    # the coupler-curve atlas
+    "Atlas", "AtlasDesign", "build_atlas", "load_atlas",
     # Geneva
     "spherical_table", "table1_comparison", "table1_review", "TABLE1_PRINTED", "compare", "intermittency",
     "detect_impacts",
