@@ -187,6 +187,17 @@ def test_the_query_keeps_what_was_asked_ranked_by_ripple_in_under_a_second():
     assert ATLAS.query(dwell, 0.0) == ()
 
 
+def test_a_refined_query_gives_the_minimax_fits_of_the_same_designs():
+    rough = ATLAS.query(np.radians(90), 0.001, count=3)
+    fine = ATLAS.query(np.radians(90), 0.001, count=3, refine=True)
+    assert [d.index for d in rough] == [d.index for d in fine]
+    for r, f in zip(rough, fine, strict=True):
+        assert f.arc.crank_interval == r.arc.crank_interval
+        # the minimax arc on twice the samples: no worse than the screened arc, up to what falls between samples
+        assert f.arc.ripple <= 1.01 * r.arc.ripple
+        assert f.arc.radius == pytest.approx(r.arc.radius, rel=0.01)
+
+
 def test_the_query_finds_straight_runs():
     found = ATLAS.query(np.radians(90), 0.003, kind="run", count=5)
     assert found and all(d.arc is None and d.run.ripple <= 0.003 * d.run.length * (1 + 1e-5) for d in found)

@@ -15,7 +15,9 @@ from scipy.optimize import brentq
 from ..errors import MechanismError, Unsuitable
 from ..mechanisms import ExternalGeneva, InternalGeneva, SphericalGeneva
 from ..mechanisms.cam import OscillatingRollerCam, TranslatingRollerCam
+from ..synthesis.atlas import load_atlas
 from ..synthesis.cam_design import CamProgramme
+from ..synthesis.coupler_dwell import arc_dwell_sixbar
 from ..synthesis.dwell_slot import DwellLaw, best_placement, curved_slot_dwell
 from ..synthesis.lambda_guiding import circle_guiding, straight_guiding
 from ..synthesis.lambda_sixbars import mchv1, mchv3_half_turn
@@ -280,9 +282,6 @@ def atlas_sixbar(spec: Specification) -> Design:
     rests at the arc's centre. Of the atlas's designs for the dwell (best ripple first), the first whose output
     rocker, pivoted square to the rod at mid-dwell at the distance that gives the asked swing, stands still
     within the specification's precision and transmits within its pressure angle."""
-    from ..synthesis.atlas import load_atlas
-    from ..synthesis.coupler_dwell import arc_dwell_sixbar
-
     _needs(spec, "swing", what="rocks its output (a rocker dwells while the coupler point runs along an arc)")
     atlas = load_atlas()
     widest = max(atlas.settings["arc_widths"])
