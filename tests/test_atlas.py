@@ -250,3 +250,28 @@ def test_the_top_designs_dwell_as_fitted_when_simulated(kind, dwell, ripple):
         arm = np.hypot(*(pivot - np.asarray(fit.centre if kind == "arc" else fit.point)))
         assert check.dwell_error <= 5 * fit.ripple / arm
         assert check.dwell_error <= 0.02 * check.swing
+
+
+def test_the_capstone_offers_an_atlas_six_bar():
+    from mechlab import design as D
+
+    family = "atlas six-bar (coupler-curve arc)"
+    assert family in D.FAMILIES
+    spec = D.Specification("swing", 40 / 360, amplitude=np.radians(40), max_pressure_angle=np.radians(60),
+                           inertia=0.2)
+    comp = D.candidates(spec, [family])
+    assert not comp.refusals, comp.refusals
+    cand = comp.candidates[0]
+    six = cand.design.mechanism
+    assert six.formula() == "I(crank) → II₂(coupler, rocker) → II₂(rod, output)"
+    # simulated anew: the asked swing, and the output within the precision band for at least the asked dwell
+    phi = np.linspace(0, 2 * np.pi, 2881)
+    psi = six.motion(phi).psi
+    assert np.ptp(psi) == pytest.approx(spec.amplitude, rel=1e-3)
+    assert cand.criteria.standstill_fraction >= spec.dwell_fraction
+    assert cand.criteria.pressure_angle <= spec.max_pressure_angle
+    # a stroke, or a dwell wider than the atlas's widest arc, is refused with the reason
+    refused = D.candidates(D.Specification("stroke", 0.3, amplitude=50.0), [family]).refusals[0]
+    assert "rocks its output" in refused.reason
+    refused = D.candidates(D.Specification("swing", 0.5, amplitude=0.5), [family]).refusals[0]
+    assert "up to 150°" in refused.reason

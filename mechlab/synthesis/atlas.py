@@ -196,16 +196,16 @@ def _lawson(px: np.ndarray, py: np.ndarray, cx: np.ndarray, cy: np.ndarray, iter
         sw = w.sum(axis=2, keepdims=True)
         mu, mv, mz = ((w * t).sum(axis=2, keepdims=True) / sw for t in (u, v, z))
         du, dv, dz = u - mu, v - mv, z - mz
-        suu, suv, svv = ((w * a * b).sum(axis=2, keepdims=True) for a, b in ((du, du), (du, dv), (dv, dv)))
+        suu, suv, svv = ((w * p * q).sum(axis=2, keepdims=True) for p, q in ((du, du), (du, dv), (dv, dv)))
         szu, szv = (w * dz * du).sum(axis=2, keepdims=True), (w * dz * dv).sum(axis=2, keepdims=True)
         det = suu * svv - suv * suv
         with np.errstate(invalid="ignore", divide="ignore"):
             a = 0.5 * (svv * szu - suv * szv) / det
             b = 0.5 * (suu * szv - suv * szu) / det
-        resid = np.abs(z - 2 * a * u - 2 * b * v - (mz - 2 * a * mu - 2 * b * mv))
-        w = w * resid
-        w = w / w.sum(axis=2, keepdims=True)
-        w[~np.isfinite(w)] = 1.0 / px.shape[2]
+            resid = np.abs(z - 2 * a * u - 2 * b * v - (mz - 2 * a * mu - 2 * b * mv))
+            w = w * resid
+            w = w / w.sum(axis=2, keepdims=True)
+        w[~np.isfinite(w)] = 1.0 / px.shape[2]  # a window fitted exactly, or degenerate: start again evenly
     lx, ly = a + px.mean(axis=2, keepdims=True), b + py.mean(axis=2, keepdims=True)
     with np.errstate(invalid="ignore"):
         better = spread(lx, ly) < spread(cx, cy)
