@@ -55,7 +55,8 @@ def main(quick: bool = False) -> None:
             print(f"{'1/' + str(step * step):>10s} {len(atlas):8d} {name:>22s} {dt:9.1f} {len(atlas) / dt:10.0f} "
                   f"{cpu:7.1f} {len(atlas) / cpu:9.0f}")
     from dask.distributed import Client, LocalCluster
-    with LocalCluster(n_workers=cores, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+    with LocalCluster(n_workers=cores, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address="127.0.0.1:0") as cluster, \
             Client(cluster) as client:
         for step in steps[-2:]:
             g = grid(step)

@@ -151,7 +151,9 @@ def test_the_local_pool_and_dask_give_the_in_process_atlas():
     small = dict(lengths=(1.5, 2.5, 3.5), u=(0.0, 1.0, 2.0), v=(-1.0, 1.0), chunk=7)
     one = A.build_atlas(workers=1, **small)
     pool = A.build_atlas(workers=2, **small)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as \
+    # in one process the scheduler and workers talk in-process; its HTTP server (metrics) listens on loopback only
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                                  dashboard_address="127.0.0.1:0") as \
             cluster, distributed.Client(cluster) as client:
         dask = A.build_atlas(client=client, **small)
     assert len(one) == len(pool) == len(dask) > 7 * 3  # several chunks

@@ -85,6 +85,12 @@ def specs():
             D.Specification("swing", 50 / 360, amplitude=40 * DEG, max_pressure_angle=60 * DEG))
 
 
+@functools.cache
+def small_atlas() -> Path:
+    """A small coupler-curve atlas saved in the scratch folder."""
+    return ml.build_atlas((2.0, 3.0), u=(1.0,), v=(0.5,), samples=72, workers=1).save(scratch() / "atlas.npz")
+
+
 def snapshots():
     """One snapshot of the five-link mechanism with a higher pair (Kozhevnikov, Fig. 7.3)."""
     return tuple(np.array([p]) for p in ((0.0, 0.0), (1.0, 0.2), (1.8, 1.5), (0.7, 2.2), (-0.5, 1.4), (0.9, 1.1),
@@ -129,6 +135,9 @@ CASES = {
     "PRP": lambda: (ml.PRP, (ml.Guide("G"), ml.Guide("P", 0.0, "lever"), "B"), {"links": ("slider", "block")}),
     "Guide": lambda: (ml.Guide, ("G",), {"angle": 0.3, "on": "lever"}),
     "Point": lambda: (ml.Point, ("C", "AB"), {"at": (1.5, 0.8)}),
+    "build_atlas": lambda: (ml.build_atlas, ((2.0, 3.0),), {"u": (1.0,), "v": (0.5,), "samples": 72, "chunk": 4,
+                                                           "workers": 1}),
+    "load_atlas": lambda: (ml.load_atlas, (small_atlas(),), {}),
     "FourBar.motion": lambda: (fb.motion, (PHI,), {}),
     "FourBar.turn": lambda: (fb.turn, (9,), {}),
     "FourBar.cycle": lambda: (fb.cycle, (9,), {}),
@@ -433,7 +442,8 @@ RESULTS = {"DesignOutcomes", "Mechanism", "Grashof", "Motion", "AngularMotion", 
            "Table", "Quantity", "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive",
            "motion_laws.Invariants", "motion_laws.PrintedInvariants", "motion_laws.LawRow",
            "design.Comparison", "design.Candidate", "design.Refusal",
-           "design.SpecificationReport", "design.LimitVerdict", "design.Criteria", "design.Design"}
+           "design.SpecificationReport", "design.LimitVerdict", "design.Criteria", "design.Design",
+           "Atlas", "AtlasDesign"}
 def exported_callables() -> dict[str, object]:
     """Every callable that ``mechlab.__all__`` exports, and those of the modules it exports (``mechlab.forces``,
     ``mechlab.design``, …) as "module.name": functions and classes, not exceptions, constants or modules."""

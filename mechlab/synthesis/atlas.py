@@ -46,15 +46,25 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, replace
 from functools import cache
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Protocol, runtime_checkable
 
 import numpy as np
 
 from ..errors import DimensionError
-from ..validate import Spec, angle, choice, count, length, number, validated
+from ..validate import Spec, angle, choice, count, length, mechanism, number, validated
 from .coupler_dwell import ArcFit, RunFit, arc_dwell_sixbar, coupler_fourbar, fit_arc, fit_run, run_dwell_sixbar
 
 DATA = Path(__file__).resolve().parent.parent / "data" / "atlas.npz"
+
+
+@runtime_checkable
+class _Cluster(Protocol):
+    """What the Dask route needs of a client: ``map`` the chunks, ``gather`` the results."""
+
+    def map(self, func, *iterables, **kwargs): ...
+
+    def gather(self, futures): ...
+
 
 LENGTHS = tuple(np.arange(1.0, 4.51, 0.5).tolist())  # coupler, rocker and frame (crank 1): Hrones and Nelson
 U = tuple(np.round(np.arange(-1.5, 4.51, 0.25), 2).tolist())  # coupler point along A→B from A
@@ -301,8 +311,8 @@ def screen(rows: np.ndarray, settings: dict, *, detail: bool = False) -> dict:
     hi_x = np.maximum.reduce([np.maximum(d, a), bx.max(1), px.max(1)])
     lo_y = np.minimum.reduce([-a, by.min(1), py.min(1)])
     hi_y = np.maximum.reduce([a, by.max(1), py.max(1)])
-    out = {"transmission": _transmission(rows).astype(np.float32),
-           "size": np.maximum(hi_x - lo_x, hi_y - lo_y).astype(np.float16)}
+    out = {"transmission": _stored(_transmission(rows), np.float32),
+           "size": _stored(np.maximum(hi_x - lo_x, hi_y - lo_y), np.float16)}
     step = 2 * np.pi / n
     arc_k = [round(w / step) for w in settings["arc_widths"]]
     run_k = [round(w / step) for w in settings["run_widths"]]
@@ -322,12 +332,12 @@ def screen(rows: np.ndarray, settings: dict, *, detail: bool = False) -> dict:
         start, rel, ox, oy, theta, run, band, travel = _best_runs(sums, k)
         runs.append((start, rel, ox + ref_x[:, 0], oy + ref_y[:, 0], theta, run, band, travel))
     out["arc_start"] = np.stack([a[0] for a in arcs], 1).astype(np.uint16)
-    out["arc_ripple"] = np.stack([a[1] for a in arcs], 1).astype(np.float32)
-    out["arc_size"] = np.stack([a[2] for a in arcs], 1).astype(np.float16)
-    out["arc_travel"] = np.stack([a[7] for a in arcs], 1).astype(np.float16)
+    out["arc_ripple"] = _stored(np.stack([a[1] for a in arcs], 1), np.float32)
+    out["arc_size"] = _stored(np.stack([a[2] for a in arcs], 1), np.float16)
+    out["arc_travel"] = _stored(np.stack([a[7] for a in arcs], 1), np.float16)
     out["run_start"] = np.stack([r[0] for r in runs], 1).astype(np.uint16)
-    out["run_ripple"] = np.stack([r[1] for r in runs], 1).astype(np.float32)
-    out["run_travel"] = np.stack([r[7] for r in runs], 1).astype(np.float16)
+    out["run_ripple"] = _stored(np.stack([r[1] for r in runs], 1), np.float32)
+    out["run_travel"] = _stored(np.stack([r[7] for r in runs], 1), np.float16)
     if detail:
         for i, key in enumerate(("arc_x", "arc_y", "arc_radius", "arc_extent"), start=3):
             out[key] = np.stack([a[i] for a in arcs], 1)
@@ -342,6 +352,12 @@ def _chunk(index: np.ndarray, settings: dict) -> dict:
 
 
 def _settings(lengths, u, v, samples, arc_widths, run_widths, max_radius) -> dict:
+    if not all(0.0 < x <= 1000.0 for x in lengths):
+        raise DimensionError(f"lengths must lie in (0, 1000] (crank lengths), got {lengths}")
+    if not all(abs(x) <= 1000.0 for x in (*u, *v)):
+        raise DimensionError(f"u and v (the coupler point) must lie in [−1000, 1000], got u = {u}, v = {v}")
+    if not len(crank_rockers(lengths)):
+        raise DimensionError(f"lengths give no crank-rocker with the crank 1 (s + l < p + q), got {lengths}")
     step = 2 * np.pi / samples
     for name, widths in (("arc_widths", arc_widths), ("run_widths", run_widths)):
         if not widths or any(not 2 * step <= w < 2 * np.pi for w in widths):
@@ -349,6 +365,17 @@ def _settings(lengths, u, v, samples, arc_widths, run_widths, max_radius) -> dic
     return {"version": VERSION, "lengths": [float(x) for x in lengths], "u": [float(x) for x in u],
             "v": [float(x) for x in v], "samples": int(samples), "arc_widths": [float(w) for w in arc_widths],
             "run_widths": [float(w) for w in run_widths], "max_radius": float(max_radius)}
+
+
+NONE = {np.dtype(np.float32): np.finfo(np.float32).max, np.dtype(np.float16): np.finfo(np.float16).max}
+
+
+def _stored(values: np.ndarray, dtype) -> np.ndarray:
+    """``values`` as ``dtype``, where none was found (no arc within ``max_radius``) the type's largest number:
+    finite, and above any bound a query may set."""
+    dtype = np.dtype(dtype)
+    big = NONE[dtype]
+    return np.clip(np.where(np.isfinite(values), values, big), -big, big).astype(dtype)
 
 
 def _pieces(index: np.ndarray, chunk: int) -> list[np.ndarray]:
@@ -366,7 +393,8 @@ def build_atlas(lengths: Annotated[tuple, Spec("samples", lo=1)] = LENGTHS,
                 designs: Annotated[object, Spec("samples", lo=1, optional=True)] = None,
                 chunk: Annotated[int, count(1, 100_000)] = CHUNK,
                 workers: Annotated[int | None, count(1, 1024, optional=True)] = None,
-                client=None) -> Atlas:
+                client: Annotated[object, mechanism(_Cluster, optional=True,
+                                                    why="a dask.distributed.Client")] = None) -> Atlas:
     """Sweep crank-rockers and coupler points and find each coupler curve's best arcs and straight runs.
 
     The grid's designs are numbered linkage by linkage (the crank-rockers of ``lengths``, in the order of
@@ -405,7 +433,10 @@ def build_atlas(lengths: Annotated[tuple, Spec("samples", lo=1)] = LENGTHS,
     Raises
     ------
     DimensionError
-        A width outside its range, a design number outside the grid, or a bad count.
+        A length outside (0, 1000] or a grid with no crank-rocker, a coupler point beyond 1000, a width outside
+        its range, a design number outside the grid, or a bad count.
+    TypeError
+        ``client`` has no ``map`` and ``gather``.
 
     Examples
     --------
@@ -753,10 +784,13 @@ class Atlas:
 
 @cache
 def _load(path: Path, stamp: float) -> Atlas:
-    with np.load(path, allow_pickle=False) as f:
-        settings = json.loads(str(f["settings"]))
-        columns = {k: f[k] for k in f.files if k not in ("settings", "index")}
-        index = f["index"]
+    try:
+        with np.load(path, allow_pickle=False) as f:
+            settings = json.loads(str(f["settings"]))
+            columns = {k: f[k] for k in f.files if k not in ("settings", "index")}
+            index = f["index"]
+    except (OSError, ValueError, KeyError) as err:
+        raise DimensionError(f"path {str(path)!r} holds no atlas written by Atlas.save: {err}") from None
     if not len(index):
         index = np.arange(len(columns["transmission"]))
     return Atlas(settings, index, columns)
@@ -779,9 +813,9 @@ def load_atlas(path: Annotated[object, Spec("path", optional=True)] = None) -> A
     Raises
     ------
     DimensionError
+        ``path`` is no file, or holds no atlas.
+    TypeError
         ``path`` is not a path.
-    OSError
-        The file cannot be read.
 
     Examples
     --------
@@ -791,4 +825,6 @@ def load_atlas(path: Annotated[object, Spec("path", optional=True)] = None) -> A
     (109375, [1.0472, 1.5708, 2.0944, 2.618])
     """
     path = Path(DATA if path is None else path).resolve()
+    if not path.is_file():
+        raise DimensionError(f"path {str(path)!r} is no file (an atlas is written by Atlas.save)")
     return _load(path, path.stat().st_mtime)
