@@ -29,11 +29,11 @@ distances from the line, over the run's length). A query reads these; the chosen
 (centre, radius, extent, line) are recomputed from their curves by the same code.
 
 Storage: the atlas ships as ``mechlab/data/atlas.npz`` (``np.savez_compressed``: ripples float32, starts
-uint16, sizes and travels float16, i.e. to 0.05 %), 5.2 MB, read in 0.06 s. Building it costs about 105
-CPU-seconds (about 1,050 designs per CPU-second, Lawson's steps included), so about a minute on the course's
-two cores when they are free and up to 7 minutes when the machine is shared (the shipped file took 419 s,
-built beside seven other jobs): well above what ``make test`` or a student's first query should wait, for a
-file of about the 5 MB the course allows itself. Hence shipped, not built on first use. :func:`build_atlas`
+uint16, sizes and travels float16, i.e. to 0.05 %), 5.2 MB, read in 0.06–0.2 s. Building it costs about 110
+CPU-seconds (about 1,000 designs per CPU-second at every grid size, Lawson's steps included), so about a
+minute on the course's two cores when they are free and up to 7 minutes when the machine is shared (the
+shipped file took 419 s, built beside seven other jobs): well above what ``make test`` or a student's first
+query should wait, against 5.2 MB in the package. Hence shipped, not built on first use. :func:`build_atlas`
 rebuilds it (``build_atlas().save(DATA)``), and a test checks the file against a fresh build of a slice of
 the grid, so a stale file fails.
 """
