@@ -80,7 +80,25 @@ VERSION = 1
 
 
 def crank_rockers(lengths) -> np.ndarray:
-    """(crank, coupler, rocker, frame) rows with crank 1 and the others from ``lengths``: the strict crank-rockers."""
+    """The strict crank-rockers with crank 1 and the coupler, rocker and frame taken from ``lengths``.
+
+    Parameters
+    ----------
+    lengths : sequence of float
+        The lengths swept for each of coupler, rocker and frame.
+
+    Returns
+    -------
+    numpy.ndarray
+        (crank, coupler, rocker, frame) rows, the crank the shortest link and s + l < p + q strictly, in the
+        order of :func:`numpy.meshgrid` (coupler slowest).
+
+    Examples
+    --------
+    >>> from mechlab.synthesis.atlas import crank_rockers
+    >>> crank_rockers((2.0, 3.0)).tolist()
+    [[1.0, 2.0, 2.0, 2.0], [1.0, 2.0, 3.0, 3.0], [1.0, 3.0, 2.0, 3.0], [1.0, 3.0, 3.0, 2.0], [1.0, 3.0, 3.0, 3.0]]
+    """
     b, c, d = (g.ravel() for g in np.meshgrid(lengths, lengths, lengths, indexing="ij"))
     links = np.stack([b, c, d], axis=1)
     longest = links.max(axis=1)
@@ -297,10 +315,33 @@ def _best_runs(sums: _Running, width: int):
 
 
 def screen(rows: np.ndarray, settings: dict, *, detail: bool = False) -> dict:
-    """The atlas's columns for designs ``rows`` (m, 6): (crank, coupler, rocker, frame, u, v).
+    """The atlas's columns for the designs ``rows``: what each chunk runs, locally or on Dask.
 
-    The function each chunk runs, locally or on Dask: a pure function of its arguments. With ``detail`` the
-    fitted arcs' centres, radii and extents and the runs' lines come too (for the designs a query returns).
+    A pure function of its arguments, row by row: a design's columns do not depend on the chunk it is in.
+
+    Parameters
+    ----------
+    rows : numpy.ndarray
+        (m, 6): crank, coupler, rocker, frame, u, v of each design.
+    settings : dict
+        An atlas's settings (:attr:`Atlas.settings`): samples per turn, arc and run widths, largest radius.
+    detail : bool, optional
+        Add the fitted arcs' centres (``arc_x``, ``arc_y``), radii and extents, and the runs' lines
+        (``run_x``, ``run_y``, ``run_direction``, ``run_length``, ``run_band``): for the designs a query returns.
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        The columns of :class:`Atlas`, one row a design (with ``detail``, the fits too).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mechlab.synthesis.atlas import load_atlas, screen
+    >>> atlas = load_atlas()
+    >>> out = screen(atlas.rows([1234]), atlas.settings)
+    >>> bool(np.array_equal(out["arc_ripple"][0], atlas.columns["arc_ripple"][1234]))
+    True
     """
     n = settings["samples"]
     bx, by, px, py = _curves(rows, _turn(n))
