@@ -305,6 +305,10 @@ def test_bad_input_raises_named_errors():
     lk = ml.coupler_fourbar(1.0, 3.0, 3.0, 3.5, (2.0, 1.2))
     with pytest.raises(CouplerFitError, match="no joint 'Q'"):
         ml.coupler_arcs(lk, "Q")
+    with pytest.raises(CouplerFitError, match="does not move"):   # a frame point: nothing to fit
+        ml.coupler_runs(lk, "E", dwell=1.0)
+    with pytest.raises(CouplerFitError, match="does not move"):
+        ml.fit_arc(lk, "O", (0.0, 1.0))
     with pytest.raises(DimensionError):
         ml.coupler_arcs(lk, dwell=-1.0)
     with pytest.raises(DimensionError):

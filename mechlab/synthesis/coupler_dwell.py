@@ -283,7 +283,8 @@ def _sample(linkage: Linkage, point: str, n: int) -> _Curve:
     ranges = linkage.crank_ranges()
     if ranges == FULL_TURN:
         phi = np.arange(n) * h
-        return _Curve(phi, _path(linkage, point, phi), h, True, np.full(n, n - 1))
+        return _Curve(phi, _moving(_path(linkage, point, phi), point, "as the crank turns"), h, True,
+                      np.full(n, n - 1))
     # a crank that does not turn fully: each reachable range on its own, half a step inside its ends
     parts, last = [], []
     for s, e in ranges:
@@ -294,7 +295,15 @@ def _sample(linkage: Linkage, point: str, n: int) -> _Curve:
     phi = np.concatenate(parts) if parts else np.zeros(0)
     if len(phi) < MIN_POINTS:
         raise CouplerFitError(f"the crank reaches only {len(phi)} of the {n} sample angles: no curve to fit")
-    return _Curve(phi, _path(linkage, point, phi), h, False, np.concatenate(last))
+    return _Curve(phi, _moving(_path(linkage, point, phi), point, "as the crank moves"), h, False,
+                  np.concatenate(last))
+
+
+def _moving(z, point: str, where: str) -> np.ndarray:
+    """The samples z, or CouplerFitError when the point stands still (a frame point: nothing to fit)."""
+    if float(np.hypot(*np.ptp(z, axis=0))) <= 1e-12 * max(1.0, float(np.max(np.abs(z)))):
+        raise CouplerFitError(f"the joint {point} does not move {where}: its path has no arc or run to fit")
+    return z
 
 
 def _size(z) -> float:
@@ -603,7 +612,8 @@ def _interval(crank_interval):
 def _exact_samples(linkage, point, interval, n):
     start, stop = interval
     m = max(MIN_POINTS, int(np.ceil((stop - start) / (TWO_PI / n))) + 1)
-    return _path(linkage, point, np.linspace(start, stop, m))
+    return _moving(_path(linkage, point, np.linspace(start, stop, m)), point,
+                   f"over φ ∈ ({start:.6g}, {stop:.6g})")
 
 
 @validated
@@ -632,7 +642,8 @@ def fit_arc(linkage: LinkageArg, point: str, crank_interval, *, n: Samples = N_D
     Raises
     ------
     CouplerFitError
-        An unknown joint, an interval that is reversed or a full turn long, or a path that is a straight line.
+        An unknown joint, an interval that is reversed or a full turn long, a joint that does not move, or a
+        path that is a straight line.
     AssemblyError
         The crank does not reach the whole interval.
 
@@ -681,7 +692,7 @@ def fit_run(linkage: LinkageArg, point: str, crank_interval, *, n: Samples = N_D
     Raises
     ------
     CouplerFitError
-        An unknown joint, or an interval that is reversed or a full turn long.
+        An unknown joint, an interval that is reversed or a full turn long, or a joint that does not move.
     AssemblyError
         The crank does not reach the whole interval.
 
@@ -767,7 +778,7 @@ def _distinct(order, starts, lengths, n, periodic, limit):
 
 def _accept(kind, fitted, bound, cap):
     size = kind.size(fitted)
-    return np.isfinite(size) and kind.ripple(fitted) <= bound * size and (cap is None or size <= cap)
+    return np.isfinite(size) and size > 0 and kind.ripple(fitted) <= bound * size and (cap is None or size <= cap)
 
 
 def _search(kind, linkage, point, dwell, n, count, bound, cap):
@@ -789,7 +800,8 @@ def _search(kind, linkage, point, dwell, n, count, bound, cap):
         starts = starts[fits]
         lengths = np.full(len(starts), m)
         size, ripple = kind.screen(curve, starts, lengths)
-        score = ripple / size
+        with np.errstate(divide="ignore", invalid="ignore"):   # a window where the point pauses: no score
+            score = ripple / size
         if cap is not None:
             score = np.where(size <= cap, score, np.inf)
         order = np.argsort(score, kind="stable")
@@ -818,7 +830,7 @@ def _search(kind, linkage, point, dwell, n, count, bound, cap):
         if not live.any():
             break
         size, ripple = kind.screen(curve, starts[live], trial[live])
-        ok = (ripple <= bound * size) & np.isfinite(size)
+        ok = (ripple <= bound * size) & np.isfinite(size) & (size > 0)
         if cap is not None:
             ok &= size <= cap
         t = trial[live]
@@ -909,7 +921,8 @@ def coupler_arcs(linkage: LinkageArg, point: str = "P", *, dwell: Dwell = None, 
     Raises
     ------
     CouplerFitError
-        An unknown joint, a dwell spanning fewer than 5 samples, or longer than the crank reaches.
+        An unknown joint, a joint that does not move, a dwell spanning fewer than 5 samples, or longer than the
+        crank reaches.
     DimensionError
         ``dwell``, ``n``, ``count``, ``max_ripple`` or ``max_radius`` out of range.
 
@@ -957,7 +970,8 @@ def coupler_runs(linkage: LinkageArg, point: str = "P", *, dwell: Dwell = None, 
     Raises
     ------
     CouplerFitError
-        An unknown joint, a dwell spanning fewer than 5 samples, or longer than the crank reaches.
+        An unknown joint, a joint that does not move, a dwell spanning fewer than 5 samples, or longer than the
+        crank reaches.
     DimensionError
         ``dwell``, ``n``, ``count`` or ``max_ripple`` out of range.
 
