@@ -53,6 +53,7 @@ import numpy as np
 
 from ..analysis.centres import instant_centres
 from ..draw import LinkageDrawing
+from ..draw.access import set_alt
 from ..errors import MechanismError, StructureError
 from ..mechanisms.base import FULL_TURN, TWO_PI
 from ..mechanisms.fourbar import FourBar
@@ -431,12 +432,13 @@ class DragEditor(Explorer):
         self.ax.legend(handles=[self.curve_line], loc="upper left", fontsize=9, frameon=False)
         # controls: every action reachable by Tab, each with a name a screen reader reads
         self.joint = W.Dropdown(options=[(f"{j} — {what}", j) for j, what in handles(lk).items()],
-                                value=lk.driver.joint, description="joint to move")
+                                value=lk.driver.joint, description="joint to move",
+                                style={"description_width": "95px"}, layout=W.Layout(width="445px"))
         self.arrows = {key: W.Button(description=f"{sym} {key}", tooltip=f"move the joint {key} by one step",
                                      layout=W.Layout(width="80px"))
                        for key, sym in (("left", "←"), ("up", "↑"), ("down", "↓"), ("right", "→"))}
         self.step = W.BoundedFloatText(value=grid or default, min=1e-6, max=1e6, description="step",
-                                       layout=W.Layout(width="200px"))
+                                       style={"description_width": "95px"}, layout=W.Layout(width="200px"))
         self.snap = W.Checkbox(value=grid is not None, description="snap to the grid of this step", indent=False)
         self.undo_button = W.Button(description="undo", icon="undo", tooltip="undo the last change", disabled=True)
         self.copy_button = W.Button(description="copy as code", icon="clipboard",
@@ -598,9 +600,19 @@ class DragEditor(Explorer):
         self.curve_line.set_data(path[:, 0], path[:, 1])
         self._why = why
         self._place_centres(centres)
+        if self._drag is not None:   # while a handle is held, of the texts only its letter (each costs ~1.5 ms a frame)
+            held = self.drawing.letters.get(self._drag[0])
+            for text in (*self.drawing.label_artists, *self.centre_labels):
+                text.set_visible(text is held)
         self._update_handles(redraw=False)
         self._animate_moving()
         self.status.value = self._reading()
+        mu = np.degrees(motion.transmission[:-1])
+        set_alt(self.fig, f"Kinematic diagram of the linkage {linkage.formula()} with joints "
+                          f"{', '.join(motion.points)}, drawn at crank angle φ = {math.degrees(self.phi):.0f}°, "
+                          f"handles (circles) on the joints that can be dragged, the path of {self.point} over the "
+                          f"crank's motion (purple) and the instantaneous centres (red crosses); transmission angle "
+                          f"from {mu.min():.0f}° to {mu.max():.0f}°.")
         self._set_visible(True)
         rescaled = self._fit_view(path, grow=grow) if (fit or grow) else False
         if rescaled or was_hidden or not (self.live and self.blit):
@@ -620,13 +632,20 @@ class DragEditor(Explorer):
             if cx0 <= x0 and x1 <= cx1 and cy0 <= y0 and y1 <= cy1:
                 return False
             x0, x1, y0, y1 = min(x0, cx0), max(x1, cx1), min(y0, cy0), max(y1, cy1)
-        return _fit(self.ax, (x0, x1, y0, y1), fill=True)
+        if not _fit(self.ax, (x0, x1, y0, y1), fill=True):
+            return False
+        self.ax.apply_aspect()   # the view final now, not at the next draw: the pointer's next event maps onto it
+        return True
 
     def _place_centres(self, centres) -> None:
         rows = [] if centres is None else sorted(centres.centres.items())
         finite = [(centres.label(i + 1, j + 1), c.h[:2]) for (i, j), c in rows if c.h[2] == 1.0]
         xy = np.array([p for _, p in finite]).reshape(-1, 2)
         self.centre_marks.set_data(xy[:, 0], xy[:, 1])
+        # a centre at a joint is that joint (its letter is there): named only the centres found by Kennedy's lines
+        joints = np.array(list(self._positions().values()))
+        size = self.linkage.structure().scale
+        finite = [(name, p) for name, p in finite if np.min(np.hypot(*(joints - p).T)) > 1e-9 * size]
         while len(self.centre_labels) < len(finite):
             self.centre_labels.append(self.ax.annotate("", (0, 0), xytext=(3, 3), textcoords="offset points",
                                                        annotation_clip=True, **CENTRE_LABEL))
