@@ -578,7 +578,7 @@ class DragEditor(Explorer):
     def _positions(self) -> dict[str, np.ndarray]:
         return {k: v.p[-1] for k, v in self.motion.points.items()}
 
-    def _show(self, linkage: Linkage, phi: float, fit: bool = False, grow: bool = False) -> bool:
+    def _show(self, linkage: Linkage, phi: float, fit: bool = False) -> bool:
         """Compute and draw ``linkage`` at φ; on a MechanismError show it and keep the last good state."""
         start = time.perf_counter()
         try:
@@ -614,7 +614,8 @@ class DragEditor(Explorer):
                           f"crank's motion (purple) and the instantaneous centres (red crosses); transmission angle "
                           f"from {mu.min():.0f}° to {mu.max():.0f}°.")
         self._set_visible(True)
-        rescaled = self._fit_view(path, grow=grow) if (fit or grow) else False
+        # while a handle is held the view stays (each step a blit, nothing jumps under the pointer)
+        rescaled = self._fit_view(path) if fit else False
         if rescaled or was_hidden or not (self.live and self.blit):
             self._redraw()
         else:
@@ -622,16 +623,11 @@ class DragEditor(Explorer):
         self.last_draw_ms = 1e3 * (time.perf_counter() - start)
         return True
 
-    def _fit_view(self, path, grow: bool) -> bool:
+    def _fit_view(self, path) -> bool:
         x0, x1, y0, y1 = self.drawing.bounds(margin=0.08)
         if len(path):
             x0, x1 = min(x0, np.nanmin(path[:, 0])), max(x1, np.nanmax(path[:, 0]))
             y0, y1 = min(y0, np.nanmin(path[:, 1])), max(y1, np.nanmax(path[:, 1]))
-        if grow:   # while dragging the view only grows (no jumps under the pointer)
-            (cx0, cx1), (cy0, cy1) = self.ax.get_xlim(), self.ax.get_ylim()
-            if cx0 <= x0 and x1 <= cx1 and cy0 <= y0 and y1 <= cy1:
-                return False
-            x0, x1, y0, y1 = min(x0, cx0), max(x1, cx1), min(y0, cy0), max(y1, cy1)
         if not _fit(self.ax, (x0, x1, y0, y1), fill=True):
             return False
         self.ax.apply_aspect()   # the view final now, not at the next draw: the pointer's next event maps onto it
@@ -707,7 +703,7 @@ class DragEditor(Explorer):
 
     # -- changes ---------------------------------------------------------------------------------------------
     def _propose(self, base: Linkage, joint: str, xy, phi: float, *, push: bool, notify: bool,
-                 grow: bool = False) -> bool:
+                 dragging: bool = False) -> bool:
         step = float(self.step.value) if self.snap.value else None
         try:
             new, new_phi = moved(base, joint, xy, phi, step)
@@ -715,7 +711,7 @@ class DragEditor(Explorer):
             self._show_error(str(err))
             return False
         before = (self.linkage, self.phi)
-        if not self._show(new, new_phi, fit=not grow, grow=grow):
+        if not self._show(new, new_phi, fit=not dragging):
             return False
         if new_phi != before[1]:
             self._quiet = True
@@ -725,7 +721,7 @@ class DragEditor(Explorer):
             self._undo.append(before)
             self.undo_button.disabled = False
         if notify:
-            self._notify(dragging=grow)
+            self._notify(dragging=dragging)
         return True
 
     def _notify(self, dragging: bool) -> None:
@@ -770,7 +766,7 @@ class DragEditor(Explorer):
         if self._drag is None or event.x is None:
             return
         joint, base, phi = self._drag
-        self._propose(base, joint, self._data_xy(event), phi, push=False, notify=True, grow=True)
+        self._propose(base, joint, self._data_xy(event), phi, push=False, notify=True, dragging=True)
 
     def _on_release(self, event):
         if self._drag is None:
@@ -778,7 +774,7 @@ class DragEditor(Explorer):
         joint, base, phi = self._drag
         self._drag = None
         if event.x is not None:
-            self._propose(base, joint, self._data_xy(event), phi, push=False, notify=False, grow=True)
+            self._propose(base, joint, self._data_xy(event), phi, push=False, notify=False, dragging=True)
         failed = self.message
         if self.linkage is not base:
             self._undo.append((base, phi))
