@@ -1,42 +1,20 @@
-"""Drag a linkage by its joints: the mechanism, its coupler curve, its instantaneous centres and its
-transmission angle follow (issue 27).
+"""Drag a linkage by its joints (:class:`DragEditor`): its dimensions, coupler curve, instantaneous centres and
+transmission angle follow; undo, snapping to a grid, "copy as code" and a keyboard route (issue 27).
 
-:class:`DragEditor` shows any linkage the structure builder makes (:class:`mechlab.Linkage`: a crank and
-RRR, RRP, RPR, PRP groups and points fixed on links), and the families that have a builder twin
-(:class:`~mechlab.FourBar`, :class:`~mechlab.SliderCrank`, :class:`~mechlab.SlottedLink`, any
-``LinkageFamily``: :func:`as_linkage`), at the crank angle φ of its slider, with a handle on every fixed
-pivot and every joint whose position a dimension sets. Dragging a handle changes the dimensions it implies:
+It edits any :class:`mechlab.Linkage` the structure builder makes and the families with a builder twin
+(:func:`as_linkage`); :func:`moved` says what a handle's new position changes, :func:`linkage_code` writes the
+cell that rebuilds a linkage exactly. Where the linkage cannot assemble, the named MechanismError replaces the
+drawing and the last linkage that assembles is kept.
 
-* a frame point: its coordinates;
-* the crank's pin: the crank's length (and φ follows the pointer's angle about the crank's pivot);
-* the inner joint of an RRR dyad: the lengths of the two links meeting there (and the branch, the side of
-  the line through the outer joints the joint is dropped on);
-* the pin of an RRP dyad's slider: the rod's length (the pin slides along its guide; the side of the rod's
-  foot gives the branch);
-* a point fixed on a link (a coupler point): its (ξ, η) in the link's frame.
+Why ipympl's mouse events and not an anywidget: the explorers already draw on an ipympl canvas with blitting,
+a PNG diff per frame (:func:`mechlab.widgets.diff_image`), the course's error display, alt text and static-book
+path, and ipympl forwards ``button_press``, ``motion_notify``, ``button_release`` and ``key_press`` events; so a
+drag is a few lines of picking in Python on the figure every chapter shows. An anywidget would need its own
+JavaScript drawing of every mechanism (or a second channel beside the canvas), duplicating the sketch, labels
+and centres of :class:`mechlab.draw.LinkageDrawing`, for the same kernel round trip (the kinematics run in
+Python either way).
 
-A PRP dyad's joint (where two guides cross) and an RPR dyad's block (on its pin) are set by other joints: they
-carry no handle. A position where the linkage cannot assemble at φ shows the named
-:class:`~mechlab.errors.MechanismError` in place of the drawing; the last linkage that assembles is kept
-(and drawn again when the mouse is released there). Undo, snapping to a grid (coordinates to multiples of the
-step, lengths and (ξ, η) too, so that "copy as code" gives round numbers), and "copy as code"
-(:meth:`DragEditor.code`: the cell that rebuilds the mechanism with ``ml.Linkage``, exactly).
-
-**Why ipympl's mouse events and not an anywidget.** The explorers already draw on an ipympl canvas with
-blitting, a PNG diff per frame (:func:`mechlab.widgets.diff_image`) and the course's error display, alt text
-and static-book path; ipympl forwards ``button_press``, ``motion_notify``, ``button_release`` and
-``key_press`` events in data coordinates, so a drag is a few lines of picking in Python on the figure every
-other chapter shows. An anywidget would need its own JavaScript drawing of every mechanism (or a second
-channel beside the canvas) and would duplicate the sketch, labels and centres already drawn by
-:class:`mechlab.draw.LinkageDrawing`; the kernel round trip is the same either way, since the kinematics run
-in Python.
-
-**Keyboard.** Every action has a control reachable by Tab: the joint to move (a drop-down), four arrow
-buttons, the step, the snap check box, undo and "copy as code". With the canvas focused (click it), the
-arrow keys move the chosen joint by the step (shift: ten steps), ``j`` chooses the next joint and ``u``
-undoes.
-
-Where it is drawn: live in JupyterLab (blitting over a saved background, as every explorer); in the book
+Live in JupyterLab (blitting over a saved background, as every explorer); in the book
 (``MECHLAB_WIDGETS=static``) the same figure, the mechanism with its coupler curve, is shown as an image.
 """
 
@@ -348,6 +326,14 @@ def _curve_angles(linkage: Linkage, phi: float, n: int) -> tuple[np.ndarray, flo
 class DragEditor(Explorer):
     """Drag a linkage's joints: its dimensions, coupler curve, instantaneous centres and transmission angle
     follow (see :mod:`mechlab.widgets.drag`).
+
+    Handles (circles) sit on the frame points and on the joints a dimension places, at the crank angle of the
+    slider: a frame point takes its new position, the crank's pin sets the crank's length (φ follows the
+    pointer), an RRR dyad's joint the two lengths meeting there, an RRP dyad's slider pin the rod's length, a
+    point on a link its (ξ, η) (:func:`moved`). A PRP joint and an RPR block are placed by other joints: no
+    handle. Keyboard: every control is reached by Tab (the joint to move, ← ↑ ↓ → buttons, the step, snapping,
+    undo, copy as code); with the canvas focused the arrow keys move the chosen joint by the step (shift: ten
+    steps), ``j`` chooses the next joint, ``u`` undoes.
 
     Parameters
     ----------
