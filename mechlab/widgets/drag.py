@@ -35,6 +35,9 @@ from ..draw.access import set_alt
 from ..errors import MechanismError, StructureError
 from ..mechanisms.base import FULL_TURN, TWO_PI
 from ..mechanisms.fourbar import FourBar
+from ..mechanisms.lambda_mechanism import LambdaMechanism
+from ..mechanisms.lambda_sixbars import LambdaRockerSixBar
+from ..mechanisms.lambda_sliders import LambdaSliderSixBar
 from ..mechanisms.linkage.built import Linkage, LinkageFamily
 from ..mechanisms.linkage.groups import PRP, RPR, RRP, RRR, Crank, Guide, Point
 from ..mechanisms.slider_crank import SliderCrank
@@ -51,18 +54,57 @@ MOVES = {"left": (-1, 0), "right": (1, 0), "up": (0, 1), "down": (0, -1)}
 
 
 # -- mechanisms as builder linkages --------------------------------------------------------------------------
+def _fourbar(m) -> Linkage:
+    return Linkage({"O": (0.0, 0.0), "E": (float(m.ground), 0.0)}, Crank("O", "A", m.crank)).rrr(
+        "A", "E", "B", m.coupler, m.rocker, m.assembly, links=("coupler", "rocker"))
+
+
+def _slider_crank(m) -> Linkage:
+    return Linkage({"O": (0.0, 0.0), "G": (0.0, float(m.offset))}, Crank("O", "A", m.crank)).rrp(
+        "A", "B", m.rod, "G", m.assembly, links=("rod", "slider"))
+
+
+def _slotted_link(m) -> Linkage:
+    d = float(m.pivot_distance)
+    return Linkage({"O": (0.0, 0.0), "B": (-d, 0.0)}, Crank("O", "A", m.crank)).rpr("A", "B", d + m.crank)
+
+
+def _lambda(m, **frame) -> Linkage:
+    """Chebyshev's lambda: crank r, coupler A-B of length 1 carrying D at (1 - cos kc·δ, -sin kc·δ) in its frame
+    (D = B + Rot(kc·δ)(A - B)), rocker C-B of length 1."""
+    th = m.assembly * m.delta
+    return (Linkage({"O": (0.0, 0.0), "C": (float(m.a), 0.0), **frame}, Crank("O", "A", m.r))
+            .rrr("A", "C", "B", 1.0, 1.0, m.assembly, links=("coupler", "rocker"))
+            .point("D", "coupler", (float(1 - np.cos(th)), float(-np.sin(th)))))
+
+
+# the families with a builder twin that moves as they do (tests/test_overrides.py holds each to 1e-12)
+TWINS = {
+    FourBar: _fourbar,
+    SliderCrank: _slider_crank,
+    SlottedLink: _slotted_link,
+    LambdaMechanism: lambda m: _lambda(m).with_output("rocker"),
+    LambdaRockerSixBar: lambda m: _lambda(m.base, F=(float(m.fx), float(m.fy))).rrr(
+        "D", "F", "E", m.rod, m.rocker, m.assembly),
+    LambdaSliderSixBar: lambda m: _lambda(m.base, Q=(float(m.qx), float(m.qy))).rrp(
+        "D", "E", m.rod, Guide("Q", float(m.theta)), m.assembly),
+}
+
+
 def as_linkage(mechanism) -> Linkage:
     """The structure builder's :class:`~mechlab.Linkage` of a mechanism, for the drag editor.
 
     A Linkage is returned as it is; a ``LinkageFamily`` gives the linkage it builds; a
     :class:`~mechlab.FourBar` becomes O(0, 0)-A-B-E(ground, 0) with links "coupler" and "rocker"; a
     :class:`~mechlab.SliderCrank` O(0, 0)-A-B with its guide through G(0, offset) (links "rod", "slider");
-    a :class:`~mechlab.SlottedLink` the crank O-A and the lever pivoted at B(-pivot distance, 0).
-    Each moves exactly as the family (tests/test_overrides.py holds the twins to 1e-12).
+    a :class:`~mechlab.SlottedLink` the crank O-A and the lever pivoted at B(-pivot distance, 0); Chebyshev's
+    :class:`~mechlab.LambdaMechanism` O-A-B-C with its point D on the coupler, and its rocker and slider six-bars
+    that dyad more (F or the guide through Q). Each moves exactly as the family does.
 
     Parameters
     ----------
-    mechanism : Linkage, LinkageFamily, FourBar, SliderCrank or SlottedLink
+    mechanism : Linkage, LinkageFamily, FourBar, SliderCrank, SlottedLink, LambdaMechanism, \
+LambdaRockerSixBar or LambdaSliderSixBar
         The mechanism to edit.
 
     Returns
@@ -85,19 +127,12 @@ def as_linkage(mechanism) -> Linkage:
         return mechanism
     if isinstance(mechanism, LinkageFamily):
         return mechanism.linkage()
-    if isinstance(mechanism, FourBar):
-        return Linkage({"O": (0.0, 0.0), "E": (float(mechanism.ground), 0.0)}, Crank("O", "A", mechanism.crank)).rrr(
-            "A", "E", "B", mechanism.coupler, mechanism.rocker, mechanism.assembly, links=("coupler", "rocker"))
-    if isinstance(mechanism, SliderCrank):
-        return Linkage({"O": (0.0, 0.0), "G": (0.0, float(mechanism.offset))}, Crank("O", "A", mechanism.crank)).rrp(
-            "A", "B", mechanism.rod, "G", mechanism.assembly, links=("rod", "slider"))
-    if isinstance(mechanism, SlottedLink):
-        d = float(mechanism.pivot_distance)
-        return Linkage({"O": (0.0, 0.0), "B": (-d, 0.0)}, Crank("O", "A", mechanism.crank)).rpr(
-            "A", "B", d + mechanism.crank)
-    raise StructureError(f"the drag editor edits linkages built from a crank and Assur groups (ml.Linkage, a "
-                         f"FourBar, a SliderCrank, a SlottedLink or a LinkageFamily), not a "
-                         f"{type(mechanism).__name__}")
+    twin = next((make for kind, make in TWINS.items() if isinstance(mechanism, kind)), None)
+    if twin is None:
+        raise StructureError(f"the drag editor edits linkages built from a crank and Assur groups (ml.Linkage, a "
+                             f"LinkageFamily, or one of {', '.join(k.__name__ for k in TWINS)}), not a "
+                             f"{type(mechanism).__name__}")
+    return twin(mechanism)
 
 
 def _num(v) -> str:
@@ -385,6 +420,8 @@ class DragEditor(Explorer):
     def __init__(self, linkage, *, point: str | None = None, phi: float = 0.0, grid: float | None = None,
                  n: int = 361, live: bool | None = None, question: str | None = None, figsize=(8.0, 5.6)):
         lk = as_linkage(linkage)
+        phis, phi_in = _curve_angles(lk, float(phi) % TWO_PI, n)
+        lk.motion(np.append(phis, phi_in))   # the named error here if it does not assemble at φ
         super().__init__(as_linkage, {}, n=n, title="", live=live, figsize=figsize, angle=0.0, question=question)
         self.angle.step, self.angle.readout_format = 1.0, ".0f"
         self.linkage, self.phi = lk, float(phi) % TWO_PI
@@ -451,8 +488,7 @@ class DragEditor(Explorer):
                                       W.VBox([self.angle, W.HBox([self.undo_button, self.copy_button]),
                                               self.status], **SIDE_COLUMN)]),
                               self._canvas_widget, self.code_box])
-        if not self._show(lk, self.phi, fit=True):
-            raise MechanismError(self.message)
+        self._show(lk, self.phi, fit=True)
 
     # -- public ------------------------------------------------------------------------------------------------
     def code(self, name: str = "linkage") -> str:
@@ -545,7 +581,8 @@ class DragEditor(Explorer):
         return callback
 
     def add_overlay(self, *artists) -> None:
-        """Artists of the caller's on :attr:`ax` (an arc fit, …) that a callback moves: redrawn with the linkage.
+        """Artists of the caller's on :attr:`ax` (an arc fit, …) that an :meth:`on_change` callback moves: drawn with
+        the linkage, and again once the callbacks have run.
 
         Parameters
         ----------
@@ -711,9 +748,9 @@ class DragEditor(Explorer):
         return True
 
     def _notify(self, dragging: bool) -> None:
-        for callback, always in self._callbacks:
-            if always or not dragging:
-                callback(self.linkage)
+        called = [callback(self.linkage) for callback, always in self._callbacks if always or not dragging]
+        if called and self._overlays and not self.message:   # the overlays the callbacks moved, drawn
+            self._blit_or_redraw()
 
     def _show_code(self) -> None:
         self.code_box.value = self.code()
