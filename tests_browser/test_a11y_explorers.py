@@ -258,9 +258,8 @@ def _planted_outputs() -> list[list[dict]]:
     shell = SimpleNamespace(display_formatter=DisplayFormatter())
     shell.display_formatter.formatters["image/png"].for_type(Figure, lambda fig: print_figure(fig, "png"))
     install_alt_text(shell, html_copy=True)
-    outputs = []
-    for source in PLANTED_CELLS:
-        namespace = {}
+    outputs, namespace = [], {}
+    for source in PLANTED_CELLS:   # one namespace, as in a kernel
         exec(source, namespace)
         data, metadata = shell.display_formatter.format(namespace["fig"])
         data = {k: base64.b64encode(v).decode() if isinstance(v, bytes) else v for k, v in data.items()}
