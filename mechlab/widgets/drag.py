@@ -482,6 +482,8 @@ class DragEditor(Explorer):
         for event, handler in (("button_press_event", self._on_press), ("motion_notify_event", self._on_motion),
                                ("button_release_event", self._on_release), ("key_press_event", self._on_key)):
             canvas.mpl_connect(event, handler)
+        # a status line of fixed height: a longer one (an error) must not move the canvas under the pointer
+        self.status.layout = W.Layout(height="5.5em", overflow_y="auto")
         pad = W.HBox([self.arrows["left"], self.arrows["up"], self.arrows["down"], self.arrows["right"]])
         self.widget = W.VBox([self.question,
                               W.HBox([W.VBox([self.joint, pad, W.HBox([self.step, self.snap])], **SLIDER_COLUMN),
