@@ -301,3 +301,28 @@ def test_a_callback_moves_an_overlay_with_the_linkage(editor):
     assert np.allclose(mark.get_xydata()[0], ed._positions()["B"])
     green = (np.abs(np.asarray(ed.fig.canvas.buffer_rgba())[..., :3].astype(int) - [0x2A, 0x7F, 0x62]).sum(-1) < 30)
     assert green.sum() > 50 and (green != (np.abs(before[..., :3].astype(int) - [0x2A, 0x7F, 0x62]).sum(-1) < 30)).any()
+
+
+def test_the_chapter_route_a_live_arc_fit_over_the_coupler_curve_and_its_six_bar():
+    """The coupler four-bar of the dwell chapter (ml.coupler_fourbar): a callback refits the best arc of P's curve
+    after each drop and moves a circle over it; the dwell six-bar built from the arc opens in the editor too."""
+    from matplotlib.patches import Circle
+
+    ed = DragEditor(ml.coupler_fourbar(1.0, 3.0, 3.0, 4.0, (1.5, 1.0)), live=True)
+    ring = Circle((0, 0), 1.0, fill=False, ec="#2a7f62", lw=1.5)
+    ed.ax.add_patch(ring)
+    ed.add_overlay(ring)
+    fits = []
+
+    def refit(lk):
+        fits.append(ml.coupler_arcs(lk, "P", count=1)[0])
+        ring.center, ring.radius = fits[-1].centre, fits[-1].radius
+
+    ed.on_change(refit)
+    assert ed.move("P", ed._positions()["P"] + [0.2, -0.4])
+    assert ring.center == fits[-1].centre and ring.radius == fits[-1].radius
+    assert fits[-1] == ml.coupler_arcs(ed.linkage, "P", count=1)[0]   # the fit of the dropped linkage
+    six = DragEditor(ml.arc_dwell_sixbar(ed.linkage, "P", fits[-1]), point="P", live=True)
+    dyad = [j for j in handles(six.linkage) if j not in handles(ed.linkage)]
+    assert dyad and all(six.move(j, six._positions()[j] + [0.05, 0.05]) for j in dyad if j not in ("O", "E"))
+    plt.close("all")
