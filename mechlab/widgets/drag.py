@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import html
 import math
-import time
 from collections.abc import Callable
 from dataclasses import replace
 
@@ -436,7 +435,6 @@ class DragEditor(Explorer):
         self._overlays: list = []
         self._drag = None          # (joint, linkage, φ) at the press while a handle is held
         self._quiet = False        # an angle set by a drag: no second redraw
-        self.last_draw_ms = float("nan")
         self._far: list[str] = []
         self._why = ""
         scale = lk.structure().scale
@@ -605,7 +603,6 @@ class DragEditor(Explorer):
 
     def _show(self, linkage: Linkage, phi: float, fit: bool = False) -> bool:
         """Compute and draw ``linkage`` at φ; on a MechanismError show it and keep the last good state."""
-        start = time.perf_counter()
         try:
             phis, phi_in = _curve_angles(linkage, phi, self.n)
             motion = linkage.motion(np.append(phis, phi_in))
@@ -645,7 +642,6 @@ class DragEditor(Explorer):
             self._redraw()
         else:
             self._blit_or_redraw()
-        self.last_draw_ms = 1e3 * (time.perf_counter() - start)
         return True
 
     def _fit_view(self, path) -> bool:
