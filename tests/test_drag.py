@@ -133,6 +133,19 @@ def test_snapping_rounds_coordinates_lengths_and_xi_eta_to_the_step():
     assert new.driver.radius == 0.5
 
 
+def test_snapping_shows_the_grid_of_its_step():
+    ed = DragEditor(coupler_fourbar(), grid=0.5, live=True)
+    ticks = ed.ax.xaxis.get_minorticklocs()
+    # the minor lines at the half steps (the whole numbers are the major ticks' lines)
+    assert ed.snap.value and len(ticks) > 4 and np.allclose(ticks / 0.5, np.round(ticks / 0.5))
+    ed.snap.value = False
+    assert len(ed.ax.xaxis.get_minorticklocs()) == 0
+    ed.snap.value, ed.step.value = True, 1e-4   # too fine to draw: no lines, snapping still on
+    assert len(ed.ax.xaxis.get_minorticklocs()) == 0
+    assert ed.move("E", (4.2, 0.0001)) and dict(ed.linkage.frame)["E"] == (4.2, 0.0001)
+    plt.close("all")
+
+
 def test_an_unassemblable_position_raises_the_named_error():
     with pytest.raises(AssemblyError, match="cannot close"):
         moved(coupler_fourbar(), "E", (9.0, 0.0), 0.0)   # |AE| = 8 > 3 + 3

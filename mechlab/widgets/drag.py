@@ -27,6 +27,7 @@ from dataclasses import replace
 
 import ipywidgets as W
 import numpy as np
+from matplotlib.ticker import MultipleLocator, NullLocator
 
 from ..analysis.centres import instant_centres
 from ..draw import LinkageDrawing
@@ -471,6 +472,8 @@ class DragEditor(Explorer):
         self.undo_button.on_click(lambda _b: self.undo())
         self.copy_button.on_click(lambda _b: self._show_code())
         self.joint.observe(lambda _c: self._update_handles(redraw=True), names="value")
+        self.snap.observe(lambda _c: self._show_grid(redraw=True), names="value")
+        self.step.observe(lambda _c: self._show_grid(redraw=True), names="value")
         self.angle.observe(self._on_angle, names="value")
         canvas = self.fig.canvas
         manager = getattr(canvas, "manager", None)
@@ -488,6 +491,7 @@ class DragEditor(Explorer):
                                       W.VBox([self.angle, W.HBox([self.undo_button, self.copy_button]),
                                               self.status], **SIDE_COLUMN)]),
                               self._canvas_widget, self.code_box])
+        self._show_grid(redraw=False)
         self._show(lk, self.phi, fit=True)
 
     # -- public ------------------------------------------------------------------------------------------------
@@ -652,7 +656,22 @@ class DragEditor(Explorer):
         if not _fit(self.ax, (x0, x1, y0, y1), fill=True):
             return False
         self.ax.apply_aspect()   # the view final now, not at the next draw: the pointer's next event maps onto it
+        self._show_grid(redraw=False)   # as many grid lines as the new view holds
         return True
+
+    def _show_grid(self, redraw: bool) -> None:
+        """With snapping on, the grid's lines at every step (as minor gridlines, up to 100 across the view)."""
+        step = float(self.step.value)
+        span = max(np.ptp(self.ax.get_xlim()), np.ptp(self.ax.get_ylim()))
+        shown = bool(self.snap.value) and span / step <= 100
+        for axis in (self.ax.xaxis, self.ax.yaxis):
+            axis.set_minor_locator(MultipleLocator(step) if shown else NullLocator())
+        if shown:
+            self.ax.grid(True, which="minor", alpha=0.12)
+        else:
+            self.ax.grid(False, which="minor")
+        if redraw:
+            self._redraw()
 
     def _place_centres(self, centres) -> None:
         rows = [] if centres is None else sorted(centres.centres.items())
