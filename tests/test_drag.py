@@ -339,3 +339,23 @@ def test_the_chapter_route_a_live_arc_fit_over_the_coupler_curve_and_its_six_bar
     dyad = [j for j in handles(six.linkage) if j not in handles(ed.linkage)]
     assert dyad and all(six.move(j, six._positions()[j] + [0.05, 0.05]) for j in dyad if j not in ("O", "E"))
     plt.close("all")
+
+
+def test_a_drag_step_sends_the_frame_and_little_else(editor, monkeypatch):
+    """The hidden toolbar's pointer readout is off (ipympl syncs it as a widget message per mouse move) and the status
+    line is rewritten at most every STATUS_EVERY seconds while a handle is held (here: not within the drag); the
+    drop writes it."""
+    from mechlab.widgets import drag
+
+    monkeypatch.setattr(drag, "STATUS_EVERY", 60.0)
+    ed = editor
+    canvas = ed.fig.canvas
+    written = []
+    ed.status.observe(lambda c: written.append(c.new), names="value")
+    B = ed._positions()["B"]
+    mouse(ed, "button_press_event", B)
+    for k in range(1, 6):
+        mouse(ed, "motion_notify_event", B + [0.02 * k, 0.0])
+    assert canvas._message == "" and len(written) == 1 and written[0].startswith("coupler = 3, rocker = 3")  # B chosen
+    mouse(ed, "button_release_event", B + [0.1, 0.0])
+    assert f"coupler = {ed.linkage.groups[0].first_length:.4g}" in written[-1] == ed.status.value

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import html
 import math
+import time
 from collections.abc import Callable
 from dataclasses import replace
 
@@ -45,6 +46,7 @@ from ..mechanisms.slotted import SlottedLink
 from . import SIDE_COLUMN, SLIDER_COLUMN, Explorer, _fit
 
 PICK_PX = 12.0            # a press this close to a handle (figure pixels) grabs it
+STATUS_EVERY = 0.15       # s: while a handle is held the status line is rewritten at most this often
 CURVE_STYLE = dict(color="#9467bd", lw=1.6, zorder=1.5)
 HANDLE_STYLE = dict(ls="none", marker="o", ms=13, mfc="none", mec="#1f77b4", mew=1.6, zorder=7)
 CHOSEN_STYLE = dict(ls="none", marker="o", ms=19, mfc="none", mec="#e08214", mew=2.5, zorder=7)
@@ -438,6 +440,7 @@ class DragEditor(Explorer):
         self._quiet = False        # an angle set by a drag: no second redraw
         self._far: list[str] = []
         self._why = ""
+        self._read_at = -math.inf   # when the status line was last written
         scale = lk.structure().scale
         default = float(10.0 ** math.floor(math.log10(scale / 20.0)))
         self.ax = self.fig.add_axes((0.06, 0.07, 0.92, 0.9))
@@ -480,6 +483,11 @@ class DragEditor(Explorer):
         if manager is not None and getattr(manager, "key_press_handler_id", None) is not None:
             # matplotlib's own keys (s saves, q closes, g grids, arrows pan back and forth) are not the editor's
             canvas.mpl_disconnect(manager.key_press_handler_id)
+        toolbar = getattr(canvas, "toolbar", None)
+        for cid in ("_id_press", "_id_release", "_id_drag"):
+            # the hidden toolbar's pan and zoom, and its pointer readout (a widget message per mouse move)
+            if hasattr(toolbar, cid):
+                canvas.mpl_disconnect(getattr(toolbar, cid))
         for event, handler in (("button_press_event", self._on_press), ("motion_notify_event", self._on_motion),
                                ("button_release_event", self._on_release), ("key_press_event", self._on_key)):
             canvas.mpl_connect(event, handler)
@@ -632,7 +640,9 @@ class DragEditor(Explorer):
                 text.set_visible(text is held)
         self._update_handles(redraw=False)
         self._animate_moving()
-        self.status.value = self._reading()
+        now = time.monotonic()
+        if self._drag is None or was_hidden or now - self._read_at >= STATUS_EVERY:   # a message fewer per step
+            self.status.value, self._read_at = self._reading(), now
         mu = np.degrees(motion.transmission[:-1])
         set_alt(self.fig, f"Kinematic diagram of the linkage {linkage.formula()} with joints "
                           f"{', '.join(motion.points)}, drawn at crank angle φ = {math.degrees(self.phi):.0f}°, "
