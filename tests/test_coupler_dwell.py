@@ -245,6 +245,17 @@ def test_run_sixbar_dwells_as_fitted():
     assert check.output == "angle" and check.swing > 10 * check.dwell_error
 
 
+def test_check_dwell_reads_a_slider_and_every_rrr_dyad():
+    sc = ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).rrp("A", "B", 3.0, "O")
+    check = ml.check_dwell(sc, (0.0, 0.5))
+    s = 1.0 * np.cos([0.0, 0.5]) + np.sqrt(9 - np.sin([0.0, 0.5]) ** 2)
+    assert check.output == "position" and abs(check.swing - 2.0) < 1e-9        # the in-line stroke, 2 × crank
+    assert abs(check.dwell_error - (s[0] - s[1])) < 1e-12                      # s falls monotonically there
+    fb = ml.coupler_fourbar(1.0, 3.0, 3.0, 3.5)
+    mu = ml.FourBar(1.0, 3.0, 3.0, 3.5).motion(np.arange(720) * np.pi / 360).transmission
+    assert abs(ml.check_dwell(fb, (0.0, 1.0)).transmission - np.min(np.minimum(mu, np.pi - mu))) < 1e-12
+
+
 @st.composite
 def crank_rockers(draw):
     """Crank-rockers: the crank shortest and s + l < p + q by a margin (Grashof), coupler point anywhere near."""
