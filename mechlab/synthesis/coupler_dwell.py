@@ -822,28 +822,25 @@ def _search(kind, linkage, point, dwell, n, count, bound, cap):
         return tuple(f for _, f in found[:count])
     # the longest window within the bound at every start: bisection on the length, all starts at once
     top = np.minimum(curve.longest(starts), N)
-    good = np.zeros(N, int)
-    bad = top + 1
-    for _ in range(int(np.ceil(np.log2(N))) + 1):
-        trial = np.where(good == 0, np.minimum(MIN_POINTS, top), (good + bad) // 2)
-        live = (bad - good > 1) & (trial >= MIN_POINTS) & (trial <= top)
+    good = np.full(N, MIN_POINTS - 1)   # the longest length known to pass (below MIN_POINTS: none yet)
+    bad = top + 1                       # the shortest known to fail
+    while True:
+        live = bad - good > 1
         if not live.any():
             break
-        size, ripple = kind.screen(curve, starts[live], trial[live])
+        trial = (good[live] + bad[live]) // 2
+        size, ripple = kind.screen(curve, starts[live], trial)
         ok = (ripple <= bound * size) & np.isfinite(size) & (size > 0)
         if cap is not None:
             ok &= size <= cap
-        t = trial[live]
-        good[live] = np.where(ok, t, good[live])
-        bad[live] = np.where(ok, bad[live], t)
-        if (good == 0).all() and not live[good == 0].any():
-            break
-    order = [i for i in np.lexsort((starts, -good)) if good[i] >= MIN_POINTS]
+        good[live] = np.where(ok, trial, good[live])
+        bad[live] = np.where(ok, bad[live], trial)
+    order = np.lexsort((starts, -good))
+    order = order[good[order] >= MIN_POINTS]
     picks = _distinct(order, starts, good, N, curve.periodic, count + 2)   # spares: the exact lengths differ
     found = []
     for i in picks:
         s = int(starts[i])
-        best = None
 
         def exact(L, s=s):
             z = curve.window(s, L)
