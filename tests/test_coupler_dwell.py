@@ -213,10 +213,16 @@ def test_lambda_slotted_sixbar_dwells_like_the_course_mchv3():
 # The six-bars dwell as fitted
 # ----------------------------------------------------------------------------------------------------------------
 def dwell_bound(six, fit, check):
-    """First order: P at R + e from Q moves D by e / sin μ along the rocker's tangent, so the rocker turns by at
-    most 2·ripple / (b sin μ) over the dwell (μ the rod-rocker angle, not below the cycle's least)."""
-    b = six.groups[-1].second_length
-    return 2 * fit.ripple / (b * np.sin(check.transmission))
+    """First order in ripple / R: P at R + e from Q moves D by e / sin μ along the rocker's tangent, so the rocker
+    turns by at most 2·ripple / (b sin μ) over the dwell (μ the rod-rocker angle over the dwell; check's
+    transmission, the least over the cycle of both dyads, is no larger)."""
+    dyad = six.groups[-1]
+    pts = six.motion(np.linspace(*fit.crank_interval, 200)).points
+    D, P, F = (pts[k].p for k in (dyad.joint, dyad.first, dyad.second))
+    u, v = P - D, F - D
+    mu = np.arccos(np.clip(np.sum(u * v, 1) / (np.hypot(*u.T) * np.hypot(*v.T)), -1, 1))
+    assert np.min(np.minimum(mu, np.pi - mu)) >= check.transmission - 1e-9
+    return 2 * fit.ripple / (dyad.second_length * np.sin(np.min(np.minimum(mu, np.pi - mu))))
 
 
 def test_arc_sixbar_dwells_as_fitted():
@@ -283,7 +289,8 @@ def test_random_crank_rockers_every_sixbar_dwells_as_fitted(lk, dwell):
         except InfeasibleDesignError:
             continue   # no pivot of the default set closes the dyad over the cycle: refused by name
         check = ml.check_dwell(six, arc.crank_interval)
-        assert check.dwell_error <= 1.1 * dwell_bound(six, arc, check) + 1e-12
+        if arc.ripple < 0.01 * arc.radius:   # the bound is first order in ripple / R
+            assert check.dwell_error <= 1.1 * dwell_bound(six, arc, check) + 1e-12
     for run in ml.coupler_runs(lk, dwell=dwell, count=1):
         assert run.ripple <= 0.5 * run.length + 1e-12
 
