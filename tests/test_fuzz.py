@@ -127,6 +127,7 @@ CASES = {
     "RRP": lambda: (ml.RRP, ("A", "B", 3.0, ml.Guide("G", 0.2)), {"assembly": 1, "links": ("rod", "slider")}),
     "RPR": lambda: (ml.RPR, ("A", "P"), {"length": 2.0, "links": ("block", "lever")}),
     "PRP": lambda: (ml.PRP, (ml.Guide("G"), ml.Guide("P", 0.0, "lever"), "B"), {"links": ("slider", "block")}),
+    "RPP": lambda: (ml.RPP, ("A", "K", ml.Guide("G", 0.2)), {"slot": 1.2, "links": ("block", "yoke")}),
     "Guide": lambda: (ml.Guide, ("G",), {"angle": 0.3, "on": "lever"}),
     "Point": lambda: (ml.Point, ("C", "AB"), {"at": (1.5, 0.8)}),
     "FourBar.motion": lambda: (fb.motion, (PHI,), {}),

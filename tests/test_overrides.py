@@ -68,6 +68,16 @@ def lambda_slotted_sixbar(m):
     return lambda_base(m.base, {"P": (m.px, m.py)}).rpr("D", "P", 1.0)
 
 
+def sine_mechanism(m):
+    return ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", m.crank)).rpp("A", "K", "O")
+
+
+def lambda_translating_slot(m):
+    """The block at D in the output's slot (at ``slot`` from +x), the output sliding along ``guide`` through P; the
+    slot's line meets the guide at E: an RPP dyad."""
+    return lambda_base(m.base, {"P": (m.px, m.py)}).rpp("D", "E", ("P", m.guide), m.slot - m.guide)
+
+
 def antiparallelogram_half(m, assembly):
     return fourbar(m.as_fourbar(assembly))
 
@@ -75,13 +85,11 @@ def antiparallelogram_half(m, assembly):
 BUILT = {ml.FourBar: fourbar, ml.SliderCrank: slider_crank, ml.SlottedLink: slotted_link,
          ml.LambdaMechanism: lambda m: lambda_base(m).with_output("rocker"),
          ml.LambdaRockerSixBar: lambda_rocker_sixbar, ml.LambdaSliderSixBar: lambda_slider_sixbar,
-         ml.LambdaSlottedSixBar: lambda_slotted_sixbar, ml.Antiparallelogram: antiparallelogram_half}
+         ml.LambdaSlottedSixBar: lambda_slotted_sixbar, ml.Antiparallelogram: antiparallelogram_half,
+         ml.SineMechanism: sine_mechanism, ml.LambdaTranslatingSlot: lambda_translating_slot}
 NOT_BUILT = {
     "Linkage": "it is the structure-derived motion itself",
     "LinkageFamily": "its motion is its built Linkage's (no closed form of its own)",
-    "SineMechanism": "its group (block in the yoke's slot, yoke on a frame guide) is an RPP dyad; the builder has "
-                     "RRR, RRP, RPR, PRP",
-    "LambdaTranslatingSlot": "its group is an RPP dyad (block at D in a translating slotted link)",
     "SixBarIV": "a class-IV group (the builder has dyads only)",
     "EllipticTrammel": "no crank on a frame pivot (the input slides): the builder starts from a crank",
     "CurvedSlotLink": "a higher pair (the pin in a curved slot; the builder has lower pairs only): only the "
@@ -221,6 +229,25 @@ def lambda_sixbars():
 def test_lambda_sixbars_equal_their_groups(m):
     # the slotted six-bar's transmission is π/2 by convention (the pin pushes along the slot's normal)
     compare(m, BUILT[type(m)](m), m.turn(1441) + 1e-3, mu=not isinstance(m, ml.LambdaSlottedSixBar))
+
+
+@pytest.mark.parametrize("crank", [0.3, 1.0, 7.5])
+def test_sine_mechanism_equals_its_group(crank):
+    m = ml.SineMechanism(crank)
+    compare(m, sine_mechanism(m), m.turn(1441) + 0.01)
+
+
+def translating_slots():
+    """The designed lambda translating-slot six-bars, and slots and guides at other angles (not perpendicular)."""
+    return [*(d for d in designs() if isinstance(d, ml.LambdaTranslatingSlot)),
+            ml.LambdaTranslatingSlot(0.4, 0.8, np.pi, 0.8, 3.0, np.pi / 2, 0.0),
+            ml.LambdaTranslatingSlot(0.3, 0.9, 150 * DEG, -0.5, 1.2, 20 * DEG, 110 * DEG),
+            ml.LambdaTranslatingSlot(0.45, 1.0, 200 * DEG, 1.5, -0.7, 1.0, -0.4)]
+
+
+@pytest.mark.parametrize("m", translating_slots())
+def test_lambda_translating_slot_equals_its_groups(m):
+    compare(m, lambda_translating_slot(m), m.turn(1441) + 1e-3)
 
 
 @pytest.mark.parametrize("k", [(1.0, 2.0), (1.0, 0.6), (0.5, 1.7)])

@@ -31,7 +31,7 @@ from ..base import (
     fmt_ranges,
     lift_on_ranges,
 )
-from .groups import PRP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
+from .groups import PRP, RPP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
 
 # Crank angles sampled to find where a linkage assembles; each boundary is then bisected to 1e-13 rad.
 SAMPLES = 3600
@@ -63,7 +63,7 @@ def _guide(value, name: str = "guide") -> Guide:
 class Linkage(Mechanism):
     """A linkage built from its structure: the ``frame`` points {name: (x, y)}, the ``driver``
     (a :class:`Crank` on a frame point) and the ``groups`` (:class:`RRR`, :class:`RRP`, :class:`RPR`,
-    :class:`PRP`, and :class:`Point` s fixed on links), each attached to joints defined before it.
+    :class:`PRP`, :class:`RPP`, and :class:`Point` s fixed on links), each attached to joints defined before it.
     ``output_link`` names the link whose law the motion reports (default: the last group's last link):
     its angle ψ, or its displacement s along a frame guide.
 
@@ -144,11 +144,11 @@ class Linkage(Mechanism):
 
     # -- building -----------------------------------------------------------------------------------------
     def then(self, group) -> Linkage:
-        """This linkage with ``group`` (an RRR, RRP, RPR, PRP or Point) attached.
+        """This linkage with ``group`` (an RRR, RRP, RPR, PRP, RPP or Point) attached.
 
         Parameters
         ----------
-        group : RRR, RRP, RPR, PRP or Point
+        group : RRR, RRP, RPR, PRP, RPP or Point
             The next group, attached to joints already defined.
 
         Returns
@@ -281,6 +281,36 @@ class Linkage(Mechanism):
         """
         return self.then(PRP(_guide(first, "first"), _guide(second, "second"), joint, links))
 
+    def rpp(self, pin: str, joint: str, guide, slot: float = np.pi / 2, links=None) -> Linkage:
+        """Attach an :class:`RPP` dyad: a block at ``pin`` sliding in the straight slot of a yoke that slides on
+        ``guide``; ``joint`` is where the slot's centre line crosses the guide.
+
+        Parameters
+        ----------
+        pin : str
+            The joint carrying the block.
+        joint : str
+            The new joint, the yoke's reference point on the guide.
+        guide : Guide, str, (str, float) or (str, float, str)
+            The yoke's guide (see :meth:`rrp`).
+        slot : float
+            The slot's angle to the guide (radians); π/2 for a Scotch yoke.
+        links : (str, str), optional
+            The block's and the yoke's names.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> yoke = ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).rpp("A", "K", "O")
+        >>> round(float(yoke.motion(np.pi / 3).s), 12)
+        0.5
+        """
+        return self.then(RPP(pin, joint, _guide(guide), slot, links))
+
     def point(self, name: str, on: str, at=(0.0, 0.0)) -> Linkage:
         """Fix the point ``name`` on the link ``on`` at (ξ, η) in the link's coordinates (a coupler point).
 
@@ -368,7 +398,7 @@ class Linkage(Mechanism):
                 if j in carrier:
                     raise JointError(f"the joint {j!r} is attached twice: {made_by[j]} defines it, and {_what(g)} "
                                      f"again; give the new joint another name")
-                carrier[j] = g.on if isinstance(g, Point) else names[0]
+                carrier[j] = g.on if isinstance(g, Point) else g.carriers(names)[j]
                 made_by[j] = _what(g)
         return carrier
 
@@ -769,6 +799,8 @@ def _guide_point(linkage: Linkage, link: str) -> str:
     """The frame point a frame guide of ``link`` passes through (the zero of its displacement s)."""
     for g in linkage.groups:
         if isinstance(g, RRP) and g.link_names()[1] == link:
+            return g.guide.through
+        if isinstance(g, RPP) and g.link_names()[1] == link:
             return g.guide.through
         if isinstance(g, PRP) and link in g.link_names():
             return (g.first if g.link_names()[0] == link else g.second).through
