@@ -31,6 +31,7 @@ from ..base import (
     fmt_ranges,
     lift_on_ranges,
 )
+from .closure import CurvedSlot, Tetrad
 from .groups import PRP, RPP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
 
 # Crank angles sampled to find where a linkage assembles; each boundary is then bisected to 1e-13 rad.
@@ -62,8 +63,10 @@ def _guide(value, name: str = "guide") -> Guide:
 @dataclass(frozen=True)
 class Linkage(Mechanism):
     """A linkage built from its structure: the ``frame`` points {name: (x, y)}, the ``driver``
-    (a :class:`Crank` on a frame point) and the ``groups`` (:class:`RRR`, :class:`RRP`, :class:`RPR`,
-    :class:`PRP`, :class:`RPP`, and :class:`Point` s fixed on links), each attached to joints defined before it.
+    (a :class:`Crank` on a frame point) and the ``groups`` (the dyads :class:`RRR`, :class:`RRP`, :class:`RPR`,
+    :class:`PRP`, :class:`RPP`; the class-IV :class:`Tetrad`; a pin in a :class:`CurvedSlot`; and :class:`Point` s
+    fixed on links), each attached to joints defined before it. The dyads are placed in closed form; the tetrad and
+    the curved slot by Newton's method continued over φ from the assembly their ``start`` chooses.
     ``output_link`` names the link whose law the motion reports (default: the last group's last link):
     its angle ψ, or its displacement s along a frame guide.
 
@@ -144,11 +147,11 @@ class Linkage(Mechanism):
 
     # -- building -----------------------------------------------------------------------------------------
     def then(self, group) -> Linkage:
-        """This linkage with ``group`` (an RRR, RRP, RPR, PRP, RPP or Point) attached.
+        """This linkage with ``group`` (an RRR, RRP, RPR, PRP, RPP, Tetrad, CurvedSlot or Point) attached.
 
         Parameters
         ----------
-        group : RRR, RRP, RPR, PRP, RPP or Point
+        group : RRR, RRP, RPR, PRP, RPP, Tetrad, CurvedSlot or Point
             The next group, attached to joints already defined.
 
         Returns
@@ -310,6 +313,86 @@ class Linkage(Mechanism):
         0.5
         """
         return self.then(RPP(pin, joint, _guide(guide), slot, links))
+
+    def tetrad(self, first: str, second: str, joints, on_first, on_second, lengths, start, at: float = 0.0,
+               links=None) -> Linkage:
+        """Attach a :class:`Tetrad`, the class-IV group: a ternary link about ``first`` carrying Q and P, one about
+        ``second`` carrying R and T, joined by the binary links Q-R and P-T.
+
+        Parameters
+        ----------
+        first, second : str
+            The known joints the ternary links turn about.
+        joints : (str, str, str, str)
+            The new joints Q, P, R, T.
+        on_first, on_second : ((float, float), (float, float))
+            Q and P in the first link's frame, R and T in the second's (origin at its outer joint).
+        lengths : (float, float)
+            |QR| and |PT|.
+        start : (float, float)
+            The ternary links' angles near which the group is assembled at the crank angle ``at``.
+        at : float
+            The crank angle of ``start`` (radians).
+        links : (str, str, str, str), optional
+            The first ternary, Q-R, P-T and second ternary links' names.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> six = (ml.Linkage({"O": (0, 0), "E": (1.04, 0)}, ml.Crank("O", "A", 0.25))
+        ...        .tetrad("A", "E", ("Q", "P", "R", "T"), ((-0.2, 0.55), (0.7, 0.55)), ((0.55, 0.45), (1.35, 0.15)),
+        ...                (0.25, 0.85), (3.67, 3.04), at=np.pi))
+        >>> six.formula()
+        'I(crank) → IV₂(AQP, QR, PT, ERT)'
+        >>> round(float(six.motion(1.0).psi), 4) == round(float(ml.SixBarIV.example().motion(1.0).psi), 4)
+        True
+        """
+        return self.then(Tetrad(first, second, tuple(joints), on_first, on_second, lengths, start, at, links))
+
+    def slot(self, pin: str, curve, joint: str, pivot: str | None = None, guide=None, start: float = 0.0,
+             at: float = 0.0, link: str | None = None) -> Linkage:
+        """Attach a :class:`CurvedSlot`: the pin ``pin`` runs in the curved slot ``curve`` of a link that turns about
+        ``pivot`` or slides on ``guide``.
+
+        Parameters
+        ----------
+        pin : str
+            The known joint in the slot.
+        curve : CircleSlot, ParametricSlot or SampledSlot
+            The slot in the link's frame (origin at the pivot, or at ``joint`` on the guide).
+        joint : str
+            The new joint: a point on the turning link's axis (at the distance of the slot's start point), or the
+            sliding link's origin on the guide.
+        pivot : str, optional
+            The known joint the link turns about.
+        guide : Guide, str, (str, float) or (str, float, str), optional
+            The guide the link slides on (see :meth:`rrp`).
+        start : float
+            The slot parameter near which the pin lies at the crank angle ``at``.
+        at : float
+            The crank angle of ``start`` (radians).
+        link : str, optional
+            The slotted link's name.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = (ml.Linkage({"O": (0, 0), "B": (-4, 0)}, ml.Crank("O", "A", 1.0))
+        ...       .slot("A", ml.CircleSlot((3.0, 0.0), 3.0), "K", pivot="B", start=1.0))
+        >>> m = ml.CurvedSlotLink(1.0, 4.0, ml.CircleSlot((3.0, 0.0), 3.0), start=1.0)
+        >>> round(float(lk.motion(0.5).psi), 12) == round(float(m.motion(0.5).psi), 12)
+        True
+        """
+        guide = None if guide is None else _guide(guide)
+        return self.then(CurvedSlot(pin, curve, joint, pivot, guide, start, at, link))
 
     def point(self, name: str, on: str, at=(0.0, 0.0)) -> Linkage:
         """Fix the point ``name`` on the link ``on`` at (ξ, η) in the link's coordinates (a coupler point).
@@ -532,13 +615,22 @@ class Linkage(Mechanism):
         return tuple(dict.fromkeys([st.link(link).origin, *on]))
 
     # -- motion -----------------------------------------------------------------------------------------------
-    def _place(self, phi: np.ndarray, strict: bool) -> State:
-        state = State(phi, self._fixed, strict)
+    def _place(self, phi: np.ndarray, strict: bool, upto=None) -> State:
+        """The elements placed at ``phi`` (all, or those before ``upto``)."""
         carrier = self._carriers.__getitem__
+        state = State(phi, self._fixed, strict, lambda group, at: self._place(at, False, group), self._grids,
+                      carrier)
         with np.errstate(invalid="ignore", divide="ignore"):   # rows that do not close hold NaN until refused
             for g in self._elements:
+                if g is upto:
+                    break
                 g.place(state, carrier)
         return state
+
+    @cached_property
+    def _grids(self) -> dict:
+        """The solutions that groups solved by continuation (:class:`Tetrad`, :class:`CurvedSlot`) follow."""
+        return {}
 
     @cached_property
     def _ranges(self):
@@ -697,6 +789,9 @@ class Linkage(Mechanism):
             if link.block:
                 at, axis = pts[link.origin].p, link.angle(motion).theta
                 parts.append(Part("extra", lambda i, p=at, a=axis: block_outline(p[i], _dir(a[i]), 2 * size, size)))
+        for g in self.groups:
+            if not isinstance(g, Point):
+                parts += g.drawing(motion, st)
         return Sketch(tuple(parts), self.pivots)
 
 
@@ -798,12 +893,9 @@ def _along(origin, point, angle, size):
 def _guide_point(linkage: Linkage, link: str) -> str:
     """The frame point a frame guide of ``link`` passes through (the zero of its displacement s)."""
     for g in linkage.groups:
-        if isinstance(g, RRP) and g.link_names()[1] == link:
-            return g.guide.through
-        if isinstance(g, RPP) and g.link_names()[1] == link:
-            return g.guide.through
-        if isinstance(g, PRP) and link in g.link_names():
-            return (g.first if g.link_names()[0] == link else g.second).through
+        guide = None if isinstance(g, Point) else g.sliding().get(link)
+        if guide is not None:
+            return guide.through
     raise JointError(f"the link {link} slides on no frame guide")   # pragma: no cover - only asked of sliders
 
 

@@ -42,11 +42,16 @@ class State:
     its origin and the link each joint was made on (its carrier), over the crank angles ``phi``.
 
     ``strict``: raise the named error where a group cannot close; otherwise mark those rows in ``ok``
-    (and leave NaN there), as the search for the reachable crank angles needs.
+    (and leave NaN there), as the search for the reachable crank angles needs. ``before(group, phi)``: the
+    linkage placed up to ``group`` at other crank angles (not strict), and ``grids``: what a group solved by
+    continuation keeps for its linkage (its solution over a turn); ``carrier(joint)``: the link each joint was
+    made on.
     """
 
-    def __init__(self, phi: np.ndarray, fixed: dict, strict: bool):
-        self.phi, self.n, self.strict, self.fixed = phi, len(phi), strict, fixed
+    def __init__(self, phi: np.ndarray, fixed: dict, strict: bool, before=None, grids=None, carrier=None):
+        self.phi, self.n, self.strict, self.fixed, self.carrier = phi, len(phi), strict, fixed, carrier
+        self.before, self.grids = before, {} if grids is None else grids
+        self.solved: dict[int, np.ndarray] = {}   # a group's unknowns where it solved them (its transmission)
         self.points: dict[str, PointPath] = {k: fixed_point(xy, len(phi)) for k, xy in fixed.items()}
         zero = np.zeros(len(phi))
         self.angles: dict[str, AnglePath] = {FRAME: AnglePath(zero, zero, zero)}
@@ -231,6 +236,33 @@ class Group:
             The guides (empty for none).
         """
         return ()
+
+    def drawing(self, motion, structure) -> tuple:
+        """What this element adds to the kinematic diagram beyond its links' bars and blocks.
+
+        Parameters
+        ----------
+        motion : Motion
+            The motion drawn.
+        structure : Structure
+            The linkage's structure.
+
+        Returns
+        -------
+        tuple of Part
+            Empty by default.
+        """
+        return ()
+
+    def sliding(self) -> dict[str, Guide]:
+        """The guide each of this element's sliding links slides on.
+
+        Returns
+        -------
+        dict
+            Link name → Guide (empty for an element without a slider).
+        """
+        return {}
 
     def link_names(self) -> tuple[str, ...]:
         """The names of the links this element adds.
@@ -586,6 +618,9 @@ class RRP(_OnGuide, Checked):
 
     kind: ClassVar[str] = "RRP"
 
+    def sliding(self):
+        return {self.link_names()[1]: self.guide}
+
     def link_names(self):
         return self._names((self.pin + self.joint, f"slider {self.joint}"))
 
@@ -753,6 +788,9 @@ class PRP(_Dyad, Checked):
 
     kind: ClassVar[str] = "PRP"
 
+    def sliding(self):
+        return dict(zip(self.link_names(), (self.first, self.second), strict=True))
+
     def needs(self):
         return (self.first.through, self.second.through)
 
@@ -857,6 +895,9 @@ class RPP(_OnGuide, Checked):
     links: LinkNames = None
 
     kind: ClassVar[str] = "RPP"
+
+    def sliding(self):
+        return {self.link_names()[1]: self.guide}
 
     def carriers(self, names):
         """The link each new joint is fixed on: the yoke carries ``joint``.
