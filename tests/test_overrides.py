@@ -1,16 +1,17 @@
 """Closed forms are fast paths: every family that writes its own ``motion()`` moves as the same mechanism solved
-group by group through its Assur groups (``ml.Linkage``: a crank and RRR/RRP/RPR dyads) does, to 1e-12.
+group by group through its Assur groups (``ml.Linkage``: a crank, the dyads RRR/RRP/RPR/PRP/RPP in closed form, the
+class-IV Tetrad and a pin in a CurvedSlot by Newton's method continued over φ) does, to 1e-12.
 
 The overrides are discovered, not listed: every Mechanism subclass of mechlab that defines ``motion`` (or
 ``curved_slot_twin``, which the base class derives from ``structure()``) must either be rebuilt here from its own
-dimensions (BUILT) or be named in NOT_BUILT with the reason the builder cannot express it (the curved slots
-are rebuilt where the slot is a circle: an RRR or RRP dyad; the closed-form curved-slot twins of FourBar and
-SliderCrank are compared with the twin derived from the structure). A rebuilt family is
-compared on a dense grid of crank angles over several geometries (hypothesis for the four-bar and the
-slider-crank): ψ (or s), its first and second analogs, the transmission angle and every joint both name, positions
-and analogs. Tolerance 1e-12 relative to the quantity's largest value on the grid (lengths here are of order 1 to
-10, so relative and absolute differ little), the grid kept where the output dyad's transmission angle is within
-[15°, 165°], where two exact formulas agree to rounding (at a dead point the analogs are unbounded).
+dimensions (BUILT) or be named in NOT_BUILT with the reason the builder cannot express it (the Geneva drive's
+engaged phase is rebuilt, its lock is not; the closed-form curved-slot twins of FourBar and SliderCrank are compared
+with the twin derived from the structure). A rebuilt family is compared on a dense grid of crank angles over several
+geometries (hypothesis for the four-bar and the slider-crank): ψ (or s), its first and second analogs, the
+transmission angle and every joint both name, positions and analogs. Tolerance 1e-12 relative to the quantity's
+largest value on the grid (lengths here are of order 1 to 10, so relative and absolute differ little), the grid kept
+where the output group's transmission angle is within [15°, 165°], where two exact formulas agree to rounding (at a
+dead point the analogs are unbounded).
 """
 
 from dataclasses import replace
@@ -146,7 +147,9 @@ NOT_BUILT = {
     "Linkage": "it is the structure-derived motion itself",
     "LinkageFamily": "its motion is its built Linkage's (no closed form of its own)",
     "EllipticTrammel": "no crank on a frame pivot (the input slides): the builder starts from a crank",
-    "PlanarGeneva": "a higher pair and an intermittent drive (the pin enters and leaves the slots)",
+    "PlanarGeneva": "an intermittent drive: its structure changes over the turn (the pin enters and leaves the "
+                    "slots; a lock holds the wheel between), and a linkage is one chain of groups for every φ. "
+                    "The engaged phase is rebuilt as an RPR dyad (test_geneva_engaged_phase_is_an_rpr_dyad)",
     "RollerCam": "a higher pair (roller on the cam profile)",
     "SphericalGeneva": "spatial (its links move on a sphere)",
     "Kinetostatics": "a mechanism with loads: it passes its mechanism's motion through",
@@ -440,3 +443,24 @@ def test_curved_slots_equal_their_groups(m):
     phi = well_conditioned(m, np.concatenate([np.linspace(lo, hi, 1443)[1:-1] for lo, hi in m.crank_ranges()]))
     compare(m, built, phi, mu=False)
     assert_close(np.sin(built.motion(phi).transmission), np.sin(m.motion(phi).transmission), "sin μ")
+
+
+@pytest.mark.parametrize("m", [ml.ExternalGeneva.example(), ml.InternalGeneva.example(), ml.ExternalGeneva(5, 2.0),
+                               ml.InternalGeneva(6, 1.5), ml.ExternalGeneva(3, 1.0)], ids=lambda m: type(m).__name__)
+def test_geneva_engaged_phase_is_an_rpr_dyad(m):
+    """While the pin is in a slot the wheel is the slotted link of an RPR dyad about W (the external drive's pin at
+    the crank angle φ + π: its φ = 0 has the pin pointing away from W): ψ′, ψ″, the pin and W alike, ψ the slot's
+    angle plus a constant; locked, the wheel stands exactly still, before the motion and one index after it."""
+    built = ml.Linkage({"O": (0, 0), "W": (m.centre_distance, 0)}, ml.Crank("O", "A", m.crank_radius)).rpr("A", "W")
+    phi = m.turn(1441)
+    on = m.engaged(phi)
+    a, b = m.motion(phi[on]), built.motion(phi[on] + (0.0 if m.kappa > 0 else np.pi))
+    assert_close(b.dpsi, a.dpsi, "ψ′")
+    assert_close(b.ddpsi, a.ddpsi, "ψ″")
+    assert_close(b.psi - a.psi, np.full(on.sum(), b.psi[0] - a.psi[0]), "ψ - ψ_slot", angle=True)
+    for joint in ("A", "W"):
+        for k, x, y in zip(("", "′", "″"), a.points[joint], b.points[joint], strict=True):
+            assert_close(y, x, f"{joint}{k}")
+    locked = m.motion(phi[~on])
+    assert np.all(locked.dpsi == 0) and np.all(locked.ddpsi == 0)
+    assert set(locked.psi) == {0.0, m.index_angle}   # before the motion and after it
