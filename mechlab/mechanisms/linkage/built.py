@@ -774,7 +774,8 @@ class Linkage(Mechanism):
             for k, p in enumerate(slots):   # the slot (or guide) on this link along the block's track
                 track = pts[p.point].p
                 o = pts[link.origin].p
-                shown = len(joints) < 2 and k == 0   # a link drawn by its slot alone carries its number there
+                # a link drawn by its slot alone (not as a block, nor as a bar) carries its number there
+                shown = isinstance(link.axis, tuple) and len(joints) < 2 and k == 0
                 parts.append(Part("slot", lambda i, o=o, t=track, a=axis + p.angle: _along(o[i], t[i], a[i], size),
                                   link.name if shown else None))
         for link in st.links:

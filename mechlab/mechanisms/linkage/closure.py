@@ -527,8 +527,8 @@ class CurvedSlot(_Closure, Checked):
             One "slot" part, the curve in the fixed frame at each frame.
         """
         link = structure.link(self.link_names()[0])
-        turn = np.exp(1j * link.angle(motion).theta)
-        origin = as_complex(motion.points[link.origin].p)
+        turn = np.atleast_1d(np.exp(1j * link.angle(motion).theta))
+        origin = np.broadcast_to(as_complex(motion.points[link.origin].p), turn.shape)   # a pivot is one number
         curve = as_complex(self.curve.points(np.linspace(self.curve.t0, self.curve.t1, 200)))
 
         def at(i):
