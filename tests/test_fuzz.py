@@ -133,6 +133,8 @@ CASES = {
                        {"at": 3.14, "links": ("coupler", "link 3", "link 5", "output")}),
     "CurvedSlot": lambda: (ml.CurvedSlot, ("A", ml.CircleSlot((3.0, 0.0), 3.0), "K"),
                            {"pivot": "B", "guide": None, "start": 1.0, "at": 0.0, "link": "lever"}),
+    "CamFollower": lambda: (ml.CamFollower, (ml.CircleSlot((0.5, 0.0), 2.0), "cam", "C"),
+                            {"pivot": "B", "arm": 2.0, "guide": None, "start": 1.3, "at": 0.0, "link": "arm"}),
     "Guide": lambda: (ml.Guide, ("G",), {"angle": 0.3, "on": "lever"}),
     "Point": lambda: (ml.Point, ("C", "AB"), {"at": (1.5, 0.8)}),
     "FourBar.motion": lambda: (fb.motion, (PHI,), {}),

@@ -12,7 +12,7 @@ from test_overrides import cubic, ellipse, sixbar_iv, wavy
 
 import mechlab as ml
 from mechlab.draw import draw
-from mechlab.errors import AssemblyError, DimensionError, RotationError, StructureError
+from mechlab.errors import AssemblyError, DimensionError, JointError, RotationError, StructureError
 from mechlab.kinetostatics.model import Force, Torque, model_for
 from mechlab.kinetostatics.solve import solve
 
@@ -156,6 +156,11 @@ def test_curved_slot_errors_are_named():
         short.motion(np.pi)
 
 
+def eccentric():
+    """A circular roller-centre curve of radius 2 about (0.5, 0) on the cam."""
+    return ml.CircleSlot((0.5, 0.0), 2.0)
+
+
 # -- what the course derives from the structure ------------------------------------------------------------------
 def built_with_new_groups():
     return {"tetrad": (sixbar_iv(SIX), Torque("output", -20.0)),
@@ -165,7 +170,9 @@ def built_with_new_groups():
                 "A", cubic(), "C", guide="O", start=-0.3, link="yoke"), Force("yoke", "C", (-20.0, 0.0))),
             "yoke": (ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).rpp("A", "K", ("O", 0.3), 1.2,
                                                                          links=("block", "yoke")),
-                     Force("yoke", "K", (-20.0 * np.cos(0.3), -20.0 * np.sin(0.3))))}
+                     Force("yoke", "K", (-20.0 * np.cos(0.3), -20.0 * np.sin(0.3)))),
+            "cam and arm": (ml.Linkage({"O": (0, 0), "B": (3.0, 0.0)}, ml.Crank("O", "A", 1.0, name="cam"))
+                            .follow(eccentric(), "cam", "C", pivot="B", arm=2.2, start=1.3), Torque("follower", -20.0))}
 
 
 @pytest.mark.parametrize("name", sorted(built_with_new_groups()))
@@ -192,3 +199,41 @@ def test_the_grid_is_solved_once_per_linkage():
     assert len(grids) == 1
     lk.motion(lk.turn(7))
     assert lk._grids == grids
+
+
+# -- a cam follower --------------------------------------------------------------------------------------------
+def test_translating_follower_on_an_eccentric():
+    """The roller centre C = (0, y) on the circle of radius 2 about M = 0.5·(cos φ, sin φ):
+    y = 0.5 sin φ + √(4 - 0.25 cos² φ), solved here by mpmath."""
+    lk = ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0, name="cam")).follow(
+        eccentric(), "cam", "C", guide=("O", np.pi / 2), start=1.3)
+
+    def closed(phi):
+        return (mp.mpf(0), 0.5 * mp.sin(phi) + mp.sqrt(4 - 0.25 * mp.cos(phi) ** 2))
+
+    phi = np.linspace(0.0, 2 * np.pi, 13)[:-1] + 0.05
+    assert_paths(lk.motion(phi), ["C"], closed, phi)
+    assert lk.output == "position" and lk.mobility() == 1
+
+
+def test_arm_follower_on_an_eccentric_is_an_rrr_dyad():
+    """On a circular curve the arm follower is the rocker of an RRR dyad from the curve's centre M (a point on the
+    cam) to the pivot B: the same ψ, analogs and roller centre to 1e-12."""
+    base = ml.Linkage({"O": (0, 0), "B": (3.0, 0.0)}, ml.Crank("O", "A", 1.0, name="cam"))
+    lk = base.follow(eccentric(), "cam", "C", pivot="B", arm=2.2, start=1.3)
+    side = 1 if lk.motion(0.0).points["C"].p[1] < 0 else -1   # C on the right of M→B: the dyad's assembly −1
+    rrr = base.point("M", "cam", (0.5, 0.0)).rrr("M", "B", "C", 2.0, 2.2, -side)
+    phi = lk.turn(361)
+    a, b = lk.motion(phi), rrr.motion(phi)
+    assert np.abs(np.mod(a.psi - b.psi + np.pi, 2 * np.pi) - np.pi).max() < 1e-12
+    for x, y in ((a.dpsi, b.dpsi), (a.ddpsi, b.ddpsi), *zip(a.points["C"], b.points["C"], strict=True)):
+        assert np.abs(x - y).max() < 1e-12 * max(1.0, np.abs(y).max())
+
+
+def test_cam_follower_errors_are_named():
+    with pytest.raises(StructureError, match="give one of pivot= and guide="):
+        ml.CamFollower(eccentric(), "cam", "C")
+    with pytest.raises(DimensionError, match="arm must be a positive length"):
+        ml.CamFollower(eccentric(), "cam", "C", pivot="B")
+    with pytest.raises(JointError, match="uses the link 'cam', which is not defined before it"):
+        ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).follow(eccentric(), "cam", "C", guide="O")

@@ -19,7 +19,7 @@ from dataclasses import replace
 import mpmath as mp
 import numpy as np
 import pytest
-from examples import designs
+from examples import EXAMPLES_ABOVE, designs
 from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 from strategies import fourbars, revolving_fourbars, revolving_slider_cranks
@@ -27,6 +27,7 @@ from test_numbering import mechanism_classes
 
 import mechlab as ml
 from mechlab.analysis.equivalence import EquivalentSlot
+from mechlab.mechanisms.cam import RollerCam
 from mechlab.mechanisms.curved_slot import structural_twin
 
 DEG = np.pi / 180
@@ -136,13 +137,32 @@ def equivalent_slot(m):
     return curved_slot_link(twin, E, m.phase)
 
 
+def roller_cam(m):
+    """The cam (a crank turning about O) carries the roller centre's curve, the follower rides on it: an arm about B
+    or a stem on the line x = e through F = (e, s0). The family's motion solves the contact on its splined profile
+    (the roller centre's curve offset from the quintic spline through the profile's nodes, ``_pitch_of_surface``),
+    so that curve is the one given to the builder; the contact parameter at φ = 0.3 is read from the family."""
+    pitch = ml.ParametricSlot(*(lambda u, k=k: m._pitch_of_surface(u)[k] for k in range(3)), 0.0, 2 * np.pi,
+                              periodic=True)
+    at = 0.3
+    local = complex(*m.motion(at).points["C"].p) * np.exp(-1j * at)
+    start = float(ml.CamFollower(pitch, "cam", "C", guide=ml.Guide("O")).parameter(np.array([local]))[0])
+    cam = ml.Crank("O", "A", 1.0, name="cam")
+    if m.output == "position":
+        return ml.Linkage({"O": (0, 0), "F": (m.offset, m.s0)}, cam).follow(
+            pitch, "cam", "C", guide=("F", np.pi / 2), start=start, at=at)
+    return ml.Linkage({"O": (0, 0), "B": (m.pivot_distance, 0)}, cam).follow(
+        pitch, "cam", "C", pivot="B", arm=m.arm, start=start, at=at)
+
+
 BUILT = {ml.FourBar: fourbar, ml.SliderCrank: slider_crank, ml.SlottedLink: slotted_link,
          ml.LambdaMechanism: lambda m: lambda_base(m).with_output("rocker"),
          ml.LambdaRockerSixBar: lambda_rocker_sixbar, ml.LambdaSliderSixBar: lambda_slider_sixbar,
          ml.LambdaSlottedSixBar: lambda_slotted_sixbar, ml.Antiparallelogram: antiparallelogram_half,
          ml.SineMechanism: sine_mechanism, ml.LambdaTranslatingSlot: lambda_translating_slot,
          ml.SixBarIV: sixbar_iv, ml.CurvedSlotLink: curved_slot_link, ml.TranslatingCurvedSlot: translating_curved_slot,
-         ml.DwellSlotMechanism: lambda m: curved_slot_link(m.link), EquivalentSlot: equivalent_slot}
+         ml.DwellSlotMechanism: lambda m: curved_slot_link(m.link), EquivalentSlot: equivalent_slot,
+         RollerCam: roller_cam}
 NOT_BUILT = {
     "Linkage": "it is the structure-derived motion itself",
     "LinkageFamily": "its motion is its built Linkage's (no closed form of its own)",
@@ -150,7 +170,6 @@ NOT_BUILT = {
     "PlanarGeneva": "an intermittent drive: its structure changes over the turn (the pin enters and leaves the "
                     "slots; a lock holds the wheel between), and a linkage is one chain of groups for every φ. "
                     "The engaged phase is rebuilt as an RPR dyad (test_geneva_engaged_phase_is_an_rpr_dyad)",
-    "RollerCam": "a higher pair (roller on the cam profile)",
     "SphericalGeneva": "spatial (its links move on a sphere)",
     "Kinetostatics": "a mechanism with loads: it passes its mechanism's motion through",
 }
@@ -464,3 +483,20 @@ def test_geneva_engaged_phase_is_an_rpr_dyad(m):
     locked = m.motion(phi[~on])
     assert np.all(locked.dpsi == 0) and np.all(locked.ddpsi == 0)
     assert set(locked.psi) == {0.0, m.index_angle}   # before the motion and after it
+
+
+def roller_cams():
+    """The course's two cams, and the translating one with its follower's line through O and a larger roller."""
+    cams = [make() for make in EXAMPLES_ABOVE.values()]
+    return [*cams, replace(cams[0], offset=0.0, roller_radius=12.0)]
+
+
+@pytest.mark.parametrize("m", roller_cams(), ids=lambda m: type(m).__name__)
+def test_roller_cam_equals_its_follower_group(m):
+    """The follower riding on the cam's roller-centre curve (a higher pair), solved per φ by continuation, moves as
+    the family's own contact solution over the whole turn; μ = 90° - |α| compared by its sine."""
+    built = roller_cam(m)
+    assert built.crank_ranges() == ((0.0, 2 * np.pi),) and built.formula() == "I(cam) → II₂(follower)"
+    phi = well_conditioned(m, m.turn(1441) + 0.01)
+    compare(m, built, phi, mu=False)
+    assert_close(np.sin(built.motion(phi).transmission), np.sin(m.motion(phi).transmission), "sin μ")

@@ -31,7 +31,7 @@ from ..base import (
     fmt_ranges,
     lift_on_ranges,
 )
-from .closure import CurvedSlot, Tetrad
+from .closure import CamFollower, CurvedSlot, Tetrad
 from .groups import PRP, RPP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
 
 # Crank angles sampled to find where a linkage assembles; each boundary is then bisected to 1e-13 rad.
@@ -64,9 +64,10 @@ def _guide(value, name: str = "guide") -> Guide:
 class Linkage(Mechanism):
     """A linkage built from its structure: the ``frame`` points {name: (x, y)}, the ``driver``
     (a :class:`Crank` on a frame point) and the ``groups`` (the dyads :class:`RRR`, :class:`RRP`, :class:`RPR`,
-    :class:`PRP`, :class:`RPP`; the class-IV :class:`Tetrad`; a pin in a :class:`CurvedSlot`; and :class:`Point` s
-    fixed on links), each attached to joints defined before it. The dyads are placed in closed form; the tetrad and
-    the curved slot by Newton's method continued over φ from the assembly their ``start`` chooses.
+    :class:`PRP`, :class:`RPP`; the class-IV :class:`Tetrad`; a pin in a :class:`CurvedSlot`; a
+    :class:`CamFollower` on a curve of a moving link; and :class:`Point` s fixed on links), each attached to joints
+    defined before it. The dyads are placed in closed form; the tetrad, the curved slot and the cam follower by
+    Newton's method continued over φ from the assembly their ``start`` chooses.
     ``output_link`` names the link whose law the motion reports (default: the last group's last link):
     its angle ψ, or its displacement s along a frame guide.
 
@@ -147,11 +148,12 @@ class Linkage(Mechanism):
 
     # -- building -----------------------------------------------------------------------------------------
     def then(self, group) -> Linkage:
-        """This linkage with ``group`` (an RRR, RRP, RPR, PRP, RPP, Tetrad, CurvedSlot or Point) attached.
+        """This linkage with ``group`` (an RRR, RRP, RPR, PRP, RPP, Tetrad, CurvedSlot, CamFollower or Point)
+        attached.
 
         Parameters
         ----------
-        group : RRR, RRP, RPR, PRP, RPP, Tetrad, CurvedSlot or Point
+        group : RRR, RRP, RPR, PRP, RPP, Tetrad, CurvedSlot, CamFollower or Point
             The next group, attached to joints already defined.
 
         Returns
@@ -394,6 +396,47 @@ class Linkage(Mechanism):
         guide = None if guide is None else _guide(guide)
         return self.then(CurvedSlot(pin, curve, joint, pivot, guide, start, at, link))
 
+    def follow(self, curve, on: str, joint: str, pivot: str | None = None, arm: float = 0.0, guide=None,
+               start: float = 0.0, at: float = 0.0, link: str | None = None) -> Linkage:
+        """Attach a :class:`CamFollower`: the follower's point ``joint`` rides on ``curve``, fixed on the link ``on``
+        (a cam's roller-centre curve); the follower turns about ``pivot`` on an arm or slides on ``guide``.
+
+        Parameters
+        ----------
+        curve : CircleSlot, ParametricSlot or SampledSlot
+            The curve in the frame of the link ``on``.
+        on : str
+            The link carrying the curve.
+        joint : str
+            The new joint on the curve (the roller's centre).
+        pivot : str, optional
+            The known joint the follower's arm turns about.
+        arm : float
+            The arm's length |pivot joint|, with ``pivot``.
+        guide : Guide, str, (str, float) or (str, float, str), optional
+            The guide the follower slides on, ``joint`` on its line (see :meth:`rrp`).
+        start : float
+            The curve parameter near which the contact lies at the crank angle ``at``.
+        at : float
+            The crank angle of ``start`` (radians).
+        link : str, optional
+            The follower's name.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> eccentric = (ml.Linkage({"O": (0, 0), "F": (0, 0)}, ml.Crank("O", "A", 1.0, name="cam"))
+        ...              .follow(ml.CircleSlot((0.5, 0.0), 2.0), "cam", "C", guide=("F", np.pi / 2), start=1.3))
+        >>> round(float(eccentric.motion(np.pi / 2).s), 12)   # the circle's centre at (0, 0.5), C on x = 0
+        2.5
+        """
+        guide = None if guide is None else _guide(guide)
+        return self.then(CamFollower(curve, on, joint, pivot, arm, guide, start, at, link))
+
     def point(self, name: str, on: str, at=(0.0, 0.0)) -> Linkage:
         """Fix the point ``name`` on the link ``on`` at (ξ, η) in the link's coordinates (a coupler point).
 
@@ -464,6 +507,10 @@ class Linkage(Mechanism):
             if isinstance(g, Point) and g.on not in links:
                 raise JointError(f"the point {g.name} is fixed on the link {g.on!r}, which is not defined before it; "
                                  f"links so far: {', '.join(sorted(links - {FRAME}))}")
+            for used in () if isinstance(g, Point) else g.uses():
+                if used not in links:
+                    raise JointError(f"{_what(g)} uses the link {used!r}, which is not defined before it; links so "
+                                     f"far: {', '.join(sorted(links - {FRAME}))}")
             for guide in () if isinstance(g, Point) else g.guides():
                 if guide.on is not None and guide.on not in links:
                     raise JointError(f"{_what(g)} slides on a guide fixed on the link {guide.on!r}, which is not "

@@ -401,8 +401,177 @@ SlotSpec = Annotated[Any, mechanism((CircleSlot, ParametricSlot, SampledSlot), e
 _SAMPLES, _TABLE = 2049, 4097
 
 
+class _OnCurve(_Closure):
+    """A group whose closure holds a joint on a curve (``curve``: c(t) in its link's frame); the unknowns are a
+    coordinate of a link and the curve parameter t."""
+
+    def _curve_link(self) -> str:
+        """The name of the link the curve is fixed on."""
+        raise NotImplementedError
+
+    def _one_support(self, what: str) -> None:
+        """StructureError unless exactly one of ``pivot`` and ``guide`` is given; the unknowns' periods."""
+        if (self.pivot is None) == (self.guide is None):
+            raise StructureError(f"{what} turns about a pivot or slides on a guide: give one of pivot= and guide=, "
+                                 f"got pivot={self.pivot!r}, guide={self.guide!r}")
+        object.__setattr__(self, "_table", [])
+        object.__setattr__(self, "periods", (2 * np.pi if self.guide is None else None,
+                                             self.curve.t1 - self.curve.t0 if self.curve.periodic else None))
+
+    def guides(self):
+        """The guides this element slides on: the sliding link's guide (none for a turning one).
+
+        Returns
+        -------
+        tuple of Guide
+            The guides.
+        """
+        return () if self.guide is None else (self.guide,)
+
+    def makes(self):
+        return (self.joint,)
+
+    def sliding(self):
+        return {} if self.guide is None else {self.link_names()[0]: self.guide}
+
+    def _supported(self, carrier, links, length: float):
+        """This group's link, turning about ``pivot`` (its axis to ``joint``, of ``length``) or sliding on
+        ``guide`` (its origin ``joint``), and the pair that holds it there."""
+        (name,) = self.link_names()
+        if self.guide is None:
+            return (Link(name, self.pivot, (self.pivot, self.joint), length, joints=(self.pivot, self.joint)),
+                    Pair("revolute", self.pivot, carrier(self.pivot), name, self.pivot))
+        on = self.guide.link(carrier)
+        return (Link(name, self.joint, _guide_axis(self.guide, on, links)),
+                Pair("prismatic", f"{name} on {on}", on, name, self.joint, self.guide.angle))
+
+    def drawing(self, motion, structure):
+        """The curve carried by its link over the motion.
+
+        Parameters
+        ----------
+        motion : Motion
+            The motion drawn.
+        structure : Structure
+            The linkage's structure.
+
+        Returns
+        -------
+        tuple of Part
+            One "slot" part, the curve in the fixed frame at each frame.
+        """
+        link = structure.link(self._curve_link())
+        turn = np.atleast_1d(np.exp(1j * link.angle(motion).theta))
+        origin = np.broadcast_to(as_complex(motion.points[link.origin].p), turn.shape)   # a pivot is one number
+        curve = as_complex(self.curve.points(np.linspace(self.curve.t0, self.curve.t1, 200)))
+
+        def at(i):
+            z = origin[i] + turn[i] * curve
+            return np.stack([z.real, z.imag], axis=-1)
+
+        return (Part("slot", at),)
+
+    def _following(self, on):
+        """While the grid is followed, the curve is its cubic Hermite interpolant on 4097 points (c within about
+        1e-11 of the slot's scale; one call of the slot's functions instead of thousands, each of which may solve
+        a mechanism's motion for a slot read from one); the crank angles asked are solved on the slot itself."""
+        if not on:
+            self._table[:] = []
+            return
+        t = np.linspace(self.curve.t0, self.curve.t1, _TABLE)
+        c = self.curve.evaluate(t)
+        self._table[:] = [t, as_complex(c.p), as_complex(c.d)]
+
+    def _hermite(self, t):
+        """c, c_t (and NaN for c_tt, which the grid does not use) of the interpolant at t."""
+        grid, c, ct = self._table
+        span = grid[-1] - grid[0]
+        if self.curve.periodic:
+            t = grid[0] + np.mod(t - grid[0], span)
+        step = span / (len(grid) - 1)
+        k = np.clip(np.floor((t - grid[0]) / step).astype(int), 0, len(grid) - 2)
+        s = (t - grid[k]) / step
+        a, b, da, db = c[k], c[k + 1], step * ct[k], step * ct[k + 1]
+        value = (2 * s**3 - 3 * s**2 + 1) * a + (s**3 - 2 * s**2 + s) * da + (3 * s**2 - 2 * s**3) * b + \
+            (s**3 - s**2) * db
+        slope = ((6 * s**2 - 6 * s) * a + (3 * s**2 - 4 * s + 1) * da + (6 * s - 6 * s**2) * b
+                 + (3 * s**2 - 2 * s) * db) / step
+        return [value, slope, np.full(t.shape, np.nan + 0j)]
+
+    def _curve(self, t):
+        """c, c_t, c_tt (complex) at the finite rows of t (NaN elsewhere)."""
+        out = [np.full(t.shape, np.nan + 0j) for _ in range(3)]
+        finite = np.isfinite(t)
+        if finite.any():
+            values = self._hermite(t[finite]) if self._table else \
+                (as_complex(v) for v in self.curve.evaluate(t[finite]))
+            for k, v in enumerate(values):
+                out[k][finite] = v
+        return out
+
+    def parameter(self, local) -> np.ndarray:
+        """The curve parameter t of points on the curve given in its link's frame.
+
+        Parameters
+        ----------
+        local : array of complex
+            Points on the curve, x + iy in its link's frame.
+
+        Returns
+        -------
+        numpy.ndarray
+            t of each (the nearest of 2049 samples, refined by Newton's method on (c(t) - point)·c_t(t) = 0).
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> g = CurvedSlot("A", ml.CircleSlot((3.0, 0.0), 3.0), "K", pivot="B", start=1.0)
+        >>> round(float(g.parameter(np.array([3.0 + 3.0j]))[0]), 12)
+        1.570796326795
+        """
+        c0, c1 = self.curve.t0, self.curve.t1
+        grid = np.linspace(c0, c1, _SAMPLES)
+        pts = as_complex(self.curve.points(grid))
+        t = grid[np.argmin(np.abs(pts[None, :] - local[:, None]), axis=1)]
+        for _ in range(8):
+            c, ct, ctt = self._curve(t)
+            g, dg = _re_conj(c - local, ct), _abs2(ct) + _re_conj(c - local, ctt)
+            t = t - g / dg
+            if not self.curve.periodic:
+                t = np.clip(t, c0, c1)
+        return t
+
+    def tangent(self, motion, link: Link, point: str) -> np.ndarray:
+        """The curve's tangent c_t at ``point``, in the fixed frame, over a motion.
+
+        Parameters
+        ----------
+        motion : Motion
+            A motion of the linkage.
+        link : Link
+            The link carrying the curve (its origin and axis).
+        point : str
+            The joint on the curve.
+
+        Returns
+        -------
+        numpy.ndarray
+            Complex tangents, one per crank angle.
+        """
+        turn = np.exp(1j * link.angle(motion).theta)
+        local = (as_complex(motion.points[point].p) - as_complex(motion.points[link.origin].p)) / turn
+        return self._curve(self.parameter(local))[1] * turn
+
+    def _valid(self, x):
+        ok = np.all(np.isfinite(x), axis=-1)
+        if not self.curve.periodic:
+            ok &= (x[..., 1] >= self.curve.t0) & (x[..., 1] <= self.curve.t1)
+        return ok
+
+
+
 @dataclass(frozen=True)
-class CurvedSlot(_Closure, Checked):
+class CurvedSlot(_OnCurve, Checked):
     """The known joint ``pin`` runs in a curved slot of a link that turns about the known joint ``pivot`` or
     slides on ``guide`` (give one): a higher pair, one link, W = 3 - 2 - 1 = 0.
 
@@ -459,173 +628,32 @@ class CurvedSlot(_Closure, Checked):
 
     def __post_init__(self):
         super().__post_init__()
-        if (self.pivot is None) == (self.guide is None):
-            raise StructureError("a curved slot's link turns about a pivot or slides on a guide: give one of "
-                                 f"pivot= and guide=, got pivot={self.pivot!r}, guide={self.guide!r}")
+        self._one_support("a curved slot's link")
         reach = float(np.abs(as_complex(self.curve.points(np.array([self.start])))[0]))
         if self.pivot is not None and reach == 0.0:
             raise DimensionError(f"the slot passes through the pivot at start = {self.start:g}: give a start "
                                  "where the pin is off the pivot")
-        span = self.curve.t1 - self.curve.t0
         object.__setattr__(self, "_reach", reach)
-        object.__setattr__(self, "_table", [])
-        object.__setattr__(self, "periods", (2 * np.pi if self.guide is None else None,
-                                             span if self.curve.periodic else None))
 
     def needs(self):
         return (self.pin, self.pivot) if self.guide is None else (self.pin, self.guide.through)
 
-    def guides(self):
-        """The guides this element slides on: the sliding link's guide (none for a turning link).
-
-        Returns
-        -------
-        tuple of Guide
-            The guides.
-        """
-        return () if self.guide is None else (self.guide,)
-
-    def makes(self):
-        return (self.joint,)
-
     def link_names(self):
         return (self.link or f"slotted {self.joint}",)
 
-    def sliding(self):
-        return {} if self.guide is None else {self.link_names()[0]: self.guide}
+    def _curve_link(self):
+        return self.link_names()[0]
 
     def structure(self, carrier, links):
         (name,) = self.link_names()
-        if self.guide is None:
-            link = Link(name, self.pivot, (self.pivot, self.joint), self._reach, joints=(self.pivot, self.joint))
-            support = Pair("revolute", self.pivot, carrier(self.pivot), name, self.pivot)
-        else:
-            on = self.guide.link(carrier)
-            link = Link(name, self.joint, _guide_axis(self.guide, on, links))
-            support = Pair("prismatic", f"{name} on {on}", on, name, self.joint, self.guide.angle)
+        link, support = self._supported(carrier, links, self._reach)
 
         def normal(motion):
-            tangent = self.tangent(motion, link)
+            tangent = self.tangent(motion, link, self.pin)
             return np.stack([-tangent.imag, tangent.real], axis=-1) / np.abs(tangent)[:, None]
 
         return ((link,), (Pair("higher", f"{self.pin} in {name}", name, carrier(self.pin), self.pin, normal=normal),
                           support))
-
-    def drawing(self, motion, structure):
-        """The slot: its curve carried by the link over the motion.
-
-        Parameters
-        ----------
-        motion : Motion
-            The motion drawn.
-        structure : Structure
-            The linkage's structure.
-
-        Returns
-        -------
-        tuple of Part
-            One "slot" part, the curve in the fixed frame at each frame.
-        """
-        link = structure.link(self.link_names()[0])
-        turn = np.atleast_1d(np.exp(1j * link.angle(motion).theta))
-        origin = np.broadcast_to(as_complex(motion.points[link.origin].p), turn.shape)   # a pivot is one number
-        curve = as_complex(self.curve.points(np.linspace(self.curve.t0, self.curve.t1, 200)))
-
-        def at(i):
-            z = origin[i] + turn[i] * curve
-            return np.stack([z.real, z.imag], axis=-1)
-
-        return (Part("slot", at),)
-
-    # -- the slot ---------------------------------------------------------------------------------------------
-    def _following(self, on):
-        """While the grid is followed, the slot is its cubic Hermite interpolant on 4097 points (c within about
-        1e-11 of the slot's scale; one call of the slot's functions instead of thousands, each of which may solve
-        a mechanism's motion for a slot read from one); the crank angles asked are solved on the slot itself."""
-        if not on:
-            self._table[:] = []
-            return
-        t = np.linspace(self.curve.t0, self.curve.t1, _TABLE)
-        c = self.curve.evaluate(t)
-        self._table[:] = [t, as_complex(c.p), as_complex(c.d)]
-
-    def _hermite(self, t):
-        """c, c_t (and NaN for c_tt, which the grid does not use) of the interpolant at t."""
-        grid, c, ct = self._table
-        span = grid[-1] - grid[0]
-        if self.curve.periodic:
-            t = grid[0] + np.mod(t - grid[0], span)
-        step = span / (len(grid) - 1)
-        k = np.clip(np.floor((t - grid[0]) / step).astype(int), 0, len(grid) - 2)
-        s = (t - grid[k]) / step
-        a, b, da, db = c[k], c[k + 1], step * ct[k], step * ct[k + 1]
-        value = (2 * s**3 - 3 * s**2 + 1) * a + (s**3 - 2 * s**2 + s) * da + (3 * s**2 - 2 * s**3) * b + \
-            (s**3 - s**2) * db
-        slope = ((6 * s**2 - 6 * s) * a + (3 * s**2 - 4 * s + 1) * da + (6 * s - 6 * s**2) * b
-                 + (3 * s**2 - 2 * s) * db) / step
-        return [value, slope, np.full(t.shape, np.nan + 0j)]
-
-    def _curve(self, t):
-        """c, c_t, c_tt (complex) at the finite rows of t (NaN elsewhere)."""
-        out = [np.full(t.shape, np.nan + 0j) for _ in range(3)]
-        finite = np.isfinite(t)
-        if finite.any():
-            values = self._hermite(t[finite]) if self._table else \
-                (as_complex(v) for v in self.curve.evaluate(t[finite]))
-            for k, v in enumerate(values):
-                out[k][finite] = v
-        return out
-
-    def parameter(self, local) -> np.ndarray:
-        """The slot parameter t of points on the slot given in the link's frame.
-
-        Parameters
-        ----------
-        local : array of complex
-            Points on the slot, x + iy in the link's frame.
-
-        Returns
-        -------
-        numpy.ndarray
-            t of each (the nearest of 2049 samples, refined by Newton's method on (c(t) - point)·c_t(t) = 0).
-
-        Examples
-        --------
-        >>> import mechlab as ml
-        >>> g = CurvedSlot("A", ml.CircleSlot((3.0, 0.0), 3.0), "K", pivot="B", start=1.0)
-        >>> round(float(g.parameter(np.array([3.0 + 3.0j]))[0]), 12)
-        1.570796326795
-        """
-        c0, c1 = self.curve.t0, self.curve.t1
-        grid = np.linspace(c0, c1, _SAMPLES)
-        pts = as_complex(self.curve.points(grid))
-        t = grid[np.argmin(np.abs(pts[None, :] - local[:, None]), axis=1)]
-        for _ in range(8):
-            c, ct, ctt = self._curve(t)
-            g, dg = _re_conj(c - local, ct), _abs2(ct) + _re_conj(c - local, ctt)
-            t = t - g / dg
-            if not self.curve.periodic:
-                t = np.clip(t, c0, c1)
-        return t
-
-    def tangent(self, motion, link: Link) -> np.ndarray:
-        """The slot's tangent c_t at the pin, in the fixed frame, over a motion.
-
-        Parameters
-        ----------
-        motion : Motion
-            A motion of the linkage.
-        link : Link
-            The slotted link (its origin and axis).
-
-        Returns
-        -------
-        numpy.ndarray
-            Complex tangents, one per crank angle.
-        """
-        turn = np.exp(1j * link.angle(motion).theta)
-        local = (as_complex(motion.points[self.pin].p) - as_complex(motion.points[link.origin].p)) / turn
-        return self._curve(self.parameter(local))[1] * turn
 
     # -- the closure origin + Rot(θ)·c(t) = pin ---------------------------------------------------------------
     def _known(self, state):
@@ -643,12 +671,6 @@ class CurvedSlot(_Closure, Checked):
             return np.stack([np.angle(A - O) - np.angle(c), np.full(1, self.start)], axis=-1)
         u = np.exp(1j * th)
         return np.stack([_re_conj(u, A - O) - _re_conj(u, u * c), np.full(1, self.start)], axis=-1)
-
-    def _valid(self, x):
-        ok = np.all(np.isfinite(x), axis=-1)
-        if not self.curve.periodic:
-            ok &= (x[..., 1] >= self.curve.t0) & (x[..., 1] <= self.curve.t1)
-        return ok
 
     def _frame(self, x, known):
         """The link's origin and orientation e = exp(iθ), with the slot's c, c_t, c_tt at t."""
@@ -723,3 +745,177 @@ class CurvedSlot(_Closure, Checked):
         else:
             cos = np.abs(_im_conj(tangent, np.exp(1j * known[2][0]))) / np.abs(tangent)
         return np.arcsin(np.clip(cos, 0.0, 1.0))
+
+
+@dataclass(frozen=True)
+class CamFollower(_OnCurve, Checked):
+    """A follower whose point ``joint`` (a roller's centre) rides on the curve ``curve`` fixed on the known link
+    ``on`` (a cam's pitch curve): the follower turns about the known joint ``pivot`` on an arm of length ``arm``, or
+    slides on ``guide`` with ``joint`` on the guide's line. A higher pair, one link, W = 3 - 2 - 1 = 0.
+
+    The unknowns, the arm's angle ψ (or the displacement s along the guide) and the curve parameter u of the contact,
+    solve origin_on + Rot(θ_on)·c(u) = joint, by Newton's method continued over φ from the contact at ``start`` on the
+    curve at the crank angle ``at``.
+
+    Parameters
+    ----------
+    curve : SlotCurve
+        The curve in the frame of the link ``on`` (origin at its origin joint, x along its axis).
+    on : str
+        The known link carrying the curve (the cam).
+    joint : str
+        The new joint on the curve: the follower's roller centre.
+    pivot : str, optional
+        The known joint the follower's arm turns about.
+    arm : float, optional
+        |pivot joint|, with ``pivot`` (positive length).
+    guide : Guide, optional
+        The straight guide the follower slides on; ``joint`` moves on its line.
+    start : float, optional
+        The curve parameter near which the contact lies at φ = ``at``.
+    at : float, optional
+        The crank angle of ``start`` (radians).
+    link : str, optional
+        The follower's name (default "follower").
+
+    Raises
+    ------
+    StructureError
+        With neither or both of ``pivot`` and ``guide``.
+    DimensionError
+        For a curve that is not a slot curve, or an arm that is not a positive length with a pivot.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> CamFollower(ml.CircleSlot((0.5, 0.0), 2.0), "cam", "C", guide=ml.Guide("F", np.pi / 2)).link_names()
+    ('follower',)
+    """
+
+    curve: SlotSpec
+    on: Name
+    joint: Name
+    pivot: Annotated[str | None, Spec("text", optional=True)] = None
+    arm: Annotated[float, length(zero=True)] = 0.0
+    guide: Annotated[Any, mechanism(Guide, optional=True)] = None
+    start: Angle = 0.0
+    at: Angle = 0.0
+    link: Annotated[str | None, Spec("text", optional=True)] = None
+
+    kind: ClassVar[str] = "cam"
+
+    def __post_init__(self):
+        super().__post_init__()
+        self._one_support("a cam follower")
+        if self.pivot is not None and not self.arm > 0:
+            raise DimensionError(f"arm must be a positive length with a pivot, got {self.arm!r}")
+
+    def needs(self):
+        return (self.pivot,) if self.guide is None else (self.guide.through,)
+
+    def uses(self):
+        """The links this element needs defined before it: the one carrying the curve.
+
+        Returns
+        -------
+        tuple of str
+            ``(on,)``.
+        """
+        return (self.on,)
+
+    def link_names(self):
+        return (self.link or "follower",)
+
+    def _curve_link(self):
+        return self.on
+
+    def structure(self, carrier, links):
+        (name,) = self.link_names()
+        link, support = self._supported(carrier, links, self.arm)
+        cam = links[self.on]
+
+        def normal(motion):
+            tangent = self.tangent(motion, cam, self.joint)
+            return np.stack([-tangent.imag, tangent.real], axis=-1) / np.abs(tangent)[:, None]
+
+        return ((link,), (Pair("higher", f"{self.joint} on {self.on}", self.on, name, self.joint, normal=normal),
+                          support))
+
+    # -- the closure origin_on + Rot(θ_on)·c(u) = joint -------------------------------------------------------
+    def _known(self, state):
+        cam = tuple(_broadcast(v, state.n) for v in state.z(state.origins[self.on]))
+        turn = tuple(_broadcast(v, state.n) for v in state.angles[self.on])
+        if self.guide is None:
+            zero = np.zeros(state.n)
+            return cam, turn, tuple(_broadcast(v, state.n) for v in state.z(self.pivot)), (zero, zero, zero)
+        Q, th = self.guide.line(state, state.carrier)
+        return cam, turn, tuple(_broadcast(v, state.n) for v in Q), tuple(_broadcast(v, state.n) for v in th)
+
+    def _contact(self, x, known):
+        """The contact on the curve (its point, e·c_u, e·c_uu with e = exp(iθ_on)) and the follower's point C with
+        dC/dx₁ (i(C - pivot) or the guide's direction)."""
+        (O, _, _), (th, _, _), (B, _, _), (tg, _, _) = known
+        e = np.exp(1j * th)
+        c, cu, cuu = self._curve(x[..., 1])
+        if self.guide is None:
+            C = B + self.arm * np.exp(1j * x[..., 0])
+            return O + e * c, e * cu, e * cuu, C, 1j * (C - B)
+        u = np.exp(1j * tg)
+        return O + e * c, e * cu, e * cuu, B + x[..., 0] * u, u
+
+    def _initial(self, known):
+        (O, _, _), (th, _, _), (B, _, _), (tg, _, _) = known
+        K = O + np.exp(1j * th) * as_complex(self.curve.points(np.array([self.start])))
+        first = np.angle(K - B) if self.guide is None else _re_conj(np.exp(1j * tg), K - B)
+        return np.stack([first, np.full(1, self.start)], axis=-1)
+
+    def _system(self, x, known):
+        K, Ku, _, C, Cx = self._contact(x, known)
+        F = K - C
+        return np.stack([F.real, F.imag], axis=-1), _complex_system(-Cx, Ku)
+
+    def _first(self, x, known):
+        (O, dO, _), (_, w, _), (B, dB, _), (_, wg, _) = known
+        K, _, _, C, _ = self._contact(x, known)
+        b = dB - dO - 1j * w * (K - O) + (0 if self.guide is None else 1j * wg * (C - B))
+        return np.stack([b.real, b.imag], axis=-1)
+
+    def _second(self, x, dx, known):
+        (O, _, ddO), (_, w, dw), (B, _, ddB), (_, wg, dwg) = known
+        K, Ku, Kuu, C, Cx = self._contact(x, known)
+        d1, du = dx[..., 0], dx[..., 1]
+        # the follower's point: -ψ′²(C - B) on an arm; along a guide turning at wg, Coriolis and the guide's turn
+        own = -(d1**2) * (C - B) if self.guide is None else 2j * wg * Cx * d1 + (1j * dwg - wg**2) * (C - B)
+        b = ddB - ddO - (1j * dw - w**2) * (K - O) - 2j * w * Ku * du - Kuu * du**2 + own
+        return np.stack([b.real, b.imag], axis=-1)
+
+    def _write(self, state, x, dx, ddx, known):
+        (_, _, _), (_, _, _), (B, dB, ddB), (tg, wg, dwg) = known
+        (name,) = self.link_names()
+        _, _, _, C, Cx = self._contact(x, known)
+        if self.guide is None:
+            r = C - B
+            state.points[self.joint] = state.path(C, dB + 1j * dx[:, 0] * r, ddB + (1j * ddx[:, 0] - dx[:, 0] ** 2) * r)
+            state.link(name, self.pivot, AnglePath(x[:, 0], dx[:, 0], ddx[:, 0]))
+            return
+        s, ds, dds = x[:, 0], dx[:, 0], ddx[:, 0]
+        state.points[self.joint] = state.path(C, dB + (ds + 1j * wg * s) * Cx,
+                                              ddB + (dds + 2j * wg * ds + (1j * dwg - wg**2) * s) * Cx)
+        state.link(name, self.joint, AnglePath(tg, wg, dwg))
+
+    def transmission(self, state):
+        """μ = 90° - |α|, α the pressure angle between the contact's normal and the direction the follower's
+        point moves (the arm's normal, or the guide).
+
+        Parameters
+        ----------
+        state : State
+            The placed linkage.
+
+        Returns
+        -------
+        numpy.ndarray
+            μ (radians) at every crank angle.
+        """
+        _, Ku, _, _, Cx = self._contact(state.solved[id(self)], self._known(state))
+        return np.arccos(np.clip(np.abs(_re_conj(Ku, Cx)) / (np.abs(Ku) * np.abs(Cx)), 0.0, 1.0))

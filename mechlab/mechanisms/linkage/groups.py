@@ -237,6 +237,16 @@ class Group:
         """
         return ()
 
+    def uses(self) -> tuple[str, ...]:
+        """The links this element needs defined before it, beyond those its joints are on.
+
+        Returns
+        -------
+        tuple of str
+            Link names (none by default).
+        """
+        return ()
+
     def drawing(self, motion, structure) -> tuple:
         """What this element adds to the kinematic diagram beyond its links' bars and blocks.
 
