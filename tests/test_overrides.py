@@ -166,7 +166,10 @@ BUILT = {ml.FourBar: fourbar, ml.SliderCrank: slider_crank, ml.SlottedLink: slot
 NOT_BUILT = {
     "Linkage": "it is the structure-derived motion itself",
     "LinkageFamily": "its motion is its built Linkage's (no closed form of its own)",
-    "EllipticTrammel": "no crank on a frame pivot (the input slides): the builder starts from a crank",
+    "EllipticTrammel": "its structure is the rod between two sliders (W = 1, no crank on a frame pivot). Driven by "
+                       "Cardan's crank O-C, one slider is an RRP dyad from C, which jams at φ = ±90° (the rod normal "
+                       "to the guide) where the second, redundant slider carries the rod through: rebuilt on each "
+                       "half-turn between (test_trammel_equals_a_crank_and_an_rrp_dyad_on_each_half_turn)",
     "PlanarGeneva": "an intermittent drive: its structure changes over the turn (the pin enters and leaves the "
                     "slots; a lock holds the wheel between), and a linkage is one chain of groups for every φ. "
                     "The engaged phase is rebuilt as an RPR dyad (test_geneva_engaged_phase_is_an_rpr_dyad)",
@@ -500,3 +503,23 @@ def test_roller_cam_equals_its_follower_group(m):
     phi = well_conditioned(m, m.turn(1441) + 0.01)
     compare(m, built, phi, mu=False)
     assert_close(np.sin(built.motion(phi).transmission), np.sin(m.motion(phi).transmission), "sin μ")
+
+
+@pytest.mark.parametrize("rod, beta", [(2.0, np.pi / 2), (1.5, 60 * DEG), (3.0, 110 * DEG)])
+def test_trammel_equals_a_crank_and_an_rrp_dyad_on_each_half_turn(rod, beta):
+    """Cardan's crank O-C (C the rod's point on its moving centrode, |CA| = |CB| = r) and the slider A on the x axis
+    (an RRP dyad from C; B a point of the rod CA): on each half-turn between the dyad's dead points the trammel with
+    one assembly sign, +1 on one and -1 on the other; B on its guide."""
+    m = ml.EllipticTrammel(rod, beta)
+    r = m.crank
+    for lo, sign in ((-np.pi / 2, 1), (np.pi / 2, -1)):
+        mo = m.motion(lo + 0.01)
+        C, A, B = (complex(*mo.points[k].p) for k in "CAB")
+        at = B - C
+        at *= np.exp(-1j * np.angle(A - C))   # B in the frame of the rod C→A
+        built = ml.Linkage({"O": (0, 0)}, ml.Crank("O", "C", r)).rrp("C", "A", r, "O", sign, links=("rod", "slider A")
+                                                                      ).point("B", "rod", (at.real, at.imag))
+        # conditioned for both: the dyad's rod C-A is not the trammel's A-B (the same line only for β = 90°), nor
+        # then its transmission angle, which is left out
+        phi = well_conditioned(built, well_conditioned(m, lo + np.linspace(0.0, np.pi, 723)[1:-1]))
+        compare(m, built, phi, mu=beta == np.pi / 2)
