@@ -668,9 +668,10 @@ class Linkage(Mechanism):
         state = State(phi, self._fixed, strict, lambda group, at: self._place(at, False, group), self._grids,
                       carrier)
         with np.errstate(invalid="ignore", divide="ignore"):   # rows that do not close hold NaN until refused
-            for g in self._elements:
+            for k, g in enumerate(self._elements):
                 if g is upto:
                     break
+                state.element = k
                 g.place(state, carrier)
         return state
 

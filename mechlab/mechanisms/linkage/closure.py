@@ -108,7 +108,7 @@ class _Closure(Group):
 
     def _grid(self, state):
         """(φ's, x's, turns, periodic) of the solution followed over the crank angle; cached per linkage."""
-        key = id(self)
+        key = state.element   # this group's place in its linkage (an id could be reused once the linkage is copied)
         if key in state.grids:
             return state.grids[key]
         self._following(True)
@@ -482,11 +482,12 @@ class _OnCurve(_Closure):
         c = self.curve.evaluate(t)
         self._table[:] = [t, as_complex(c.p), as_complex(c.d)]
 
-    def _hermite(self, t):
-        """c, c_t (and NaN for c_tt, which the grid does not use) of the interpolant at t."""
-        grid, c, ct = self._table
+    @staticmethod
+    def _hermite(table, t, periodic):
+        """c, c_t (and NaN for c_tt, which the grid does not use) of the interpolant ``table`` at t."""
+        grid, c, ct = table
         span = grid[-1] - grid[0]
-        if self.curve.periodic:
+        if periodic:
             t = grid[0] + np.mod(t - grid[0], span)
         step = span / (len(grid) - 1)
         k = np.clip(np.floor((t - grid[0]) / step).astype(int), 0, len(grid) - 2)
@@ -503,7 +504,8 @@ class _OnCurve(_Closure):
         out = [np.full(t.shape, np.nan + 0j) for _ in range(3)]
         finite = np.isfinite(t)
         if finite.any():
-            values = self._hermite(t[finite]) if self._table else \
+            table = list(self._table)   # read once: another thread may end its own following meanwhile
+            values = self._hermite(table, t[finite], self.curve.periodic) if table else \
                 (as_complex(v) for v in self.curve.evaluate(t[finite]))
             for k, v in enumerate(values):
                 out[k][finite] = v

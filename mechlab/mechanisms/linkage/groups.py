@@ -52,6 +52,7 @@ class State:
         self.phi, self.n, self.strict, self.fixed, self.carrier = phi, len(phi), strict, fixed, carrier
         self.before, self.grids = before, {} if grids is None else grids
         self.solved: dict[int, np.ndarray] = {}   # a group's unknowns where it solved them (its transmission)
+        self.element = 0   # the index of the element being placed
         self.points: dict[str, PointPath] = {k: fixed_point(xy, len(phi)) for k, xy in fixed.items()}
         zero = np.zeros(len(phi))
         self.angles: dict[str, AnglePath] = {FRAME: AnglePath(zero, zero, zero)}
