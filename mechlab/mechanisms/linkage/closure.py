@@ -3,7 +3,8 @@ Newton's method continued over the crank angle from an assembly chosen at the st
 
 :class:`Tetrad` is the class-IV group of the second order (two ternary links joined by two binary links, a
 four-sided contour; Artobolevsky, 1965); :class:`CurvedSlot` is a pin in a curved slot of a link that turns
-about a pivot or slides on a guide (a higher pair). Both are solved the same way (:class:`_Closure`): once per
+about a pivot or slides on a guide, :class:`CamFollower` a follower's point riding on a curve fixed on a moving
+link (a cam), both higher pairs. All are solved the same way (:class:`_Closure`): once per
 linkage, the closure is followed over a grid of 720 crank angles per turn from ``start`` at the crank angle
 ``at`` (a predictor from the analogs, then Newton); at any crank angles the grid's interpolated solution starts a
 vectorised Newton iteration to rounding; the analogs come from the closure differentiated once and twice, two
@@ -46,10 +47,9 @@ def _rows(*rows):
     return np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
 
 
-def _complex_system(j1, j2, b=None):
-    """The real 2×2 system of the complex equation j1·x1 + j2·x2 = b (its real and imaginary parts)."""
-    J = _rows((j1.real, j2.real), (j1.imag, j2.imag))
-    return J if b is None else (J, np.stack([b.real, b.imag], axis=-1))
+def _complex_system(j1, j2):
+    """The real 2×2 matrix of the complex equation j1·x1 + j2·x2 = b (its real and imaginary parts)."""
+    return _rows((j1.real, j2.real), (j1.imag, j2.imag))
 
 
 def _take(known, rows):
@@ -182,7 +182,7 @@ class _Closure(Group):
     def _failure(self, state) -> str:
         grid = self._grid(state)
         if grid is None:
-            return f"it cannot be assembled near start = {tuple(self.start)} at φ = {np.degrees(self.at):.2f}°"
+            return f"it cannot be assembled near start = {self.start} at φ = {np.degrees(self.at):.2f}°"
         if grid[3]:
             return "it cannot follow the crank there"
         return (f"followed from its assembly at φ = {np.degrees(self.at):.2f}°, it reaches only φ ∈ "
