@@ -91,6 +91,22 @@ def snapshots():
                                           (0.3, 1.0)))
 
 
+@functools.cache
+def coupler():
+    """A crank-rocker with a coupler point P whose curve has a nearly circular arc and a nearly straight run."""
+    return ml.coupler_fourbar(1.0, 3.0, 3.0, 4.0, point=(1.5, 1.0))
+
+
+@functools.cache
+def coupler_arc():
+    return ml.coupler_arcs(coupler(), dwell=1.2, n=240, count=1)[0]
+
+
+@functools.cache
+def coupler_run():
+    return ml.coupler_runs(coupler(), dwell=1.2, n=240, count=1)[0]
+
+
 def wavy():
     return ml.ParametricSlot(lambda t: np.stack([1.0 + 0 * t, t], -1), lambda t: np.stack([0 * t, 1 + 0 * t], -1),
                              lambda t: np.zeros((len(t), 2)), -0.8, 0.8)
@@ -291,6 +307,18 @@ CASES = {
     "design.Comparison.ranked": lambda: (D.candidates(specs()[0], ["external Geneva"]).ranked, ("size",), {}),
     "design.Comparison.to_csv": lambda: (D.candidates(specs()[0], ["external Geneva"]).to_csv,
                                          (scratch() / "table.csv",), {}),
+    # dwells from coupler curves: the fits and the six-bars on them
+    "coupler_fourbar": lambda: (ml.coupler_fourbar, (1.0, 3.0, 3.0, 4.0), {"point": (1.5, 1.0), "assembly": 1}),
+    "coupler_arcs": lambda: (ml.coupler_arcs, (coupler(), "P"), {"dwell": 1.2, "n": 240, "count": 2,
+                                                                 "max_ripple": 1e-3, "max_radius": None}),
+    "coupler_runs": lambda: (ml.coupler_runs, (coupler(), "P"), {"dwell": 1.2, "n": 240, "count": 2,
+                                                                 "max_ripple": 1e-3}),
+    "fit_arc": lambda: (ml.fit_arc, (coupler(), "P", coupler_arc().crank_interval), {"n": 240}),
+    "fit_run": lambda: (ml.fit_run, (coupler(), "P", coupler_run().crank_interval), {"n": 240}),
+    "arc_dwell_sixbar": lambda: (ml.arc_dwell_sixbar, (coupler(), "P", coupler_arc()), {"output_pivot": None}),
+    "run_dwell_sixbar": lambda: (ml.run_dwell_sixbar, (coupler(), "P", coupler_run()), {"pivot": None}),
+    "check_dwell": lambda: (ml.check_dwell, (ml.arc_dwell_sixbar(coupler(), "P", coupler_arc()),
+                                            coupler_arc().crank_interval), {"n": 240}),
 }
 
 # the slow ones get fewer examples
@@ -301,7 +329,9 @@ BUDGET = {"whole_turn_guiding": 3, "existence_region": 3, "design_outcomes": 3, 
           "dwell_limit": 4, "mchv3_full_turn_best": 6, "mchv3_best_table": 4, "mchv3_pivot_table": 6,
           "compare_transitions": 4, "mchv2_stroke": 6, "mchv1": 8, "mchv2": 8,
           "slider_invariants": 6, "slider_report": 6, "compare": 6, "intermittency": 8, "SixBarIV": 8,
-          "LambdaSlottedSixBar": 8, "mchv3_full_turn": 8, "Kinetostatics.forces": 8}
+          "LambdaSlottedSixBar": 8, "mchv3_full_turn": 8, "Kinetostatics.forces": 8,
+          "coupler_arcs": 12, "coupler_runs": 12, "fit_arc": 12, "fit_run": 12, "arc_dwell_sixbar": 10,
+          "run_dwell_sixbar": 10, "check_dwell": 10}
 
 
 def finite(value, depth=0) -> bool:
@@ -441,7 +471,8 @@ RESULTS = {"DesignOutcomes", "Mechanism", "Grashof", "Motion", "AngularMotion", 
            "Table", "Quantity", "TransmissionExtremes", "forces.Reaction", "forces.ForceResult", "forces.Drive",
            "motion_laws.Invariants", "motion_laws.PrintedInvariants", "motion_laws.LawRow",
            "design.Comparison", "design.Candidate", "design.Refusal",
-           "design.SpecificationReport", "design.LimitVerdict", "design.Criteria", "design.Design"}
+           "design.SpecificationReport", "design.LimitVerdict", "design.Criteria", "design.Design",
+           "ArcFit", "RunFit", "DwellCheck"}
 def exported_callables() -> dict[str, object]:
     """Every callable that ``mechlab.__all__`` exports, and those of the modules it exports (``mechlab.forces``,
     ``mechlab.design``, …) as "module.name": functions and classes, not exceptions, constants or modules."""

@@ -183,8 +183,10 @@ class DwellCheck:
 # --------------------------------------------------------------------------------------------------------------
 # The four-bar and its sampled curve
 # --------------------------------------------------------------------------------------------------------------
-def coupler_fourbar(crank: float, coupler: float, rocker: float, frame: float, point=(0.0, 0.0),
-                    assembly: Sign = 1) -> Linkage:
+@validated
+def coupler_fourbar(crank: Annotated[float, length()], coupler: Annotated[float, length()],
+                    rocker: Annotated[float, length()], frame: Annotated[float, length()],
+                    point: Annotated[tuple, Spec("point")] = (0.0, 0.0), assembly: Sign = 1) -> Linkage:
     """The four-bar O(0, 0)-A-B-E(frame, 0) with the coupler point P, built with the structure builder.
 
     Parameters
