@@ -86,7 +86,7 @@ LINK = re.compile(r"!?\[([^\]]*)\]\([^)]*\)")
 HTML = re.compile(r"<!--.*?-->|<[^>\n]+>", re.S)
 TIME = re.compile(r"(## Time\s+About )(\d+)( minutes)")
 # a row of the path's table: chapter, "you learn to", time, exercises (added by --write), needs
-INTRO_ROW = re.compile(r"^(\| \[\d+ · [^\]]+\]\(notebooks/(\w+)\.ipynb\) \|[^|\n]*\| )(\d+) min \|"
+INTRO_ROW = re.compile(r"^(\| \[\d+[a-z]? · [^\]]+\]\(notebooks/(\w+)\.ipynb\) \|[^|\n]*\| )(\d+) min \|"
                        r"(?: (?:\d+ min|—) \|)?( [^|\n]* \|)$", re.M)
 INTRO_TOTAL = re.compile(r"^In all \d+ minutes[^\n]*$", re.M)
 ASSIGNMENT = re.compile(r"assignments/release/(\w+)/\1\.ipynb")
@@ -228,7 +228,8 @@ def read(path: Path):
 
 def chapters(root: Path = ROOT) -> list[Path]:
     """The course's lessons: notebooks/NN_*.ipynb (the companion's folder is not among them)."""
-    return sorted((root / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+    # "08a_…": a chapter inserted after 8 without renumbering the later ones; "08_" sorts before "08a_"
+    return sorted(p for p in (root / "notebooks").glob("[0-9][0-9]*_*.ipynb") if re.match(r"\d\d[a-z]?_", p.name))
 
 
 def companions(root: Path = ROOT) -> list[Path]:
