@@ -537,3 +537,6 @@ def fourbar_explorer(crank=1.0, coupler=3.0, rocker=3.0, ground=4.0, *, max_leng
                 "rocker": ctl("rocker BE", rocker), "ground": ctl("ground OE", ground)}
     return MechanismExplorer(FourBar, controls, assembly=True, trace=trace, title="Four-bar O-A-B-E", live=live,
                              question=question)
+
+
+from .drag import DragEditor, as_linkage, linkage_code  # noqa: E402, F401  (re-exported; built on the Explorer above)
