@@ -38,6 +38,7 @@ from .analysis.textbook import (
 )
 from .errors import (
     AssemblyError,
+    CouplerFitError,
     DimensionError,
     InfeasibleDesignError,
     MechanismError,
@@ -91,6 +92,19 @@ from .mechanisms.lambda_mechanism import classic_lambda
 from .mechanisms.linkage import PRP, RPR, RRP, RRR, Crank, Guide, Linkage, Point
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
 from .synthesis.cam_design import CamProgramme
+from .synthesis.coupler_dwell import (
+    ArcFit,
+    DwellCheck,
+    RunFit,
+    arc_dwell_sixbar,
+    check_dwell,
+    coupler_arcs,
+    coupler_fourbar,
+    coupler_runs,
+    fit_arc,
+    fit_run,
+    run_dwell_sixbar,
+)
 from .synthesis.dwell_slot import (
     TRANSITIONS,
     DwellError,
@@ -176,6 +190,9 @@ __all__ = [  # noqa: RUF022  grouped by topic, each group under its comment, not
     "slot_residual_first_order", "mchv5", "dwell_extent", "rise_law",
     "time_ratio_far_angle",
     "slider_report", "slider_invariants", "SynthesisError", "InfeasibleDesignError", "NoDesignError",
+    # dwell from coupler curves
+    "coupler_fourbar", "ArcFit", "RunFit", "coupler_arcs", "coupler_runs", "fit_arc", "fit_run", "arc_dwell_sixbar",
+    "run_dwell_sixbar", "check_dwell", "DwellCheck", "CouplerFitError",
     # Geneva
     "spherical_table", "table1_comparison", "table1_review", "TABLE1_PRINTED", "compare", "intermittency",
     "detect_impacts",

@@ -451,3 +451,18 @@ def renamed(module: str, **old):
         raise AttributeError(f"module {module!r} has no attribute {name!r}")
     return __getattr__
 
+
+
+# -- raised by synthesis.coupler_dwell
+class CouplerFitError(SynthesisError):
+    """No arc or straight run of a coupler curve can be fitted as asked: an unknown joint, a crank interval that
+    is reversed or too short for the samples, longer than the crank reaches, or a straight path asked for a circle.
+
+    Examples
+    --------
+    >>> import mechlab as ml
+    >>> ml.coupler_arcs(ml.coupler_fourbar(1, 3, 3, 4), "Q")
+    Traceback (most recent call last):
+    ...
+    mechlab.errors.CouplerFitError: the linkage has no joint 'Q'; its joints: O, E, A, B, P
+    """
