@@ -200,14 +200,21 @@ def estimate(nb) -> LessonTime:
 @functools.cache
 def widget_functions(root: Path = ROOT) -> frozenset[str]:
     """The explorers a chapter can call: public functions of mechlab/widgets/ named ``*_explorer`` or
-    taking a ``question`` (read from the source, without importing the widgets)."""
+    taking a ``question``, and the editors (public classes named ``*Editor`` whose ``__init__`` takes one: a
+    chapter builds an editor itself, while the ``*Explorer`` classes are built by their functions), read from
+    the source, without importing the widgets."""
     names = set()
     for module in (root / "mechlab" / "widgets").glob("*.py"):
         for node in ast.parse(module.read_text()).body:
-            if isinstance(node, ast.FunctionDef) and not node.name.startswith("_"):
-                args = [a.arg for a in node.args.args + node.args.kwonlyargs]
-                if node.name.endswith("_explorer") or "question" in args:
-                    names.add(node.name)
+            if isinstance(node, ast.ClassDef) and node.name.endswith("Editor"):
+                fn = next((f for f in node.body if isinstance(f, ast.FunctionDef) and f.name == "__init__"), None)
+            elif isinstance(node, ast.FunctionDef):
+                fn = node
+            else:
+                continue
+            args = [a.arg for a in fn.args.args + fn.args.kwonlyargs] if fn else []
+            if not node.name.startswith("_") and (node.name.endswith("_explorer") or "question" in args):
+                names.add(node.name)
     return frozenset(names)
 
 
