@@ -91,6 +91,7 @@ from .mechanisms.geneva import OffsetError, SlotCountError
 from .mechanisms.lambda_mechanism import classic_lambda
 from .mechanisms.linkage import PRP, RPR, RRP, RRR, Crank, Guide, Linkage, Point
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
+from .synthesis.atlas import Atlas, AtlasDesign, build_atlas, load_atlas
 from .synthesis.cam_design import CamProgramme
 from .synthesis.coupler_dwell import (
     ArcFit,
@@ -193,6 +194,8 @@ __all__ = [  # noqa: RUF022  grouped by topic, each group under its comment, not
     # dwell from coupler curves
     "coupler_fourbar", "ArcFit", "RunFit", "coupler_arcs", "coupler_runs", "fit_arc", "fit_run", "arc_dwell_sixbar",
     "run_dwell_sixbar", "check_dwell", "DwellCheck", "CouplerFitError",
+    # the coupler-curve atlas
+    "Atlas", "AtlasDesign", "build_atlas", "load_atlas",
     # Geneva
     "spherical_table", "table1_comparison", "table1_review", "TABLE1_PRINTED", "compare", "intermittency",
     "detect_impacts",

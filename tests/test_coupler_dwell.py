@@ -92,6 +92,20 @@ def test_a_planted_equiripple_circle_is_recovered():
     assert abs(radius - R) < 1e-10 and abs(ripple - eps) < 1e-10
 
 
+@pytest.mark.parametrize("interval", [(0.3, 1.9), (2.0, 3.6), (5.3, 6.9), (np.pi - 1.0, np.pi + 1.0)])
+def test_the_exchange_and_the_linear_programmes_reach_the_same_circle(monkeypatch, interval):
+    """Remez's exchange (the fast route) and the sequential linear programmes (the robust one) are two ways to
+    one optimum: forcing the second gives the first's circle."""
+    lk = ml.coupler_fourbar(1.0, 3.0, 3.0, 3.5, (2.0, 1.2))
+    z = lk.motion(np.linspace(*interval, 181)).points["P"].p
+    fast = cd._minimax_circle(z)
+    monkeypatch.setattr(cd, "_exchange", lambda *args, **kwargs: None)
+    robust = cd._minimax_circle(z)
+    assert abs(fast[2] - robust[2]) <= 1e-6 * fast[2]
+    assert np.hypot(*(fast[0] - robust[0])) <= 1e-4 * fast[1]
+    assert brute_circle(z, fast[0] - 0.05, fast[0] + 0.05)[1] >= fast[2] * (1 - 1e-9)
+
+
 def test_exact_circles_of_a_fourbar_are_recovered():
     lk = ml.coupler_fourbar(1.0, 3.0, 3.5, 4.0, (1.0, 0.5))
     pin = ml.fit_arc(lk, "A", (0.2, 3.0))                    # the crank pin: a circle about O
@@ -291,6 +305,10 @@ def test_bad_input_raises_named_errors():
     lk = ml.coupler_fourbar(1.0, 3.0, 3.0, 3.5, (2.0, 1.2))
     with pytest.raises(CouplerFitError, match="no joint 'Q'"):
         ml.coupler_arcs(lk, "Q")
+    with pytest.raises(CouplerFitError, match="does not move"):   # a frame point: nothing to fit
+        ml.coupler_runs(lk, "E", dwell=1.0)
+    with pytest.raises(CouplerFitError, match="does not move"):
+        ml.fit_arc(lk, "O", (0.0, 1.0))
     with pytest.raises(DimensionError):
         ml.coupler_arcs(lk, dwell=-1.0)
     with pytest.raises(DimensionError):

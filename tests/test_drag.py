@@ -7,10 +7,12 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
+from examples import designs
 from matplotlib.backend_bases import KeyEvent, MouseEvent
 
 import mechlab as ml
 from mechlab.errors import AssemblyError, StructureError
+from mechlab.mechanisms.lambda_mechanism import GuidedLambda
 from mechlab.widgets import DragEditor, as_linkage, linkage_code
 from mechlab.widgets.drag import handles, moved
 
@@ -46,11 +48,20 @@ def test_families_map_onto_linkages_that_move_as_they_do():
     for fam in (ml.SliderCrank(1.0, 3.0, 0.4), ml.SliderCrank(0.7, 2.0, -0.3, -1)):
         lk = as_linkage(fam)
         assert np.allclose(lk.motion(PHI).points["B"].p, fam.motion(PHI).points["B"].p, atol=1e-12, rtol=0)
+    for fam in (ml.LambdaMechanism(0.4, 0.8, np.pi), ml.LambdaMechanism(0.3, 0.9, np.radians(150), -1)):
+        lk, phi = as_linkage(fam), fam.turn(361)
+        assert np.allclose(lk.motion(phi).psi, fam.motion(phi).psi, atol=1e-12, rtol=0)
+        assert np.allclose(lk.motion(phi).points["D"].p, fam.motion(phi).points["D"].p, atol=1e-12, rtol=0)
+    for fam in [d for d in designs() if type(d) in (ml.LambdaRockerSixBar, ml.LambdaSliderSixBar)]:
+        lk, phi = as_linkage(fam), fam.turn(361) + 1e-3
+        assert np.allclose(lk.motion(phi).points["E"].p, fam.motion(phi).points["E"].p, atol=1e-12, rtol=0)
     slot = ml.SlottedLink(0.5, 1.0)
     assert np.allclose(as_linkage(slot).motion(PHI).psi, slot.motion(PHI).psi, atol=1e-12, rtol=0)
     assert as_linkage(LINKAGES["fourbar"]) is LINKAGES["fourbar"]
     with pytest.raises(StructureError, match="ExternalGeneva"):
         as_linkage(ml.ExternalGeneva.example())
+    guided = GuidedLambda.example()   # a lambda with its guiding band drawn: the lambda's motion
+    assert np.allclose(as_linkage(guided).motion(PHI).points["D"].p, guided.motion(PHI).points["D"].p, atol=1e-12)
 
 
 @pytest.mark.parametrize("name", LINKAGES)
@@ -264,3 +275,29 @@ def test_the_static_figure_shows_the_mechanism_and_its_coupler_curve(capsys):
     with pytest.raises(StructureError, match="not a joint"):
         DragEditor(coupler_fourbar(), point="Z", live=False)
     plt.close("all")
+
+
+def test_a_rocking_crank_draws_the_curve_over_its_range_and_refuses_an_unreachable_angle():
+    fb = ml.FourBar(2.5, 3.0, 3.0, 4.0)   # the crank rocks (not Grashof for it)
+    (lo, hi), = as_linkage(fb).crank_ranges()
+    ed = DragEditor(fb, phi=0.5 * (lo + hi), live=True)
+    want = as_linkage(fb).motion(np.linspace(lo + 1e-4 * (hi - lo), hi - 1e-4 * (hi - lo), ed.n)).points["B"].p
+    assert np.allclose(ed.curve_line.get_xydata(), want) and "where the crank rocks" in ed.status.value
+    with pytest.raises(AssemblyError, match="cannot close"):
+        DragEditor(fb, phi=hi + 0.3, live=True)
+    plt.close("all")
+
+
+def test_a_callback_moves_an_overlay_with_the_linkage(editor):
+    """As the chapter overlays its arc fit: the overlay follows every change and is drawn with the linkage."""
+    ed = editor
+    (mark,) = ed.ax.plot([], [], "s", color="#2a7f62", ms=12)
+    ed.add_overlay(mark)
+    ed.on_change(lambda lk: mark.set_data(*([v] for v in lk.motion(ed.phi).points["B"].p)))
+    ed.fig.canvas.draw()
+    assert mark in ed._moving_artists() and mark.get_animated()
+    before = np.asarray(ed.fig.canvas.buffer_rgba()).copy()
+    ed.move("B", ed._positions()["B"] + [0.3, 0.3])
+    assert np.allclose(mark.get_xydata()[0], ed._positions()["B"])
+    green = (np.abs(np.asarray(ed.fig.canvas.buffer_rgba())[..., :3].astype(int) - [0x2A, 0x7F, 0x62]).sum(-1) < 30)
+    assert green.sum() > 50 and (green != (np.abs(before[..., :3].astype(int) - [0x2A, 0x7F, 0x62]).sum(-1) < 30)).any()

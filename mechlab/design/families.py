@@ -15,7 +15,9 @@ from scipy.optimize import brentq
 from ..errors import MechanismError, Unsuitable
 from ..mechanisms import ExternalGeneva, InternalGeneva, SphericalGeneva
 from ..mechanisms.cam import OscillatingRollerCam, TranslatingRollerCam
+from ..synthesis.atlas import load_atlas
 from ..synthesis.cam_design import CamProgramme
+from ..synthesis.coupler_dwell import arc_dwell_sixbar
 from ..synthesis.dwell_slot import DwellLaw, best_placement, curved_slot_dwell
 from ..synthesis.lambda_guiding import circle_guiding, straight_guiding
 from ..synthesis.lambda_sixbars import mchv1, mchv3_half_turn
@@ -242,6 +244,98 @@ def mchv5_slotted(spec: Specification) -> Design:
     return _stroke_design(spec, six, "lambda six-bar, type 5 (translating-slot dwell)")
 
 
+def _rocker_swing(path: np.ndarray, rod: float, pivot: np.ndarray, rocker: float, sign: int) -> np.ndarray:
+    """The output rocker's angle over the sampled coupler-point ``path`` (n, 2) for an RRR dyad (rod from the
+    point, rocker from ``pivot``); NaN where the dyad does not close."""
+    d = pivot - path
+    dist = np.hypot(*d.T)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        along = (rod * rod - rocker * rocker + dist * dist) / (2 * dist)
+        h = np.sqrt(rod * rod - along * along)
+        joint = path + (along[:, None] * d + sign * h[:, None] * np.column_stack([-d[:, 1], d[:, 0]])) / dist[:, None]
+    return np.unwrap(np.arctan2(joint[:, 1] - pivot[1], joint[:, 0] - pivot[0]))
+
+
+def _rocker_for_swing(path, rod: float, centre, direction, sign: int, amplitude: float) -> float | None:
+    """The rocker length b (its pivot at ``centre`` + b·``direction``) whose swing over ``path`` is ``amplitude``:
+    the first sign change on a geometric grid of b from 0.3 to 30 rods, refined by Brent's method; None if none."""
+
+    def excess(b):
+        psi = _rocker_swing(path, rod, centre + b * direction, b, sign)
+        return float(np.ptp(psi)) - amplitude if np.all(np.isfinite(psi)) else np.nan
+
+    grid = rod * np.geomspace(0.3, 30.0, 25)
+    values = np.array([excess(b) for b in grid])
+    bracket = np.flatnonzero(np.isfinite(values[:-1]) & np.isfinite(values[1:])
+                             & (np.sign(values[:-1]) != np.sign(values[1:])))
+    if not bracket.size:
+        return None
+    return brentq(excess, grid[bracket[0]], grid[bracket[0] + 1], xtol=1e-12 * rod)
+
+
+ATLAS_TRIED = 12  # atlas designs tried per specification, best ripple first
+
+
+def atlas_sixbar(spec: Specification) -> Design:
+    """A six-bar from the coupler-curve atlas (:mod:`mechlab.synthesis.atlas`): a crank-rocker whose coupler point
+    runs along a near-circular arc over the dwell, and a rod of the arc's radius to an output rocker whose joint
+    rests at the arc's centre. Of the atlas's designs for the dwell (best ripple first), the first whose output
+    rocker, pivoted square to the rod at mid-dwell at the distance that gives the asked swing, stands still
+    within the specification's precision and transmits within its pressure angle."""
+    _needs(spec, "swing", what="rocks its output (a rocker dwells while the coupler point runs along an arc)")
+    atlas = load_atlas()
+    widest = max(atlas.settings["arc_widths"])
+    if spec.dwell_angle > widest:
+        raise Unsuitable(f"the atlas holds arcs of up to {np.degrees(widest):.0f}° of crank; "
+                         f"{np.degrees(spec.dwell_angle):.1f}° was asked")
+    mu_min = np.pi / 2 - spec.max_pressure_angle
+    found = atlas.query(spec.dwell_angle, spec.dwell_precision, mu_min, spec.max_size / spec.crank_radius,
+                        count=ATLAS_TRIED)
+    if not found:
+        raise Unsuitable(f"no design of the atlas has a {np.degrees(spec.dwell_angle):.1f}° arc with a ripple under "
+                         f"{spec.dwell_precision:g} of its radius, transmission ≥ {np.degrees(mu_min):.1f}° and size "
+                         f"≤ {spec.max_size:g} mm")
+    phi = np.linspace(0.0, 2 * np.pi, SAMPLES, endpoint=False)
+    reasons = []
+    for design in found:
+        arc = design.arc
+        path = design.path(phi)  # in closed form: the structure builder builds the chosen design only
+        inside = ((phi - arc.crank_interval[0]) % (2 * np.pi)) <= arc.dwell
+        centre = np.asarray(arc.centre)
+        mid = design.path(0.5 * sum(arc.crank_interval))[0]
+        to_mid = np.arctan2(*(mid - centre)[::-1])
+        for side in (1, -1):
+            direction = np.array([np.cos(to_mid + side * np.pi / 2), np.sin(to_mid + side * np.pi / 2)])
+            # D at the centre at mid-dwell: on the left (+1) or right of the line P → F, as arc_dwell_sixbar builds
+            to_centre = centre - mid
+            sign = 1 if direction[0] * to_centre[1] - direction[1] * to_centre[0] > 0 else -1
+
+            b = _rocker_for_swing(path, arc.radius, centre, direction, sign, spec.amplitude)
+            if b is None:
+                continue
+            pivot = centre + b * direction
+            psi = _rocker_swing(path, arc.radius, pivot, b, sign)
+            still = float(np.ptp(psi[inside])) / spec.amplitude
+            if still > spec.dwell_precision:
+                reasons.append(f"design {design.index}: output moves {still:.2g} of its swing in the dwell")
+                continue
+            try:
+                six = arc_dwell_sixbar(design.linkage(), "P", arc, output_pivot=tuple(pivot))
+            except MechanismError as err:
+                reasons.append(f"design {design.index}: {err}")
+                continue
+            pa = float(np.max(six.motion(phi).pressure_angle))
+            if pa > spec.max_pressure_angle:
+                reasons.append(f"design {design.index}: pressure angle {np.degrees(pa):.1f}°")
+                continue
+            return Design("atlas six-bar (coupler-curve arc)", six, spec.crank_radius, counted(six),
+                          note=f"atlas design {design.index}: crank 1, coupler {design.coupler:g}, rocker "
+                               f"{design.rocker:g}, frame {design.frame:g}, point {design.point}; arc R = "
+                               f"{arc.radius:.4g}, ripple {arc.ripple / arc.radius:.2g} R")
+    raise Unsuitable(f"none of the atlas's {len(found)} best designs for this dwell meets it: "
+                     + "; ".join(reasons[:3]) + ("…" if len(reasons) > 3 else ""))
+
+
 CAM_LAW = "cycloidal (sine)"  # continuous acceleration: no impact
 ROLLER_FRACTIONS = (0.3, 0.2, 0.1)  # roller radius / base radius, tried until the profile is not undercut
 
@@ -308,4 +402,5 @@ FAMILIES: dict[str, Callable[[Specification], Design]] = {
     "lambda six-bar, type 2 (slider dwell)": mchv2_slider,
     "lambda six-bar, type 5 (translating-slot dwell)": mchv5_slotted,
     "disc cam": disc_cam,
+    "atlas six-bar (coupler-curve arc)": atlas_sixbar,
 }

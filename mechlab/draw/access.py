@@ -27,13 +27,14 @@ from ..errors import MechanismError
 ALT_ATTRIBUTE = "mechlab_alt"   # where set_alt keeps a figure's description
 OKABE_ITO = {"blue": "#0072B2", "vermillion": "#D55E00", "bluish green": "#009E73", "reddish purple": "#CC79A7",
              "orange": "#E69F00", "sky blue": "#56B4E9", "black": "#000000", "yellow": "#F0E442"}
-# a dark brown and a dark grey for a ninth and tenth category (ΔE ≥ 18 from every Okabe-Ito colour, protan or
-# deutan); yellow last: on white it has too little contrast for a thin line, no family of chapter 12 gets it
-CATEGORY_COLOURS = (*(c for name, c in OKABE_ITO.items() if name != "yellow"), "#5A3C1E", "#5F5F5F",
+# a dark brown, a dark grey and Tol's indigo for a ninth, tenth and eleventh category (ΔE ≥ 18 from every
+# Okabe-Ito colour, protan or deutan; the indigo ≥ 24 from all); yellow last: on white it has too little contrast
+# for a thin line, no family of chapter 12 gets it
+CATEGORY_COLOURS = (*(c for name, c in OKABE_ITO.items() if name != "yellow"), "#5A3C1E", "#5F5F5F", "#332288",
                     OKABE_ITO["yellow"])
-CATEGORY_MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*", "h")
+CATEGORY_MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*", "h", "p")
 CATEGORY_DASHES = ("-", "--", "-.", ":", (0, (5, 1, 1, 1)), (0, (1, 1)), (0, (8, 2)), (0, (3, 1, 1, 1, 1, 1)),
-                   (0, (6, 1, 2, 1)))
+                   (0, (6, 1, 2, 1)), (0, (2, 1, 2, 3)))
 
 # Machado, Oliveira & Fernandes (2009), severity 1, applied to linear RGB
 CVD_MATRICES = {
