@@ -133,6 +133,19 @@ def test_snapping_rounds_coordinates_lengths_and_xi_eta_to_the_step():
     assert new.driver.radius == 0.5
 
 
+def test_snapping_shows_the_grid_of_its_step():
+    ed = DragEditor(coupler_fourbar(), grid=0.5, live=True)
+    ticks = ed.ax.xaxis.get_minorticklocs()
+    # the minor lines at the half steps (the whole numbers are the major ticks' lines)
+    assert ed.snap.value and len(ticks) > 4 and np.allclose(ticks / 0.5, np.round(ticks / 0.5))
+    ed.snap.value = False
+    assert len(ed.ax.xaxis.get_minorticklocs()) == 0
+    ed.snap.value, ed.step.value = True, 1e-4   # too fine to draw: no lines, snapping still on
+    assert len(ed.ax.xaxis.get_minorticklocs()) == 0
+    assert ed.move("E", (4.2, 0.0001)) and dict(ed.linkage.frame)["E"] == (4.2, 0.0001)
+    plt.close("all")
+
+
 def test_an_unassemblable_position_raises_the_named_error():
     with pytest.raises(AssemblyError, match="cannot close"):
         moved(coupler_fourbar(), "E", (9.0, 0.0), 0.0)   # |AE| = 8 > 3 + 3
@@ -301,3 +314,48 @@ def test_a_callback_moves_an_overlay_with_the_linkage(editor):
     assert np.allclose(mark.get_xydata()[0], ed._positions()["B"])
     green = (np.abs(np.asarray(ed.fig.canvas.buffer_rgba())[..., :3].astype(int) - [0x2A, 0x7F, 0x62]).sum(-1) < 30)
     assert green.sum() > 50 and (green != (np.abs(before[..., :3].astype(int) - [0x2A, 0x7F, 0x62]).sum(-1) < 30)).any()
+
+
+def test_the_chapter_route_a_live_arc_fit_over_the_coupler_curve_and_its_six_bar():
+    """The coupler four-bar of the dwell chapter (ml.coupler_fourbar): a callback refits the best arc of P's curve
+    after each drop and moves a circle over it; the dwell six-bar built from the arc opens in the editor too."""
+    from matplotlib.patches import Circle
+
+    ed = DragEditor(ml.coupler_fourbar(1.0, 3.0, 3.0, 4.0, (1.5, 1.0)), live=True)
+    ring = Circle((0, 0), 1.0, fill=False, ec="#2a7f62", lw=1.5)
+    ed.ax.add_patch(ring)
+    ed.add_overlay(ring)
+    fits = []
+
+    def refit(lk):
+        fits.append(ml.coupler_arcs(lk, "P", count=1)[0])
+        ring.center, ring.radius = fits[-1].centre, fits[-1].radius
+
+    ed.on_change(refit)
+    assert ed.move("P", ed._positions()["P"] + [0.2, -0.4])
+    assert ring.center == fits[-1].centre and ring.radius == fits[-1].radius
+    assert fits[-1] == ml.coupler_arcs(ed.linkage, "P", count=1)[0]   # the fit of the dropped linkage
+    six = DragEditor(ml.arc_dwell_sixbar(ed.linkage, "P", fits[-1]), point="P", live=True)
+    dyad = [j for j in handles(six.linkage) if j not in handles(ed.linkage)]
+    assert dyad and all(six.move(j, six._positions()[j] + [0.05, 0.05]) for j in dyad if j not in ("O", "E"))
+    plt.close("all")
+
+
+def test_a_drag_step_sends_the_frame_and_little_else(editor, monkeypatch):
+    """The hidden toolbar's pointer readout is off (ipympl syncs it as a widget message per mouse move) and the status
+    line is rewritten at most every STATUS_EVERY seconds while a handle is held (here: not within the drag); the
+    drop writes it."""
+    from mechlab.widgets import drag
+
+    monkeypatch.setattr(drag, "STATUS_EVERY", 60.0)
+    ed = editor
+    canvas = ed.fig.canvas
+    written = []
+    ed.status.observe(lambda c: written.append(c.new), names="value")
+    B = ed._positions()["B"]
+    mouse(ed, "button_press_event", B)
+    for k in range(1, 6):
+        mouse(ed, "motion_notify_event", B + [0.02 * k, 0.0])
+    assert canvas._message == "" and len(written) == 1 and written[0].startswith("coupler = 3, rocker = 3")  # B chosen
+    mouse(ed, "button_release_event", B + [0.1, 0.0])
+    assert f"coupler = {ed.linkage.groups[0].first_length:.4g}" in written[-1] == ed.status.value

@@ -103,12 +103,13 @@ def _where(points):
 # the kernel's part of each input: a browser event's message handled (the editor's handler, the blit and the
 # PNG diff sent), timed around the canvas manager's handle_json
 import time as _time
-_kernel_ms, _handle = [], editor.fig.canvas.manager.handle_json
+_kernel_ms, _kernel_cpu_ms, _handle = [], [], editor.fig.canvas.manager.handle_json
 def _timed_handle(content):
-    start = _time.perf_counter()
+    start, start_cpu = _time.perf_counter(), _time.process_time()
     _handle(content)
     if content.get("type") in ("motion_notify", "key_press"):
         _kernel_ms.append(1e3 * (_time.perf_counter() - start))
+        _kernel_cpu_ms.append(1e3 * (_time.process_time() - start_cpu))
 editor.fig.canvas.manager.handle_json = _timed_handle
 """
 
@@ -151,6 +152,16 @@ def test_drag_editor_in_jupyterlab(browser, lab):  # noqa: F811  (the fixture im
         latency[kind].append(page.evaluate(_LAST_LATENCY_JS))
         page.wait_for_timeout(60)   # this frame drawn before the next input, as a hand moves
 
+    def settle():
+        """Wait until the kernel is idle and no frame has been drawn for 0.8 s (a full redraw after a release
+        asks the browser for a draw and takes one more round trip)."""
+        page.wait_for_function(_READY_JS, timeout=60_000)
+        for _ in range(40):
+            n = page.evaluate("() => window.__dragDraws.length")
+            page.wait_for_timeout(800)
+            if page.evaluate("() => window.__dragDraws.length") == n:
+                return
+
     def drag(points_data, start_data):
         """Press on ``start_data``, move through ``points_data`` (each a timed step), release at the last."""
         (sx, sy), *path = where(start_data, *points_data)
@@ -186,11 +197,12 @@ def test_drag_editor_in_jupyterlab(browser, lab):  # noqa: F811  (the fixture im
         assert "RRR group (coupler, rocker) cannot close" in status, status
         assert "cannot close" in kernel("print(editor.message)")
         page.screenshot(path=str(SHOTS / "2_error.png"))
+        assert canvas_origin() == (ox, oy), "the canvas moved when the error was shown"
         back = where((4.3, 0.2))[0]
         timed(lambda: page.mouse.move(ox + back[0], oy + back[1]), "mouse")
         page.wait_for_function(f"() => !({_STATUS_JS})().includes('cannot close')", timeout=20_000)
         page.mouse.up()
-        page.wait_for_function(_READY_JS, timeout=60_000)
+        settle()
         message, x, y = json.loads(kernel("print(_json.dumps([editor.message, *dict(editor.linkage.frame)['E']]))"))
         assert message == "" and abs(x - 4.3) < 0.05 and abs(y - 0.2) < 0.05, (message, x, y)   # a pixel or two
         page.screenshot(path=str(SHOTS / "3_recovered.png"))
@@ -199,14 +211,14 @@ def test_drag_editor_in_jupyterlab(browser, lab):  # noqa: F811  (the fixture im
         B = json.loads(kernel("print(_json.dumps(editor._positions()['B'].tolist()))"))
         before = page.evaluate(_PIXELS_JS)
         drag([(B[0] + 0.05 * k, B[1] + 0.04 * k) for k in range(1, 13)], B)
+        page.screenshot(path=str(SHOTS / "4_while_dragging.png"))
         page.mouse.up()
-        page.wait_for_function(_READY_JS, timeout=60_000)
-        page.wait_for_timeout(500)
+        settle()
         lengths = json.loads(kernel("g = editor.linkage.groups[0]; print(_json.dumps([g.first_length, "
                                     "g.second_length]))"))
         assert abs(lengths[0] - 3.0) > 0.1 and abs(lengths[1] - 3.0) > 0.1, lengths
         assert page.evaluate(_PIXELS_JS) != before, "the figure did not change when B was dragged"
-        page.screenshot(path=str(SHOTS / "4_dragged.png"))
+        page.screenshot(path=str(SHOTS / "5_dropped.png"))
 
         # 3. the keyboard: the canvas's arrow keys (B is the chosen joint), the arrow button, undo
         ox, oy = canvas_origin()
@@ -214,19 +226,23 @@ def test_drag_editor_in_jupyterlab(browser, lab):  # noqa: F811  (the fixture im
         state = kernel("print(editor.linkage.groups[0].first_length)")
         for _ in range(4):
             timed(lambda: page.keyboard.press("ArrowUp"), "keys")
-        page.wait_for_function(_READY_JS, timeout=60_000)
+        settle()
         moved = kernel("print(editor.linkage.groups[0].first_length)")
         assert moved != state, "the arrow keys on the canvas did not move B"
+        probe = "print(editor.linkage.groups[0].first_length, len(editor._undo))"
+        before_right = kernel(probe)
         right = editor.get_by_role("button", name="→ right")
         right.focus()
         timed(lambda: page.keyboard.press("Enter"), "keys")
-        page.wait_for_function(_READY_JS, timeout=60_000)
-        assert kernel("print(editor.linkage.groups[0].first_length)") != moved
+        settle()
+        after_right = kernel(probe)
+        assert after_right.split()[0] != moved.strip(), (moved, after_right)
         undo = editor.get_by_role("button", name="undo")
         undo.focus()
         page.keyboard.press("Enter")
-        page.wait_for_function(_READY_JS, timeout=60_000)
-        assert kernel("print(editor.linkage.groups[0].first_length)") == moved
+        settle()
+        after_undo = kernel(probe)
+        assert after_undo.split()[0] == moved.strip(), (before_right, after_right, after_undo)
         # Tab reaches the next control after undo: "copy as code"
         page.keyboard.press("Tab")
         assert page.evaluate("() => document.activeElement.textContent.trim()") == "copy as code"
@@ -235,7 +251,8 @@ def test_drag_editor_in_jupyterlab(browser, lab):  # noqa: F811  (the fixture im
         code_box.wait_for(state="visible", timeout=20_000)
         page.wait_for_function("() => document.querySelector(\"[data-dragtest='editor'] textarea\").value"
                                ".includes('ml.Linkage')", timeout=20_000)
-        page.screenshot(path=str(SHOTS / "5_code.png"))
+        settle()
+        page.screenshot(path=str(SHOTS / "6_code.png"))
 
         # 4. the copied cell rebuilds the same mechanism
         cell = code_box.input_value()
@@ -251,9 +268,10 @@ def test_drag_editor_in_jupyterlab(browser, lab):  # noqa: F811  (the fixture im
 
         every = latency["mouse"] + latency["keys"]
         assert all(x is not None for x in every), latency
-        in_kernel = json.loads(kernel("print(_json.dumps(_kernel_ms))"))
+        in_kernel, cpu = json.loads(kernel("print(_json.dumps([_kernel_ms, _kernel_cpu_ms]))"))
         summary = {"median_ms": round(statistics.median(every), 1),
                    "kernel_median_ms": round(statistics.median(in_kernel), 1),
+                   "kernel_cpu_median_ms": round(statistics.median(cpu), 1),
                    "mouse_median_ms": round(statistics.median(latency["mouse"]), 1),
                    "keys_median_ms": round(statistics.median(latency["keys"]), 1),
                    "samples_ms": {k: [round(x, 1) for x in v] for k, v in latency.items()}}
@@ -261,7 +279,8 @@ def test_drag_editor_in_jupyterlab(browser, lab):  # noqa: F811  (the fixture im
         print(f"\ndrag latency (input → frame drawn): median {summary['median_ms']} ms over {len(every)} inputs; "
               f"mouse {summary['mouse_median_ms']} ms ({len(latency['mouse'])} moves), keys "
               f"{summary['keys_median_ms']} ms ({len(latency['keys'])} presses); goal ≤ 50 ms; the kernel's part "
-              f"{summary['kernel_median_ms']} ms (median of {len(in_kernel)} events)")
+              f"{summary['kernel_median_ms']} ms, {summary['kernel_cpu_median_ms']} ms of CPU (medians of "
+              f"{len(in_kernel)} events)")
         assert summary["median_ms"] <= LIMIT_MS, summary
         assert not page_errors, page_errors
         assert not remote, remote

@@ -46,7 +46,7 @@ N_DEFAULT = 720          # crank-angle samples per turn: 0.5° apart
 MAX_RIPPLE = 1e-3        # the longest arc (run) search keeps ripple ≤ 0.1 % of its radius (length) by default
 MAX_RADIUS = 10.0        # arcs of radius above 10 × the curve's size are straight runs, not arcs
 MIN_POINTS = 5           # a window needs 5 samples: a circle has 3 parameters, a minimax fit 4 alternating touches
-MIN_TRANSMISSION = np.radians(5)   # a dyad nearer a dead point than this is refused: its branch may flip there
+MIN_TRANSMISSION = np.radians(15)  # a dyad nearer a dead point is refused: the dwell error outgrows ripple / (b sin μ)
 MAX_LP_STEPS = 30        # sequential linear programmes per exact circle fit (2-5 are typical)
 
 LinkageArg = Annotated[Linkage, mechanism(Linkage)]
@@ -411,7 +411,7 @@ def _newton4(z, j, sign, x, scale):
         except np.linalg.LinAlgError:
             return None
         x = x + dx
-        if np.max(np.abs(dx)) <= 1e-15 * scale:
+        if np.max(np.abs(dx)) <= 1e-12 * scale:   # quadratic: the next step would be ~1e-24
             break
     return x if np.all(np.isfinite(x)) else None
 
@@ -776,6 +776,20 @@ def _distinct(order, starts, lengths, n, periodic, limit):
     return kept
 
 
+def _screen_by_length(kind, curve, starts, lengths):
+    """``kind.screen`` of windows of many lengths, in groups of similar length (a group is padded to its
+    longest, so one long window does not pad every short one)."""
+    order = np.argsort(lengths, kind="stable")
+    size, ripple = np.empty(len(starts)), np.empty(len(starts))
+    first = 0
+    while first < len(order):
+        stop = int(np.searchsorted(lengths[order], 1.25 * lengths[order[first]] + 1, side="right"))
+        group = order[first:stop]
+        size[group], ripple[group] = kind.screen(curve, starts[group], lengths[group])
+        first = stop
+    return size, ripple
+
+
 def _accept(kind, fitted, bound, cap):
     size = kind.size(fitted)
     return np.isfinite(size) and size > 0 and kind.ripple(fitted) <= bound * size and (cap is None or size <= cap)
@@ -822,28 +836,25 @@ def _search(kind, linkage, point, dwell, n, count, bound, cap):
         return tuple(f for _, f in found[:count])
     # the longest window within the bound at every start: bisection on the length, all starts at once
     top = np.minimum(curve.longest(starts), N)
-    good = np.zeros(N, int)
-    bad = top + 1
-    for _ in range(int(np.ceil(np.log2(N))) + 1):
-        trial = np.where(good == 0, np.minimum(MIN_POINTS, top), (good + bad) // 2)
-        live = (bad - good > 1) & (trial >= MIN_POINTS) & (trial <= top)
+    good = np.full(N, MIN_POINTS - 1)   # the longest length known to pass (below MIN_POINTS: none yet)
+    bad = top + 1                       # the shortest known to fail
+    while True:
+        live = bad - good > 1
         if not live.any():
             break
-        size, ripple = kind.screen(curve, starts[live], trial[live])
+        trial = (good[live] + bad[live]) // 2
+        size, ripple = _screen_by_length(kind, curve, starts[live], trial)
         ok = (ripple <= bound * size) & np.isfinite(size) & (size > 0)
         if cap is not None:
             ok &= size <= cap
-        t = trial[live]
-        good[live] = np.where(ok, t, good[live])
-        bad[live] = np.where(ok, bad[live], t)
-        if (good == 0).all() and not live[good == 0].any():
-            break
-    order = [i for i in np.lexsort((starts, -good)) if good[i] >= MIN_POINTS]
+        good[live] = np.where(ok, trial, good[live])
+        bad[live] = np.where(ok, bad[live], trial)
+    order = np.lexsort((starts, -good))
+    order = order[good[order] >= MIN_POINTS]
     picks = _distinct(order, starts, good, N, curve.periodic, count + 2)   # spares: the exact lengths differ
     found = []
     for i in picks:
         s = int(starts[i])
-        best = None
 
         def exact(L, s=s):
             z = curve.window(s, L)
@@ -1035,12 +1046,13 @@ def arc_dwell_sixbar(linkage: LinkageArg, point: str, arc: Annotated[ArcFit, mec
     rocker dwells.
 
     The default pivot: D's rocker should meet the rod near square through the dwell and transmit well over
-    the rest of the cycle. Pivots F = Q + b·(cos θ, sin θ) are tried with θ at 60°, 90° and 120° on either
-    side of the direction from Q to the arc's middle (90°: square to the rod at mid-dwell, so the rod turns
-    ± extent/2 about square during the dwell) and b = 0.75 R, R, 1.5 R (so the dwell error is of the order of
-    ripple / R); the one whose dyad closes over the cycle with the largest least transmission angle is kept.
-    A dyad that passes within 5° of a dead point is refused (its branch could flip there): an arc of extent
-    near 180° or more turns the rod through as much during the dwell, so no rocker transmits throughout.
+    the rest of the cycle. Pivots F = Q + b·(cos θ, sin θ) are tried with θ from 30° to 150° in steps of 15° on
+    either side of the direction from Q to the arc's middle (90°: square to the rod at mid-dwell, so the rod
+    turns ± extent/2 about square during the dwell) and b = 0.5 R … 2 R (so the dwell error is of the order
+    of ripple / R); the one whose dyad closes over the cycle with the largest least transmission angle is kept.
+    A dyad that passes within 15° of a dead point is refused (there the rocker's dwell error outgrows
+    ripple / (b sin μ), and its branch could flip): an arc of extent near 180° or more turns the rod through as
+    much during the dwell, so no rocker transmits throughout.
 
     Parameters
     ----------
@@ -1062,7 +1074,7 @@ def arc_dwell_sixbar(linkage: LinkageArg, point: str, arc: Annotated[ArcFit, mec
     Raises
     ------
     InfeasibleDesignError
-        The dyad does not close over the four-bar's whole cycle, passes within 5° of a dead point, or the pivot
+        The dyad does not close over the four-bar's whole cycle, passes within 15° of a dead point, or the pivot
         sits at the arc's centre.
     CouplerFitError
         An unknown joint.
@@ -1093,8 +1105,8 @@ def arc_dwell_sixbar(linkage: LinkageArg, point: str, arc: Annotated[ArcFit, mec
     P_mid, Pc = Pc[0], Pc[1:]
     if output_pivot is None:
         to_mid = np.arctan2(*(P_mid - Q)[::-1])
-        th = to_mid + np.radians([60, 90, 120, -60, -90, -120])
-        cand = [(Q + k * R * np.array([np.cos(t), np.sin(t)]), k * R) for t in th for k in (0.75, 1.0, 1.5)]
+        th = to_mid + np.radians(np.concatenate([np.arange(30, 151, 15), -np.arange(30, 151, 15)]))
+        cand = [(Q + k * R * np.array([np.cos(t), np.sin(t)]), k * R) for t in th for k in (0.5, 0.75, 1.0, 1.5, 2.0)]
         F = max(cand, key=lambda fb: _dyad_quality(Pc, fb[0], R, fb[1]))[0]
     else:
         F = np.asarray(check_value("output_pivot", output_pivot, Spec("point")), dtype=float)

@@ -28,6 +28,7 @@ from dataclasses import replace
 
 import ipywidgets as W
 import numpy as np
+from matplotlib.ticker import MultipleLocator, NullLocator
 
 from ..analysis.centres import instant_centres
 from ..draw import LinkageDrawing
@@ -45,6 +46,7 @@ from ..mechanisms.slotted import SlottedLink
 from . import SIDE_COLUMN, SLIDER_COLUMN, Explorer, _fit
 
 PICK_PX = 12.0            # a press this close to a handle (figure pixels) grabs it
+STATUS_EVERY = 0.15       # s: while a handle is held the status line is rewritten at most this often
 CURVE_STYLE = dict(color="#9467bd", lw=1.6, zorder=1.5)
 HANDLE_STYLE = dict(ls="none", marker="o", ms=13, mfc="none", mec="#1f77b4", mew=1.6, zorder=7)
 CHOSEN_STYLE = dict(ls="none", marker="o", ms=19, mfc="none", mec="#e08214", mew=2.5, zorder=7)
@@ -436,9 +438,9 @@ class DragEditor(Explorer):
         self._overlays: list = []
         self._drag = None          # (joint, linkage, φ) at the press while a handle is held
         self._quiet = False        # an angle set by a drag: no second redraw
-        self.last_draw_ms = float("nan")
         self._far: list[str] = []
         self._why = ""
+        self._read_at = -math.inf   # when the status line was last written
         scale = lk.structure().scale
         default = float(10.0 ** math.floor(math.log10(scale / 20.0)))
         self.ax = self.fig.add_axes((0.06, 0.07, 0.92, 0.9))
@@ -473,21 +475,31 @@ class DragEditor(Explorer):
         self.undo_button.on_click(lambda _b: self.undo())
         self.copy_button.on_click(lambda _b: self._show_code())
         self.joint.observe(lambda _c: self._update_handles(redraw=True), names="value")
+        self.snap.observe(lambda _c: self._show_grid(redraw=True), names="value")
+        self.step.observe(lambda _c: self._show_grid(redraw=True), names="value")
         self.angle.observe(self._on_angle, names="value")
         canvas = self.fig.canvas
         manager = getattr(canvas, "manager", None)
         if manager is not None and getattr(manager, "key_press_handler_id", None) is not None:
             # matplotlib's own keys (s saves, q closes, g grids, arrows pan back and forth) are not the editor's
             canvas.mpl_disconnect(manager.key_press_handler_id)
+        toolbar = getattr(canvas, "toolbar", None)
+        for cid in ("_id_press", "_id_release", "_id_drag"):
+            # the hidden toolbar's pan and zoom, and its pointer readout (a widget message per mouse move)
+            if hasattr(toolbar, cid):
+                canvas.mpl_disconnect(getattr(toolbar, cid))
         for event, handler in (("button_press_event", self._on_press), ("motion_notify_event", self._on_motion),
                                ("button_release_event", self._on_release), ("key_press_event", self._on_key)):
             canvas.mpl_connect(event, handler)
+        # a status line of fixed height: a longer one (an error) must not move the canvas under the pointer
+        self.status.layout = W.Layout(height="5.5em", overflow_y="auto")
         pad = W.HBox([self.arrows["left"], self.arrows["up"], self.arrows["down"], self.arrows["right"]])
         self.widget = W.VBox([self.question,
                               W.HBox([W.VBox([self.joint, pad, W.HBox([self.step, self.snap])], **SLIDER_COLUMN),
                                       W.VBox([self.angle, W.HBox([self.undo_button, self.copy_button]),
                                               self.status], **SIDE_COLUMN)]),
                               self._canvas_widget, self.code_box])
+        self._show_grid(redraw=False)
         self._show(lk, self.phi, fit=True)
 
     # -- public ------------------------------------------------------------------------------------------------
@@ -603,7 +615,6 @@ class DragEditor(Explorer):
 
     def _show(self, linkage: Linkage, phi: float, fit: bool = False) -> bool:
         """Compute and draw ``linkage`` at φ; on a MechanismError show it and keep the last good state."""
-        start = time.perf_counter()
         try:
             phis, phi_in = _curve_angles(linkage, phi, self.n)
             motion = linkage.motion(np.append(phis, phi_in))
@@ -629,7 +640,9 @@ class DragEditor(Explorer):
                 text.set_visible(text is held)
         self._update_handles(redraw=False)
         self._animate_moving()
-        self.status.value = self._reading()
+        now = time.monotonic()
+        if self._drag is None or was_hidden or now - self._read_at >= STATUS_EVERY:   # a message fewer per step
+            self.status.value, self._read_at = self._reading(), now
         mu = np.degrees(motion.transmission[:-1])
         set_alt(self.fig, f"Kinematic diagram of the linkage {linkage.formula()} with joints "
                           f"{', '.join(motion.points)}, drawn at crank angle φ = {math.degrees(self.phi):.0f}°, "
@@ -643,7 +656,6 @@ class DragEditor(Explorer):
             self._redraw()
         else:
             self._blit_or_redraw()
-        self.last_draw_ms = 1e3 * (time.perf_counter() - start)
         return True
 
     def _fit_view(self, path) -> bool:
@@ -654,7 +666,22 @@ class DragEditor(Explorer):
         if not _fit(self.ax, (x0, x1, y0, y1), fill=True):
             return False
         self.ax.apply_aspect()   # the view final now, not at the next draw: the pointer's next event maps onto it
+        self._show_grid(redraw=False)   # as many grid lines as the new view holds
         return True
+
+    def _show_grid(self, redraw: bool) -> None:
+        """With snapping on, the grid's lines at every step (as minor gridlines, up to 100 across the view)."""
+        step = float(self.step.value)
+        span = max(np.ptp(self.ax.get_xlim()), np.ptp(self.ax.get_ylim()))
+        shown = bool(self.snap.value) and span / step <= 100
+        for axis in (self.ax.xaxis, self.ax.yaxis):
+            axis.set_minor_locator(MultipleLocator(step) if shown else NullLocator())
+        if shown:
+            self.ax.grid(True, which="minor", alpha=0.12)
+        else:
+            self.ax.grid(False, which="minor")
+        if redraw:
+            self._redraw()
 
     def _place_centres(self, centres) -> None:
         rows = [] if centres is None else sorted(centres.centres.items())
