@@ -89,7 +89,20 @@ from .mechanisms import (
 )
 from .mechanisms.geneva import OffsetError, SlotCountError
 from .mechanisms.lambda_mechanism import classic_lambda
-from .mechanisms.linkage import PRP, RPR, RRP, RRR, Crank, Guide, Linkage, Point
+from .mechanisms.linkage import (
+    PRP,
+    RPP,
+    RPR,
+    RRP,
+    RRR,
+    CamFollower,
+    Crank,
+    CurvedSlot,
+    Guide,
+    Linkage,
+    Point,
+    Tetrad,
+)
 from .motion import AngularMotion, Extremes, Law, LinearMotion, Motion, Quantity, Table
 from .synthesis.atlas import Atlas, AtlasDesign, build_atlas, load_atlas
 from .synthesis.cam_design import CamProgramme
@@ -162,7 +175,8 @@ __all__ = [  # noqa: RUF022  grouped by topic, each group under its comment, not
     "CurvedSlotLink", "TranslatingCurvedSlot", "CircleSlot", "ParametricSlot", "SampledSlot", "SixBarIV",
     "EllipticTrammel", "Antiparallelogram", "LambdaMechanism",
     "ExternalGeneva", "InternalGeneva", "SphericalGeneva",
-    "Linkage", "Crank", "RRR", "RRP", "RPR", "PRP", "Guide", "Point",
+    "Linkage", "Crank", "RRR", "RRP", "RPR", "PRP", "RPP", "Tetrad", "CurvedSlot", "CamFollower", "Guide",
+    "Point",
     "Motion", "AngularMotion", "LinearMotion", "Law", "Extremes", "Table", "Quantity",
     # textbook helpers
     "nearest_assembly", "transmission_extremes", "TransmissionExtremes", "zero_acceleration", "crank_ranges_degrees",

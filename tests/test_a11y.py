@@ -102,7 +102,21 @@ def test_a_figure_that_names_nothing_has_no_alt_text_and_one_that_does_is_compos
     plt.close(fig)
 
 
-def test_a_kernel_publishes_the_alt_text_with_the_image():
+def _png_shell(**env):
+    """A bare shell (a display formatter that renders a Figure as PNG, as the inline backend registers)."""
+    from types import SimpleNamespace
+
+    from IPython.core.formatters import DisplayFormatter
+    from IPython.core.pylabtools import print_figure
+
+    formatter = DisplayFormatter()
+    formatter.formatters["image/png"].for_type(matplotlib.figure.Figure, lambda fig: print_figure(fig, "png"))
+    return SimpleNamespace(display_formatter=formatter)
+
+
+def test_a_kernel_publishes_the_alt_text_with_the_image(monkeypatch):
+    import base64
+
     from IPython.core.interactiveshell import InteractiveShell
     from IPython.core.pylabtools import select_figure_formats
 
@@ -111,11 +125,40 @@ def test_a_kernel_publishes_the_alt_text_with_the_image():
     install_alt_text(ip)
     install_alt_text(ip)   # twice: still one wrapper
     fig, _ = plt.subplots(figsize=(2, 2))
-    data, metadata = ip.display_formatter.format(set_alt(fig, "A square."))
-    assert "image/png" in data and metadata["image/png"]["alt"] == "A square."
+    data, metadata = ip.display_formatter.format(set_alt(fig, 'A "square" <box>.'))
+    assert "image/png" in data and metadata["image/png"]["alt"] == 'A "square" <box>.'
+    # JupyterLab reads no alt metadata: the same picture in an <img> that carries it, ranked above image/png
+    png = data["image/png"] if isinstance(data["image/png"], str) else base64.b64encode(data["image/png"]).decode()
+    assert data["text/html"] == f'<img src="data:image/png;base64,{png}" alt="A &quot;square&quot; &lt;box&gt;.">'
+    data, _ = ip.display_formatter.format(fig, include={"image/png", "text/plain"})   # asked for: no html
+    assert "text/html" not in data
     data, metadata = ip.display_formatter.format(plt.subplots(figsize=(2, 2))[0])   # nothing to say: no alt
-    assert "image/png" in data and "alt" not in metadata.get("image/png", {})
+    assert "image/png" in data and "alt" not in metadata.get("image/png", {}) and "text/html" not in data
+    # the book's kernels (static pages) keep the picture once: the page's renderer reads the metadata
+    monkeypatch.setenv("MECHLAB_WIDGETS", "static")
+    book = _png_shell()
+    install_alt_text(book)
+    data, metadata = book.display_formatter.format(fig)
+    assert metadata["image/png"]["alt"] == 'A "square" <box>.' and "text/html" not in data
+    with pytest.raises(MechanismError, match="IPython shell"):
+        install_alt_text(object())
     plt.close("all")
+
+
+def test_a_live_canvas_carries_the_figure_description():
+    from mechlab.widgets import _ipympl_canvas
+    from mechlab.widgets.access import describe_live_figure
+
+    fig = matplotlib.figure.Figure()
+    canvas = _ipympl_canvas(fig)   # what an explorer makes in a live kernel
+    describe_live_figure(fig)
+    assert canvas.tooltip is None   # a figure that names nothing: no name
+    ax = fig.add_subplot()
+    ax.set(title="lift", xlabel="φ (deg)", ylabel="s (mm)")
+    ax.plot([0, 90], [0, 5])
+    fig.canvas.draw()   # a full draw renews it
+    assert canvas.tooltip == alt_text(fig) == "Figure: lift, s (mm) against φ (deg), s (mm) from 0 to 5."
+    assert canvas.description == "" and "description" in canvas.keys   # synced: the front end shows the tooltip
 
 
 def test_the_simulation_matches_machado_et_al():

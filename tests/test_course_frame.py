@@ -23,10 +23,11 @@ ROOT = Path(__file__).parent.parent
 sys.path.insert(0, str(ROOT / "tools"))
 import learning_path  # noqa: E402  (tools/learning_path.py draws the path's picture)
 
-CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+# "08a_…" is a chapter inserted after 8 without renumbering the later ones (their files, links and assignments)
+CHAPTERS = sorted(p for p in (ROOT / "notebooks").glob("[0-9][0-9]*_*.ipynb") if re.match(r"\d\d[a-z]?_", p.name))
 ASSIGNMENTS = ("getting_started", "equivalence", "base_mechanism", "symmetry", "instant_centres", "dwell_curved_slot",
                "chebyshev_synthesis", "chebyshev_sixbars", "geneva", "geneva_spherical", "forces", "cams",
-               "choosing")
+               "choosing", "coupler_dwells")
 FRAME_HEADINGS = ("## Learning objectives", "## Prerequisites", "## Time", "## The machine")
 SEED = re.compile(r"\bseeds?\b", re.I)
 FIGURE = re.compile(r"\bFigs?\.\s*(\d+(?:\.\d+)?)")
@@ -92,7 +93,8 @@ def test_a_chapter_links_only_to_companions_that_exist():
 def test_chapter_opens_with_its_frame(path):
     first, second = cells(path)[:2]
     text = source(first)
-    assert first["cell_type"] == "markdown" and re.match(r"# \d+ · \S", text), f"{path.name}: no '# n · title' first"
+    heading = re.match(r"# \d+[a-z]? · \S", text)
+    assert first["cell_type"] == "markdown" and heading, f"{path.name}: no '# n · title' first"
     places = [text.find(h + "\n") for h in FRAME_HEADINGS]
     assert all(p > 0 for p in places) and places == sorted(places), f"{path.name}: headings {FRAME_HEADINGS} in order"
     objectives = text[places[0]:places[1]]
@@ -178,35 +180,47 @@ def test_the_intro_gives_the_path_with_each_chapters_time():
     assert f"In all {sum(int(v) for v in rows.values())} minutes" in intro
 
 
-def chapter_numbers(listed: str) -> set[int]:
-    """The intro's "needs" column: "—", "0, 2" or "5, 6, 8–11"."""
+def chapter_numbers(listed: str) -> set[str]:
+    """The intro's "needs" column as chapter labels: "—", "0, 2", "5, 6, 8–11" or "6, 8a" (a range spans the
+    plain numbers)."""
     numbers = set()
-    for part in re.findall(r"\d+(?:–\d+)?", listed):
+    for part in re.findall(r"\d+[a-z]?(?:–\d+)?", listed):
         first, _, last = part.partition("–")
-        numbers |= set(range(int(first), int(last or first) + 1))
+        numbers |= {first} if not last else {str(n) for n in range(int(first), int(last) + 1)}
     return numbers
+
+
+def label(path: Path) -> str:
+    """The chapter's number as its heading writes it: 08a_x.ipynb → "8a"."""
+    return learning_path.label(path.stem.split("_", 1)[0])
 
 
 def test_every_prerequisite_comes_earlier_in_the_path():
     path = learning_path.chapters(ROOT)
     assert [c.stem for c in path] == [p.stem for p in CHAPTERS], "the path's order is not the files' order"
-    assert [c.number for c in path] == list(range(len(path))), "one number per chapter, from 0"
+    plain = [c.number for c in path if c.number.isdigit()]
+    assert plain == [str(n) for n in range(len(plain))], "one number per chapter, from 0"
+    # a lettered chapter (8a) follows its number's chapter (8) or the previous letter (8b after 8a)
+    assert all(c.number[:-1] == path[i - 1].number.rstrip("abcdefghijklmnopqrstuvwxyz") for i, c in enumerate(path)
+               if not c.number.isdigit()), [c.number for c in path]
+    place = {c.number: i for i, c in enumerate(path)}
     listed = {stem: chapter_numbers(needs) for *_, stem, _, needs in learning_path.ROW.findall(
         (ROOT / "book" / "intro.md").read_text())}
     for c in path:
-        assert c.stem.startswith(f"{c.number:02d}_"), f"{c.stem}: its heading and file name differ"
-        assert all(n < c.number for n in c.needs), f"{c.stem} needs chapters {sorted(c.needs)}: not all earlier"
+        assert learning_path.label(c.stem.split("_", 1)[0]) == c.number, f"{c.stem}: its heading and file name differ"
+        assert all(place[n] < place[c.number] for n in c.needs), f"{c.stem} needs {sorted(c.needs)}: not all earlier"
         assert listed[c.stem] == c.needs, f"{c.stem}: the intro lists {listed[c.stem]}, the chapter {set(c.needs)}"
     for path_file in CHAPTERS:  # the heading's number is the file's
-        assert source(cells(path_file)[0]).startswith(f"# {int(path_file.stem[:2])} · "), path_file.name
+        assert source(cells(path_file)[0]).startswith(f"# {label(path_file)} · "), path_file.name
 
 
 def test_prerequisites_are_read_from_links_before_looking_ahead(tmp_path):
     frame = ("# 3 · X\n\n## Learning objectives\n\n- a\n\n## Prerequisites\n\n[0 · A](00_a.ipynb) and "
              "[2 · B](02_b.ipynb#a-section). Looking ahead: [5 · C](05_c.ipynb).\n\n## Time\n\n[1 · D](01_d.ipynb)")
     (tmp_path / "03_x.ipynb").write_text(json.dumps({"cells": [{"cell_type": "markdown", "source": [frame]}]}))
-    assert learning_path.prerequisites(tmp_path / "03_x.ipynb") == {0, 2}
-    assert chapter_numbers("5, 6, 8–11") == {5, 6, 8, 9, 10, 11} and chapter_numbers("—") == set()
+    assert learning_path.prerequisites(tmp_path / "03_x.ipynb") == {"0", "2"}
+    assert chapter_numbers("5, 6, 8–11") == {"5", "6", "8", "9", "10", "11"} and chapter_numbers("—") == set()
+    assert chapter_numbers("6, 8a") == {"6", "8a"} and learning_path.label("08a") == "8a"
 
 
 def test_the_intro_shows_the_path_drawn_from_the_chapters():
@@ -478,12 +492,18 @@ def test_the_scan_would_see_a_typed_result():
 
 # -- widgets that ask -------------------------------------------------------------------------------------------
 def explorer_names() -> set[str]:
-    """The widget functions a notebook calls to show an explorer: every public one taking ``question``."""
+    """The widget functions a notebook calls to show an explorer: every public one taking ``question``; and the
+    editors, public classes named ``*Editor`` whose ``__init__`` takes it (a chapter builds an editor itself, an
+    ``*Explorer`` class through its function)."""
     names = set()
     for path in sorted((ROOT / "mechlab" / "widgets").glob("*.py")):
         for node in ast.parse(path.read_text()).body:
-            if (isinstance(node, ast.FunctionDef) and not node.name.startswith("_")
-                    and any(a.arg in ("question", "kwargs") for a in node.args.kwonlyargs + [node.args.kwarg]
+            if isinstance(node, ast.ClassDef) and node.name.endswith("Editor"):
+                fn = next((f for f in node.body if isinstance(f, ast.FunctionDef) and f.name == "__init__"), None)
+            else:
+                fn = node if isinstance(node, ast.FunctionDef) else None
+            if (fn is not None and not node.name.startswith("_")
+                    and any(a.arg in ("question", "kwargs") for a in fn.args.kwonlyargs + [fn.args.kwarg]
                             if a is not None)):
                 names.add(node.name)
     return names
@@ -499,7 +519,8 @@ def unasked_explorers(code: str, names: set[str]) -> list[str]:
 def test_every_explorer_is_known():
     names = explorer_names()
     assert {"fourbar_explorer", "cam_explorer", "dwell_explorer", "press_explorer", "choosing_explorer",
-            "fourbar_equivalence", "spherical_geneva_explorer"} <= names, names
+            "fourbar_equivalence", "spherical_geneva_explorer", "DragEditor"} <= names, names
+    assert "ChoosingExplorer" not in names   # built by choosing_explorer; chapter 12 draws its static picture
     assert unasked_explorers("w = fourbar_explorer(crank=1)\nml.widgets.cam_explorer(question='q?')", names) == [
         "fourbar_explorer"]
 
@@ -535,7 +556,7 @@ def test_the_glossary_symbols_are_used_in_the_chapters_it_lists():
     """The symbol table's chapters column follows the chapter numbers (it lagged a renumbering once)."""
     rows = re.findall(r"^\| \$(.+?)\$.*\| ([^|]+) \|$", (ROOT / "book" / "glossary.md").read_text(), re.M)
     assert len(rows) >= 15
-    texts = {int(p.name[:2]): "\n".join(source(c) for c in cells(p)) for p in CHAPTERS}
+    texts = {label(p): "\n".join(source(c) for c in cells(p)) for p in CHAPTERS}
     wrong = []
     for symbol, listed in rows:
         symbol = re.split(r",| =", symbol)[0].strip()

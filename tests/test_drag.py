@@ -7,10 +7,12 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
+from examples import designs
 from matplotlib.backend_bases import KeyEvent, MouseEvent
 
 import mechlab as ml
 from mechlab.errors import AssemblyError, StructureError
+from mechlab.mechanisms.lambda_mechanism import GuidedLambda
 from mechlab.widgets import DragEditor, as_linkage, linkage_code
 from mechlab.widgets.drag import handles, moved
 
@@ -46,11 +48,20 @@ def test_families_map_onto_linkages_that_move_as_they_do():
     for fam in (ml.SliderCrank(1.0, 3.0, 0.4), ml.SliderCrank(0.7, 2.0, -0.3, -1)):
         lk = as_linkage(fam)
         assert np.allclose(lk.motion(PHI).points["B"].p, fam.motion(PHI).points["B"].p, atol=1e-12, rtol=0)
+    for fam in (ml.LambdaMechanism(0.4, 0.8, np.pi), ml.LambdaMechanism(0.3, 0.9, np.radians(150), -1)):
+        lk, phi = as_linkage(fam), fam.turn(361)
+        assert np.allclose(lk.motion(phi).psi, fam.motion(phi).psi, atol=1e-12, rtol=0)
+        assert np.allclose(lk.motion(phi).points["D"].p, fam.motion(phi).points["D"].p, atol=1e-12, rtol=0)
+    for fam in [d for d in designs() if type(d) in (ml.LambdaRockerSixBar, ml.LambdaSliderSixBar)]:
+        lk, phi = as_linkage(fam), fam.turn(361) + 1e-3
+        assert np.allclose(lk.motion(phi).points["E"].p, fam.motion(phi).points["E"].p, atol=1e-12, rtol=0)
     slot = ml.SlottedLink(0.5, 1.0)
     assert np.allclose(as_linkage(slot).motion(PHI).psi, slot.motion(PHI).psi, atol=1e-12, rtol=0)
     assert as_linkage(LINKAGES["fourbar"]) is LINKAGES["fourbar"]
     with pytest.raises(StructureError, match="ExternalGeneva"):
         as_linkage(ml.ExternalGeneva.example())
+    guided = GuidedLambda.example()   # a lambda with its guiding band drawn: the lambda's motion
+    assert np.allclose(as_linkage(guided).motion(PHI).points["D"].p, guided.motion(PHI).points["D"].p, atol=1e-12)
 
 
 @pytest.mark.parametrize("name", LINKAGES)
@@ -120,6 +131,19 @@ def test_snapping_rounds_coordinates_lengths_and_xi_eta_to_the_step():
     assert all(abs(v * 10 - round(v * 10)) < 1e-9 for v in new.groups[1].at)
     new, _ = moved(lk, "A", (0.02, 0.01), 0.0, step=0.5)   # a length never snaps to zero
     assert new.driver.radius == 0.5
+
+
+def test_snapping_shows_the_grid_of_its_step():
+    ed = DragEditor(coupler_fourbar(), grid=0.5, live=True)
+    ticks = ed.ax.xaxis.get_minorticklocs()
+    # the minor lines at the half steps (the whole numbers are the major ticks' lines)
+    assert ed.snap.value and len(ticks) > 4 and np.allclose(ticks / 0.5, np.round(ticks / 0.5))
+    ed.snap.value = False
+    assert len(ed.ax.xaxis.get_minorticklocs()) == 0
+    ed.snap.value, ed.step.value = True, 1e-4   # too fine to draw: no lines, snapping still on
+    assert len(ed.ax.xaxis.get_minorticklocs()) == 0
+    assert ed.move("E", (4.2, 0.0001)) and dict(ed.linkage.frame)["E"] == (4.2, 0.0001)
+    plt.close("all")
 
 
 def test_an_unassemblable_position_raises_the_named_error():
@@ -264,3 +288,74 @@ def test_the_static_figure_shows_the_mechanism_and_its_coupler_curve(capsys):
     with pytest.raises(StructureError, match="not a joint"):
         DragEditor(coupler_fourbar(), point="Z", live=False)
     plt.close("all")
+
+
+def test_a_rocking_crank_draws_the_curve_over_its_range_and_refuses_an_unreachable_angle():
+    fb = ml.FourBar(2.5, 3.0, 3.0, 4.0)   # the crank rocks (not Grashof for it)
+    (lo, hi), = as_linkage(fb).crank_ranges()
+    ed = DragEditor(fb, phi=0.5 * (lo + hi), live=True)
+    want = as_linkage(fb).motion(np.linspace(lo + 1e-4 * (hi - lo), hi - 1e-4 * (hi - lo), ed.n)).points["B"].p
+    assert np.allclose(ed.curve_line.get_xydata(), want) and "where the crank rocks" in ed.status.value
+    with pytest.raises(AssemblyError, match="cannot close"):
+        DragEditor(fb, phi=hi + 0.3, live=True)
+    plt.close("all")
+
+
+def test_a_callback_moves_an_overlay_with_the_linkage(editor):
+    """As the chapter overlays its arc fit: the overlay follows every change and is drawn with the linkage."""
+    ed = editor
+    (mark,) = ed.ax.plot([], [], "s", color="#2a7f62", ms=12)
+    ed.add_overlay(mark)
+    ed.on_change(lambda lk: mark.set_data(*([v] for v in lk.motion(ed.phi).points["B"].p)))
+    ed.fig.canvas.draw()
+    assert mark in ed._moving_artists() and mark.get_animated()
+    before = np.asarray(ed.fig.canvas.buffer_rgba()).copy()
+    ed.move("B", ed._positions()["B"] + [0.3, 0.3])
+    assert np.allclose(mark.get_xydata()[0], ed._positions()["B"])
+    green = (np.abs(np.asarray(ed.fig.canvas.buffer_rgba())[..., :3].astype(int) - [0x2A, 0x7F, 0x62]).sum(-1) < 30)
+    assert green.sum() > 50 and (green != (np.abs(before[..., :3].astype(int) - [0x2A, 0x7F, 0x62]).sum(-1) < 30)).any()
+
+
+def test_the_chapter_route_a_live_arc_fit_over_the_coupler_curve_and_its_six_bar():
+    """The coupler four-bar of the dwell chapter (ml.coupler_fourbar): a callback refits the best arc of P's curve
+    after each drop and moves a circle over it; the dwell six-bar built from the arc opens in the editor too."""
+    from matplotlib.patches import Circle
+
+    ed = DragEditor(ml.coupler_fourbar(1.0, 3.0, 3.0, 4.0, (1.5, 1.0)), live=True)
+    ring = Circle((0, 0), 1.0, fill=False, ec="#2a7f62", lw=1.5)
+    ed.ax.add_patch(ring)
+    ed.add_overlay(ring)
+    fits = []
+
+    def refit(lk):
+        fits.append(ml.coupler_arcs(lk, "P", count=1)[0])
+        ring.center, ring.radius = fits[-1].centre, fits[-1].radius
+
+    ed.on_change(refit)
+    assert ed.move("P", ed._positions()["P"] + [0.2, -0.4])
+    assert ring.center == fits[-1].centre and ring.radius == fits[-1].radius
+    assert fits[-1] == ml.coupler_arcs(ed.linkage, "P", count=1)[0]   # the fit of the dropped linkage
+    six = DragEditor(ml.arc_dwell_sixbar(ed.linkage, "P", fits[-1]), point="P", live=True)
+    dyad = [j for j in handles(six.linkage) if j not in handles(ed.linkage)]
+    assert dyad and all(six.move(j, six._positions()[j] + [0.05, 0.05]) for j in dyad if j not in ("O", "E"))
+    plt.close("all")
+
+
+def test_a_drag_step_sends_the_frame_and_little_else(editor, monkeypatch):
+    """The hidden toolbar's pointer readout is off (ipympl syncs it as a widget message per mouse move) and the status
+    line is rewritten at most every STATUS_EVERY seconds while a handle is held (here: not within the drag); the
+    drop writes it."""
+    from mechlab.widgets import drag
+
+    monkeypatch.setattr(drag, "STATUS_EVERY", 60.0)
+    ed = editor
+    canvas = ed.fig.canvas
+    written = []
+    ed.status.observe(lambda c: written.append(c.new), names="value")
+    B = ed._positions()["B"]
+    mouse(ed, "button_press_event", B)
+    for k in range(1, 6):
+        mouse(ed, "motion_notify_event", B + [0.02 * k, 0.0])
+    assert canvas._message == "" and len(written) == 1 and written[0].startswith("coupler = 3, rocker = 3")  # B chosen
+    mouse(ed, "button_release_event", B + [0.1, 0.0])
+    assert f"coupler = {ed.linkage.groups[0].first_length:.4g}" in written[-1] == ed.status.value

@@ -108,7 +108,8 @@ def test_choice_and_form():
 def test_the_package_holds_no_answer():
     assert not hasattr(ex, "solution") and not hasattr(ex, "get")
     names = {p.stem for p in Path(ex.__file__).parent.glob("*.py")}
-    assert names == {"__init__", "feedback", "design", "selfcheck", "lab_model"}   # lab_model: the +1 assembly only
+    # lab_model: the +1 assembly only; coupler: chapter 8a's dwell six-bar, measured from its joints
+    assert names == {"__init__", "feedback", "design", "selfcheck", "lab_model", "coupler"}
 
 
 # -- design and code checks: one passing, one failing design each --------------------------------------------
@@ -155,6 +156,55 @@ def test_sixbar_design():
     assert sixbar_design(ml.mchv1(guide, 1.25, np.radians(30), side=-1), 120, time_ratio=1.25, swing=30)
     bad = sixbar_design(ml.mchv1(guide, 1.0, np.radians(20)), 120, time_ratio=1.25, swing=30)
     assert not bad and [s.met for s in bad.specs] == [False, False, True]
+
+
+def _lambda_sixbar(pivot_angle: float, rocker: float):
+    """Chapter 6's lambda design (δ = 150°, a = 0.9, 2α = 120°) with a rod of the band's radius R at D and an output
+    rocker pivoted at F, R·``rocker`` from the band's centre in the direction ``pivot_angle`` (degrees): built by hand
+    with the structure builder, as a student may."""
+    deg = np.pi / 180
+    g = ml.circle_guiding(150 * deg, 0.9, 120 * deg)
+    F = g.centre + rocker * g.R * np.array([np.cos(pivot_angle * deg), np.sin(pivot_angle * deg)])
+    return (ml.Linkage({"O": (0, 0), "C": (0.9, 0), "F": tuple(F)}, ml.Crank("O", "A", g.r))
+            .rrr("A", "C", "B", 1.0, 1.0, links=("coupler", "rocker"))
+            .point("D", "coupler", (1 - np.cos(150 * deg), -np.sin(150 * deg)))
+            .rrr("D", "F", "E", g.R, rocker * g.R, links=("rod", "output")))
+
+
+def test_dwell_sixbar_design():
+    from mechlab.course.exercises import dwell_sixbar_design
+
+    good = dwell_sixbar_design(_lambda_sixbar(0, 1.2), min_dwell=150, max_residual=0.5, min_swing=25)
+    assert good and [s.name for s in good.specs][2:] == ["transmission angle at B, min(μ, 180° − μ)",
+                                                         "transmission angle at E, min(μ, 180° − μ)"]
+    # a pivot beside the arc: the dyad folds, the output creeps through the dwell
+    bad = dwell_sixbar_design(_lambda_sixbar(90, 0.8), min_dwell=150, max_residual=0.5, min_swing=25)
+    assert not bad and [s.met for s in bad.specs] == [False, True, True, False]
+    assert "✗ transmission angle at E, min(μ, 180° − μ) 1.1" in repr(bad)
+    # a stricter band gives a shorter still interval, measured, not assumed
+    strict = dwell_sixbar_design(_lambda_sixbar(0, 1.2), min_dwell=150, max_residual=0.05, min_swing=25)
+    assert good.specs[0].value > strict.specs[0].value > 60
+    assert "turn fully" in dwell_sixbar_design(_lambda_sixbar(270, 0.8), min_dwell=90, max_residual=0.5,
+                                               min_swing=10).problem
+    assert "no design yet" in dwell_sixbar_design(..., min_dwell=90, max_residual=0.5, min_swing=10).problem
+    assert "expected a mechlab Linkage" in dwell_sixbar_design(ml.FourBar(1, 3, 3, 4), min_dwell=90, max_residual=0.5,
+                                                               min_swing=10).problem
+    slider = ml.Linkage({"O": (0, 0), "G": (0, 0)}, ml.Crank("O", "A", 1.0)).rrp("A", "B", 3.0, ml.Guide("G"))
+    assert "slides" in dwell_sixbar_design(slider, min_dwell=90, max_residual=0.5, min_swing=10).problem
+
+
+def test_the_longest_still_interval_is_the_brute_force_one():
+    from mechlab.course.exercises.coupler import longest_still_interval
+
+    rng = np.random.default_rng(8)
+    for _ in range(60):
+        psi, band = rng.normal(size=rng.integers(5, 30)).cumsum(), rng.uniform(0.2, 3.0)
+        n = len(psi)
+        best = max((length for start in range(n) for length in range(1, n + 1)
+                    if np.ptp(np.take(psi, range(start, start + length), mode="wrap")) <= band), default=0)
+        length, start = longest_still_interval(psi, band)
+        assert length == best and np.ptp(np.take(psi, range(start, start + length), mode="wrap")) <= band
+    assert longest_still_interval(np.zeros(7), 0.0) == (7, 0)
 
 
 def test_geneva_design():

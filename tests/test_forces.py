@@ -913,3 +913,15 @@ def test_an_unknown_efficiency_kind_is_a_named_error():
     result = press(P=2000.0, work_fraction=0.3).forces(np.linspace(0.0, 2 * np.pi, 73))
     with pytest.raises(DimensionError, match="how must be 'mean' or 'work'"):
         result.cycle_efficiency(how="average")
+
+
+def test_virtual_work_torque_at_a_scalar_angle():
+    """At a scalar φ the torque is a scalar, the array's value at that angle (as ``solve`` gives its results)."""
+    fb = FourBar(1.0, 3.0, 3.0, 4.0)
+    model, loads = model_for(fb), [Torque("rocker", -5.0)]
+    phi = np.array([0.3, 1.7, 4.0])
+    many = virtual_work_torque(model, fb.motion(phi), loads, omega1=3.0)
+    one = [virtual_work_torque(model, fb.motion(float(x)), loads, omega1=3.0) for x in phi]
+    assert all(np.ndim(t) == 0 for t in one)
+    assert np.allclose(one, many, rtol=1e-14, atol=0)
+    assert np.isclose(one[1], float(solve(model, fb.motion(1.7), loads, omega1=3.0).torque), rtol=1e-9)

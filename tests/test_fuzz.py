@@ -97,6 +97,22 @@ def snapshots():
                                           (0.3, 1.0)))
 
 
+@functools.cache
+def coupler():
+    """A crank-rocker with a coupler point P whose curve has a nearly circular arc and a nearly straight run."""
+    return ml.coupler_fourbar(1.0, 3.0, 3.0, 4.0, point=(1.5, 1.0))
+
+
+@functools.cache
+def coupler_arc():
+    return ml.coupler_arcs(coupler(), dwell=1.2, n=240, count=1)[0]
+
+
+@functools.cache
+def coupler_run():
+    return ml.coupler_runs(coupler(), dwell=1.2, n=240, count=1)[0]
+
+
 def wavy():
     return ml.ParametricSlot(lambda t: np.stack([1.0 + 0 * t, t], -1), lambda t: np.stack([0 * t, 1 + 0 * t], -1),
                              lambda t: np.zeros((len(t), 2)), -0.8, 0.8)
@@ -133,6 +149,14 @@ CASES = {
     "RRP": lambda: (ml.RRP, ("A", "B", 3.0, ml.Guide("G", 0.2)), {"assembly": 1, "links": ("rod", "slider")}),
     "RPR": lambda: (ml.RPR, ("A", "P"), {"length": 2.0, "links": ("block", "lever")}),
     "PRP": lambda: (ml.PRP, (ml.Guide("G"), ml.Guide("P", 0.0, "lever"), "B"), {"links": ("slider", "block")}),
+    "RPP": lambda: (ml.RPP, ("A", "K", ml.Guide("G", 0.2)), {"slot": 1.2, "links": ("block", "yoke")}),
+    "Tetrad": lambda: (ml.Tetrad, ("A", "E", ("Q", "P", "R", "T"), ((-0.2, 0.55), (0.7, 0.55)),
+                                   ((0.55, 0.45), (1.35, 0.15)), (0.25, 0.85), (3.67, 3.04)),
+                       {"at": 3.14, "links": ("coupler", "link 3", "link 5", "output")}),
+    "CurvedSlot": lambda: (ml.CurvedSlot, ("A", ml.CircleSlot((3.0, 0.0), 3.0), "K"),
+                           {"pivot": "B", "guide": None, "start": 1.0, "at": 0.0, "link": "lever"}),
+    "CamFollower": lambda: (ml.CamFollower, (ml.CircleSlot((0.5, 0.0), 2.0), "cam", "C"),
+                            {"pivot": "B", "arm": 2.0, "guide": None, "start": 1.3, "at": 0.0, "link": "arm"}),
     "Guide": lambda: (ml.Guide, ("G",), {"angle": 0.3, "on": "lever"}),
     "Point": lambda: (ml.Point, ("C", "AB"), {"at": (1.5, 0.8)}),
     "build_atlas": lambda: (ml.build_atlas, ((2.0, 3.0),), {"u": (1.0,), "v": (0.5,), "samples": 72, "chunk": 4,
@@ -292,6 +316,18 @@ CASES = {
     "design.Comparison.ranked": lambda: (D.candidates(specs()[0], ["external Geneva"]).ranked, ("size",), {}),
     "design.Comparison.to_csv": lambda: (D.candidates(specs()[0], ["external Geneva"]).to_csv,
                                          (scratch() / "table.csv",), {}),
+    # dwells from coupler curves: the fits and the six-bars on them
+    "coupler_fourbar": lambda: (ml.coupler_fourbar, (1.0, 3.0, 3.0, 4.0), {"point": (1.5, 1.0), "assembly": 1}),
+    "coupler_arcs": lambda: (ml.coupler_arcs, (coupler(), "P"), {"dwell": 1.2, "n": 240, "count": 2,
+                                                                 "max_ripple": 1e-3, "max_radius": None}),
+    "coupler_runs": lambda: (ml.coupler_runs, (coupler(), "P"), {"dwell": 1.2, "n": 240, "count": 2,
+                                                                 "max_ripple": 1e-3}),
+    "fit_arc": lambda: (ml.fit_arc, (coupler(), "P", coupler_arc().crank_interval), {"n": 240}),
+    "fit_run": lambda: (ml.fit_run, (coupler(), "P", coupler_run().crank_interval), {"n": 240}),
+    "arc_dwell_sixbar": lambda: (ml.arc_dwell_sixbar, (coupler(), "P", coupler_arc()), {"output_pivot": None}),
+    "run_dwell_sixbar": lambda: (ml.run_dwell_sixbar, (coupler(), "P", coupler_run()), {"pivot": None}),
+    "check_dwell": lambda: (ml.check_dwell, (ml.arc_dwell_sixbar(coupler(), "P", coupler_arc()),
+                                            coupler_arc().crank_interval), {"n": 240}),
 }
 
 # the slow ones get fewer examples
@@ -302,7 +338,9 @@ BUDGET = {"whole_turn_guiding": 3, "existence_region": 3, "design_outcomes": 3, 
           "dwell_limit": 4, "mchv3_full_turn_best": 6, "mchv3_best_table": 4, "mchv3_pivot_table": 6,
           "compare_transitions": 4, "mchv2_stroke": 6, "mchv1": 8, "mchv2": 8,
           "slider_invariants": 6, "slider_report": 6, "compare": 6, "intermittency": 8, "SixBarIV": 8,
-          "LambdaSlottedSixBar": 8, "mchv3_full_turn": 8, "Kinetostatics.forces": 8}
+          "LambdaSlottedSixBar": 8, "mchv3_full_turn": 8, "Kinetostatics.forces": 8,
+          "coupler_arcs": 12, "coupler_runs": 12, "fit_arc": 12, "fit_run": 12, "arc_dwell_sixbar": 10,
+          "run_dwell_sixbar": 10, "check_dwell": 10}
 
 
 def finite(value, depth=0) -> bool:
@@ -443,7 +481,7 @@ RESULTS = {"DesignOutcomes", "Mechanism", "Grashof", "Motion", "AngularMotion", 
            "motion_laws.Invariants", "motion_laws.PrintedInvariants", "motion_laws.LawRow",
            "design.Comparison", "design.Candidate", "design.Refusal",
            "design.SpecificationReport", "design.LimitVerdict", "design.Criteria", "design.Design",
-           "Atlas", "AtlasDesign"}
+           "ArcFit", "RunFit", "DwellCheck", "Atlas", "AtlasDesign"}
 def exported_callables() -> dict[str, object]:
     """Every callable that ``mechlab.__all__`` exports, and those of the modules it exports (``mechlab.forces``,
     ``mechlab.design``, …) as "module.name": functions and classes, not exceptions, constants or modules."""

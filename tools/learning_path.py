@@ -33,19 +33,25 @@ from matplotlib.patches import FancyArrowPatch, FancyBboxPatch
 ROOT = Path(__file__).resolve().parent.parent
 FIGURE = ROOT / "book" / "figures" / "learning_path.svg"
 AHEAD = "Looking ahead"
-LINK = re.compile(r"\]\((\d+)_\w+\.ipynb[)#]")
+LINK = re.compile(r"\]\((\d+[a-z]?)_\w+\.ipynb[)#]")
 # chapter, "you learn to", time, the exercises' time (optional), needs
-ROW = re.compile(r"^\| \[(\d+) · ([^\]]+)\]\(notebooks/(\w+)\.ipynb\) \|[^|\n]*\| (\d+) min \|(?: (?:\d+ min|—) \|)?"
-                 r" ([^|\n]*) \|$", re.M)
+ROW = re.compile(r"^\| \[(\d+[a-z]?) · ([^\]]+)\]\(notebooks/(\w+)\.ipynb\) \|[^|\n]*\| (\d+) min \|"
+                 r"(?: (?:\d+ min|—) \|)? ([^|\n]*) \|$", re.M)
 
 
 @dataclass(frozen=True)
 class Chapter:
-    number: int
+    number: str   # as the heading writes it: "8", or "8a" for a chapter inserted after 8 without renumbering
     stem: str
     title: str
     minutes: int
-    needs: frozenset[int]
+    needs: frozenset[str]
+
+
+def label(prefix: str) -> str:
+    """A file name's number as a chapter's heading writes it: "08a" → "8a", "12" → "12"."""
+    digits, letter = re.fullmatch(r"(\d+)([a-z]?)", prefix).groups()
+    return f"{int(digits)}{letter}"
 
 
 def prerequisites(notebook: Path) -> frozenset[int]:
@@ -53,21 +59,21 @@ def prerequisites(notebook: Path) -> frozenset[int]:
     cells = json.loads(notebook.read_text())["cells"]
     frame = "".join(cells[0]["source"])
     section = frame.partition("## Prerequisites\n")[2].partition("\n## ")[0]
-    return frozenset(int(n) for n in LINK.findall(section.partition(AHEAD)[0]))
+    return frozenset(label(n) for n in LINK.findall(section.partition(AHEAD)[0]))
 
 
 def chapters(root: Path = ROOT) -> list[Chapter]:
     """The path's chapters in order: title and time from book/intro.md, needs from the notebooks."""
     rows = ROW.findall((root / "book" / "intro.md").read_text())
-    return [Chapter(int(n), stem, title, int(minutes), prerequisites(root / "notebooks" / f"{stem}.ipynb"))
+    return [Chapter(n, stem, title, int(minutes), prerequisites(root / "notebooks" / f"{stem}.ipynb"))
             for n, title, stem, minutes, _ in rows]
 
 
-def arrows(path: list[Chapter]) -> set[tuple[int, int]]:
+def arrows(path: list[Chapter]) -> set[tuple[str, str]]:
     """(need, chapter) pairs without those that a longer chain implies (the transitive reduction)."""
     needs = {c.number: set(c.needs) for c in path}
 
-    def reachable(start: int) -> set[int]:  # every chapter that `start` builds on, directly or not
+    def reachable(start: str) -> set[str]:  # every chapter that `start` builds on, directly or not
         seen, todo = set(), list(needs.get(start, ()))
         while todo:
             n = todo.pop()
@@ -143,21 +149,25 @@ def improve(where, earliest, needed_by, edges):
     return where, best
 
 
-def layout(path: list[Chapter], edges: set[tuple[int, int]]) -> dict[int, tuple[float, int]]:
+def layout(path: list[Chapter], edges: set[tuple[str, str]]) -> dict[str, tuple[float, int]]:
     """(x, row): a chapter starts in the row after its latest need (the longest chain of needs below it),
     side by side in path order, and :func:`improve` moves it; tried from every order of the widest row
-    (the branches), the lowest `cost` wins."""
+    (the branches), the lowest `cost` wins. Worked on the chapters' places in the path (8a sorts after 8)."""
+    place = {c.number: i for i, c in enumerate(path)}
+    needs = {place[c.number]: {place[n] for n in c.needs} for c in path}
     earliest: dict[int, int] = {}
-    for c in path:  # in path order, so every need has its row already
-        earliest[c.number] = 1 + max((earliest[n] for n in c.needs), default=-1)
-    needed_by = {c.number: [d.number for d in path if c.number in d.needs] for c in path}
+    for i in range(len(path)):  # in path order, so every need has its row already
+        earliest[i] = 1 + max((earliest[n] for n in needs[i]), default=-1)
+    needed_by = {i: [d for d in needs if i in needs[d]] for i in needs}
     rows: dict[int, list[int]] = {}
     for m in sorted(earliest, key=lambda m: (earliest[m], m)):
         rows.setdefault(earliest[m], []).append(m)
     widest = max(rows, key=lambda r: (len(rows[r]), -r))
     starts = ({m: (float(i), r) for r, ms in {**rows, widest: list(order)}.items() for i, m in enumerate(ms)}
               for order in itertools.permutations(rows[widest]))
-    return min((improve(start, earliest, needed_by, sorted(edges)) for start in starts), key=lambda wc: wc[1])[0]
+    placed = sorted((place[n], place[c]) for n, c in edges)
+    where = min((improve(start, earliest, needed_by, placed) for start in starts), key=lambda wc: wc[1])[0]
+    return {path[i].number: xy for i, xy in where.items()}
 
 
 def draw(path: list[Chapter]):
@@ -178,7 +188,8 @@ def draw(path: list[Chapter]):
         ax.text(x, r - 0.07, title, ha="center", va="center", fontsize=11, zorder=3)
         ax.text(x, r + h / 2 - 0.1, f"{c.minutes} min", ha="center", va="center", fontsize=10,
                 color="#555555", zorder=3)
-    for n, c in sorted(edges):
+    place = {c.number: i for i, c in enumerate(path)}
+    for n, c in sorted(edges, key=lambda e: (place[e[0]], place[e[1]])):
         (x0, r0), (x1, r1) = where[n], where[c]
         ax.add_patch(FancyArrowPatch((x0, r0 + h / 2), (x1, r1 - h / 2), arrowstyle="-|>", mutation_scale=12,
                                      color="#1f4e8c", linewidth=1.0, shrinkA=1, shrinkB=1, zorder=1))

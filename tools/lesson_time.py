@@ -86,7 +86,7 @@ LINK = re.compile(r"!?\[([^\]]*)\]\([^)]*\)")
 HTML = re.compile(r"<!--.*?-->|<[^>\n]+>", re.S)
 TIME = re.compile(r"(## Time\s+About )(\d+)( minutes)")
 # a row of the path's table: chapter, "you learn to", time, exercises (added by --write), needs
-INTRO_ROW = re.compile(r"^(\| \[\d+ · [^\]]+\]\(notebooks/(\w+)\.ipynb\) \|[^|\n]*\| )(\d+) min \|"
+INTRO_ROW = re.compile(r"^(\| \[\d+[a-z]? · [^\]]+\]\(notebooks/(\w+)\.ipynb\) \|[^|\n]*\| )(\d+) min \|"
                        r"(?: (?:\d+ min|—) \|)?( [^|\n]* \|)$", re.M)
 INTRO_TOTAL = re.compile(r"^In all \d+ minutes[^\n]*$", re.M)
 ASSIGNMENT = re.compile(r"assignments/release/(\w+)/\1\.ipynb")
@@ -200,14 +200,21 @@ def estimate(nb) -> LessonTime:
 @functools.cache
 def widget_functions(root: Path = ROOT) -> frozenset[str]:
     """The explorers a chapter can call: public functions of mechlab/widgets/ named ``*_explorer`` or
-    taking a ``question`` (read from the source, without importing the widgets)."""
+    taking a ``question``, and the editors (public classes named ``*Editor`` whose ``__init__`` takes one: a
+    chapter builds an editor itself, while the ``*Explorer`` classes are built by their functions), read from
+    the source, without importing the widgets."""
     names = set()
     for module in (root / "mechlab" / "widgets").glob("*.py"):
         for node in ast.parse(module.read_text()).body:
-            if isinstance(node, ast.FunctionDef) and not node.name.startswith("_"):
-                args = [a.arg for a in node.args.args + node.args.kwonlyargs]
-                if node.name.endswith("_explorer") or "question" in args:
-                    names.add(node.name)
+            if isinstance(node, ast.ClassDef) and node.name.endswith("Editor"):
+                fn = next((f for f in node.body if isinstance(f, ast.FunctionDef) and f.name == "__init__"), None)
+            elif isinstance(node, ast.FunctionDef):
+                fn = node
+            else:
+                continue
+            args = [a.arg for a in fn.args.args + fn.args.kwonlyargs] if fn else []
+            if not node.name.startswith("_") and (node.name.endswith("_explorer") or "question" in args):
+                names.add(node.name)
     return frozenset(names)
 
 
@@ -228,7 +235,8 @@ def read(path: Path):
 
 def chapters(root: Path = ROOT) -> list[Path]:
     """The course's lessons: notebooks/NN_*.ipynb (the companion's folder is not among them)."""
-    return sorted((root / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+    # "08a_…": a chapter inserted after 8 without renumbering the later ones; "08_" sorts before "08a_"
+    return sorted(p for p in (root / "notebooks").glob("[0-9][0-9]*_*.ipynb") if re.match(r"\d\d[a-z]?_", p.name))
 
 
 def companions(root: Path = ROOT) -> list[Path]:

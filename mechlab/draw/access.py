@@ -6,7 +6,9 @@
   figure itself says (its titles, axis labels and legend entries): "" when it says nothing, a
   figure no reader can be told about. :func:`install_alt_text` makes an IPython kernel publish
   the text with every figure it displays (the output's ``image/png`` metadata ``alt``), which
-  the book's ``_ext/alttext.py`` writes into the page as the image's ``alt``.
+  the book's ``_ext/alttext.py`` writes into the page as the image's ``alt``, and, for JupyterLab,
+  which reads no such metadata, a ``text/html`` copy of the figure that carries it
+  (:func:`figure_html`); a kernel that imports this module installs it by itself.
 * **Palette.** :data:`OKABE_ITO` (Okabe & Ito, 2008), the categorical colours mechlab's figures
   use, ordered as :data:`CATEGORY_COLOURS`; a category is told apart by a second channel too
   (:data:`CATEGORY_MARKERS`, :data:`CATEGORY_DASHES`). :func:`simulate_cvd` (Machado, Oliveira and
@@ -16,7 +18,11 @@
 
 from __future__ import annotations
 
+import base64
+import html
+import os
 import re
+import sys
 
 import numpy as np
 from matplotlib.colors import to_rgb
@@ -177,25 +183,118 @@ def alt_text(fig) -> str:
     return f"Figure: {'; '.join(parts)}." if parts else ""
 
 
-def install_alt_text(ip) -> None:
-    """Make the IPython shell ``ip`` publish every displayed figure's :func:`alt_text` as the ``alt``
-    of its image outputs' metadata (``{"image/png": {"alt": ...}}``); a figure without one gets none."""
-    original = ip.display_formatter.format
+def figure_html(png, alt: str, width=None, height=None) -> str:
+    """An ``<img>`` that carries the PNG ``png`` (bytes, or their base64 text) inline with ``alt`` as its
+    alternative text, and the displayed ``width`` and ``height`` (pixels) if given.
+
+    Parameters
+    ----------
+    png : bytes or str
+        The image, as a PNG file's bytes or their base64 encoding (how a kernel sends it).
+    alt : str
+        The alternative text; not empty.
+    width, height : int, optional
+        The size to show it at (the inline backend's metadata for a high-resolution figure).
+
+    Returns
+    -------
+    str
+        One ``<img>`` element whose ``src`` is a ``data:image/png;base64`` address.
+
+    Raises
+    ------
+    MechanismError
+        ``alt`` is empty.
+
+    Examples
+    --------
+    >>> figure_html(b"PNG", "A <small> square.", width=40)
+    '<img src="data:image/png;base64,UE5H" alt="A &lt;small&gt; square." width="40">'
+    """
+    if not isinstance(alt, str) or not alt.strip():
+        raise MechanismError("an image's alternative text must be a non-empty string")
+    text = base64.b64encode(png).decode("ascii") if isinstance(png, bytes) else str(png)
+    size = "".join(f' {name}="{int(value)}"' for name, value in (("width", width), ("height", height))
+                   if value is not None)
+    return f'<img src="data:image/png;base64,{text}" alt="{html.escape(alt, quote=True)}"{size}>'
+
+
+def install_alt_text(ip, html_copy: bool | None = None) -> None:
+    """Make the IPython shell ``ip`` publish every displayed figure with its :func:`alt_text`.
+
+    The text goes into the image outputs' metadata (``{"image/png": {"alt": ...}}``), which the book's
+    renderer reads (``book/_ext/alttext.py``). JupyterLab reads no ``alt`` metadata (it draws an
+    ``image/png`` output as an ``<img>`` without one: jupyter/enhancement-proposals#120), so for a live
+    front end the figure is published a second time as ``text/html``, an :func:`figure_html` ``<img>``
+    with the ``alt``: a front end shows the richest type it renders, JupyterLab (and Notebook 7, VS Code)
+    that one, whose sanitizer keeps ``alt`` and the ``data:`` image even in an untrusted notebook.
+    A figure without a description gets neither.
+
+    Parameters
+    ----------
+    ip : IPython.core.interactiveshell.InteractiveShell
+        The shell whose display formatter is wrapped (once: a second call changes nothing).
+    html_copy : bool, optional
+        Publish the ``text/html`` copy; by default yes, except where the book's kernels render static
+        pages (``MECHLAB_WIDGETS=static``): the book shows the ``image/png`` with its metadata's ``alt``,
+        so that its pages do not carry the picture twice.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    MechanismError
+        ``ip`` has no display formatter (no IPython shell).
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> from IPython.core.interactiveshell import InteractiveShell
+    >>> from IPython.core.pylabtools import select_figure_formats
+    >>> ip = InteractiveShell.instance()
+    >>> select_figure_formats(ip, {"png"})
+    >>> install_alt_text(ip)
+    >>> data, metadata = ip.display_formatter.format(set_alt(plt.subplots(figsize=(1, 1))[0], "A blank square."))
+    >>> metadata["image/png"]["alt"], 'alt="A blank square."' in data["text/html"]
+    ('A blank square.', True)
+    >>> plt.close("all")
+    """
+    formatter = getattr(ip, "display_formatter", None)
+    if formatter is None:
+        raise MechanismError(f"install_alt_text needs an IPython shell, got {type(ip).__name__}")
+    original = formatter.format
     if getattr(original, "mechlab_alt", False):
         return
+    if html_copy is None:
+        html_copy = os.environ.get("MECHLAB_WIDGETS") != "static"
 
-    def format_with_alt(obj, *args, **kwargs):
-        data, metadata = original(obj, *args, **kwargs)
+    def format_with_alt(obj, include=None, exclude=None):
+        data, metadata = original(obj, include=include, exclude=exclude)
         if isinstance(obj, Figure):
             text = alt_text(obj)
             if text:
                 for mime in data:
                     if mime.startswith("image/"):
                         metadata[mime] = {**metadata.get(mime, {}), "alt": text}
+                wanted = (include is None or "text/html" in include) and not (exclude and "text/html" in exclude)
+                if html_copy and wanted and "image/png" in data and "text/html" not in data:
+                    size = metadata.get("image/png", {})
+                    data["text/html"] = figure_html(data["image/png"], text, size.get("width"), size.get("height"))
         return data, metadata
 
     format_with_alt.mechlab_alt = True
-    ip.display_formatter.format = format_with_alt
+    formatter.format = format_with_alt
+
+
+def _install_in_running_shell() -> None:
+    """Publish alt texts in the IPython kernel that imports mechlab.draw (a chapter in JupyterLab): no
+    start-up file of the student's is needed. Outside IPython, nothing (IPython is not even imported)."""
+    ipython = sys.modules.get("IPython")
+    shell = ipython.get_ipython() if ipython is not None else None
+    if shell is not None and hasattr(shell, "display_formatter"):
+        install_alt_text(shell)
 
 
 def _linear(rgb: np.ndarray) -> np.ndarray:
@@ -242,3 +341,6 @@ def delta_e(a, b) -> float:
     100.0
     """
     return float(np.linalg.norm(lab(a) - lab(b)))
+
+
+_install_in_running_shell()

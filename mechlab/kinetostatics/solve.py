@@ -173,7 +173,7 @@ def virtual_work_torque(model: AnyModel, motion: AnyMotion, loads: Loads = (), o
     model : ForceModel
         Bodies with their masses, pairs and groups.
     motion : Motion
-        The mechanism's motion over an array of crank angles (radians).
+        The mechanism's motion (a scalar φ or an array of crank angles, radians).
     loads : tuple of Force or Torque, optional
         External loads on the model's bodies.
     omega1 : float, optional
@@ -186,7 +186,7 @@ def virtual_work_torque(model: AnyModel, motion: AnyMotion, loads: Loads = (), o
     Returns
     -------
     numpy.ndarray
-        M_b on the crank (N·m, counter-clockwise positive), one per crank angle.
+        M_b on the crank (N·m, counter-clockwise positive), one per crank angle (a scalar at a scalar φ).
 
     Raises
     ------
@@ -202,7 +202,11 @@ def virtual_work_torque(model: AnyModel, motion: AnyMotion, loads: Loads = (), o
     >>> k = press()
     >>> np.round(virtual_work_torque(k.model, k.motion(np.array([np.pi / 2])), k.loads, k.omega1), 4)
     array([-2.2425])
+    >>> round(float(virtual_work_torque(k.model, k.motion(np.pi / 2), k.loads, k.omega1)), 4)
+    -2.2425
     """
+    if np.ndim(motion.phi) == 0:
+        return first_of(virtual_work_torque(model, motion.as_arrays(), loads, omega1, eps1, gravity))
     frames = _frames(model, motion)
     kl = _known_loads(model, motion, frames, loads, omega1, eps1, gravity)
     crank = frames[model.crank]

@@ -17,6 +17,7 @@ half-range for a suboptimal centre or direction); the best few windows are then 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import cached_property
 from typing import Annotated
 
 import numpy as np
@@ -45,7 +46,7 @@ N_DEFAULT = 720          # crank-angle samples per turn: 0.5° apart
 MAX_RIPPLE = 1e-3        # the longest arc (run) search keeps ripple ≤ 0.1 % of its radius (length) by default
 MAX_RADIUS = 10.0        # arcs of radius above 10 × the curve's size are straight runs, not arcs
 MIN_POINTS = 5           # a window needs 5 samples: a circle has 3 parameters, a minimax fit 4 alternating touches
-MIN_TRANSMISSION = np.radians(5)   # a dyad nearer a dead point than this is refused: its branch may flip there
+MIN_TRANSMISSION = np.radians(15)  # a dyad nearer a dead point is refused: the dwell error outgrows ripple / (b sin μ)
 MAX_LP_STEPS = 30        # sequential linear programmes per exact circle fit (2-5 are typical)
 
 LinkageArg = Annotated[Linkage, mechanism(Linkage)]
@@ -182,8 +183,10 @@ class DwellCheck:
 # --------------------------------------------------------------------------------------------------------------
 # The four-bar and its sampled curve
 # --------------------------------------------------------------------------------------------------------------
-def coupler_fourbar(crank: float, coupler: float, rocker: float, frame: float, point=(0.0, 0.0),
-                    assembly: Sign = 1) -> Linkage:
+@validated
+def coupler_fourbar(crank: Annotated[float, length()], coupler: Annotated[float, length()],
+                    rocker: Annotated[float, length()], frame: Annotated[float, length()],
+                    point: Annotated[tuple, Spec("point")] = (0.0, 0.0), assembly: Sign = 1) -> Linkage:
     """The four-bar O(0, 0)-A-B-E(frame, 0) with the coupler point P, built with the structure builder.
 
     Parameters
@@ -231,13 +234,24 @@ class _Curve:
     periodic: bool
     last: np.ndarray
 
-    def indices(self, starts, lengths):
-        """Index rows of windows (start, length), padded to the longest, and the mask of the real samples."""
-        k = np.arange(int(np.max(lengths)))
-        idx = starts[:, None] + k[None, :]
-        mask = k[None, :] < lengths[:, None]
-        idx = idx % len(self.phi) if self.periodic else np.minimum(idx, len(self.phi) - 1)
-        return idx, mask
+    @cached_property
+    def ext(self) -> np.ndarray:
+        """The samples, a periodic curve's twice over: a window is a run of consecutive indices."""
+        return np.concatenate([self.z, self.z]) if self.periodic else self.z
+
+    @cached_property
+    def origin(self) -> np.ndarray:
+        return self.z.mean(0)
+
+    @cached_property
+    def sums(self) -> np.ndarray:
+        """Prefix sums of 1, x, y, x², xy, y², x³, x²y, xy², y³ (about the curve's mean), a leading row of zeros."""
+        x, y = (self.ext - self.origin).T
+        powers = np.stack([np.ones_like(x), x, y, x * x, x * y, y * y, x**3, x * x * y, x * y * y, y**3], 1)
+        return np.vstack([np.zeros(10), np.cumsum(powers, 0)])
+
+    def window(self, start: int, samples: int) -> np.ndarray:
+        return self.ext[start:start + samples]
 
     def longest(self, starts):
         """The longest window (samples) that fits at each start."""
@@ -251,10 +265,15 @@ class _Curve:
 
 def _joint(linkage: Linkage, point: str) -> str:
     point = check_value("point", point, Spec("text"))
-    joints = linkage.motion(np.array([linkage.crank_ranges()[0][0] + 1e-3])).points
+    joints = _joints(linkage)
     if point not in joints:
         raise CouplerFitError(f"the linkage has no joint {point!r}; its joints: {', '.join(joints)}")
     return point
+
+
+def _joints(linkage: Linkage) -> list[str]:
+    """The joints of a linkage: its frame points, then those its crank and groups make, in order."""
+    return [k for k, _ in linkage.frame] + [j for g in (linkage.driver, *linkage.groups) for j in g.makes()]
 
 
 def _path(linkage: Linkage, point: str, phi) -> np.ndarray:
@@ -266,7 +285,8 @@ def _sample(linkage: Linkage, point: str, n: int) -> _Curve:
     ranges = linkage.crank_ranges()
     if ranges == FULL_TURN:
         phi = np.arange(n) * h
-        return _Curve(phi, _path(linkage, point, phi), h, True, np.full(n, n - 1))
+        return _Curve(phi, _moving(_path(linkage, point, phi), point, "as the crank turns"), h, True,
+                      np.full(n, n - 1))
     # a crank that does not turn fully: each reachable range on its own, half a step inside its ends
     parts, last = [], []
     for s, e in ranges:
@@ -277,7 +297,15 @@ def _sample(linkage: Linkage, point: str, n: int) -> _Curve:
     phi = np.concatenate(parts) if parts else np.zeros(0)
     if len(phi) < MIN_POINTS:
         raise CouplerFitError(f"the crank reaches only {len(phi)} of the {n} sample angles: no curve to fit")
-    return _Curve(phi, _path(linkage, point, phi), h, False, np.concatenate(last))
+    return _Curve(phi, _moving(_path(linkage, point, phi), point, "as the crank moves"), h, False,
+                  np.concatenate(last))
+
+
+def _moving(z, point: str, where: str) -> np.ndarray:
+    """The samples z, or CouplerFitError when the point stands still (a frame point: nothing to fit)."""
+    if float(np.hypot(*np.ptp(z, axis=0))) <= 1e-12 * max(1.0, float(np.max(np.abs(z)))):
+        raise CouplerFitError(f"the joint {point} does not move {where}: its path has no arc or run to fit")
+    return z
 
 
 def _size(z) -> float:
@@ -287,47 +315,60 @@ def _size(z) -> float:
 # --------------------------------------------------------------------------------------------------------------
 # Screening: every window at once (upper bounds of the minimax ripple)
 # --------------------------------------------------------------------------------------------------------------
-def _moments(z, idx, mask):
-    """Each window's samples about its mean (zero outside the mask), the mean and the second moments."""
-    w = mask.astype(float)
-    P = z[idx]
-    cnt = w.sum(1)
-    mean = (P * w[..., None]).sum(1) / cnt[:, None]
-    X = (P - mean[:, None, :]) * w[..., None]
-    x, y = X[..., 0], X[..., 1]
-    return X, mean, (x * x).sum(1), (x * y).sum(1), (y * y).sum(1)
+def _window_moments(curve, starts, lengths):
+    """Each window's mean and its central moments Σx², Σxy, Σy², Σx(x² + y²), Σy(x² + y²) (x, y about the
+    window's mean), from prefix sums of the power sums: O(1) a window."""
+    W = curve.sums[starts + lengths] - curve.sums[starts]
+    m, sx, sy, sxx, sxy, syy, sxxx, sxxy, sxyy, syyy = W.T
+    mx, my = sx / m, sy / m
+    cxx, cxy, cyy = sxx - m * mx * mx, sxy - m * mx * my, syy - m * my * my
+    cxxx = sxxx - 3 * mx * sxx + 2 * m * mx**3
+    cyyy = syyy - 3 * my * syy + 2 * m * my**3
+    cxyy = sxyy - 2 * my * sxy - mx * syy + 2 * m * mx * my * my
+    cxxy = sxxy - 2 * mx * sxy - my * sxx + 2 * m * my * mx * mx
+    mean = curve.origin + np.stack([mx, my], 1)
+    return mean, cxx, cxy, cyy, cxxx + cxyy, cxxy + cyyy
 
 
-def _screen_arcs(z, idx, mask):
-    """Kasa's algebraic circle of each window (centred coordinates: Σx = Σy = 0, so the normal equations
+def _gather(curve, starts, lengths):
+    """The windows' samples, padded to the longest (by the last sample), and the mask of the real ones (None when
+    all have one length)."""
+    k = np.arange(int(np.max(lengths)))
+    idx = np.minimum(starts[:, None] + k[None, :], len(curve.ext) - 1)
+    mask = None if np.all(lengths == lengths[0]) else k[None, :] < lengths[:, None]
+    return curve.ext[idx], mask
+
+
+def _half_ranges(v, mask):
+    """(max + min)/2 and (max − min)/2 of each row of v over its mask."""
+    hi = v.max(1) if mask is None else np.where(mask, v, -np.inf).max(1)
+    lo = v.min(1) if mask is None else np.where(mask, v, np.inf).min(1)
+    return 0.5 * (hi + lo), 0.5 * (hi - lo)
+
+
+def _screen_arcs(curve, starts, lengths):
+    """Kasa's algebraic circle of each window (about the window's mean Σx = Σy = 0, so its normal equations
     reduce to a 2×2 system), then the exact half-range of ρ about that centre: (radius, ripple) per window."""
-    X, _, Sxx, Sxy, Syy = _moments(z, idx, mask)
-    x, y = X[..., 0], X[..., 1]
-    q = x * x + y * y
-    Sxq, Syq = (x * q).sum(1), (y * q).sum(1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        det = Sxx * Syy - Sxy * Sxy
-        a = 0.5 * (Syy * Sxq - Sxy * Syq) / det
-        b = 0.5 * (Sxx * Syq - Sxy * Sxq) / det
-        rho = np.hypot(x - a[:, None], y - b[:, None])
-    hi = np.where(mask, rho, -np.inf).max(1)
-    lo = np.where(mask, rho, np.inf).min(1)
-    radius, ripple = 0.5 * (hi + lo), 0.5 * (hi - lo)
+    mean, cxx, cxy, cyy, cxq, cyq = _window_moments(curve, starts, lengths)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        det = cxx * cyy - cxy * cxy
+        centre = mean + 0.5 * np.stack([cyy * cxq - cxy * cyq, cxx * cyq - cxy * cxq], 1) / det[:, None]
+        P, mask = _gather(curve, starts, lengths)
+        rho = np.hypot(P[..., 0] - centre[:, 0, None], P[..., 1] - centre[:, 1, None])
+        radius, ripple = _half_ranges(rho, mask)
     bad = ~np.isfinite(radius) | ~np.isfinite(ripple)
     return np.where(bad, np.inf, radius), np.where(bad, np.inf, ripple)
 
 
-def _screen_runs(z, idx, mask):
+def _screen_runs(curve, starts, lengths):
     """The principal axis of each window, the half-range across it and the range along it: (length, ripple)."""
-    X, _, Sxx, Sxy, Syy = _moments(z, idx, mask)
-    th = 0.5 * np.arctan2(2 * Sxy, Sxx - Syy)
-    along = X[..., 0] * np.cos(th)[:, None] + X[..., 1] * np.sin(th)[:, None]
-    across = -X[..., 0] * np.sin(th)[:, None] + X[..., 1] * np.cos(th)[:, None]
-
-    def ptp(v):
-        return np.where(mask, v, -np.inf).max(1) - np.where(mask, v, np.inf).min(1)
-
-    return ptp(along), 0.5 * ptp(across)
+    _, cxx, cxy, cyy, _, _ = _window_moments(curve, starts, lengths)
+    th = 0.5 * np.arctan2(2 * cxy, cxx - cyy)
+    c, s = np.cos(th)[:, None], np.sin(th)[:, None]
+    P, mask = _gather(curve, starts, lengths)
+    _, along = _half_ranges(P[..., 0] * c + P[..., 1] * s, mask)
+    _, across = _half_ranges(P[..., 1] * c - P[..., 0] * s, mask)
+    return 2 * along, across
 
 
 # --------------------------------------------------------------------------------------------------------------
@@ -353,12 +394,78 @@ def _half_range(z, c):
     return 0.5 * (rho.max() + rho.min()), 0.5 * (rho.max() - rho.min())
 
 
-def _extremes(v):
-    """Indices of the local extrema of the samples v, both ends included, with two neighbours on each side."""
+def _extremes(v, around=2):
+    """Indices of the local extrema of the samples v, both ends included, with ``around`` neighbours each side."""
     d = np.diff(v)
     inner = np.flatnonzero(d[:-1] * d[1:] <= 0) + 1
     k = np.concatenate([[0, len(v) - 1], inner, [np.argmax(v), np.argmin(v)]])
-    return np.unique(np.clip(k[:, None] + np.arange(-2, 3)[None, :], 0, len(v) - 1))
+    return np.unique(np.clip(k[:, None] + np.arange(-around, around + 1)[None, :], 0, len(v) - 1))
+
+
+def _newton4(z, j, sign, x, scale):
+    """Solve ρ_j(c) − R = sign_j·t on four samples j for x = (c, R, t) by Newton's method; None if singular."""
+    for _ in range(8):
+        d = x[:2] - z[j]
+        rho = np.hypot(d[:, 0], d[:, 1])
+        J = np.column_stack([d / rho[:, None], -np.ones(4), -sign])
+        try:
+            dx = np.linalg.solve(J, -(rho - x[2] - sign * x[3]))
+        except np.linalg.LinAlgError:
+            return None
+        x = x + dx
+        if np.max(np.abs(dx)) <= 1e-12 * scale:   # quadratic: the next step would be ~1e-24
+            break
+    return x if np.all(np.isfinite(x)) else None
+
+
+def _verified(z, j, sign, x, scale):
+    """(centre, R, ripple) if no sample leaves the band R ± |t| of x = (c, R, t) and the four samples j, where
+    ρ − R = sign·t, alternate in the order of their directions θ from the centre; else None.
+
+    Linearised about c, ρ varies by Δc·(cos θ, sin θ) and R by a constant: a Haar system in θ over any arc
+    shorter than a turn, so by Chebyshev's characterisation four samples alternating in θ (not merely along the
+    curve, which may turn back) with no sample outside the band make x the minimax circle.
+    """
+    R_all, f_all = _half_range(z, x[:2])
+    if not np.isfinite(f_all) or f_all > abs(x[3]) * (1 + 1e-9) + 1e-15 * scale:
+        return None
+    theta = np.unwrap(np.arctan2(z[:, 1] - x[1], z[:, 0] - x[0]))[j]
+    if np.any(np.diff(sign[np.argsort(theta)]) == 0):
+        return None
+    return x[:2], R_all, f_all
+
+
+def _exchange(z, c, scale, rounds=6):
+    """Remez's exchange: take four consecutive alternating extremes of ρ − R (the four whose smallest deviation
+    is largest), make the circle equioscillate on them (Newton), and repeat with the new extremes until no
+    sample leaves the band; None when the pattern has fewer than four alternations or does not settle."""
+    for _ in range(rounds):
+        rho = np.hypot(z[:, 0] - c[0], z[:, 1] - c[1])
+        R = 0.5 * (rho.max() + rho.min())
+        r = rho - R
+        k = _extremes(rho, 0)
+        merged = []   # consecutive extremes on one side of R: keep the farther
+        for i in k:
+            if merged and np.sign(r[i]) == np.sign(r[merged[-1]]):
+                if abs(r[i]) > abs(r[merged[-1]]):
+                    merged[-1] = i
+            else:
+                merged.append(i)
+        if len(merged) < 4:
+            return None
+        merged = np.array(merged)
+        size = np.abs(r[merged])
+        low = np.min(np.lib.stride_tricks.sliding_window_view(size, 4), axis=1)
+        j = merged[int(np.argmax(low)):][:4]
+        sign = np.sign(r[j])
+        x = _newton4(z, j, sign, np.array([c[0], c[1], R, float(np.mean(np.abs(r[j])))]), scale)
+        if x is None:
+            return None
+        done = _verified(z, j, sign, x, scale)
+        if done is not None:
+            return done
+        c = x[:2]
+    return None
 
 
 def _minimax_circle(z):
@@ -366,16 +473,20 @@ def _minimax_circle(z):
 
     Method (why): for a fixed c the best R is the mid-range of ρ, so the ripple f(c) = (max ρ − min ρ)/2 is a
     max of smooth functions of c, non-smooth where the extreme sample changes — a gradient method stalls on
-    those kinks. Linearising ρ_i about c turns min over (Δc, R) of max |ρ_i + ∇ρ_i·Δc − R| into a linear
-    programme in (Δc, R, t) (scipy's HiGHS), solved exactly; the step is accepted when the true f (over all
-    the samples) decreases, else the trust box is shrunk. Only the local extrema of ρ along the window (ends
-    included) and their neighbours enter the programme: a smooth window's ρ has a handful, and the optimum is
-    decided by them (Chebyshev's alternation: four or more extreme samples alternate above and below R). ρ is
-    smooth and nearly linear in c away from the points (the error is |Δc|²/ρ), so from Kasa's algebraic
-    circle (Kasa, 1976), already close, the steps converge in a few iterations; it stops when the programme
-    predicts a gain below 10⁻⁹ f, or a gain below 10⁻⁶ f that the step does not realise (linearisation
-    error: the optimum to about 10⁻⁶ of the ripple). Returns (centre, R, ripple), the ripple being the exact
-    half-range of ρ over all the samples about the final centre.
+    those kinks. The optimum is characterised by four samples where ρ − R = ±f alternately (Chebyshev's
+    alternation for the three parameters), so Remez's exchange from Kasa's circle is tried first
+    (:func:`_exchange`: a few Newton solves, accepted only when no sample leaves the band, which proves it).
+    Where it does not settle, the robust route: linearising ρ_i about c turns min over (Δc, R) of
+    max |ρ_i + ∇ρ_i·Δc − R| into a linear programme in (Δc, R, t) (scipy's HiGHS), solved exactly; the step is
+    accepted when the true f (over all the samples) decreases, else the trust box is shrunk. Only the local
+    extrema of ρ along the window (ends included) and their neighbours enter the programme: a smooth window's
+    ρ has a handful, and they decide the optimum. ρ is smooth and nearly linear in c away from the points (the
+    error is |Δc|²/ρ), so from Kasa's algebraic circle (Kasa, 1976), already close, the steps converge in a
+    few iterations; after each, Newton's method on the four samples the programme binds is tried
+    (:func:`_alternation`). It stops when the programme predicts a gain below 10⁻⁹ f, or a gain below 10⁻⁶ f
+    that the step does not realise (linearisation error: the optimum to about 10⁻⁶ of the ripple). Returns
+    (centre, R, ripple), the ripple being the exact half-range of ρ over all the samples about the final
+    centre.
     """
     c = _kasa(z)
     if c is None:
@@ -384,6 +495,9 @@ def _minimax_circle(z):
     if not np.isfinite(f):
         return None
     scale = max(R, _size(z))
+    fast = _exchange(z, c, scale)
+    if fast is not None:
+        return fast
     box = 0.25 * scale
     objective = np.array([0.0, 0.0, 0.0, 1.0])
     for _ in range(MAX_LP_STEPS):
@@ -404,6 +518,9 @@ def _minimax_circle(z):
         if gain <= 1e-9 * f + 1e-15 * scale:
             break   # no further gain predicted: the alternation is reached
         step = unit * res.x[:2]
+        done = _alternation(z, k, res, c + step, R + unit * res.x[2], unit * res.x[3], scale)
+        if done is not None:
+            return done
         R_new, f_new = _half_range(z, c + step)
         if f_new < f:
             c, R, f = c + step, R_new, f_new
@@ -413,6 +530,18 @@ def _minimax_circle(z):
         else:
             box *= 0.25
     return c, R, f
+
+
+def _alternation(z, k, res, c, R, t, scale):
+    """Newton's method on the four samples the programme found binding (its largest duals), ρ_j(c) − R = ±t
+    alternately; the fit if no other sample leaves the band, else None."""
+    duals = np.abs(res.ineqlin.marginals)
+    rows = np.argsort(duals)[::-1][:4]
+    if len(rows) < 4 or duals[rows[-1]] <= 0:
+        return None
+    j, sign = k[rows % len(k)], np.where(rows < len(k), 1.0, -1.0)
+    x = _newton4(z, j, sign, np.array([c[0], c[1], R, t]), scale)
+    return None if x is None else _verified(z, j, sign, x, scale)
 
 
 def _hull(z):
@@ -485,7 +614,8 @@ def _interval(crank_interval):
 def _exact_samples(linkage, point, interval, n):
     start, stop = interval
     m = max(MIN_POINTS, int(np.ceil((stop - start) / (TWO_PI / n))) + 1)
-    return _path(linkage, point, np.linspace(start, stop, m))
+    return _moving(_path(linkage, point, np.linspace(start, stop, m)), point,
+                   f"over φ ∈ ({start:.6g}, {stop:.6g})")
 
 
 @validated
@@ -514,7 +644,8 @@ def fit_arc(linkage: LinkageArg, point: str, crank_interval, *, n: Samples = N_D
     Raises
     ------
     CouplerFitError
-        An unknown joint, an interval that is reversed or a full turn long, or a path that is a straight line.
+        An unknown joint, an interval that is reversed or a full turn long, a joint that does not move, or a
+        path that is a straight line.
     AssemblyError
         The crank does not reach the whole interval.
 
@@ -563,7 +694,7 @@ def fit_run(linkage: LinkageArg, point: str, crank_interval, *, n: Samples = N_D
     Raises
     ------
     CouplerFitError
-        An unknown joint, or an interval that is reversed or a full turn long.
+        An unknown joint, an interval that is reversed or a full turn long, or a joint that does not move.
     AssemblyError
         The crank does not reach the whole interval.
 
@@ -647,9 +778,23 @@ def _distinct(order, starts, lengths, n, periodic, limit):
     return kept
 
 
+def _screen_by_length(kind, curve, starts, lengths):
+    """``kind.screen`` of windows of many lengths, in groups of similar length (a group is padded to its
+    longest, so one long window does not pad every short one)."""
+    order = np.argsort(lengths, kind="stable")
+    size, ripple = np.empty(len(starts)), np.empty(len(starts))
+    first = 0
+    while first < len(order):
+        stop = int(np.searchsorted(lengths[order], 1.25 * lengths[order[first]] + 1, side="right"))
+        group = order[first:stop]
+        size[group], ripple[group] = kind.screen(curve, starts[group], lengths[group])
+        first = stop
+    return size, ripple
+
+
 def _accept(kind, fitted, bound, cap):
     size = kind.size(fitted)
-    return np.isfinite(size) and kind.ripple(fitted) <= bound * size and (cap is None or size <= cap)
+    return np.isfinite(size) and size > 0 and kind.ripple(fitted) <= bound * size and (cap is None or size <= cap)
 
 
 def _search(kind, linkage, point, dwell, n, count, bound, cap):
@@ -670,16 +815,21 @@ def _search(kind, linkage, point, dwell, n, count, bound, cap):
                                   f"through φ ∈ {linkage.crank_ranges()}")
         starts = starts[fits]
         lengths = np.full(len(starts), m)
-        size, ripple = kind.screen(curve.z, *curve.indices(starts, lengths))
-        score = ripple / size
+        size, ripple = kind.screen(curve, starts, lengths)
+        with np.errstate(divide="ignore", invalid="ignore"):   # a window where the point pauses: no score
+            score = ripple / size
         if cap is not None:
             score = np.where(size <= cap, score, np.inf)
-        order = [i for i in np.argsort(score, kind="stable") if np.isfinite(score[i])]
+        order = np.argsort(score, kind="stable")
+        order = order[np.isfinite(score[order])]
         picks = _distinct(order, starts, lengths, N, curve.periodic, count + 2)   # spares: exact ranks differ
         found = []
-        for i in picks:   # the exact fit over the exact interval (start on the grid, width = dwell)
+        # the exact fits over the exact intervals (start on the grid, width = dwell), one motion for all
+        m_exact = max(MIN_POINTS, int(np.ceil(dwell / curve.h)) + 1)
+        phis = curve.phi[starts[picks]][:, None] + np.linspace(0.0, dwell, m_exact)[None, :]
+        paths = _path(linkage, point, phis.ravel()).reshape(len(picks), m_exact, 2)
+        for i, z in zip(picks, paths, strict=True):
             interval = (float(curve.phi[starts[i]]), float(curve.phi[starts[i]] + dwell))
-            z = _exact_samples(linkage, point, interval, n)
             fitted = kind.exact(z)
             if fitted is None or (cap is not None and kind.size(fitted) > cap):
                 continue
@@ -688,31 +838,28 @@ def _search(kind, linkage, point, dwell, n, count, bound, cap):
         return tuple(f for _, f in found[:count])
     # the longest window within the bound at every start: bisection on the length, all starts at once
     top = np.minimum(curve.longest(starts), N)
-    good = np.zeros(N, int)
-    bad = top + 1
-    for _ in range(int(np.ceil(np.log2(N))) + 1):
-        trial = np.where(good == 0, np.minimum(MIN_POINTS, top), (good + bad) // 2)
-        live = (bad - good > 1) & (trial >= MIN_POINTS) & (trial <= top)
+    good = np.full(N, MIN_POINTS - 1)   # the longest length known to pass (below MIN_POINTS: none yet)
+    bad = top + 1                       # the shortest known to fail
+    while True:
+        live = bad - good > 1
         if not live.any():
             break
-        size, ripple = kind.screen(curve.z, *curve.indices(starts[live], trial[live]))
-        ok = (ripple <= bound * size) & np.isfinite(size)
+        trial = (good[live] + bad[live]) // 2
+        size, ripple = _screen_by_length(kind, curve, starts[live], trial)
+        ok = (ripple <= bound * size) & np.isfinite(size) & (size > 0)
         if cap is not None:
             ok &= size <= cap
-        t = trial[live]
-        good[live] = np.where(ok, t, good[live])
-        bad[live] = np.where(ok, bad[live], t)
-        if (good == 0).all() and not live[good == 0].any():
-            break
-    order = [i for i in np.lexsort((starts, -good)) if good[i] >= MIN_POINTS]
-    picks = _distinct(order, starts, good, N, curve.periodic, count)
+        good[live] = np.where(ok, trial, good[live])
+        bad[live] = np.where(ok, bad[live], trial)
+    order = np.lexsort((starts, -good))
+    order = order[good[order] >= MIN_POINTS]
+    picks = _distinct(order, starts, good, N, curve.periodic, count + 2)   # spares: the exact lengths differ
     found = []
     for i in picks:
         s = int(starts[i])
-        best = None
 
         def exact(L, s=s):
-            z = curve.z[curve.indices(np.array([s]), np.array([L]))[0][0]]
+            z = curve.window(s, L)
             fitted = kind.exact(z)
             return (z, fitted) if fitted is not None and _accept(kind, fitted, bound, cap) else None
 
@@ -740,9 +887,12 @@ def _search(kind, linkage, point, dwell, n, count, bound, cap):
             else:
                 lo, best = mid, (mid, got)
         L, (z, fitted) = best
-        found.append((-L, kind.ripple(fitted) / kind.size(fitted), kind.result(z, curve.interval(s, L), fitted)))
+        found.append((-L, kind.ripple(fitted) / kind.size(fitted), s, kind.result(z, curve.interval(s, L), fitted)))
     found.sort(key=lambda item: item[:2])
-    return tuple(f for _, _, f in found[:count])
+    # grown to their exact lengths, two may now overlap: keep the longer
+    keep = _distinct(np.arange(len(found)), np.array([f[2] for f in found], int),
+                     np.array([-f[0] for f in found], int), N, curve.periodic, count) if found else []
+    return tuple(found[i][3] for i in sorted(keep))
 
 
 @validated
@@ -784,7 +934,8 @@ def coupler_arcs(linkage: LinkageArg, point: str = "P", *, dwell: Dwell = None, 
     Raises
     ------
     CouplerFitError
-        An unknown joint, a dwell spanning fewer than 5 samples, or longer than the crank reaches.
+        An unknown joint, a joint that does not move, a dwell spanning fewer than 5 samples, or longer than the
+        crank reaches.
     DimensionError
         ``dwell``, ``n``, ``count``, ``max_ripple`` or ``max_radius`` out of range.
 
@@ -832,7 +983,8 @@ def coupler_runs(linkage: LinkageArg, point: str = "P", *, dwell: Dwell = None, 
     Raises
     ------
     CouplerFitError
-        An unknown joint, a dwell spanning fewer than 5 samples, or longer than the crank reaches.
+        An unknown joint, a joint that does not move, a dwell spanning fewer than 5 samples, or longer than the
+        crank reaches.
     DimensionError
         ``dwell``, ``n``, ``count`` or ``max_ripple`` out of range.
 
@@ -852,9 +1004,7 @@ def coupler_runs(linkage: LinkageArg, point: str = "P", *, dwell: Dwell = None, 
 # The six-bars
 # --------------------------------------------------------------------------------------------------------------
 def _names(linkage: Linkage):
-    joints = set(linkage.motion(np.array([linkage.crank_ranges()[0][0] + 1e-3])).points)
-    links = {k.name for k in linkage.structure().links}
-    return joints | {k for k, _ in linkage.frame}, links
+    return set(_joints(linkage)), {k.name for k in linkage.structure().links}
 
 
 def _fresh(base: str, taken: set) -> str:
@@ -898,12 +1048,13 @@ def arc_dwell_sixbar(linkage: LinkageArg, point: str, arc: Annotated[ArcFit, mec
     rocker dwells.
 
     The default pivot: D's rocker should meet the rod near square through the dwell and transmit well over
-    the rest of the cycle. Pivots F = Q + b·(cos θ, sin θ) are tried with θ at 60°, 90° and 120° on either
-    side of the direction from Q to the arc's middle (90°: square to the rod at mid-dwell, so the rod turns
-    ± extent/2 about square during the dwell) and b = 0.75 R, R, 1.5 R (so the dwell error is of the order of
-    ripple / R); the one whose dyad closes over the cycle with the largest least transmission angle is kept.
-    A dyad that passes within 5° of a dead point is refused (its branch could flip there): an arc of extent
-    near 180° or more turns the rod through as much during the dwell, so no rocker transmits throughout.
+    the rest of the cycle. Pivots F = Q + b·(cos θ, sin θ) are tried with θ from 30° to 150° in steps of 15° on
+    either side of the direction from Q to the arc's middle (90°: square to the rod at mid-dwell, so the rod
+    turns ± extent/2 about square during the dwell) and b = 0.5 R … 2 R (so the dwell error is of the order
+    of ripple / R); the one whose dyad closes over the cycle with the largest least transmission angle is kept.
+    A dyad that passes within 15° of a dead point is refused (there the rocker's dwell error outgrows
+    ripple / (b sin μ), and its branch could flip): an arc of extent near 180° or more turns the rod through as
+    much during the dwell, so no rocker transmits throughout.
 
     Parameters
     ----------
@@ -925,7 +1076,7 @@ def arc_dwell_sixbar(linkage: LinkageArg, point: str, arc: Annotated[ArcFit, mec
     Raises
     ------
     InfeasibleDesignError
-        The dyad does not close over the four-bar's whole cycle, passes within 5° of a dead point, or the pivot
+        The dyad does not close over the four-bar's whole cycle, passes within 15° of a dead point, or the pivot
         sits at the arc's centre.
     CouplerFitError
         An unknown joint.
@@ -956,8 +1107,8 @@ def arc_dwell_sixbar(linkage: LinkageArg, point: str, arc: Annotated[ArcFit, mec
     P_mid, Pc = Pc[0], Pc[1:]
     if output_pivot is None:
         to_mid = np.arctan2(*(P_mid - Q)[::-1])
-        th = to_mid + np.radians([60, 90, 120, -60, -90, -120])
-        cand = [(Q + k * R * np.array([np.cos(t), np.sin(t)]), k * R) for t in th for k in (0.75, 1.0, 1.5)]
+        th = to_mid + np.radians(np.concatenate([np.arange(30, 151, 15), -np.arange(30, 151, 15)]))
+        cand = [(Q + k * R * np.array([np.cos(t), np.sin(t)]), k * R) for t in th for k in (0.5, 0.75, 1.0, 1.5, 2.0)]
         F = max(cand, key=lambda fb: _dyad_quality(Pc, fb[0], R, fb[1]))[0]
     else:
         F = np.asarray(check_value("output_pivot", output_pivot, Spec("point")), dtype=float)

@@ -36,7 +36,7 @@ from traitlets import CFloat
 from ..draw import drawing_class, fill_axes
 from ..errors import MechanismError
 from ..mechanisms.fourbar import FourBar
-from .access import announce_controls, status_line
+from .access import announce_controls, describe_live_figure, status_line
 
 UNIT_TEXT = {"deg": "°"}   # how a unit reads in a slider's description
 SLIDER_STYLE = dict(style={"description_width": "165px"}, layout=W.Layout(width="445px"))
@@ -254,6 +254,7 @@ class Explorer:
         self.output = None if self.live else W.Output()
         # live without ipympl (benchmarks, tests) renders off screen: nothing to place in the layout
         self._canvas_widget = canvas if isinstance(canvas, W.Widget) else (self.output or W.HTML())
+        describe_live_figure(self.fig)   # a live canvas is named by the figure's alt text
         if self.live and self.blit:
             self.fig.canvas.mpl_connect("draw_event", self._capture_background)
 

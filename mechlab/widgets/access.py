@@ -6,9 +6,11 @@ tied to nothing (ipywidgets does not pass noUiSlider's ``handleAttributes``; noU
 :class:`ipywidgets.Play`'s buttons are bare icons. :data:`LABEL_CONTROLS_JS`, displayed once with an
 explorer in a live kernel (:func:`announce_controls`), fixes that in the page: each slider handle is
 ``aria-labelledby`` its visible label, each readout is named after it, each toggle-button group is a
-named ``group``, the play buttons are named "play", "stop" and "repeat", and every status line
-(:func:`status_line`) is a polite live region (``role="status"``), so that a changed reading is
-announced. It watches the page, so controls drawn later are named too.
+named ``group``, every control shows a focus outline (ipywidgets draws none on a slider's handle), the
+play buttons are named "play", "stop" and "repeat", and every status line (:func:`status_line`) is a
+polite live region (``role="status"``), so that a changed reading is announced. It watches the page, so
+controls drawn later are named too. A live plot (an ipympl canvas, :func:`describe_live_figure`) is an
+image (``role="img"``) named by the figure's alternative text.
 """
 
 from __future__ import annotations
@@ -19,11 +21,21 @@ import ipywidgets as W
 from IPython.display import Javascript, display
 from traitlets import Unicode
 
+from ..draw.access import alt_text
+
 STATUS_CLASS = "mechlab-status"   # the class that makes an HTML widget a live region
+FOCUS_COLOUR = "#0072B2"   # Okabe-Ito blue: 5.1:1 on white, above the 3:1 a focus indicator needs
 
 LABEL_CONTROLS_JS = r"""
 (() => {
   if (window.__mechlabLabelControls) { window.__mechlabLabelControls(); return; }
+  // a visible focus on every control (ipywidgets draws none on a slider's handle): WCAG 2.4.7
+  const style = document.createElement('style');
+  style.id = 'mechlab-focus-style';
+  style.textContent = `:is(.noUi-handle, .widget-readout, .jupyter-matplotlib-canvas-div, .jupyter-widgets button,
+    .jupyter-widgets select, .jupyter-widgets input):focus-visible
+    { outline: 2px solid """ + FOCUS_COLOUR + r"""; outline-offset: 2px; }`;
+  document.head.appendChild(style);
   let serial = 0;
   const idOf = el => el.id || (el.id = 'mechlab-label-' + (++serial));
   const name = root => {
@@ -47,6 +59,13 @@ LABEL_CONTROLS_JS = r"""
       if (kind) b.setAttribute('aria-label', kind === 'retweet' ? 'repeat' : kind);
     });
     root.querySelectorAll('img.widget-image[title]').forEach(i => i.setAttribute('alt', i.title));
+    // a live plot (ipympl): its canvas, which takes the focus, is an image named by the figure's alt text
+    root.querySelectorAll('.jupyter-matplotlib-canvas-div').forEach(c => {
+      const described = c.closest('.jupyter-matplotlib[title], .jupyter-matplotlib-figure[title]');
+      if (!described) return;
+      c.setAttribute('role', 'img');
+      c.setAttribute('aria-label', described.title);
+    });
     root.querySelectorAll('.""" + STATUS_CLASS + r"""').forEach(s => {
       s.setAttribute('role', 'status');
       s.setAttribute('aria-live', 'polite');
@@ -58,7 +77,7 @@ LABEL_CONTROLS_JS = r"""
     if (queued) return;
     queued = true;
     requestAnimationFrame(() => { queued = false; name(document); });
-  }).observe(document.body, {subtree: true, childList: true});
+  }).observe(document.body, {subtree: true, childList: true, attributes: true, attributeFilter: ['title']});
   name(document);
 })();
 """
@@ -89,6 +108,43 @@ class AltImage(W.Image):
     @alt.setter
     def alt(self, text: str):
         self.tooltip = text or None
+
+
+def describe_live_figure(fig) -> None:
+    """Keep the figure's :func:`~mechlab.draw.access.alt_text` on its live canvas (an ipympl widget) as its
+    tooltip, which :data:`LABEL_CONTROLS_JS` makes the canvas's accessible name; renewed at every full draw
+    (a change of the mechanism; a blitted frame keeps it: the status line states the moving reading).
+    A figure on another canvas is left alone.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    None
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> describe_live_figure(Figure())   # no widget canvas: nothing to do
+    """
+    canvas = fig.canvas
+    if not isinstance(canvas, W.DOMWidget):
+        return
+    if not canvas.has_trait("description"):
+        # the front end shows a widget's tooltip only when its description is empty: an ipympl canvas has none
+        canvas.add_traits(description=Unicode("").tag(sync=True))
+
+    def describe(_event=None):
+        canvas.tooltip = alt_text(fig) or None
+
+    canvas.mpl_connect("draw_event", describe)
+    describe()
 
 
 def status_line(value: str = "") -> W.HTML:

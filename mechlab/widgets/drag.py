@@ -1,42 +1,20 @@
-"""Drag a linkage by its joints: the mechanism, its coupler curve, its instantaneous centres and its
-transmission angle follow (issue 27).
+"""Drag a linkage by its joints (:class:`DragEditor`): its dimensions, coupler curve, instantaneous centres and
+transmission angle follow; undo, snapping to a grid, "copy as code" and a keyboard route (issue 27).
 
-:class:`DragEditor` shows any linkage the structure builder makes (:class:`mechlab.Linkage`: a crank and
-RRR, RRP, RPR, PRP groups and points fixed on links), and the families that have a builder twin
-(:class:`~mechlab.FourBar`, :class:`~mechlab.SliderCrank`, :class:`~mechlab.SlottedLink`, any
-``LinkageFamily``: :func:`as_linkage`), at the crank angle φ of its slider, with a handle on every fixed
-pivot and every joint whose position a dimension sets. Dragging a handle changes the dimensions it implies:
+It edits any :class:`mechlab.Linkage` the structure builder makes and the families with a builder twin
+(:func:`as_linkage`); :func:`moved` says what a handle's new position changes, :func:`linkage_code` writes the
+cell that rebuilds a linkage exactly. Where the linkage cannot assemble, the named MechanismError replaces the
+drawing and the last linkage that assembles is kept.
 
-* a frame point: its coordinates;
-* the crank's pin: the crank's length (and φ follows the pointer's angle about the crank's pivot);
-* the inner joint of an RRR dyad: the lengths of the two links meeting there (and the branch, the side of
-  the line through the outer joints the joint is dropped on);
-* the pin of an RRP dyad's slider: the rod's length (the pin slides along its guide; the side of the rod's
-  foot gives the branch);
-* a point fixed on a link (a coupler point): its (ξ, η) in the link's frame.
+Why ipympl's mouse events and not an anywidget: the explorers already draw on an ipympl canvas with blitting,
+a PNG diff per frame (:func:`mechlab.widgets.diff_image`), the course's error display, alt text and static-book
+path, and ipympl forwards ``button_press``, ``motion_notify``, ``button_release`` and ``key_press`` events; so a
+drag is a few lines of picking in Python on the figure every chapter shows. An anywidget would need its own
+JavaScript drawing of every mechanism (or a second channel beside the canvas), duplicating the sketch, labels
+and centres of :class:`mechlab.draw.LinkageDrawing`, for the same kernel round trip (the kinematics run in
+Python either way).
 
-A PRP dyad's joint (where two guides cross) and an RPR dyad's block (on its pin) are set by other joints: they
-carry no handle. A position where the linkage cannot assemble at φ shows the named
-:class:`~mechlab.errors.MechanismError` in place of the drawing; the last linkage that assembles is kept
-(and drawn again when the mouse is released there). Undo, snapping to a grid (coordinates to multiples of the
-step, lengths and (ξ, η) too, so that "copy as code" gives round numbers), and "copy as code"
-(:meth:`DragEditor.code`: the cell that rebuilds the mechanism with ``ml.Linkage``, exactly).
-
-**Why ipympl's mouse events and not an anywidget.** The explorers already draw on an ipympl canvas with
-blitting, a PNG diff per frame (:func:`mechlab.widgets.diff_image`) and the course's error display, alt text
-and static-book path; ipympl forwards ``button_press``, ``motion_notify``, ``button_release`` and
-``key_press`` events in data coordinates, so a drag is a few lines of picking in Python on the figure every
-other chapter shows. An anywidget would need its own JavaScript drawing of every mechanism (or a second
-channel beside the canvas) and would duplicate the sketch, labels and centres already drawn by
-:class:`mechlab.draw.LinkageDrawing`; the kernel round trip is the same either way, since the kinematics run
-in Python.
-
-**Keyboard.** Every action has a control reachable by Tab: the joint to move (a drop-down), four arrow
-buttons, the step, the snap check box, undo and "copy as code". With the canvas focused (click it), the
-arrow keys move the chosen joint by the step (shift: ten steps), ``j`` chooses the next joint and ``u``
-undoes.
-
-Where it is drawn: live in JupyterLab (blitting over a saved background, as every explorer); in the book
+Live in JupyterLab (blitting over a saved background, as every explorer); in the book
 (``MECHLAB_WIDGETS=static``) the same figure, the mechanism with its coupler curve, is shown as an image.
 """
 
@@ -50,12 +28,17 @@ from dataclasses import replace
 
 import ipywidgets as W
 import numpy as np
+from matplotlib.ticker import MultipleLocator, NullLocator
 
 from ..analysis.centres import instant_centres
 from ..draw import LinkageDrawing
+from ..draw.access import set_alt
 from ..errors import MechanismError, StructureError
 from ..mechanisms.base import FULL_TURN, TWO_PI
 from ..mechanisms.fourbar import FourBar
+from ..mechanisms.lambda_mechanism import LambdaMechanism
+from ..mechanisms.lambda_sixbars import LambdaRockerSixBar
+from ..mechanisms.lambda_sliders import LambdaSliderSixBar
 from ..mechanisms.linkage.built import Linkage, LinkageFamily
 from ..mechanisms.linkage.groups import PRP, RPR, RRP, RRR, Crank, Guide, Point
 from ..mechanisms.slider_crank import SliderCrank
@@ -63,6 +46,7 @@ from ..mechanisms.slotted import SlottedLink
 from . import SIDE_COLUMN, SLIDER_COLUMN, Explorer, _fit
 
 PICK_PX = 12.0            # a press this close to a handle (figure pixels) grabs it
+STATUS_EVERY = 0.15       # s: while a handle is held the status line is rewritten at most this often
 CURVE_STYLE = dict(color="#9467bd", lw=1.6, zorder=1.5)
 HANDLE_STYLE = dict(ls="none", marker="o", ms=13, mfc="none", mec="#1f77b4", mew=1.6, zorder=7)
 CHOSEN_STYLE = dict(ls="none", marker="o", ms=19, mfc="none", mec="#e08214", mew=2.5, zorder=7)
@@ -72,18 +56,57 @@ MOVES = {"left": (-1, 0), "right": (1, 0), "up": (0, 1), "down": (0, -1)}
 
 
 # -- mechanisms as builder linkages --------------------------------------------------------------------------
+def _fourbar(m) -> Linkage:
+    return Linkage({"O": (0.0, 0.0), "E": (float(m.ground), 0.0)}, Crank("O", "A", m.crank)).rrr(
+        "A", "E", "B", m.coupler, m.rocker, m.assembly, links=("coupler", "rocker"))
+
+
+def _slider_crank(m) -> Linkage:
+    return Linkage({"O": (0.0, 0.0), "G": (0.0, float(m.offset))}, Crank("O", "A", m.crank)).rrp(
+        "A", "B", m.rod, "G", m.assembly, links=("rod", "slider"))
+
+
+def _slotted_link(m) -> Linkage:
+    d = float(m.pivot_distance)
+    return Linkage({"O": (0.0, 0.0), "B": (-d, 0.0)}, Crank("O", "A", m.crank)).rpr("A", "B", d + m.crank)
+
+
+def _lambda(m, **frame) -> Linkage:
+    """Chebyshev's lambda: crank r, coupler A-B of length 1 carrying D at (1 - cos kc·δ, -sin kc·δ) in its frame
+    (D = B + Rot(kc·δ)(A - B)), rocker C-B of length 1."""
+    th = m.assembly * m.delta
+    return (Linkage({"O": (0.0, 0.0), "C": (float(m.a), 0.0), **frame}, Crank("O", "A", m.r))
+            .rrr("A", "C", "B", 1.0, 1.0, m.assembly, links=("coupler", "rocker"))
+            .point("D", "coupler", (float(1 - np.cos(th)), float(-np.sin(th)))))
+
+
+# the families with a builder twin that moves as they do (tests/test_overrides.py holds each to 1e-12)
+TWINS = {
+    FourBar: _fourbar,
+    SliderCrank: _slider_crank,
+    SlottedLink: _slotted_link,
+    LambdaMechanism: lambda m: _lambda(m).with_output("rocker"),
+    LambdaRockerSixBar: lambda m: _lambda(m.base, F=(float(m.fx), float(m.fy))).rrr(
+        "D", "F", "E", m.rod, m.rocker, m.assembly),
+    LambdaSliderSixBar: lambda m: _lambda(m.base, Q=(float(m.qx), float(m.qy))).rrp(
+        "D", "E", m.rod, Guide("Q", float(m.theta)), m.assembly),
+}
+
+
 def as_linkage(mechanism) -> Linkage:
     """The structure builder's :class:`~mechlab.Linkage` of a mechanism, for the drag editor.
 
     A Linkage is returned as it is; a ``LinkageFamily`` gives the linkage it builds; a
     :class:`~mechlab.FourBar` becomes O(0, 0)-A-B-E(ground, 0) with links "coupler" and "rocker"; a
     :class:`~mechlab.SliderCrank` O(0, 0)-A-B with its guide through G(0, offset) (links "rod", "slider");
-    a :class:`~mechlab.SlottedLink` the crank O-A and the lever pivoted at B(-pivot distance, 0).
-    Each moves exactly as the family (tests/test_overrides.py holds the twins to 1e-12).
+    a :class:`~mechlab.SlottedLink` the crank O-A and the lever pivoted at B(-pivot distance, 0); Chebyshev's
+    :class:`~mechlab.LambdaMechanism` O-A-B-C with its point D on the coupler, and its rocker and slider six-bars
+    that dyad more (F or the guide through Q). Each moves exactly as the family does.
 
     Parameters
     ----------
-    mechanism : Linkage, LinkageFamily, FourBar, SliderCrank or SlottedLink
+    mechanism : Linkage, LinkageFamily, FourBar, SliderCrank, SlottedLink, LambdaMechanism, \
+LambdaRockerSixBar or LambdaSliderSixBar
         The mechanism to edit.
 
     Returns
@@ -106,19 +129,12 @@ def as_linkage(mechanism) -> Linkage:
         return mechanism
     if isinstance(mechanism, LinkageFamily):
         return mechanism.linkage()
-    if isinstance(mechanism, FourBar):
-        return Linkage({"O": (0.0, 0.0), "E": (float(mechanism.ground), 0.0)}, Crank("O", "A", mechanism.crank)).rrr(
-            "A", "E", "B", mechanism.coupler, mechanism.rocker, mechanism.assembly, links=("coupler", "rocker"))
-    if isinstance(mechanism, SliderCrank):
-        return Linkage({"O": (0.0, 0.0), "G": (0.0, float(mechanism.offset))}, Crank("O", "A", mechanism.crank)).rrp(
-            "A", "B", mechanism.rod, "G", mechanism.assembly, links=("rod", "slider"))
-    if isinstance(mechanism, SlottedLink):
-        d = float(mechanism.pivot_distance)
-        return Linkage({"O": (0.0, 0.0), "B": (-d, 0.0)}, Crank("O", "A", mechanism.crank)).rpr(
-            "A", "B", d + mechanism.crank)
-    raise StructureError(f"the drag editor edits linkages built from a crank and Assur groups (ml.Linkage, a "
-                         f"FourBar, a SliderCrank, a SlottedLink or a LinkageFamily), not a "
-                         f"{type(mechanism).__name__}")
+    twin = next((make for kind, make in TWINS.items() if isinstance(mechanism, kind)), None)
+    if twin is None:
+        raise StructureError(f"the drag editor edits linkages built from a crank and Assur groups (ml.Linkage, a "
+                             f"LinkageFamily, or one of {', '.join(k.__name__ for k in TWINS)}), not a "
+                             f"{type(mechanism).__name__}")
+    return twin(mechanism)
 
 
 def _num(v) -> str:
@@ -348,6 +364,14 @@ class DragEditor(Explorer):
     """Drag a linkage's joints: its dimensions, coupler curve, instantaneous centres and transmission angle
     follow (see :mod:`mechlab.widgets.drag`).
 
+    Handles (circles) sit on the frame points and on the joints a dimension places, at the crank angle of the
+    slider: a frame point takes its new position, the crank's pin sets the crank's length (φ follows the
+    pointer), an RRR dyad's joint the two lengths meeting there, an RRP dyad's slider pin the rod's length, a
+    point on a link its (ξ, η) (:func:`moved`). A PRP joint and an RPR block are placed by other joints: no
+    handle. Keyboard: every control is reached by Tab (the joint to move, ← ↑ ↓ → buttons, the step, snapping,
+    undo, copy as code); with the canvas focused the arrow keys move the chosen joint by the step (shift: ten
+    steps), ``j`` chooses the next joint, ``u`` undoes.
+
     Parameters
     ----------
     linkage : Linkage, LinkageFamily, FourBar, SliderCrank or SlottedLink
@@ -398,6 +422,8 @@ class DragEditor(Explorer):
     def __init__(self, linkage, *, point: str | None = None, phi: float = 0.0, grid: float | None = None,
                  n: int = 361, live: bool | None = None, question: str | None = None, figsize=(8.0, 5.6)):
         lk = as_linkage(linkage)
+        phis, phi_in = _curve_angles(lk, float(phi) % TWO_PI, n)
+        lk.motion(np.append(phis, phi_in))   # the named error here if it does not assemble at φ
         super().__init__(as_linkage, {}, n=n, title="", live=live, figsize=figsize, angle=0.0, question=question)
         self.angle.step, self.angle.readout_format = 1.0, ".0f"
         self.linkage, self.phi = lk, float(phi) % TWO_PI
@@ -412,9 +438,9 @@ class DragEditor(Explorer):
         self._overlays: list = []
         self._drag = None          # (joint, linkage, φ) at the press while a handle is held
         self._quiet = False        # an angle set by a drag: no second redraw
-        self.last_draw_ms = float("nan")
         self._far: list[str] = []
         self._why = ""
+        self._read_at = -math.inf   # when the status line was last written
         scale = lk.structure().scale
         default = float(10.0 ** math.floor(math.log10(scale / 20.0)))
         self.ax = self.fig.add_axes((0.06, 0.07, 0.92, 0.9))
@@ -431,12 +457,13 @@ class DragEditor(Explorer):
         self.ax.legend(handles=[self.curve_line], loc="upper left", fontsize=9, frameon=False)
         # controls: every action reachable by Tab, each with a name a screen reader reads
         self.joint = W.Dropdown(options=[(f"{j} — {what}", j) for j, what in handles(lk).items()],
-                                value=lk.driver.joint, description="joint to move")
+                                value=lk.driver.joint, description="joint to move",
+                                style={"description_width": "95px"}, layout=W.Layout(width="445px"))
         self.arrows = {key: W.Button(description=f"{sym} {key}", tooltip=f"move the joint {key} by one step",
                                      layout=W.Layout(width="80px"))
                        for key, sym in (("left", "←"), ("up", "↑"), ("down", "↓"), ("right", "→"))}
         self.step = W.BoundedFloatText(value=grid or default, min=1e-6, max=1e6, description="step",
-                                       layout=W.Layout(width="200px"))
+                                       style={"description_width": "95px"}, layout=W.Layout(width="200px"))
         self.snap = W.Checkbox(value=grid is not None, description="snap to the grid of this step", indent=False)
         self.undo_button = W.Button(description="undo", icon="undo", tooltip="undo the last change", disabled=True)
         self.copy_button = W.Button(description="copy as code", icon="clipboard",
@@ -448,23 +475,32 @@ class DragEditor(Explorer):
         self.undo_button.on_click(lambda _b: self.undo())
         self.copy_button.on_click(lambda _b: self._show_code())
         self.joint.observe(lambda _c: self._update_handles(redraw=True), names="value")
+        self.snap.observe(lambda _c: self._show_grid(redraw=True), names="value")
+        self.step.observe(lambda _c: self._show_grid(redraw=True), names="value")
         self.angle.observe(self._on_angle, names="value")
         canvas = self.fig.canvas
         manager = getattr(canvas, "manager", None)
         if manager is not None and getattr(manager, "key_press_handler_id", None) is not None:
             # matplotlib's own keys (s saves, q closes, g grids, arrows pan back and forth) are not the editor's
             canvas.mpl_disconnect(manager.key_press_handler_id)
+        toolbar = getattr(canvas, "toolbar", None)
+        for cid in ("_id_press", "_id_release", "_id_drag"):
+            # the hidden toolbar's pan and zoom, and its pointer readout (a widget message per mouse move)
+            if hasattr(toolbar, cid):
+                canvas.mpl_disconnect(getattr(toolbar, cid))
         for event, handler in (("button_press_event", self._on_press), ("motion_notify_event", self._on_motion),
                                ("button_release_event", self._on_release), ("key_press_event", self._on_key)):
             canvas.mpl_connect(event, handler)
+        # a status line of fixed height: a longer one (an error) must not move the canvas under the pointer
+        self.status.layout = W.Layout(height="5.5em", overflow_y="auto")
         pad = W.HBox([self.arrows["left"], self.arrows["up"], self.arrows["down"], self.arrows["right"]])
         self.widget = W.VBox([self.question,
                               W.HBox([W.VBox([self.joint, pad, W.HBox([self.step, self.snap])], **SLIDER_COLUMN),
                                       W.VBox([self.angle, W.HBox([self.undo_button, self.copy_button]),
                                               self.status], **SIDE_COLUMN)]),
                               self._canvas_widget, self.code_box])
-        if not self._show(lk, self.phi, fit=True):
-            raise MechanismError(self.message)
+        self._show_grid(redraw=False)
+        self._show(lk, self.phi, fit=True)
 
     # -- public ------------------------------------------------------------------------------------------------
     def code(self, name: str = "linkage") -> str:
@@ -557,7 +593,8 @@ class DragEditor(Explorer):
         return callback
 
     def add_overlay(self, *artists) -> None:
-        """Artists of the caller's on :attr:`ax` (an arc fit, …) that a callback moves: redrawn with the linkage.
+        """Artists of the caller's on :attr:`ax` (an arc fit, …) that an :meth:`on_change` callback moves: drawn with
+        the linkage, and again once the callbacks have run.
 
         Parameters
         ----------
@@ -576,9 +613,8 @@ class DragEditor(Explorer):
     def _positions(self) -> dict[str, np.ndarray]:
         return {k: v.p[-1] for k, v in self.motion.points.items()}
 
-    def _show(self, linkage: Linkage, phi: float, fit: bool = False, grow: bool = False) -> bool:
+    def _show(self, linkage: Linkage, phi: float, fit: bool = False) -> bool:
         """Compute and draw ``linkage`` at φ; on a MechanismError show it and keep the last good state."""
-        start = time.perf_counter()
         try:
             phis, phi_in = _curve_angles(linkage, phi, self.n)
             motion = linkage.motion(np.append(phis, phi_in))
@@ -598,35 +634,64 @@ class DragEditor(Explorer):
         self.curve_line.set_data(path[:, 0], path[:, 1])
         self._why = why
         self._place_centres(centres)
+        if self._drag is not None:   # while a handle is held, of the texts only its letter (each costs ~1.5 ms a frame)
+            held = self.drawing.letters.get(self._drag[0])
+            for text in (*self.drawing.label_artists, *self.centre_labels):
+                text.set_visible(text is held)
         self._update_handles(redraw=False)
         self._animate_moving()
-        self.status.value = self._reading()
+        now = time.monotonic()
+        if self._drag is None or was_hidden or now - self._read_at >= STATUS_EVERY:   # a message fewer per step
+            self.status.value, self._read_at = self._reading(), now
+        mu = np.degrees(motion.transmission[:-1])
+        set_alt(self.fig, f"Kinematic diagram of the linkage {linkage.formula()} with joints "
+                          f"{', '.join(motion.points)}, drawn at crank angle φ = {math.degrees(self.phi):.0f}°, "
+                          f"handles (circles) on the joints that can be dragged, the path of {self.point} over the "
+                          f"crank's motion (purple) and the instantaneous centres (red crosses); transmission angle "
+                          f"from {mu.min():.0f}° to {mu.max():.0f}°.")
         self._set_visible(True)
-        rescaled = self._fit_view(path, grow=grow) if (fit or grow) else False
+        # while a handle is held the view stays (each step a blit, nothing jumps under the pointer)
+        rescaled = self._fit_view(path) if fit else False
         if rescaled or was_hidden or not (self.live and self.blit):
             self._redraw()
         else:
             self._blit_or_redraw()
-        self.last_draw_ms = 1e3 * (time.perf_counter() - start)
         return True
 
-    def _fit_view(self, path, grow: bool) -> bool:
+    def _fit_view(self, path) -> bool:
         x0, x1, y0, y1 = self.drawing.bounds(margin=0.08)
         if len(path):
             x0, x1 = min(x0, np.nanmin(path[:, 0])), max(x1, np.nanmax(path[:, 0]))
             y0, y1 = min(y0, np.nanmin(path[:, 1])), max(y1, np.nanmax(path[:, 1]))
-        if grow:   # while dragging the view only grows (no jumps under the pointer)
-            (cx0, cx1), (cy0, cy1) = self.ax.get_xlim(), self.ax.get_ylim()
-            if cx0 <= x0 and x1 <= cx1 and cy0 <= y0 and y1 <= cy1:
-                return False
-            x0, x1, y0, y1 = min(x0, cx0), max(x1, cx1), min(y0, cy0), max(y1, cy1)
-        return _fit(self.ax, (x0, x1, y0, y1), fill=True)
+        if not _fit(self.ax, (x0, x1, y0, y1), fill=True):
+            return False
+        self.ax.apply_aspect()   # the view final now, not at the next draw: the pointer's next event maps onto it
+        self._show_grid(redraw=False)   # as many grid lines as the new view holds
+        return True
+
+    def _show_grid(self, redraw: bool) -> None:
+        """With snapping on, the grid's lines at every step (as minor gridlines, up to 100 across the view)."""
+        step = float(self.step.value)
+        span = max(np.ptp(self.ax.get_xlim()), np.ptp(self.ax.get_ylim()))
+        shown = bool(self.snap.value) and span / step <= 100
+        for axis in (self.ax.xaxis, self.ax.yaxis):
+            axis.set_minor_locator(MultipleLocator(step) if shown else NullLocator())
+        if shown:
+            self.ax.grid(True, which="minor", alpha=0.12)
+        else:
+            self.ax.grid(False, which="minor")
+        if redraw:
+            self._redraw()
 
     def _place_centres(self, centres) -> None:
         rows = [] if centres is None else sorted(centres.centres.items())
         finite = [(centres.label(i + 1, j + 1), c.h[:2]) for (i, j), c in rows if c.h[2] == 1.0]
         xy = np.array([p for _, p in finite]).reshape(-1, 2)
         self.centre_marks.set_data(xy[:, 0], xy[:, 1])
+        # a centre at a joint is that joint (its letter is there): named only the centres found by Kennedy's lines
+        joints = np.array(list(self._positions().values()))
+        size = self.linkage.structure().scale
+        finite = [(name, p) for name, p in finite if np.min(np.hypot(*(joints - p).T)) > 1e-9 * size]
         while len(self.centre_labels) < len(finite):
             self.centre_labels.append(self.ax.annotate("", (0, 0), xytext=(3, 3), textcoords="offset points",
                                                        annotation_clip=True, **CENTRE_LABEL))
@@ -688,7 +753,7 @@ class DragEditor(Explorer):
 
     # -- changes ---------------------------------------------------------------------------------------------
     def _propose(self, base: Linkage, joint: str, xy, phi: float, *, push: bool, notify: bool,
-                 grow: bool = False) -> bool:
+                 dragging: bool = False) -> bool:
         step = float(self.step.value) if self.snap.value else None
         try:
             new, new_phi = moved(base, joint, xy, phi, step)
@@ -696,7 +761,7 @@ class DragEditor(Explorer):
             self._show_error(str(err))
             return False
         before = (self.linkage, self.phi)
-        if not self._show(new, new_phi, fit=not grow, grow=grow):
+        if not self._show(new, new_phi, fit=not dragging):
             return False
         if new_phi != before[1]:
             self._quiet = True
@@ -706,13 +771,13 @@ class DragEditor(Explorer):
             self._undo.append(before)
             self.undo_button.disabled = False
         if notify:
-            self._notify(dragging=grow)
+            self._notify(dragging=dragging)
         return True
 
     def _notify(self, dragging: bool) -> None:
-        for callback, always in self._callbacks:
-            if always or not dragging:
-                callback(self.linkage)
+        called = [callback(self.linkage) for callback, always in self._callbacks if always or not dragging]
+        if called and self._overlays and not self.message:   # the overlays the callbacks moved, drawn
+            self._blit_or_redraw()
 
     def _show_code(self) -> None:
         self.code_box.value = self.code()
@@ -751,7 +816,7 @@ class DragEditor(Explorer):
         if self._drag is None or event.x is None:
             return
         joint, base, phi = self._drag
-        self._propose(base, joint, self._data_xy(event), phi, push=False, notify=True, grow=True)
+        self._propose(base, joint, self._data_xy(event), phi, push=False, notify=True, dragging=True)
 
     def _on_release(self, event):
         if self._drag is None:
@@ -759,7 +824,7 @@ class DragEditor(Explorer):
         joint, base, phi = self._drag
         self._drag = None
         if event.x is not None:
-            self._propose(base, joint, self._data_xy(event), phi, push=False, notify=False, grow=True)
+            self._propose(base, joint, self._data_xy(event), phi, push=False, notify=False, dragging=True)
         failed = self.message
         if self.linkage is not base:
             self._undo.append((base, phi))

@@ -2,11 +2,12 @@
 
 :func:`check` compares a number with an expected value the grader passes in (textbook tolerance,
 "give more digits", unit and sign slips named); :func:`check_choice` checks a prediction;
-the checkers of :mod:`.design` run a student's design or function through mechlab and report every
-specification with its numbers. This package stores no answer.
+the checkers of :mod:`.design` (and :mod:`.coupler`, the dwell six-bar from a coupler curve) run a student's design
+or function through mechlab and report every specification with its numbers. This package stores no answer.
 """
 
 from ...errors import renamed
+from .coupler import dwell_sixbar_design
 from .design import (
                      DesignReport,
                      Requirement,
@@ -31,6 +32,7 @@ __all__ = [
                      "check",
                      "check_choice",
                      "check_form",
+                     "dwell_sixbar_design",
                      "dwell_slot_design",
                      "fourbar_design",
                      "function_check",

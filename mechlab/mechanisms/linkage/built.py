@@ -31,7 +31,8 @@ from ..base import (
     fmt_ranges,
     lift_on_ranges,
 )
-from .groups import PRP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
+from .closure import CamFollower, CurvedSlot, Tetrad
+from .groups import PRP, RPP, RPR, RRP, RRR, Crank, Group, Guide, Point, State
 
 # Crank angles sampled to find where a linkage assembles; each boundary is then bisected to 1e-13 rad.
 SAMPLES = 3600
@@ -62,8 +63,11 @@ def _guide(value, name: str = "guide") -> Guide:
 @dataclass(frozen=True)
 class Linkage(Mechanism):
     """A linkage built from its structure: the ``frame`` points {name: (x, y)}, the ``driver``
-    (a :class:`Crank` on a frame point) and the ``groups`` (:class:`RRR`, :class:`RRP`, :class:`RPR`,
-    :class:`PRP`, and :class:`Point` s fixed on links), each attached to joints defined before it.
+    (a :class:`Crank` on a frame point) and the ``groups`` (the dyads :class:`RRR`, :class:`RRP`, :class:`RPR`,
+    :class:`PRP`, :class:`RPP`; the class-IV :class:`Tetrad`; a pin in a :class:`CurvedSlot`; a
+    :class:`CamFollower` on a curve of a moving link; and :class:`Point` s fixed on links), each attached to joints
+    defined before it. The dyads are placed in closed form; the tetrad, the curved slot and the cam follower by
+    Newton's method continued over φ from the assembly their ``start`` chooses.
     ``output_link`` names the link whose law the motion reports (default: the last group's last link):
     its angle ψ, or its displacement s along a frame guide.
 
@@ -144,11 +148,12 @@ class Linkage(Mechanism):
 
     # -- building -----------------------------------------------------------------------------------------
     def then(self, group) -> Linkage:
-        """This linkage with ``group`` (an RRR, RRP, RPR, PRP or Point) attached.
+        """This linkage with ``group`` (an RRR, RRP, RPR, PRP, RPP, Tetrad, CurvedSlot, CamFollower or Point)
+        attached.
 
         Parameters
         ----------
-        group : RRR, RRP, RPR, PRP or Point
+        group : RRR, RRP, RPR, PRP, RPP, Tetrad, CurvedSlot, CamFollower or Point
             The next group, attached to joints already defined.
 
         Returns
@@ -281,6 +286,157 @@ class Linkage(Mechanism):
         """
         return self.then(PRP(_guide(first, "first"), _guide(second, "second"), joint, links))
 
+    def rpp(self, pin: str, joint: str, guide, slot: float = np.pi / 2, links=None) -> Linkage:
+        """Attach an :class:`RPP` dyad: a block at ``pin`` sliding in the straight slot of a yoke that slides on
+        ``guide``; ``joint`` is where the slot's centre line crosses the guide.
+
+        Parameters
+        ----------
+        pin : str
+            The joint carrying the block.
+        joint : str
+            The new joint, the yoke's reference point on the guide.
+        guide : Guide, str, (str, float) or (str, float, str)
+            The yoke's guide (see :meth:`rrp`).
+        slot : float
+            The slot's angle to the guide (radians); π/2 for a Scotch yoke.
+        links : (str, str), optional
+            The block's and the yoke's names.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> yoke = ml.Linkage({"O": (0, 0)}, ml.Crank("O", "A", 1.0)).rpp("A", "K", "O")
+        >>> round(float(yoke.motion(np.pi / 3).s), 12)
+        0.5
+        """
+        return self.then(RPP(pin, joint, _guide(guide), slot, links))
+
+    def tetrad(self, first: str, second: str, joints, on_first, on_second, lengths, start, at: float = 0.0,
+               links=None) -> Linkage:
+        """Attach a :class:`Tetrad`, the class-IV group: a ternary link about ``first`` carrying Q and P, one about
+        ``second`` carrying R and T, joined by the binary links Q-R and P-T.
+
+        Parameters
+        ----------
+        first, second : str
+            The known joints the ternary links turn about.
+        joints : (str, str, str, str)
+            The new joints Q, P, R, T.
+        on_first, on_second : ((float, float), (float, float))
+            Q and P in the first link's frame, R and T in the second's (origin at its outer joint).
+        lengths : (float, float)
+            |QR| and |PT|.
+        start : (float, float)
+            The ternary links' angles near which the group is assembled at the crank angle ``at``.
+        at : float
+            The crank angle of ``start`` (radians).
+        links : (str, str, str, str), optional
+            The first ternary, Q-R, P-T and second ternary links' names.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> six = (ml.Linkage({"O": (0, 0), "E": (1.04, 0)}, ml.Crank("O", "A", 0.25))
+        ...        .tetrad("A", "E", ("Q", "P", "R", "T"), ((-0.2, 0.55), (0.7, 0.55)), ((0.55, 0.45), (1.35, 0.15)),
+        ...                (0.25, 0.85), (3.67, 3.04), at=np.pi))
+        >>> six.formula()
+        'I(crank) → IV₂(AQP, QR, PT, ERT)'
+        >>> round(float(six.motion(1.0).psi), 4) == round(float(ml.SixBarIV.example().motion(1.0).psi), 4)
+        True
+        """
+        return self.then(Tetrad(first, second, tuple(joints), on_first, on_second, lengths, start, at, links))
+
+    def slot(self, pin: str, curve, joint: str, pivot: str | None = None, guide=None, start: float = 0.0,
+             at: float = 0.0, link: str | None = None) -> Linkage:
+        """Attach a :class:`CurvedSlot`: the pin ``pin`` runs in the curved slot ``curve`` of a link that turns about
+        ``pivot`` or slides on ``guide``.
+
+        Parameters
+        ----------
+        pin : str
+            The known joint in the slot.
+        curve : CircleSlot, ParametricSlot or SampledSlot
+            The slot in the link's frame (origin at the pivot, or at ``joint`` on the guide).
+        joint : str
+            The new joint: a point on the turning link's axis (at the distance of the slot's start point), or the
+            sliding link's origin on the guide.
+        pivot : str, optional
+            The known joint the link turns about.
+        guide : Guide, str, (str, float) or (str, float, str), optional
+            The guide the link slides on (see :meth:`rrp`).
+        start : float
+            The slot parameter near which the pin lies at the crank angle ``at``.
+        at : float
+            The crank angle of ``start`` (radians).
+        link : str, optional
+            The slotted link's name.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> lk = (ml.Linkage({"O": (0, 0), "B": (-4, 0)}, ml.Crank("O", "A", 1.0))
+        ...       .slot("A", ml.CircleSlot((3.0, 0.0), 3.0), "K", pivot="B", start=1.0))
+        >>> m = ml.CurvedSlotLink(1.0, 4.0, ml.CircleSlot((3.0, 0.0), 3.0), start=1.0)
+        >>> round(float(lk.motion(0.5).psi), 12) == round(float(m.motion(0.5).psi), 12)
+        True
+        """
+        guide = None if guide is None else _guide(guide)
+        return self.then(CurvedSlot(pin, curve, joint, pivot, guide, start, at, link))
+
+    def follow(self, curve, on: str, joint: str, pivot: str | None = None, arm: float = 0.0, guide=None,
+               start: float = 0.0, at: float = 0.0, link: str | None = None) -> Linkage:
+        """Attach a :class:`CamFollower`: the follower's point ``joint`` rides on ``curve``, fixed on the link ``on``
+        (a cam's roller-centre curve); the follower turns about ``pivot`` on an arm or slides on ``guide``.
+
+        Parameters
+        ----------
+        curve : CircleSlot, ParametricSlot or SampledSlot
+            The curve in the frame of the link ``on``.
+        on : str
+            The link carrying the curve.
+        joint : str
+            The new joint on the curve (the roller's centre).
+        pivot : str, optional
+            The known joint the follower's arm turns about.
+        arm : float
+            The arm's length |pivot joint|, with ``pivot``.
+        guide : Guide, str, (str, float) or (str, float, str), optional
+            The guide the follower slides on, ``joint`` on its line (see :meth:`rrp`).
+        start : float
+            The curve parameter near which the contact lies at the crank angle ``at``.
+        at : float
+            The crank angle of ``start`` (radians).
+        link : str, optional
+            The follower's name.
+
+        Returns
+        -------
+        Linkage
+
+        Examples
+        --------
+        >>> import mechlab as ml
+        >>> eccentric = (ml.Linkage({"O": (0, 0), "F": (0, 0)}, ml.Crank("O", "A", 1.0, name="cam"))
+        ...              .follow(ml.CircleSlot((0.5, 0.0), 2.0), "cam", "C", guide=("F", np.pi / 2), start=1.3))
+        >>> round(float(eccentric.motion(np.pi / 2).s), 12)   # the circle's centre at (0, 0.5), C on x = 0
+        2.5
+        """
+        guide = None if guide is None else _guide(guide)
+        return self.then(CamFollower(curve, on, joint, pivot, arm, guide, start, at, link))
+
     def point(self, name: str, on: str, at=(0.0, 0.0)) -> Linkage:
         """Fix the point ``name`` on the link ``on`` at (ξ, η) in the link's coordinates (a coupler point).
 
@@ -351,6 +507,10 @@ class Linkage(Mechanism):
             if isinstance(g, Point) and g.on not in links:
                 raise JointError(f"the point {g.name} is fixed on the link {g.on!r}, which is not defined before it; "
                                  f"links so far: {', '.join(sorted(links - {FRAME}))}")
+            for used in () if isinstance(g, Point) else g.uses():
+                if used not in links:
+                    raise JointError(f"{_what(g)} uses the link {used!r}, which is not defined before it; links so "
+                                     f"far: {', '.join(sorted(links - {FRAME}))}")
             for guide in () if isinstance(g, Point) else g.guides():
                 if guide.on is not None and guide.on not in links:
                     raise JointError(f"{_what(g)} slides on a guide fixed on the link {guide.on!r}, which is not "
@@ -368,7 +528,7 @@ class Linkage(Mechanism):
                 if j in carrier:
                     raise JointError(f"the joint {j!r} is attached twice: {made_by[j]} defines it, and {_what(g)} "
                                      f"again; give the new joint another name")
-                carrier[j] = g.on if isinstance(g, Point) else names[0]
+                carrier[j] = g.on if isinstance(g, Point) else g.carriers(names)[j]
                 made_by[j] = _what(g)
         return carrier
 
@@ -502,13 +662,23 @@ class Linkage(Mechanism):
         return tuple(dict.fromkeys([st.link(link).origin, *on]))
 
     # -- motion -----------------------------------------------------------------------------------------------
-    def _place(self, phi: np.ndarray, strict: bool) -> State:
-        state = State(phi, self._fixed, strict)
+    def _place(self, phi: np.ndarray, strict: bool, upto=None) -> State:
+        """The elements placed at ``phi`` (all, or those before ``upto``)."""
         carrier = self._carriers.__getitem__
+        state = State(phi, self._fixed, strict, lambda group, at: self._place(at, False, group), self._grids,
+                      carrier)
         with np.errstate(invalid="ignore", divide="ignore"):   # rows that do not close hold NaN until refused
-            for g in self._elements:
+            for k, g in enumerate(self._elements):
+                if g is upto:
+                    break
+                state.element = k
                 g.place(state, carrier)
         return state
+
+    @cached_property
+    def _grids(self) -> dict:
+        """The solutions that groups solved by continuation (:class:`Tetrad`, :class:`CurvedSlot`) follow."""
+        return {}
 
     @cached_property
     def _ranges(self):
@@ -652,7 +822,8 @@ class Linkage(Mechanism):
             for k, p in enumerate(slots):   # the slot (or guide) on this link along the block's track
                 track = pts[p.point].p
                 o = pts[link.origin].p
-                shown = len(joints) < 2 and k == 0   # a link drawn by its slot alone carries its number there
+                # a link drawn by its slot alone (not as a block, nor as a bar) carries its number there
+                shown = isinstance(link.axis, tuple) and len(joints) < 2 and k == 0
                 parts.append(Part("slot", lambda i, o=o, t=track, a=axis + p.angle: _along(o[i], t[i], a[i], size),
                                   link.name if shown else None))
         for link in st.links:
@@ -667,6 +838,9 @@ class Linkage(Mechanism):
             if link.block:
                 at, axis = pts[link.origin].p, link.angle(motion).theta
                 parts.append(Part("extra", lambda i, p=at, a=axis: block_outline(p[i], _dir(a[i]), 2 * size, size)))
+        for g in self.groups:
+            if not isinstance(g, Point):
+                parts += g.drawing(motion, st)
         return Sketch(tuple(parts), self.pivots)
 
 
@@ -768,10 +942,9 @@ def _along(origin, point, angle, size):
 def _guide_point(linkage: Linkage, link: str) -> str:
     """The frame point a frame guide of ``link`` passes through (the zero of its displacement s)."""
     for g in linkage.groups:
-        if isinstance(g, RRP) and g.link_names()[1] == link:
-            return g.guide.through
-        if isinstance(g, PRP) and link in g.link_names():
-            return (g.first if g.link_names()[0] == link else g.second).through
+        guide = None if isinstance(g, Point) else g.sliding().get(link)
+        if guide is not None:
+            return guide.through
     raise JointError(f"the link {link} slides on no frame guide")   # pragma: no cover - only asked of sliders
 
 

@@ -1,4 +1,4 @@
-"""The pieces a linkage is built from: the driving crank, the Assur dyads RRR, RRP, RPR, PRP, and points
+"""The pieces a linkage is built from: the driving crank, the Assur dyads RRR, RRP, RPR, PRP, RPP, and points
 fixed on a link; each places its new joints and links over all crank angles at once.
 
 A dyad whose inner pair is a revolute joint B (RRR, RRP, PRP) meets two constraints on B, a circle
@@ -42,11 +42,17 @@ class State:
     its origin and the link each joint was made on (its carrier), over the crank angles ``phi``.
 
     ``strict``: raise the named error where a group cannot close; otherwise mark those rows in ``ok``
-    (and leave NaN there), as the search for the reachable crank angles needs.
+    (and leave NaN there), as the search for the reachable crank angles needs. ``before(group, phi)``: the
+    linkage placed up to ``group`` at other crank angles (not strict), and ``grids``: what a group solved by
+    continuation keeps for its linkage (its solution over a turn); ``carrier(joint)``: the link each joint was
+    made on.
     """
 
-    def __init__(self, phi: np.ndarray, fixed: dict, strict: bool):
-        self.phi, self.n, self.strict, self.fixed = phi, len(phi), strict, fixed
+    def __init__(self, phi: np.ndarray, fixed: dict, strict: bool, before=None, grids=None, carrier=None):
+        self.phi, self.n, self.strict, self.fixed, self.carrier = phi, len(phi), strict, fixed, carrier
+        self.before, self.grids = before, {} if grids is None else grids
+        self.solved: dict[int, np.ndarray] = {}   # a group's unknowns where it solved them (its transmission)
+        self.element = 0   # the index of the element being placed
         self.points: dict[str, PointPath] = {k: fixed_point(xy, len(phi)) for k, xy in fixed.items()}
         zero = np.zeros(len(phi))
         self.angles: dict[str, AnglePath] = {FRAME: AnglePath(zero, zero, zero)}
@@ -207,6 +213,21 @@ class Group:
         """
         return ()
 
+    def carriers(self, names: tuple[str, ...]) -> dict[str, str]:
+        """The link each joint this element makes is fixed on (by default its first link).
+
+        Parameters
+        ----------
+        names : tuple of str
+            This element's link names.
+
+        Returns
+        -------
+        dict
+            Joint → link.
+        """
+        return dict.fromkeys(self.makes(), names[0])
+
     def guides(self) -> tuple[Guide, ...]:
         """The guides this element slides on.
 
@@ -216,6 +237,43 @@ class Group:
             The guides (empty for none).
         """
         return ()
+
+    def uses(self) -> tuple[str, ...]:
+        """The links this element needs defined before it, beyond those its joints are on.
+
+        Returns
+        -------
+        tuple of str
+            Link names (none by default).
+        """
+        return ()
+
+    def drawing(self, motion, structure) -> tuple:
+        """What this element adds to the kinematic diagram beyond its links' bars and blocks.
+
+        Parameters
+        ----------
+        motion : Motion
+            The motion drawn.
+        structure : Structure
+            The linkage's structure.
+
+        Returns
+        -------
+        tuple of Part
+            Empty by default.
+        """
+        return ()
+
+    def sliding(self) -> dict[str, Guide]:
+        """The guide each of this element's sliding links slides on.
+
+        Returns
+        -------
+        dict
+            Link name → Guide (empty for an element without a slider).
+        """
+        return {}
 
     def link_names(self) -> tuple[str, ...]:
         """The names of the links this element adds.
@@ -357,6 +415,26 @@ class Crank(Group, Checked):
         state.link(self.name, self.pivot, AnglePath(state.phi, np.ones(state.n), np.zeros(state.n)))
 
 
+class _OnGuide(_Dyad):
+    """A dyad that places its new ``joint`` from a known ``pin`` and one straight ``guide``."""
+
+    def needs(self):
+        return (self.pin, self.guide.through)
+
+    def guides(self):
+        """The guides this element slides on: its one guide.
+
+        Returns
+        -------
+        tuple of Guide
+            The guides.
+        """
+        return (self.guide,)
+
+    def makes(self):
+        return (self.joint,)
+
+
 def _place_inner(group, state, carrier, B, circles, lines):
     """The inner joint's analogs from its two differentiated constraints (``circles``: (P, l) about outer joints,
     ``lines``: (Q, θ) fixed on outer links), then the group's links."""
@@ -370,6 +448,18 @@ def _place_inner(group, state, carrier, B, circles, lines):
         (_, c1), (_, c2) = (r(dB) for r in rows)
         state.points[group.joint] = state.path(B, dB, _cramer(a1, c1, a2, c2, D))
     group.links_placed(state, carrier)
+
+
+def _place_crossing(group, state, carrier, first, second, why: str):
+    """The inner joint where two lines (Q, θ) cross, Q1 + t·u1 with (Q1 + t·u1 - Q2) × u2 = 0; ``why`` names
+    the lines when they are parallel."""
+    (Q1, th1), (Q2, th2) = first, second
+    u1, u2 = np.exp(1j * th1.theta), np.exp(1j * th2.theta)
+    sin = _im_conj(u1, u2)
+    state.closes(np.abs(sin) > DEAD_POINT_TOL, group, lambda i: why)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = _im_conj(_broadcast(Q2[0] - Q1[0], state.n), u2) / sin
+    _place_inner(group, state, carrier, Q1[0] + t * u1, (), (first, second))
 
 
 def _bar_angle(state, start: str, end: str) -> AnglePath:
@@ -499,7 +589,7 @@ def _guide_axis(guide: Guide, on: str, links):
 
 
 @dataclass(frozen=True)
-class RRP(_Dyad, Checked):
+class RRP(_OnGuide, Checked):
     """A rod ``pin``-``joint`` of ``length`` and a slider at ``joint`` on the straight ``guide``.
 
     Parameters
@@ -539,21 +629,8 @@ class RRP(_Dyad, Checked):
 
     kind: ClassVar[str] = "RRP"
 
-    def needs(self):
-        return (self.pin, self.guide.through)
-
-    def guides(self):
-        """The guides this element slides on: its one guide.
-
-        Returns
-        -------
-        tuple of Guide
-            The guides.
-        """
-        return (self.guide,)
-
-    def makes(self):
-        return (self.joint,)
+    def sliding(self):
+        return {self.link_names()[1]: self.guide}
 
     def link_names(self):
         return self._names((self.pin + self.joint, f"slider {self.joint}"))
@@ -722,6 +799,9 @@ class PRP(_Dyad, Checked):
 
     kind: ClassVar[str] = "PRP"
 
+    def sliding(self):
+        return dict(zip(self.link_names(), (self.first, self.second), strict=True))
+
     def needs(self):
         return (self.first.through, self.second.through)
 
@@ -751,13 +831,8 @@ class PRP(_Dyad, Checked):
                  Pair("prismatic", f"{two} on {on2}", on2, two, self.joint, self.second.angle)))
 
     def place(self, state, carrier):
-        (Q1, th1), (Q2, th2) = (g.line(state, carrier) for g in (self.first, self.second))
-        u1, u2 = np.exp(1j * th1.theta), np.exp(1j * th2.theta)
-        sin = _im_conj(u1, u2)
-        state.closes(np.abs(sin) > DEAD_POINT_TOL, self, lambda i: "its two guides are parallel")
-        with np.errstate(invalid="ignore", divide="ignore"):
-            t = _im_conj(_broadcast(Q2[0] - Q1[0], state.n), u2) / sin
-        _place_inner(self, state, carrier, Q1[0] + t * u1, (), ((Q1, th1), (Q2, th2)))
+        _place_crossing(self, state, carrier, *(g.line(state, carrier) for g in (self.first, self.second)),
+                        "its two guides are parallel")
 
     def links_placed(self, state, carrier):
         """Record the angles of this group's links (θ, θ', θ'') in ``state`` once its joint is placed.
@@ -788,6 +863,118 @@ class PRP(_Dyad, Checked):
         """
         one, two = self.link_names()
         return np.abs(np.mod(state.angles[two].theta - state.angles[one].theta + np.pi, 2 * np.pi) - np.pi)
+
+
+@dataclass(frozen=True)
+class RPP(_OnGuide, Checked):
+    """A block pinned at the joint ``pin`` slides in the straight slot of a link that slides on ``guide``.
+
+    The slotted link (a yoke) slides along the guide and carries its slot at ``slot`` to the guide; the new
+    joint ``joint`` is where the slot's centre line crosses the guide, the yoke's reference point. A yoke on a
+    frame guide translates; on a guide fixed on a moving link it turns with that link.
+
+    Parameters
+    ----------
+    pin : str
+        The known joint the block is pinned to.
+    joint : str
+        The new joint: the slot's centre line on the guide.
+    guide : Guide
+        The straight guide (on any link) the yoke slides on.
+    slot : float, optional
+        The slot's angle to the guide (radians; π/2, the default, is the Scotch yoke's).
+    links : sequence of str, optional
+        The block's and the yoke's names (default "block A" and "yoke K" for pin A, joint K).
+
+    Raises
+    ------
+    DimensionError
+        For an angle that is not finite.
+    StructureError
+        For ``links`` that are not two names.
+
+    Examples
+    --------
+    >>> RPP("A", "K", Guide("O")).link_names()
+    ('block A', 'yoke K')
+    """
+
+    pin: Name
+    joint: Name
+    guide: GuideSpec
+    slot: Angle = np.pi / 2
+    links: LinkNames = None
+
+    kind: ClassVar[str] = "RPP"
+
+    def sliding(self):
+        return {self.link_names()[1]: self.guide}
+
+    def carriers(self, names):
+        """The link each new joint is fixed on: the yoke carries ``joint``.
+
+        Parameters
+        ----------
+        names : tuple of str
+            This group's link names.
+
+        Returns
+        -------
+        dict
+            Joint → link.
+        """
+        return {self.joint: names[1]}
+
+    def link_names(self):
+        return self._names((f"block {self.pin}", f"yoke {self.joint}"))
+
+    def structure(self, carrier, links):
+        block, yoke = self.link_names()
+        on = self.guide.link(carrier)
+        turned = self.guide.angle + self.slot
+        return ((Link(block, self.pin, turned if on == FRAME else _turning_with(links[on], turned), block=True),
+                 Link(yoke, self.joint, _guide_axis(self.guide, on, links))),
+                (Pair("revolute", self.pin, carrier(self.pin), block, self.pin),
+                 Pair("prismatic", f"{block} in {yoke}", yoke, block, self.pin, self.slot),
+                 Pair("prismatic", f"{yoke} on {on}", on, yoke, self.joint, self.guide.angle)))
+
+    def _slot_line(self, state, carrier):
+        Q, th = self.guide.line(state, carrier)
+        return Q, th, state.z(self.pin), AnglePath(th.theta + self.slot, th.d, th.dd)
+
+    def place(self, state, carrier):
+        Q, th, P, ths = self._slot_line(state, carrier)
+        _place_crossing(self, state, carrier, (Q, th), (P, ths), "its slot is parallel to its guide")
+
+    def links_placed(self, state, carrier):
+        """Record the angles of this group's links (θ, θ', θ'') in ``state`` once its joint is placed.
+
+        Parameters
+        ----------
+        state : State
+            The linkage being placed.
+        carrier : callable
+            ``carrier(joint) → link``: the link each known joint was made on.
+        """
+        block, yoke = self.link_names()
+        _, th, _, ths = self._slot_line(state, carrier)
+        state.link(block, self.pin, ths)
+        state.link(yoke, self.joint, th)
+
+    def transmission(self, state):
+        """μ = the acute angle between the slot and the guide (π/2 when the block pushes along the guide).
+
+        Parameters
+        ----------
+        state : State
+            The placed linkage.
+
+        Returns
+        -------
+        numpy.ndarray
+            μ (radians) at every crank angle.
+        """
+        return np.full(state.n, np.arcsin(min(abs(np.sin(self.slot)), 1.0)))
 
 
 @dataclass(frozen=True)
