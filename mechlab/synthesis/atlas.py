@@ -7,26 +7,8 @@ strictly: 175 linkages); the coupler point (u, v) lies on a grid of step 0.25 in
 (u from −1.5 to 4.5 along A→B from A, v from −3 to 3 to its left: 625 points), 109,375 designs in all. Only
 the assembly with B left of A→E is swept: the other one is the mirror image of the point (u, −v).
 
-Each coupler curve is sampled at ``samples`` crank angles (1°), vectorised over the crank angle and over a
-chunk of designs at once. For every dwell width (a crank interval: 60°, 90°, 120°, 150° for arcs; 60°, 90°,
-120° for runs) and every start angle, a circle (Kåsa's algebraic fit) and a line (total least squares) are
-fitted to the window's points from running sums of the coordinates' powers, so each of the 360 windows costs
-a few arithmetic operations whatever its width. The four windows with the least algebraic residual are then
-fitted again, nearer the minimax circle, by Lawson's reweighted least squares (12 steps, all windows at once),
-and measured exactly: the ripple is max |ρ − R| over the window's points about the fitted centre, R the
-midrange of ρ (for a run, half the band of distances from the fitted line). The stored ripple is thus an
-upper bound of the window's minimax half-width, within 1 % of it for half the arcs a query asks for and within
-10 % for nine in ten (tests/test_atlas.py); :func:`~mechlab.synthesis.coupler_dwell.coupler_arcs` gives the
-exact minimax arc of a chosen design. Arcs whose radius exceeds ``max_radius`` (10 crank lengths) are not
-kept: a nearly straight piece is a run, and a rod that long makes no compact six-bar.
-
-What is stored, per design: the four-bar's least transmission angle and its size (the largest side of the
-bounding box of its pivots, joints and coupler curve); per dwell width, the best arc's start (in samples),
-ripple relative to its radius, the size with its centre (where the six-bar's dyad is attached) and its
-travel (the whole curve's spread of ρ about that centre, over the radius: what swings the output outside
-the dwell), and the best run's start, ripple relative to its length and travel (the spread of the curve's
-distances from the line, over the run's length). A query reads these; the chosen designs' fits
-(centre, radius, extent, line) are recomputed from their curves by the same code.
+Each curve is screened vectorised (running sums, Kåsa's circle and a total-least-squares line per window,
+then Lawson's reweighting on the best windows): see :func:`screen` for the method and what is stored.
 
 Storage: the atlas ships as ``mechlab/data/atlas.npz`` (``np.savez_compressed``: ripples float32, starts
 uint16, sizes and travels float16, i.e. to 0.05 %), 5.2 MB, read in 0.06–0.2 s. Building it costs about 110
@@ -333,6 +315,29 @@ def screen(rows: np.ndarray, settings: dict, *, detail: bool = False) -> dict:
     -------
     dict of numpy.ndarray
         The columns of :class:`Atlas`, one row a design (with ``detail``, the fits too).
+
+    Notes
+    -----
+    Each coupler curve is sampled at ``samples`` crank angles (1°), vectorised over the crank angle and over a
+    chunk of designs at once. For every dwell width (a crank interval: 60°, 90°, 120°, 150° for arcs; 60°, 90°,
+    120° for runs) and every start angle, a circle (Kåsa's algebraic fit) and a line (total least squares) are
+    fitted to the window's points from running sums of the coordinates' powers, so each of the 360 windows costs
+    a few arithmetic operations whatever its width. The four windows with the least algebraic residual are then
+    fitted again, nearer the minimax circle, by Lawson's reweighted least squares (12 steps, all windows at once),
+    and measured exactly: the ripple is max |ρ − R| over the window's points about the fitted centre, R the
+    midrange of ρ (for a run, half the band of distances from the fitted line). The stored ripple is thus an
+    upper bound of the window's minimax half-width, within 1 % of it for half the arcs a query asks for and within
+    10 % for nine in ten (tests/test_atlas.py); :func:`~mechlab.synthesis.coupler_dwell.coupler_arcs` gives the
+    exact minimax arc of a chosen design. Arcs whose radius exceeds ``max_radius`` (10 crank lengths) are not
+    kept: a nearly straight piece is a run, and a rod that long makes no compact six-bar.
+
+    What is stored, per design: the four-bar's least transmission angle and its size (the largest side of the
+    bounding box of its pivots, joints and coupler curve); per dwell width, the best arc's start (in samples),
+    ripple relative to its radius, the size with its centre (where the six-bar's dyad is attached) and its
+    travel (the whole curve's spread of ρ about that centre, over the radius: what swings the output outside
+    the dwell), and the best run's start, ripple relative to its length and travel (the spread of the curve's
+    distances from the line, over the run's length). A query reads these; the chosen designs' fits
+    (centre, radius, extent, line) are recomputed from their curves by the same code.
 
     Examples
     --------
