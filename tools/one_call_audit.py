@@ -129,6 +129,11 @@ def _argument_lists(inputs: list[float], k: int):
         yield from (tuple(inputs[i:i + k]) for i in range(len(inputs) - k + 1))
 
 
+# the scalars of each call already made, by (callable, arguments): the prompts of one assignment, and of different
+# assignments, share many numbers, so about a quarter of the calls of a whole audit are repeats
+_MADE: dict[tuple, list[tuple[str, float]]] = {}
+
+
 def sweep(inputs: list[float], calls: dict[str, object]) -> tuple[np.ndarray, list[str]]:
     """Every scalar one call on ``inputs`` gives: (values, the expression of each)."""
     values, names = [], []
@@ -139,14 +144,10 @@ def sweep(inputs: list[float], calls: dict[str, object]) -> tuple[np.ndarray, li
             if k is None or k > 6:
                 continue
             for args in dict.fromkeys(_argument_lists(inputs, k)):
-                try:
-                    signal.setitimer(signal.ITIMER_REAL, 0.2)
-                    try:
-                        hits = list(_scalars(fn(*[int(a) if float(a).is_integer() else a for a in args])))
-                    finally:
-                        signal.setitimer(signal.ITIMER_REAL, 0)
-                except (Exception, _Slow):
-                    continue
+                key = (name, fn, args)
+                if key not in _MADE:
+                    _MADE[key] = _call(fn, args)
+                hits = _MADE[key]
                 call = f"{name}({', '.join(f'{a:g}' for a in args)})"
                 for label, x in hits:
                     values.append(x)
@@ -154,6 +155,18 @@ def sweep(inputs: list[float], calls: dict[str, object]) -> tuple[np.ndarray, li
     finally:
         signal.signal(signal.SIGALRM, old)
     return np.array(values), names
+
+
+def _call(fn, args) -> list[tuple[str, float]]:
+    """The scalars of ``fn(*args)`` (integral values passed as int); none if it raises or runs over 0.2 s."""
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.2)
+        try:
+            return list(_scalars(fn(*[int(a) if float(a).is_integer() else a for a in args])))
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+    except (Exception, _Slow):
+        return []
 
 
 def answered_by(expected: float, found: tuple[np.ndarray, list[str]], rtol: float = 1e-9) -> str | None:
