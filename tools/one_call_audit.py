@@ -24,6 +24,7 @@ search is exhaustive over what it tries, not over every program a student could 
 from __future__ import annotations
 
 import argparse
+import functools
 import importlib
 import inspect
 import itertools
@@ -58,6 +59,7 @@ def _alarm(signum, frame):
     raise _Slow
 
 
+@functools.cache   # the same for every assignment (walking the package takes ~0.5 s)
 def public_callables() -> dict[str, object]:
     """Every public function and class of mechlab and its sub-modules, by dotted name (one entry each)."""
     found, seen = {}, set()
