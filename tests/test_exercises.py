@@ -3,6 +3,7 @@ checks (each with a passing and a failing design), and the assignments' shape (n
 
 from __future__ import annotations
 
+import functools
 import json
 import re
 from pathlib import Path
@@ -315,6 +316,7 @@ def test_an_assignment_states_units_and_points(path):
 
 
 # -- no graded answer one public call away (tools/one_call_audit.py) -----------------------------------------
+@functools.cache   # one module for every assignment's audit: it keeps the calls already made (_MADE)
 def _audit():
     import importlib.util
     spec = importlib.util.spec_from_file_location("one_call_audit", SOURCE.parents[1] / "tools" / "one_call_audit.py")

@@ -7,6 +7,7 @@ collects it. CHROMIUM overrides the browser binary (default: chromium on PATH).
 
 from __future__ import annotations
 
+import os
 import socket
 import sys
 from pathlib import Path
@@ -37,3 +38,23 @@ def browser():
             yield b
         finally:
             b.close()
+
+
+# axe-core from npm at a pin (`make axe-deps` puts it in .axe-deps/; AXE_JS overrides the path of axe.min.js):
+# test_book.py runs it during its one visit of each book page, test_a11y_book.py asserts on what it found
+AXE_JS = os.environ.get("AXE_JS") or str(ROOT / ".axe-deps" / "node_modules" / "axe-core" / "axe.min.js")
+AXE_TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "best-practice"]
+_AXE_RUN_JS = """async (tags) => {
+  const result = await axe.run({exclude: [['.theme-switch-button']]},
+                               {runOnly: {type: 'tag', values: tags}, resultTypes: ['violations']});
+  return result.violations.map(v => ({id: v.id, impact: v.impact, help: v.help,
+    nodes: v.nodes.map(n => n.target.join(' ') + ' :: ' + (n.failureSummary || '').split('\\n').slice(1).join(' '))}));
+}"""
+
+
+def axe_violations(page) -> list[dict]:
+    """axe-core's violations on the page open in ``page`` (Playwright): id, impact, help, offending nodes."""
+    if not os.path.isfile(AXE_JS):
+        pytest.fail(f"axe-core not found at {AXE_JS}: run `make axe-deps` (make test-browser does)")
+    page.add_script_tag(path=AXE_JS)
+    return page.evaluate(_AXE_RUN_JS, AXE_TAGS)

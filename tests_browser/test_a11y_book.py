@@ -1,43 +1,27 @@
 """Every page of the built book audited by axe-core in Chromium (issue 29: WCAG 2.1 AA).
 
-axe-core comes from npm at a pin (`make axe-deps` puts it in .axe-deps/, `make test-browser` does it
-first; AXE_JS overrides the path of axe.min.js). Each page of book/_build/html is served on 127.0.0.1,
-axe runs on it with the WCAG 2.0/2.1 A and AA rules and the best practices, and a violation of impact
-"serious" or "critical" fails the page's test. The theme's colour-mode switch is left out: the theme
-(pydata-sphinx-theme) names it "Color mode" while its icons carry titles, and its scripts set them again
-after book/_static/a11y.js removes them on some loads (axe "label-content-name-mismatch"), which is the
-theme's to fix, not this book's content. Every violation found, whatever its impact, goes to
-book/_build/screenshots/a11y.json: per page, the rule, its impact and how many elements break it.
+axe-core comes from npm at a pin (`make axe-deps` puts it in .axe-deps/, `make test-browser` does it first;
+AXE_JS overrides the path of axe.min.js). Each page of book/_build/html is served on 127.0.0.1, axe runs on it
+with the WCAG 2.0/2.1 A and AA rules and the best practices, and a violation of impact "serious" or "critical"
+fails the page's test. Each page is loaded once for this audit and test_book.py's checks (test_book.visit):
+axe runs as soon as the page and its math are loaded, before those checks scroll it and play its animations.
+The theme's colour-mode switch is left out: the theme (pydata-sphinx-theme) names it "Color mode" while its
+icons carry titles, and its scripts set them again after book/_static/a11y.js removes them on some loads (axe
+"label-content-name-mismatch"), which is the theme's to fix, not this book's content. Every violation found,
+whatever its impact, goes to book/_build/screenshots/a11y.json: per page, the rule, its impact and how many
+elements break it.
 """
 
 from __future__ import annotations
 
 import json
-import os
 
 import pytest
-from conftest import ROOT, block_remote
-from test_book import HTML, PAGES, SHOTS, server  # noqa: F401  (the same pages on the same server)
+from conftest import axe_violations, block_remote
+from test_book import PAGES, SHOTS, server, visit  # noqa: F401  (the same pages on the same server, visited once)
 
-AXE_JS = os.environ.get("AXE_JS") or str(ROOT / ".axe-deps" / "node_modules" / "axe-core" / "axe.min.js")
-AXE_TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "best-practice"]
 FAILING = {"serious", "critical"}
 FOUND: dict[str, list[dict]] = {}
-
-_RUN_JS = """async (tags) => {
-  const result = await axe.run({exclude: [['.theme-switch-button']]},
-                               {runOnly: {type: 'tag', values: tags}, resultTypes: ['violations']});
-  return result.violations.map(v => ({id: v.id, impact: v.impact, help: v.help,
-    nodes: v.nodes.map(n => n.target.join(' ') + ' :: ' + (n.failureSummary || '').split('\\n').slice(1).join(' '))}));
-}"""
-
-
-def axe_violations(page) -> list[dict]:
-    """axe-core's violations on the page open in ``page`` (Playwright): id, impact, help, offending nodes."""
-    if not os.path.isfile(AXE_JS):
-        pytest.fail(f"axe-core not found at {AXE_JS}: run `make axe-deps` (make test-browser does)")
-    page.add_script_tag(path=AXE_JS)
-    return page.evaluate(_RUN_JS, AXE_TAGS)
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -52,15 +36,10 @@ def _report():
 
 @pytest.mark.parametrize("page_path", PAGES)
 def test_page_has_no_serious_accessibility_violation(browser, server, page_path):  # noqa: F811
-    page = browser.new_page(viewport={"width": 1280, "height": 900})
-    try:
-        block_remote(page)
-        page.goto(f"{server}/{page_path}", wait_until="networkidle")
-        page.wait_for_timeout(300)   # MathJax typesets after load
-        found = axe_violations(page)
-    finally:
-        page.close()
-    FOUND[page_path] = found
+    seen = visit(browser, server, page_path)
+    if seen["axe"] is None:            # axe did not run: its own error, or the page's that stopped the visit first
+        raise seen["axe_error"] or seen["error"]
+    found = FOUND[page_path] = seen["axe"]
     bad = [f"{v['id']} ({v['impact']}, {len(v['nodes'])}×): {v['help']}; e.g. {v['nodes'][0]}"
            for v in found if v["impact"] in FAILING]
     assert not bad, "\n".join(bad)

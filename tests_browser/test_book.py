@@ -1,12 +1,12 @@
 """The built book in a real browser: every page, offline, math rendered, images, animations.
 
-Serves book/_build/html (built by `make book`) on 127.0.0.1 and visits every page with
-Chromium. A request to any other host is aborted and reported. A screenshot of each
-page is saved under book/_build/screenshots/ (the whole page; its first screen only with
-MECHLAB_SCREENSHOTS=screen, as CI sets it: a whole chapter is some 10,000 px tall and its
-picture took three times as long as loading the page, for a file nobody sees there), and what is
-measured on the way (every animation's width on screen, every page's size, the widest table
-against the column) goes to book/_build/screenshots/book.json.
+Serves book/_build/html (built by `make book`) on 127.0.0.1 and visits every page with Chromium, once for
+these checks and test_a11y_book.py's audit (``visit``). A request to any other host is aborted and reported. A
+screenshot of each page is saved under book/_build/screenshots/ (the whole page; its first screen only with
+MECHLAB_SCREENSHOTS=screen, as CI sets it: a whole chapter is some 10,000 px tall and its picture took three
+times as long as loading the page, for a file nobody sees there), and what is measured on the way (every
+animation's width on screen, every page's size, the widest table against the column) goes to
+book/_build/screenshots/book.json.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import threading
 from urllib.parse import urlparse
 
 import pytest
-from conftest import LOCAL_HOSTS, ROOT, block_remote
+from conftest import LOCAL_HOSTS, ROOT, axe_violations, block_remote
 
 HTML = ROOT / "book" / "_build" / "html"
 SHOTS = ROOT / "book" / "_build" / "screenshots"
@@ -86,8 +86,20 @@ def test_pages_found():
     assert any(p.startswith("notebooks/") for p in PAGES), PAGES
 
 
-@pytest.mark.parametrize("page_path", PAGES)
-def test_page(browser, server, page_path):
+VISITS: dict[str, dict] = {}   # each page's one visit: what test_page and test_a11y_book assert on
+
+
+def visit(browser, server, page_path) -> dict:
+    """Load ``page_path`` once for this module's checks and test_a11y_book's audit (two passes loading every page
+    took twice the time): {"error": test_page's first failed check or None, "axe": axe's violations (None if it
+    did not run), "axe_error": why it did not}."""
+    if page_path not in VISITS:
+        VISITS[page_path] = _visit(browser, server, page_path)
+    return VISITS[page_path]
+
+
+def _visit(browser, server, page_path) -> dict:
+    seen = {"error": None, "axe": None, "axe_error": None}
     context = browser.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
     errors, failed = [], []
@@ -103,6 +115,11 @@ def test_page(browser, server, page_path):
         assert response is not None and response.ok, f"{page_path}: HTTP {response and response.status}"
         page.evaluate("async () => { if (window.MathJax && MathJax.startup && MathJax.startup.promise)"
                       " await MathJax.startup.promise; }")
+        # test_a11y_book's audit, on the page as loaded (before the checks below scroll it and play its animations)
+        try:
+            seen["axe"] = axe_violations(page)
+        except (Exception, pytest.fail.Exception) as error:
+            seen["axe_error"] = error
 
         math = page.evaluate(_MATH_JS)
         raw = [m["text"] for m in math if not m["typeset"]]
@@ -172,8 +189,18 @@ def test_page(browser, server, page_path):
         assert not remote, f"{page_path}: requests to another host: {remote}"
         assert not failed, f"{page_path}: failed requests: {failed}"
         assert not errors, f"{page_path}: {errors}"
+    except (Exception, pytest.fail.Exception) as error:   # a failed check: test_page reports it
+        seen["error"] = error
     finally:
         context.close()
+    return seen
+
+
+@pytest.mark.parametrize("page_path", PAGES)
+def test_page(browser, server, page_path):
+    error = visit(browser, server, page_path)["error"]
+    if error is not None:
+        raise error
 
 
 def test_errata_links_resolve(browser, server):

@@ -24,6 +24,7 @@ search is exhaustive over what it tries, not over every program a student could 
 from __future__ import annotations
 
 import argparse
+import functools
 import importlib
 import inspect
 import itertools
@@ -58,6 +59,7 @@ def _alarm(signum, frame):
     raise _Slow
 
 
+@functools.cache   # the same for every assignment (walking the package takes ~0.5 s)
 def public_callables() -> dict[str, object]:
     """Every public function and class of mechlab and its sub-modules, by dotted name (one entry each)."""
     found, seen = {}, set()
@@ -129,6 +131,11 @@ def _argument_lists(inputs: list[float], k: int):
         yield from (tuple(inputs[i:i + k]) for i in range(len(inputs) - k + 1))
 
 
+# the scalars of each call already made, by (callable, arguments): the prompts of one assignment, and of different
+# assignments, share many numbers, so about a quarter of the calls of a whole audit are repeats
+_MADE: dict[tuple, list[tuple[str, float]]] = {}
+
+
 def sweep(inputs: list[float], calls: dict[str, object]) -> tuple[np.ndarray, list[str]]:
     """Every scalar one call on ``inputs`` gives: (values, the expression of each)."""
     values, names = [], []
@@ -139,14 +146,10 @@ def sweep(inputs: list[float], calls: dict[str, object]) -> tuple[np.ndarray, li
             if k is None or k > 6:
                 continue
             for args in dict.fromkeys(_argument_lists(inputs, k)):
-                try:
-                    signal.setitimer(signal.ITIMER_REAL, 0.2)
-                    try:
-                        hits = list(_scalars(fn(*[int(a) if float(a).is_integer() else a for a in args])))
-                    finally:
-                        signal.setitimer(signal.ITIMER_REAL, 0)
-                except (Exception, _Slow):
-                    continue
+                key = (name, fn, args)
+                if key not in _MADE:
+                    _MADE[key] = _call(fn, args)
+                hits = _MADE[key]
                 call = f"{name}({', '.join(f'{a:g}' for a in args)})"
                 for label, x in hits:
                     values.append(x)
@@ -154,6 +157,18 @@ def sweep(inputs: list[float], calls: dict[str, object]) -> tuple[np.ndarray, li
     finally:
         signal.signal(signal.SIGALRM, old)
     return np.array(values), names
+
+
+def _call(fn, args) -> list[tuple[str, float]]:
+    """The scalars of ``fn(*args)`` (integral values passed as int); none if it raises or runs over 0.2 s."""
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.2)
+        try:
+            return list(_scalars(fn(*[int(a) if float(a).is_integer() else a for a in args])))
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+    except (Exception, _Slow):
+        return []
 
 
 def answered_by(expected: float, found: tuple[np.ndarray, list[str]], rtol: float = 1e-9) -> str | None:
