@@ -479,6 +479,10 @@ def _check_outcome(delta, a, dwell):
     """A design verified on the simulated coupler curve, or a NoDesignError whose evidence is checked."""
     from time import process_time  # CPU time of this process: other jobs may load the machine
 
+    # a hang guard, not a speed goal (those live in benchmarks/): an answer takes ~0.1 s of CPU, yet on two
+    # cores shared with the book's build one call took 1.01 s of CPU time (CI, 2026-12-02)
+    prompt = 5.0
+
     from mechlab.errors import NoDesignError
     from mechlab.synthesis.lambda_guiding import RESOLUTION
 
@@ -486,7 +490,7 @@ def _check_outcome(delta, a, dwell):
     try:
         g = circle_guiding(delta * DEG, a, dwell * DEG, minimax=False)
     except NoDesignError as err:
-        assert process_time() - t0 < 1.0
+        assert process_time() - t0 < prompt
         ev = err.evidence
         if err.kind == "frame":
             assert not ev["span"][0] < a < ev["span"][1]
@@ -513,7 +517,7 @@ def _check_outcome(delta, a, dwell):
         else:
             raise AssertionError(f"unexpected refusal {err.kind!r}: {err}") from err
         return err.kind
-    assert process_time() - t0 < 1.0
+    assert process_time() - t0 < prompt
     rho = _sim_band(delta * DEG, a, g.r, g.k, dwell * DEG)
     dev = rho - 0.5 * (rho.max() + rho.min())
     E = 0.5 * np.ptp(rho)
