@@ -192,14 +192,7 @@ def open_and_run(page, base: str, token: str, name: str) -> None:
     assert not state["errors"], f"{name}: error output: {state['errors']}"
 
 
-# Known defect (issue 29, open): in chapter 8a the drag editor's "joint to move" drop-down, reached by Tab, shows
-# no focus outline in JupyterLab (CI of 2026-12-02); strict, so the mark must go once it passes
-KNOWN_FOCUS_DEFECT = {"08a_coupler_curve_dwells"}
-
-
-@pytest.mark.parametrize("path", [pytest.param(p, marks=pytest.mark.xfail(
-    strict=True, reason="the drag editor's drop-down shows no focus outline (issue 29)"))
-    if p.stem in KNOWN_FOCUS_DEFECT else p for p in CHAPTERS], ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.stem)
 def test_chapter_audited_and_explorers_by_keyboard(browser, lab, path):  # noqa: F811
     base, token, _ = lab
     page = browser.new_page(viewport={"width": 1400, "height": 1000})

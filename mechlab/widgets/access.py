@@ -6,7 +6,8 @@ tied to nothing (ipywidgets does not pass noUiSlider's ``handleAttributes``; noU
 :class:`ipywidgets.Play`'s buttons are bare icons. :data:`LABEL_CONTROLS_JS`, displayed once with an
 explorer in a live kernel (:func:`announce_controls`), fixes that in the page: each slider handle is
 ``aria-labelledby`` its visible label, each readout is named after it, each toggle-button group is a
-named ``group``, every control shows a focus outline (ipywidgets draws none on a slider's handle), the
+named ``group``, every control shows a focus outline (ipywidgets draws none on a slider's handle and
+removes the browser's on a drop-down), a drop-down keeps its arrow keys from JupyterLab's shortcuts, the
 play buttons are named "play", "stop" and "repeat", and every status line (:func:`status_line`) is a
 polite live region (``role="status"``), so that a changed reading is announced. It watches the page, so
 controls drawn later are named too. A live plot (an ipympl canvas, :func:`describe_live_figure`) is an
@@ -34,7 +35,7 @@ LABEL_CONTROLS_JS = r"""
   style.id = 'mechlab-focus-style';
   style.textContent = `:is(.noUi-handle, .widget-readout, .jupyter-matplotlib-canvas-div, .jupyter-widgets button,
     .jupyter-widgets select, .jupyter-widgets input):focus-visible
-    { outline: 2px solid """ + FOCUS_COLOUR + r"""; outline-offset: 2px; }`;
+    { outline: 2px solid """ + FOCUS_COLOUR + r""" !important; outline-offset: 2px !important; }`;
   document.head.appendChild(style);
   let serial = 0;
   const idOf = el => el.id || (el.id = 'mechlab-label-' + (++serial));
@@ -58,6 +59,8 @@ LABEL_CONTROLS_JS = r"""
       const kind = icon && ['pause', 'play', 'stop', 'retweet'].find(k => icon.classList.contains('fa-' + k));
       if (kind) b.setAttribute('aria-label', kind === 'retweet' ? 'repeat' : kind);
     });
+    // a drop-down keeps its arrow keys: JupyterLab's notebook shortcuts (arrows move between cells) skip it
+    root.querySelectorAll('.jupyter-widgets select').forEach(s => s.setAttribute('data-lm-suppress-shortcuts', 'true'));
     root.querySelectorAll('img.widget-image[title]').forEach(i => i.setAttribute('alt', i.title));
     // a live plot (ipympl): its canvas, which takes the focus, is an image named by the figure's alt text
     root.querySelectorAll('.jupyter-matplotlib-canvas-div').forEach(c => {
