@@ -419,8 +419,8 @@ def cmd_test(args) -> None:
 
 
 # Every chapter in JupyterLab (a server, a kernel, the browser) and the book's pages and PDF (the browser on files)
-# each keep about one core busy, with waits: with two cores they run beside each other. The explorers' keyboard
-# test opens the chapters in JupyterLab too (in CI: book pages 660 s against the lab's 261 s before it moved here).
+# each keep about one core busy, with waits: with two cores they run beside each other. The chapters' accessibility
+# audit and keyboard test run inside test_lab's visit of each chapter (one run of each chapter in the lab).
 BROWSER_BESIDE = ["tests_browser/test_lab.py", "tests_browser/test_a11y_explorers.py"]
 
 

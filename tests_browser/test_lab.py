@@ -7,7 +7,8 @@ settings, workspaces and runtime folders, so that the tracked notebooks stay cle
 notebook the test runs all cells, asserts there is no error output, presses the arrow key
 on the first explorer's crank-angle slider a dozen times, timing each press to the redrawn
 plot (an image re-shown by the inline backend, or an ipympl canvas receiving a blitted
-frame), and asserts that the plot changed; the medians go to
+frame), asserts that the plot changed, then audits the page for accessibility and operates every
+explorer by the keyboard alone (lab_a11y.audit_chapter); the medians go to
 book/_build/screenshots/latency.json (the 100 ms goal is a benchmark, benchmarks/README.md; the
 test asserts only that a redraw answers a key press within MECHLAB_LATENCY_LIMIT_MS). The server is stopped by its
 PID. A screenshot of each notebook is saved under book/_build/screenshots/.
@@ -30,6 +31,7 @@ from pathlib import Path
 
 import pytest
 from conftest import ROOT, block_remote, free_port
+from lab_a11y import _READY_JS, audit_chapter
 
 sys.path.insert(0, str(ROOT))
 import course
@@ -92,11 +94,6 @@ def lab():
 
 
 
-_READY_JS = """() => {
-  const w = window.jupyterapp && window.jupyterapp.shell.currentWidget;
-  const k = w && w.sessionContext && w.sessionContext.session && w.sessionContext.session.kernel;
-  return !!(w && w.content && w.content.model && w.context.isReady && k && k.status === 'idle');
-}"""
 
 # null while running; {errors, pending} once the kernel is idle with every code cell run,
 # or as soon as an error output appears (run-all stops there)
@@ -272,6 +269,7 @@ def test_notebook_in_jupyterlab(browser, lab, path):
 
         page.wait_for_timeout(500)
         page.screenshot(path=str(SHOTS / f"lab__{path.stem}.png"))
+        audit_chapter(page, path.stem)   # axe, named controls, each explorer by the keyboard (lab_a11y.py)
         assert not page_errors, f"{path.name}: page errors: {page_errors}"
         assert not remote, f"{path.name}: requests to another host: {remote}"
     finally:
