@@ -49,6 +49,12 @@ def test_an_animation_carries_its_alt_text_in_the_page():
     assert html.count('aria-label="Frame of the animation"') == 1 == html.count('class="anim-slider"')
     from mechlab.draw import local_animation_controls
     assert local_animation_controls(html).count('aria-label="Frame of the animation"') == 1
+    # its repetition-mode form (a landmark) is named after its subject: two animations on a page differ
+    other = animate(FourBar(1, 3, 3, 4, 1), n=8).to_jshtml()
+    modes = [re.findall(r'<form[^>]*aria-label="([^"]+)"', page) for page in (html, other)]
+    assert [len(m) for m in modes] == [1, 1] and modes[0] != modes[1], modes
+    assert modes[0][0].startswith("Repetition mode of: ") and "geneva" in modes[0][0].lower(), modes
+    plt.close("all")
 
 
 def test_a_law_plot_states_its_ranges():
