@@ -31,13 +31,12 @@ from pathlib import Path
 
 import pytest
 from conftest import ROOT, block_remote, free_port
-from lab_a11y import _READY_JS, audit_chapter
+from lab_a11y import _READY_JS, SHOTS, audit_chapter
 
 sys.path.insert(0, str(ROOT))
 import course
 
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
-SHOTS = ROOT / "book" / "_build" / "screenshots"
 
 # windowing off so every cell is in the DOM (the test's own setting; the news prompt and the update check
 # are off by the settings `make lab` ships, binder/lab-settings, as students get them)

@@ -142,12 +142,13 @@ class Animation(FuncAnimation):
                 writer.finish()
                 text = local_animation_controls(path.read_text())
                 # the figure's alternative text on the frames' <img>: the book's pages and the PDF carry it
-                alt = html.escape(f"{alt_text(self._fig)} Animation of {self._n_frames} frames; the buttons "
+                described = alt_text(self._fig)
+                alt = html.escape(f"{described} Animation of {self._n_frames} frames; the buttons "
                                   "below it play, pause and step it.".strip(), quote=True)
                 text = text.replace('<img id="_anim_img', f'<img alt="{alt}" id="_anim_img', 1)
                 # matplotlib names every animation's mode form "Repetition mode": two on a page would be landmarks
                 # of one name; each is named after its figure's subject (the first sentence of the alt text)
-                subject = alt_text(self._fig).split(". ")[0].split(", moving")[0].removesuffix(".") or "the animation"
+                subject = described.split(". ")[0].split(", moving")[0].removesuffix(".") or "the animation"
                 subject = html.escape(subject if len(subject) <= 90 else subject[:90].rsplit(" ", 1)[0] + " …",
                                       quote=True)
                 self._html_representation = text.replace('aria-label="Repetition mode"',
