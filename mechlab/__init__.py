@@ -143,6 +143,8 @@ from .synthesis.lambda_guiding import (
     existence_map,
     existence_region,
     fifth_order_line,
+    load_design_outcomes,
+    save_design_outcomes,
     straight_guiding,
     thesis_iteration,
     transmission_lines,
@@ -197,7 +199,8 @@ __all__ = [  # noqa: RUF022  grouped by topic, each group under its comment, not
     "write_cam_dxf",
     # Chebyshev
     "circle_guiding", "straight_guiding", "whole_turn_line", "whole_turn_guiding", "existence_map",
-    "existence_region", "design_outcomes", "DesignOutcomes", "band_touches", "fifth_order_line", "thesis_iteration",
+    "existence_region", "design_outcomes", "DesignOutcomes", "save_design_outcomes", "load_design_outcomes",
+    "band_touches", "fifth_order_line", "thesis_iteration",
     "transmission_lines",
     "classic_lambda", "LambdaRockerSixBar", "LambdaSlottedSixBar", "LambdaSliderSixBar", "LambdaTranslatingSlot",
     "mchv1", "mchv2", "mchv2_far_position", "mchv2_stroke", "mchv3_full_turn", "mchv3_full_turn_best",

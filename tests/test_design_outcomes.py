@@ -79,3 +79,43 @@ def test_plot_marks_every_request():
     assert ax.get_xlabel() == "frame a (units of l)" and fig.axes[0].get_ylabel() == "dwell 2α (degrees)"
     with pytest.raises(TypeError):
         plot_design_outcomes(["not a map"])
+
+
+def test_stored_maps_are_design_outcomes_of_today():
+    """The companion's three stored maps: the default grid at each stored δ, their spans as the code has them,
+    and in each map one request of every kind it holds, plus two designs, drawn at random, recomputed here
+    (a change of circle_guiding that alters an outcome fails this until the file is rebuilt)."""
+    maps = lambda_guiding.load_design_outcomes()
+    assert [m.delta for m in maps] == list(lambda_guiding.STORED_OUTCOME_DELTAS)
+    rng = np.random.default_rng(6)
+    for m in maps:
+        assert np.array_equal(m.fraction, lambda_guiding.OUTCOME_FRACTIONS)
+        assert np.array_equal(m.dwell, lambda_guiding.OUTCOME_DWELLS)
+        lo, hi = lambda_guiding._frame_span(m.delta)
+        assert m.span == (lo, hi) and np.allclose(m.a, lo + (hi - lo) * m.fraction, rtol=0, atol=1e-15)
+        kinds = set(m.kind.ravel())
+        assert "design" in kinds and "unresolved" not in kinds and len(kinds) >= 3
+        picks = [tuple(rng.choice(np.argwhere(m.kind == kind))) for kind in sorted(kinds)]
+        picks += [tuple(ij) for ij in rng.choice(np.argwhere(m.kind == "design"), 2, replace=False)]
+        for i, j in picks:
+            fresh = design_outcomes(m.delta, fractions=(m.fraction[i],), dwells=(m.dwell[j],))
+            assert fresh.kind[0, 0] == m.kind[i, j], (np.degrees(m.delta), m.fraction[i], np.degrees(m.dwell[j]))
+
+
+def test_maps_are_read_back_as_written(tmp_path):
+    small = design_outcomes(150 * DEG, fractions=(0.0, 0.5, 1.0), dwells=(60 * DEG, 2 * np.pi))
+    path = lambda_guiding.save_design_outcomes([small, small], tmp_path / "maps.npz")
+    back = lambda_guiding.load_design_outcomes(path)
+    assert len(back) == 2
+    for m in back:
+        assert m.delta == small.delta and m.span == small.span and m.kind.tolist() == small.kind.tolist()
+        assert all(np.array_equal(getattr(m, f), getattr(small, f)) for f in ("fraction", "a", "dwell"))
+    with pytest.raises(DimensionError, match="is no file"):
+        lambda_guiding.load_design_outcomes(tmp_path / "none.npz")
+    (tmp_path / "other.npz").write_bytes(b"not a map")
+    with pytest.raises(DimensionError, match="holds no maps"):
+        lambda_guiding.load_design_outcomes(tmp_path / "other.npz")
+    with pytest.raises(DimensionError, match="at least one"):
+        lambda_guiding.save_design_outcomes([], tmp_path / "empty.npz")
+    with pytest.raises(TypeError, match="maps"):
+        lambda_guiding.save_design_outcomes([small.kind], tmp_path / "bad.npz")

@@ -91,6 +91,11 @@ def small_atlas() -> Path:
     return ml.build_atlas((2.0, 3.0), u=(1.0,), v=(0.5,), samples=72, workers=1).save(scratch() / "atlas.npz")
 
 
+def small_outcomes():
+    """A one-frame, one-dwell map of the lambda mechanism's designs."""
+    return ml.design_outcomes(150 * DEG, fractions=(0.5,), dwells=(60 * DEG,))
+
+
 def snapshots():
     """One snapshot of the five-link mechanism with a higher pair (Kozhevnikov, Fig. 7.3)."""
     return tuple(np.array([p]) for p in ((0.0, 0.0), (1.0, 0.2), (1.8, 1.5), (0.7, 2.2), (-0.5, 1.4), (0.9, 1.1),
@@ -270,6 +275,9 @@ CASES = {
     "existence_map": lambda: (ml.existence_map, (150 * DEG,), {"dwells": (120 * DEG,), "n": 3}),
     "existence_region": lambda: (ml.existence_region, (240 * DEG,), {"line": None}),
     "design_outcomes": lambda: (ml.design_outcomes, (150 * DEG,), {"fractions": (0.5,), "dwells": (120 * DEG,)}),
+    "save_design_outcomes": lambda: (ml.save_design_outcomes, ([small_outcomes()], scratch() / "maps.npz"), {}),
+    "load_design_outcomes": lambda: (ml.load_design_outcomes, (ml.save_design_outcomes([small_outcomes()],
+                                                                                      scratch() / "maps.npz"),), {}),
     # mechlab.forces
     "forces.solve": lambda: (F.solve, (ml.model_for(fb), fb.motion(PHI)),
                              {"loads": (ml.Torque("rocker", 5.0),), "omega1": 2.0, "eps1": 0.5,

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
+from pathlib import Path
 from typing import Annotated
 
 import numpy as np
@@ -44,7 +45,9 @@ __all__ = [
     "existence_map",
     "existence_region",
     "fifth_order_line",
+    "load_design_outcomes",
     "rotation_boundary",
+    "save_design_outcomes",
     "straight_guiding",
     "thesis_iteration",
     "transmission_lines",
@@ -682,6 +685,102 @@ def design_outcomes(delta: float, fractions=OUTCOME_FRACTIONS, dwells=OUTCOME_DW
             except MechanismError:  # a = 0 is no frame at all; anything else is a request left unresolved
                 kind[i, j] = "frame" if a_ == 0 else "unresolved"
     return DesignOutcomes(float(delta), (float(lo), float(hi)), fractions, a, dwells, kind)
+
+
+# The maps of the companion of chapter 6, stored: each is 208 syntheses, 15-30 s of CPU (a test recomputes a sample)
+OUTCOME_DATA = Path(__file__).resolve().parent.parent / "data" / "design_outcomes.npz"
+STORED_OUTCOME_DELTAS = tuple(np.radians((90.0, 180.0, 240.0)))
+
+
+@validated
+def save_design_outcomes(maps: Annotated[object, Spec("items", expected=DesignOutcomes)],
+                         path: Annotated[object, Spec("path")]) -> Path:
+    """Write maps of :func:`design_outcomes` to ``path`` (``.npz``), read back by :func:`load_design_outcomes`.
+
+    Parameters
+    ----------
+    maps : sequence of DesignOutcomes
+        The maps, in the order they are to be read back.
+    path : str or path-like
+        The file to write.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Raises
+    ------
+    DimensionError
+        ``maps`` is empty.
+    TypeError
+        ``maps`` is not a tuple or list of DesignOutcomes, or ``path`` is not a path.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> small = ml.design_outcomes(np.radians(150), fractions=(0.0, 0.5), dwells=(np.radians(60),))
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     path = ml.save_design_outcomes([small], pathlib.Path(tmp) / "maps.npz")
+    ...     [m.kind.tolist() for m in ml.load_design_outcomes(path)]
+    [[['frame'], ['design']]]
+    """
+    if not maps:
+        raise DimensionError("maps must hold at least one DesignOutcomes (from design_outcomes)")
+    columns = {}
+    for i, m in enumerate(maps):
+        columns.update({f"{i}.delta": m.delta, f"{i}.span": np.array(m.span), f"{i}.fraction": m.fraction,
+                        f"{i}.a": m.a, f"{i}.dwell": m.dwell,
+                        f"{i}.kind": np.vectorize(OUTCOMES.index, otypes=[np.uint8])(m.kind)})
+    path = Path(path)
+    np.savez_compressed(path, count=len(maps), **columns)
+    return path
+
+
+@validated
+def load_design_outcomes(path: Annotated[object, Spec("path", optional=True)] = None) -> list[DesignOutcomes]:
+    """The maps of :func:`design_outcomes` the course stores (δ = 90°, 180°, 240°, the default frames and dwells),
+    or those :func:`save_design_outcomes` wrote to ``path``.
+
+    Parameters
+    ----------
+    path : str or path-like, optional
+        A file written by :func:`save_design_outcomes` (default: the shipped ``mechlab/data/design_outcomes.npz``,
+        rebuilt by ``save_design_outcomes([design_outcomes(d) for d in STORED_OUTCOME_DELTAS], OUTCOME_DATA)``).
+
+    Returns
+    -------
+    list of DesignOutcomes
+        The maps, in the order they were saved.
+
+    Raises
+    ------
+    DimensionError
+        ``path`` is no file, or holds no maps written by :func:`save_design_outcomes`.
+    TypeError
+        ``path`` is not a path.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import mechlab as ml
+    >>> maps = ml.load_design_outcomes()
+    >>> [round(float(np.degrees(m.delta))) for m in maps], maps[0].kind.shape
+    ([90, 180, 240], (13, 16))
+    """
+    path = Path(OUTCOME_DATA if path is None else path)
+    if not path.is_file():
+        raise DimensionError(f"path {str(path)!r} is no file (maps are written by save_design_outcomes)")
+    try:
+        with np.load(path, allow_pickle=False) as f:
+            return [DesignOutcomes(float(f[f"{i}.delta"]), tuple(float(v) for v in f[f"{i}.span"]),
+                                   f[f"{i}.fraction"], f[f"{i}.a"], f[f"{i}.dwell"],
+                                   np.array(OUTCOMES, dtype=object)[f[f"{i}.kind"]])
+                    for i in range(int(f["count"]))]
+    except (OSError, ValueError, KeyError, IndexError) as err:
+        raise DimensionError(f"path {str(path)!r} holds no maps written by save_design_outcomes: {err}") from None
 
 
 def _below_resolution(where, delta, a, alpha, cranks) -> NoDesignError | None:
