@@ -23,7 +23,8 @@ sync:
 	$(COURSE) sync
 
 # the library's tests, then every notebook and every assignment's source (nbval); nbgrader for the grading tests.
-# With two cores the grading tests, the one-call audit and the many-kernels test run beside them (course.py BESIDE).
+# With two cores the grading tests, the one-call audit, the many-kernels test and the lambda synthesis' sweeps run
+# beside them (course.py BESIDE).
 test: nbgrader
 	$(COURSE) test
 
@@ -49,10 +50,9 @@ poppler:
 pdf: chromium poppler
 	SPHINXOPTS="$(SPHINXOPTS)" $(COURSE) pdf
 
-# The book and the PDF (each built only if not current, as `make book pdf` does), then their pages in the browser;
-# every chapter in JupyterLab (tests_browser/test_lab.py) is tested beside, from the start (it needs no book).
-test-browser: chromium poppler venv-browser axe-deps
-	SPHINXOPTS="$(SPHINXOPTS)" CHROMIUM=$(CHROMIUM) $(COURSE) test-browser
+# With two cores every chapter in JupyterLab (tests_browser/test_lab.py) is tested beside the book and the PDF.
+test-browser: book pdf chromium venv-browser axe-deps
+	CHROMIUM=$(CHROMIUM) $(COURSE) test-browser
 
 # axe-core (the accessibility audit tests_browser/test_a11y_book.py injects into every page) from npm, at a pin,
 # into .axe-deps/; npm runs on the Node.js of .hub-deps/ (below), whatever node the machine has or lacks

@@ -141,7 +141,13 @@ def test_the_shipped_atlas_is_what_build_atlas_gives():
     for key, col in fresh.columns.items():
         shipped = ATLAS.columns[key][sample]
         if key.endswith("start"):
-            assert np.mean(col == shipped) > 0.999, key  # a start may flip between two equally good windows
+            # a start may flip between two windows whose ripples tie to rounding, and rounding differs between
+            # CPUs (numpy's SIMD paths: 7 of 4,512 arc starts flipped on an AMD EPYC): rare, and as good
+            differ = col != shipped
+            assert np.mean(differ) < 0.01, key
+            ripple = key.replace("start", "ripple")
+            np.testing.assert_allclose(fresh.columns[ripple][differ], ATLAS.columns[ripple][sample][differ],
+                                       rtol=1e-4, err_msg=key)
         else:
             np.testing.assert_allclose(col.astype(float), shipped.astype(float), rtol=1e-4, err_msg=key)
 
