@@ -92,7 +92,9 @@ def test_stored_maps_are_design_outcomes_of_today():
         assert np.array_equal(m.fraction, lambda_guiding.OUTCOME_FRACTIONS)
         assert np.array_equal(m.dwell, lambda_guiding.OUTCOME_DWELLS)
         lo, hi = lambda_guiding._frame_span(m.delta)
-        assert m.span == (lo, hi) and np.allclose(m.a, lo + (hi - lo) * m.fraction, rtol=0, atol=1e-15)
+        # the span's upper end for δ < 120° comes from a continuation: equal to rounding, which differs between CPUs
+        assert np.allclose(m.span, (lo, hi), rtol=0, atol=1e-12)
+        assert np.allclose(m.a, lo + (hi - lo) * m.fraction, rtol=0, atol=1e-12)
         kinds = set(m.kind.ravel())
         assert "design" in kinds and "unresolved" not in kinds and len(kinds) >= 3
         picks = [tuple(rng.choice(np.argwhere(m.kind == kind))) for kind in sorted(kinds)]
