@@ -3,6 +3,7 @@ import gc
 import os
 
 import matplotlib
+import pytest
 from hypothesis import settings
 
 matplotlib.use("Agg")
@@ -18,3 +19,15 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "repeatable"))
 # it is not scanned again by each of the garbage collections of the interpreter's shutdown, which took seconds per
 # thousand tests (the heap of a whole run is large), on the critical path of `make test`
 atexit.register(gc.freeze)
+
+
+@pytest.fixture(autouse=True)
+def _no_ipython_shell_left_behind():
+    """A test that makes IPython's InteractiveShell (the alt-text tests, docstring examples) leaves none behind: while
+    one lives, every static explorer's redraw goes through its display formatter and prints a PNG (0.2–1 s a
+    control), which made the widget tests after tests/test_a11y.py 5–40× slower (135 s instead of 23)."""
+    yield
+    from IPython.core.interactiveshell import InteractiveShell
+
+    if InteractiveShell.initialized():
+        InteractiveShell.clear_instance()
