@@ -51,8 +51,15 @@ pdf: chromium poppler
 	SPHINXOPTS="$(SPHINXOPTS)" $(COURSE) pdf
 
 # With two cores every chapter in JupyterLab (tests_browser/test_lab.py) is tested beside the book and the PDF.
+# Its two halves: `make test-lab` (the chapters in JupyterLab: no book needed) and `make test-pages` (the book's
+# pages and the PDF). MECHLAB_LAB_PYTHON=<a venv's python> serves the chapters from that venv's JupyterLab.
+.PHONY: test-lab test-pages
 test-browser: book pdf chromium venv-browser axe-deps
 	CHROMIUM=$(CHROMIUM) $(COURSE) test-browser
+test-lab: chromium venv-browser axe-deps
+	CHROMIUM=$(CHROMIUM) $(COURSE) test-browser --only lab
+test-pages: book pdf chromium venv-browser axe-deps
+	CHROMIUM=$(CHROMIUM) $(COURSE) test-browser --only pages
 
 # axe-core (the accessibility audit tests_browser/test_a11y_book.py injects into every page) from npm, at a pin,
 # into .axe-deps/; npm runs on the Node.js of .hub-deps/ (below), whatever node the machine has or lacks

@@ -167,9 +167,10 @@ def pure_wheels(python: Path, into: Path) -> list[Path]:
 def install_command(pip: list[str], part: str, pure: list[Path]) -> list[str]:
     """pip's command for `part`; the wheel files in `pure` stand for their distributions' requirements."""
     wheels = [str(path) for path in pure]
+    # --no-compile: bytecode is written on first import instead, only for the modules used (compiling the whole
+    # set took 33 of the 71 s `venv all` took on 2 cores, on the critical path of a fresh CI)
     if part == "all":
-        return pip + ["-r", "environment.txt", *wheels]
-    # --no-compile: bytecode is written on first import instead, only for the modules used
+        return pip + ["--no-compile", "-r", "environment.txt", *wheels]
     return pip + ["--no-compile", "-c", "environment.txt", f"-e.[{part}]", *wheels]
 
 
@@ -409,8 +410,8 @@ def pytest_beside(python: Path, beside: list[str], chain: list[list[str]]) -> No
 # The grading tests (nbgrader executes every planted submission, one after another; a looping one is stopped),
 # the one-call audit of the exercises, the many-kernels test and the lambda synthesis' sweeps over its existence
 # region take about as long as all the other tests and the notebooks together, on about one core: with two cores
-# they run beside them, their report after (measured side by side on 2 cores before the last two joined them:
-# the library 885 s, of it ≈130 s in those two; the grading, audit and kernels 707 s).
+# they run beside them, their report after (measured side by side on 2 cores: the library 572 CPU-s, the grading,
+# audit, kernels, looping submission and sweeps 884 s wall with 30 students graded, now 10).
 BESIDE = ["tests/test_grading.py", "tests/test_exercises.py", "tests/test_kernels.py", "tests/test_report_stopped.py",
           "tests/test_chebyshev.py"]
 
@@ -423,14 +424,21 @@ def cmd_test(args) -> None:
 
 # Every chapter in JupyterLab (a server, a kernel, the browser) and the book's pages and PDF (the browser on files)
 # each keep about one core busy, with waits: with two cores they run beside each other. The chapters' accessibility
-# audit and keyboard test run inside test_lab's visit of each chapter (one run of each chapter in the lab).
-BROWSER_BESIDE = ["tests_browser/test_lab.py", "tests_browser/test_a11y_explorers.py"]
+# audit and keyboard test run inside test_lab's visit of each chapter (one run of each chapter in the lab). The lab's
+# tests need no book: `--only lab` runs them alone (CI starts them before the book is built), `--only pages` the rest.
+LAB_TESTS = ["tests_browser/test_lab.py", "tests_browser/test_a11y_explorers.py", "tests_browser/test_drag_lab.py"]
 
 
 def cmd_test_browser(args) -> None:
     python = ensure_venv(Path(args.venv), "browser")
-    pytest_beside(python, BROWSER_BESIDE, [["-m", "pytest", "-q", "-p", "no:cacheprovider", "tests_browser",
-                                            *(f"--ignore={path}" for path in BROWSER_BESIDE)]])
+    pytest = ["-m", "pytest", "-q", "-p", "no:cacheprovider"]
+    pages = [*pytest, "tests_browser", *(f"--ignore={path}" for path in LAB_TESTS)]
+    if args.only == "lab":
+        run(python, *pytest, *LAB_TESTS)
+    elif args.only == "pages":
+        run(python, *pages)
+    else:
+        pytest_beside(python, LAB_TESTS, [pages])
 
 
 def cmd_book(args) -> None:
@@ -479,8 +487,11 @@ def main(argv: list[str] | None = None) -> None:
         p.set_defaults(func=func or run_sync)
     sub.choices["lab"].add_argument("--port", type=int, default=8888)
     sub.add_parser("test", help="library tests, then every notebook").set_defaults(func=cmd_test)
-    sub.add_parser("test-browser", help="tests_browser/: the built book, the PDF, every chapter in JupyterLab "
-                   "(needs Chromium)").set_defaults(func=cmd_test_browser)
+    p = sub.add_parser("test-browser", help="tests_browser/: the built book, the PDF, every chapter in JupyterLab "
+                       "(needs Chromium)")
+    p.add_argument("--only", choices=["lab", "pages"], help="only the chapters in JupyterLab (no book needed), or "
+                   "only the book's pages and the PDF")
+    p.set_defaults(func=cmd_test_browser)
     sub.add_parser("book", help="the HTML book").set_defaults(func=cmd_book)
     sub.add_parser("pdf", help=f"the whole book as one PDF, {PDF} (needs Chromium)").set_defaults(func=cmd_pdf)
     p = sub.add_parser("execute", help="execute notebooks with nbconvert (IPC kernels, 60 s per cell)")

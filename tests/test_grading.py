@@ -425,7 +425,8 @@ def planted(tmp_path_factory):
              "slipped": _fill(edition["slipped"], src), "looping": _fill(edition["looping"], src)}
     slip = _answer_line(books["slipped"], "ex2")
     slip.source += "\nindex_time = index_time * 1000  # in ms"                    # a unit slip
-    books["looping"].cells.insert(3, nbformat.v4.new_code_cell("while True:\n    pass"))
+    # a loop that waits, not one that spins (tests/test_report_stopped.py has that one): its 10 s take no CPU
+    books["looping"].cells.insert(3, nbformat.v4.new_code_cell("import time\nwhile True:\n    time.sleep(0.1)"))
     for who, nb in books.items():
         (subs / who).mkdir(parents=True)
         nbformat.write(nb, subs / who / f"{VARIANT}.ipynb")

@@ -162,7 +162,7 @@ def test_nbval_route_uses_ipc(tmp_path):
 
 
 def test_nbconvert_route_uses_ipc(tmp_path):
-    """`python course.py execute` (.ci/run, `make book-instructor`): nbconvert with course.NBCONVERT_ARGS."""
+    """`python course.py execute` (`make book-instructor`): nbconvert with course.NBCONVERT_ARGS."""
     sys.path.insert(0, str(ROOT))
     import course
 

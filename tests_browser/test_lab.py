@@ -1,7 +1,8 @@
 """Every chapter notebook in JupyterLab, as a student uses it, in a real browser.
 
 JupyterLab is started with `make lab`'s arguments (course.lab_argv: 127.0.0.1, token
-authentication on, no news or update checks) on a free port, serving a working copy made
+authentication on, no news or update checks) on a free port, from this venv or from the one
+MECHLAB_LAB_PYTHON names (CI: a student's lab-only venv on Debian's python3), serving a working copy made
 by course.sync as `make lab` makes my-notebooks/, but in a temporary folder with its own
 settings, workspaces and runtime folders, so that the tracked notebooks stay clean. For each
 notebook the test runs all cells, asserts there is no error output, presses the arrow key
@@ -37,6 +38,9 @@ sys.path.insert(0, str(ROOT))
 import course
 
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
+# the Python whose JupyterLab serves the chapters: this venv's, or a student's lab-only venv (CI: Debian's python3
+# with the lab part of environment.txt, made by `python3 course.py venv lab`)
+LAB_PYTHON = Path(os.environ.get("MECHLAB_LAB_PYTHON") or sys.executable)
 
 # windowing off so every cell is in the DOM (the test's own setting; the news prompt and the update check
 # are off by the settings `make lab` ships, binder/lab-settings, as students get them)
@@ -61,7 +65,7 @@ def lab():
                IPYTHONDIR=str(tmp / "ipython"), MPLBACKEND="module://matplotlib_inline.backend_inline")
     log = open(tmp / "lab.log", "w")  # noqa: SIM115  JupyterLab writes it until the finally below closes it
     proc = subprocess.Popen(
-        course.lab_argv(Path(sys.executable), root, port)
+        course.lab_argv(LAB_PYTHON, root, port)
         + ["--ServerApp.port_retries=0", f"--IdentityProvider.token={token}", "--LabApp.expose_app_in_browser=True",
            f"--LabApp.user_settings_dir={tmp / 'settings'}", f"--LabApp.workspaces_dir={tmp / 'workspaces'}"],
         stdout=log, stderr=subprocess.STDOUT, env=env, cwd=tmp)

@@ -1,7 +1,7 @@
 """Kernels that talk over Unix sockets with unique absolute paths: no TCP port to race for.
 
 Every notebook the project executes (nbval in ``make test``, myst-nb in ``make book`` and
-``make pdf``, nbconvert in ``.ci/run`` and ``make book-instructor``) starts its kernels
+``make pdf``, nbconvert in ``course.py execute`` and ``make book-instructor``) starts its kernels
 through the classes here. Why: jupyter_client picks a kernel's five TCP ports by binding
 port 0 and closing the socket, writes them into the connection file, and only then does the
 kernel bind them. In that gap any other process on the machine (another build, another
