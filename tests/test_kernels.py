@@ -186,3 +186,25 @@ def test_book_route_uses_ipc():
                           check=True, timeout=60)
     name, timeout = done.stdout.split()
     assert name == "IPCKernelManager" and int(timeout) <= 60
+
+
+def _kernel_clients_without_ipc(source: str) -> list[int]:
+    """Lines of ``source`` that make a NotebookClient without naming its kernel manager class."""
+    import ast
+
+    calls = [node for node in ast.walk(ast.parse(source)) if isinstance(node, ast.Call)]
+    return [call.lineno for call in calls
+            if getattr(call.func, "id", getattr(call.func, "attr", None)) == "NotebookClient"
+            and "kernel_manager_class" not in {k.arg for k in call.keywords}]
+
+
+def test_every_notebook_client_of_the_project_starts_ipc_kernels():
+    """A test that executes a notebook itself names the IPC kernel manager too: one that did not
+    (tests_browser/test_book_helpers.py) waited out its 120 s cell timeout on a missed reply in CI."""
+    assert _kernel_clients_without_ipc("NotebookClient(nb, timeout=5)") == [1]   # the check sees a plain one
+    assert _kernel_clients_without_ipc("NotebookClient(nb, kernel_manager_class=K)") == []
+    found = {str(path.relative_to(ROOT)): lines for folder in ("tests", "tests_browser", "tests_hub", "tools",
+                                                               "mechlab", "book", "assignments")
+             for path in (ROOT / folder).rglob("*.py") if ".nbgrader-deps" not in path.parts
+             and (lines := _kernel_clients_without_ipc(path.read_text(encoding="utf-8")))}
+    assert not found, found

@@ -16,7 +16,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "tools"))
-from chromium import CHROMIUM, CHROMIUM_ARGS, LOCAL_HOSTS, block_remote  # noqa: E402,F401  (shared with tools/print_pdf.py)
+from chromium import CHROMIUM, CHROMIUM_ARGS, LOCAL_HOSTS, watch_remote  # noqa: E402,F401  (shared with tools/print_pdf.py)
 
 
 def free_port() -> int:

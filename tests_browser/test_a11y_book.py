@@ -17,7 +17,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from conftest import axe_violations, block_remote
+from conftest import axe_violations
 from test_book import PAGES, SHOTS, server, visit  # noqa: F401  (the same pages on the same server, visited once)
 
 FAILING = {"serious", "critical"}
@@ -49,7 +49,6 @@ def test_a_planted_violation_is_found(browser, server):  # noqa: F811
     """The audit sees what it must: an image without alt text and grey-on-white text are reported."""
     page = browser.new_page()
     try:
-        block_remote(page)
         page.goto(f"{server}/{PAGES[0]}", wait_until="networkidle")
         page.evaluate("""() => { const main = document.querySelector('main') || document.body;
           main.insertAdjacentHTML('afterbegin', '<img src="_static/favicon.svg"><p style="color:#bbb">faint</p>'); }""")
@@ -63,7 +62,6 @@ def test_math_carries_assistive_mathml(browser, server):  # noqa: F811
     """MathJax's assistive MathML is on: every typeset formula has a hidden MathML copy a screen reader reads."""
     page = browser.new_page()
     try:
-        block_remote(page)
         page.goto(f"{server}/glossary.html", wait_until="networkidle")
         page.wait_for_function("() => window.MathJax && MathJax.startup && MathJax.startup.promise")
         page.evaluate("() => MathJax.startup.promise")

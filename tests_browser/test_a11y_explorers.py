@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import contextlib
 
-from conftest import block_remote
 from lab_a11y import _READY_JS, audit_page, serious
 from test_lab import _STATE_JS, lab  # noqa: F401  (the same lab)
 
@@ -81,7 +80,6 @@ def test_a_planted_figure_without_alt_fails_the_audit(browser, lab):  # noqa: F8
     nbformat.write(live, root / "planted_live.ipynb")
     nbformat.write(stored, root / "planted_stored.ipynb")   # not signed: JupyterLab opens it untrusted
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
-    block_remote(page)
     try:
         open_and_run(page, base, token, "planted_live.ipynb")
         live_images = page.evaluate(_IMAGES_JS)

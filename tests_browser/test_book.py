@@ -1,12 +1,12 @@
 """The built book in a real browser: every page, offline, math rendered, images, animations.
 
 Serves book/_build/html (built by `make book`) on 127.0.0.1 and visits every page with Chromium, once for
-these checks and test_a11y_book.py's audit (``visit``). A request to any other host is aborted and reported. A
-screenshot of each page is saved under book/_build/screenshots/ (the whole page; its first screen only with
-MECHLAB_SCREENSHOTS=screen, as CI sets it: a whole chapter is some 10,000 px tall and its picture took three
-times as long as loading the page, for a file nobody sees there), and what is measured on the way (every
-animation's width on screen, every page's size, the widest table against the column) goes to
-book/_build/screenshots/book.json.
+these checks and test_a11y_book.py's audit (``visit``), all in one tab. A request to any other host goes to a
+closed proxy (tools/chromium.py) and is reported. A screenshot of each page is saved under
+book/_build/screenshots/ (the whole page; its first screen only with MECHLAB_SCREENSHOTS=screen, as CI sets it:
+a whole chapter is some 10,000 px tall and its picture took three times as long as loading the page, for a file
+nobody sees there), and what is measured on the way (every animation's width on screen, every page's size, the
+widest table against the column) goes to book/_build/screenshots/book.json.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import threading
 from urllib.parse import urlparse
 
 import pytest
-from conftest import LOCAL_HOSTS, ROOT, axe_violations, block_remote
+from conftest import LOCAL_HOSTS, ROOT, axe_violations, watch_remote
 
 HTML = ROOT / "book" / "_build" / "html"
 SHOTS = ROOT / "book" / "_build" / "screenshots"
@@ -98,18 +98,32 @@ def visit(browser, server, page_path) -> dict:
     return VISITS[page_path]
 
 
+_TABS: dict[int, dict] = {}
+
+
+def _tab(browser) -> dict:
+    """The one tab every page is visited in, with what it saw since it was last cleared: a tab keeps its renderer
+    and its caches from page to page, while a new tab for each page loaded the theme, MathJax and axe anew and
+    took twice the CPU."""
+    if id(browser) not in _TABS:
+        page = browser.new_context(viewport={"width": 1280, "height": 900}).new_page()
+        tab = _TABS[id(browser)] = {"page": page, "errors": [], "failed": [], "remote": watch_remote(page)}
+        page.on("console", lambda m: tab["errors"].append(f"console {m.type}: {m.text}") if m.type == "error" else None)
+        page.on("pageerror", lambda e: tab["errors"].append(f"page error: {e}"))
+        page.on("requestfailed", lambda r: tab["failed"].append(f"{r.url[:120]}: {r.failure}")
+                if urlparse(r.url).hostname in LOCAL_HOSTS else None)
+        page.on("response", lambda r: tab["failed"].append(f"{r.url[:120]}: HTTP {r.status}") if r.status >= 400
+                else None)
+    tab = _TABS[id(browser)]
+    for seen in ("errors", "failed", "remote"):
+        tab[seen].clear()
+    return tab
+
+
 def _visit(browser, server, page_path) -> dict:
     seen = {"error": None, "axe": None, "axe_error": None}
-    context = browser.new_context(viewport={"width": 1280, "height": 900})
-    page = context.new_page()
-    errors, failed = [], []
-    page.on("console", lambda m: errors.append(f"console {m.type}: {m.text}") if m.type == "error" else None)
-    page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
-    page.on("requestfailed", lambda r: failed.append(f"{r.url[:120]}: {r.failure}")
-            if urlparse(r.url).hostname in LOCAL_HOSTS else None)
-    page.on("response", lambda r: failed.append(f"{r.url[:120]}: HTTP {r.status}") if r.status >= 400 else None)
-
-    remote = block_remote(page)
+    tab = _tab(browser)
+    page, errors, failed, remote = tab["page"], tab["errors"], tab["failed"], tab["remote"]
     try:
         response = page.goto(f"{server}/{page_path}", wait_until="networkidle")
         assert response is not None and response.ok, f"{page_path}: HTTP {response and response.status}"
@@ -191,8 +205,6 @@ def _visit(browser, server, page_path) -> dict:
         assert not errors, f"{page_path}: {errors}"
     except (Exception, pytest.fail.Exception) as error:   # a failed check: test_page reports it
         seen["error"] = error
-    finally:
-        context.close()
     return seen
 
 
@@ -219,3 +231,25 @@ def test_errata_links_resolve(browser, server):
                 assert page.locator(f"[id='{anchor}']").count() == 1, f"{href}: no element with id {anchor}"
     finally:
         page.close()
+
+
+def test_a_request_to_another_host_is_reported_and_never_answered(browser, server):
+    """The browser's offline proxy (tools/chromium.py): a page's request to another host, by name or by address,
+    over HTTP or HTTPS, fails at once on this machine (at the proxy, not for want of a network), and the watch
+    reports it."""
+    page = browser.new_page()
+    failures = {}
+    try:
+        remote = watch_remote(page)
+        page.on("requestfailed", lambda r: failures.setdefault(r.url, r.failure))
+        page.goto(f"{server}/intro.html")
+        outcomes = page.evaluate("""async (urls) => Promise.all(urls.map(u => fetch(u, {mode: 'no-cors'})
+            .then(() => 'answered', () => 'refused')))""", OTHER_HOSTS)
+    finally:
+        page.close()
+    assert outcomes == ["refused"] * len(OTHER_HOSTS)
+    assert failures == dict.fromkeys(OTHER_HOSTS, "net::ERR_PROXY_CONNECTION_FAILED"), failures
+    assert sorted(remote) == sorted(OTHER_HOSTS)
+
+
+OTHER_HOSTS = ["http://203.0.113.7/a.png", "https://example.org/b.js", "http://cdn.jsdelivr.net/c.css"]

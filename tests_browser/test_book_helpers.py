@@ -137,6 +137,7 @@ def test_every_collected_erratum_links_to_an_existing_chapter():
 
 def test_kernel_startup_shows_widgets_statically(tmp_path, monkeypatch):
     """In a kernel started with the book's profile, a widget's HTML is its last plot plus a note."""
+    from ipc_kernels import IPCKernelManager
     from nbclient import NotebookClient
 
     startup = tmp_path / "ipython" / "profile_default" / "startup"
@@ -159,7 +160,9 @@ def test_kernel_startup_shows_widgets_statically(tmp_path, monkeypatch):
         nbformat.v4.new_code_cell("print(backend)"),
         nbformat.v4.new_code_cell("from mechlab.widgets import fourbar_explorer\n"
                                   "fourbar_explorer(question='when does the crank stop turning?')")]
-    NotebookClient(nb, timeout=120, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}).execute()
+    # over Unix sockets, its replies waited for in slices, like every notebook the project executes
+    NotebookClient(nb, timeout=120, kernel_name="python3", kernel_manager_class=IPCKernelManager,
+                   resources={"metadata": {"path": str(tmp_path)}}).execute()
     box = next(o for o in nb.cells[0].outputs if o.get("output_type") == "execute_result")["data"]
     assert "application/vnd.jupyter.widget-view+json" in box  # the live view is still there for JupyterLab
     html = box["text/html"]

@@ -27,7 +27,7 @@ import statistics
 from pathlib import Path
 
 import nbformat
-from conftest import block_remote
+from conftest import watch_remote
 from test_lab import _READY_JS, _STATE_JS, lab  # noqa: F401  (the same lab)
 
 SHOTS = Path(os.environ.get("MECHLAB_DRAG_SHOTS", "/tmp/drag27"))
@@ -128,7 +128,7 @@ def test_drag_editor_in_jupyterlab(browser, lab):  # noqa: F811  (the fixture im
     page = browser.new_page(viewport={"width": 1400, "height": 1100})
     page_errors = []
     page.on("pageerror", lambda e: page_errors.append(str(e)))
-    remote = block_remote(page)
+    remote = watch_remote(page)
     latency = {"mouse": [], "keys": []}
 
     def kernel(code: str) -> str:

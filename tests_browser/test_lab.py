@@ -31,7 +31,7 @@ import urllib.request
 from pathlib import Path
 
 import pytest
-from conftest import ROOT, block_remote, free_port
+from conftest import ROOT, free_port, watch_remote
 from lab_a11y import _READY_JS, SHOTS, audit_chapter
 
 sys.path.insert(0, str(ROOT))
@@ -210,14 +210,25 @@ def test_notebooks_found():
     assert NOTEBOOKS, "no notebooks"
 
 
-@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
-def test_notebook_in_jupyterlab(browser, lab, path):
-    base, token, _root = lab
-    page = browser.new_page(viewport={"width": 1400, "height": 1000})
-    page_errors = []
-    page.on("pageerror", lambda e: page_errors.append(str(e)))
+@pytest.fixture(scope="module")
+def tab(browser):
+    """The one tab every chapter is opened in, with what it saw since it was last cleared: a tab keeps its renderer
+    and its caches from chapter to chapter, while a new tab for each chapter loaded JupyterLab anew (11 against
+    6 CPU-s to open a notebook). Leaving a notebook that changed asks first (beforeunload): the tab says yes."""
+    page = browser.new_context(viewport={"width": 1400, "height": 1000}).new_page()
+    seen = {"page": page, "errors": [], "remote": watch_remote(page)}  # the lab must not reach for the internet
+    page.on("pageerror", lambda e: seen["errors"].append(str(e)))
+    page.on("dialog", lambda dialog: dialog.accept())
+    yield seen
+    page.context.close()
 
-    remote = block_remote(page)  # the lab must not reach for the internet either (news, extensions, CDNs)
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_notebook_in_jupyterlab(tab, lab, path):
+    base, token, _root = lab
+    page, page_errors, remote = tab["page"], tab["errors"], tab["remote"]
+    page_errors.clear()
+    remote.clear()
     try:
         # ?reset: a fresh workspace, so the notebooks of earlier tests are not reopened
         page.goto(f"{base}/lab/tree/{path.name}?reset&token={token}", wait_until="domcontentloaded")
@@ -278,7 +289,6 @@ def test_notebook_in_jupyterlab(browser, lab, path):
     finally:
         with contextlib.suppress(Exception):  # free the kernel's memory and CPU for the next notebook
             page.evaluate("() => window.jupyterapp.shell.currentWidget.sessionContext.shutdown()")
-        page.close()
     # the copy was used, never the tracked notebook
     assert json.loads(path.read_text())["cells"][0].get("outputs", []) == []
 

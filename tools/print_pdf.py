@@ -22,7 +22,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from chromium import CHROMIUM, CHROMIUM_ARGS, block_remote
+from chromium import CHROMIUM, CHROMIUM_ARGS, watch_remote
 from playwright.sync_api import sync_playwright
 
 FRAMES = 4  # frames of an animation in its printed strip
@@ -201,7 +201,7 @@ def _print(browser, html: Path, pdf: Path) -> int:
     """print_pdf's work, in a new page of `browser` (closed after)."""
     page = browser.new_page()
     try:
-        remote = block_remote(page)
+        remote = watch_remote(page)
         page.goto(html.resolve().as_uri(), wait_until="load", timeout=120_000)
         page.wait_for_function("() => window.MathJax && MathJax.startup && MathJax.startup.promise",
                                timeout=60_000)
