@@ -1222,9 +1222,21 @@ def _slot_in_parameter(path, p, inverse, lo: float, hi: float) -> ParametricSlot
         past = out[:, 0] != 0
         return w.p + out * wp, wp, np.where(past[:, None], 0.0, wpp)
 
+    # ParametricSlot asks for c, c_t and c_tt one after another at the same t: the path is solved once for the three
+    last: list = [None]
+
+    def part(k):
+        def at(t):
+            t = np.asarray(t, dtype=float)
+            key = (t.shape, t.tobytes())
+            done = last[0]
+            if done is None or done[0] != key:
+                done = last[0] = (key, evaluate(t))
+            return done[1][k].copy()   # a copy: a caller may change what it gets
+        return at
+
     margin = 0.05 * span
-    return ParametricSlot(lambda t: evaluate(t)[0], lambda t: evaluate(t)[1], lambda t: evaluate(t)[2],
-                          lo - margin, hi + margin)
+    return ParametricSlot(part(0), part(1), part(2), lo - margin, hi + margin)
 
 
 def crank_pin(mech: Mechanism) -> tuple[Structure, Pair, Pair]:
