@@ -101,6 +101,12 @@ def visit(browser, server, page_path) -> dict:
 _TABS: dict[int, dict] = {}
 
 
+def _browser_own(message) -> bool:
+    """A console message about the browser's own request for /favicon.ico, which Chromium makes for a page that
+    names no icon (index.html, Sphinx's redirect to intro.html): the book's server has none to give."""
+    return (message.location.get("url") or "").endswith("/favicon.ico")
+
+
 def _tab(browser) -> dict:
     """The one tab every page is visited in, with what it saw since it was last cleared: a tab keeps its renderer
     and its caches from page to page, while a new tab for each page loaded the theme, MathJax and axe anew and
@@ -108,7 +114,8 @@ def _tab(browser) -> dict:
     if id(browser) not in _TABS:
         page = browser.new_context(viewport={"width": 1280, "height": 900}).new_page()
         tab = _TABS[id(browser)] = {"page": page, "errors": [], "failed": [], "remote": watch_remote(page)}
-        page.on("console", lambda m: tab["errors"].append(f"console {m.type}: {m.text}") if m.type == "error" else None)
+        page.on("console", lambda m: tab["errors"].append(f"console {m.type}: {m.text} ({m.location.get('url')})")
+                if m.type == "error" and not _browser_own(m) else None)
         page.on("pageerror", lambda e: tab["errors"].append(f"page error: {e}"))
         page.on("requestfailed", lambda r: tab["failed"].append(f"{r.url[:120]}: {r.failure}")
                 if urlparse(r.url).hostname in LOCAL_HOSTS else None)
