@@ -105,6 +105,7 @@ def test_refusals_name_their_reason_with_numbers():
     assert "0.250" in refused["internal Geneva"]
     assert refused["curved slot"].startswith("rocks its output")
     assert refused["disc cam"].startswith("lifts or rocks its follower")
+    assert refused["disc cam"].endswith("; an index was asked")
     assert "180°" in refused["lambda six-bar, type 3 (half-turn index)"]
     assert "4 stations" in refused["lambda six-bar, type 3 (half-turn index)"]
     tight = D.candidates(D.Specification("swing", 50 / 360, amplitude=np.radians(40),

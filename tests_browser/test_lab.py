@@ -5,7 +5,8 @@ authentication on, no news or update checks) on a free port, from this venv or f
 MECHLAB_LAB_PYTHON names (CI: a student's lab-only venv on Debian's python3), serving a working copy made
 by course.sync as `make lab` makes my-notebooks/, but in a temporary folder with its own
 settings, workspaces and runtime folders, so that the tracked notebooks stay clean. For each
-notebook the test runs all cells, asserts there is no error output, presses the arrow key
+notebook the test runs all cells, asserts there is no error output (chapter 12: its design explorer shows
+the specification line the text's specification cell printed), presses the arrow key
 on the first explorer's crank-angle slider a dozen times, timing each press to the redrawn
 plot (an image re-shown by the inline backend, or an ipympl canvas receiving a blitted
 frame), asserts that the plot changed, then audits the page for accessibility and operates every
@@ -199,6 +200,22 @@ CLIPPED_JS = """root => {
   }).map(e => e.textContent.trim());
 }"""
 
+# Chapter 12: the specification line its specification cell prints (the text's), and the line the design explorer
+# shows above its table (the explorer's): the explorer must open on the text's 2/3 of the turn, not its slider's 0.67
+_SPEC_JS = """() => {
+  const w = window.jupyterapp.shell.currentWidget;
+  const cells = w.content.model.cells;
+  let stated = null;
+  for (let i = 0; i < cells.length && stated === null; i++) {
+    const c = cells.get(i);
+    if (c.type === 'code' && c.sharedModel.getSource().includes('design.Specification(') && c.outputs.length)
+      stated = [].concat(c.outputs.get(0).toJSON().text || '').join('').trim();
+  }
+  const out = Array.from(w.node.querySelectorAll('.jp-OutputArea-output')).find(o => o.querySelector('.noUi-handle'));
+  const line = out && out.querySelector('.widget-html-content p');
+  return [stated, line ? line.textContent.trim() : null];
+}"""
+
 PRESSES = 12
 # the speed goal (100 ms median) is measured here and recorded in benchmarks/README.md; a timed test on a
 # shared 2-core machine asserts only that the explorer answers, well within a second
@@ -238,6 +255,10 @@ def test_notebook_in_jupyterlab(tab, lab, path):
         state = page.wait_for_function(_STATE_JS, timeout=240_000, polling=500).json_value()
         assert not state["errors"], f"{path.name}: error output: {state['errors']}"
         assert state["pending"] == 0
+        if path.stem.startswith("12_"):
+            stated, shown = page.evaluate(_SPEC_JS)
+            assert stated and "dwell 0.667 of the turn" in stated, f"{path.name}: the specification printed {stated!r}"
+            assert shown == stated, f"{path.name}: the explorer opened on {shown!r}, the text states {stated!r}"
 
         kind = page.wait_for_function(_MARK_WIDGET_JS, timeout=30_000).json_value()
         widget = page.locator("[data-mechtest='explorer']")

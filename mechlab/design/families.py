@@ -83,7 +83,8 @@ class Design:
 
 def _needs(spec: Specification, *motions: str, what: str) -> None:
     if spec.motion not in motions:
-        raise Unsuitable(f"{what}; a {spec.motion} was asked")
+        article = "an" if spec.motion == "index" else "a"
+        raise Unsuitable(f"{what}; {article} {spec.motion} was asked")
 
 
 def _dwell_matches(spec: Specification, dwell: float, how: str) -> None:
