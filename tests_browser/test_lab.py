@@ -179,7 +179,8 @@ _PLOT_JS = """() => {
 # The slider labels and readouts under `root` (a CSS selector) whose text does not fit its content box
 # (the box less its padding and border): the text is measured twice, as laid out (a Range's bounding box:
 # it covers glyphs past the box, even under an ellipsis) and as drawn in the element's font (canvas
-# measureText). scrollWidth misses a cut inside the padding (it equals clientWidth there).
+# measureText). scrollWidth misses a cut inside the padding (it equals clientWidth there). Chromium draws the
+# ellipsis for any overflow of the layout (in 1/64 px): a label 0.16 px too long read "pressure angle ≤ (de…".
 CLIPPED_JS = """root => {
   const ctx = document.createElement('canvas').getContext('2d');
   const els = document.querySelector(root).querySelectorAll(
@@ -196,7 +197,7 @@ CLIPPED_JS = """root => {
     const laid = range.getBoundingClientRect();
     ctx.font = s.font;
     const drawn = ctx.measureText(text).width;
-    return laid.left < left - 1 || laid.right > right + 1 || drawn > right - left + 1;
+    return laid.left < left - 0.05 || laid.right > right + 0.05 || drawn > right - left + 1;
   }).map(e => e.textContent.trim());
 }"""
 
@@ -335,12 +336,14 @@ CLIPPING_PAGE = """<style>
   <div class="widget-slider"><label class="widget-label">pressure angle ≤ (deg) at the dwell's end</label></div>
   <div class="widget-slider"><label class="widget-label" id="inner"><span>pressure angle ≤ (deg) at the end</span></label></div>
   <div class="widget-slider"><label class="widget-label" id="inpad">pressure angle ≤ (deg)</label></div>
+  <div class="widget-slider"><label class="widget-label" id="hair">dwell (of the turn)</label></div>
   <div class="widget-slider"><label class="widget-label" id="fits">crank angle φ (deg)</label></div>
 </div>"""  # noqa: E501  one element a line, as the widgets draw it: no white space inside a label
-# sizes two labels around their text: "inpad" 4 px short of it (the text runs into the 8 px padding and
-# the ellipsis cuts it), "fits" 4 px more than it needs; returns scrollWidth and clientWidth of each label
+# sizes three labels around their text: "inpad" 4 px short of it (the text runs into the 8 px padding and
+# the ellipsis cuts it), "hair" 0.3 px short (the ellipsis still cuts it), "fits" 4 px more than it needs;
+# returns scrollWidth and clientWidth of each label
 _SIZE_AROUND_TEXT_JS = """() => {
-  for (const [id, spare] of [['inpad', -4], ['fits', 4]]) {
+  for (const [id, spare] of [['inpad', -4], ['hair', -0.3], ['fits', 4]]) {
     const e = document.getElementById(id);
     const range = document.createRange();
     e.style.width = 'auto';
@@ -355,7 +358,8 @@ _SIZE_AROUND_TEXT_JS = """() => {
 def test_clipping_check_sees_labels_cut_inside_their_box(browser):
     """Planted labels: one far too long, one cut by an element inside it (scrollWidth equals clientWidth:
     the check before, scrollWidth > clientWidth, missed it), one whose text runs 4 px into its padding and is
-    cut by the ellipsis; all three are reported, and a label with 4 px to spare is not."""
+    cut by the ellipsis, one only 0.3 px too long (the ellipsis cuts that too); all four are reported, and a
+    label with 4 px to spare is not."""
     page = browser.new_page()
     try:
         page.set_content(CLIPPING_PAGE)
@@ -365,7 +369,8 @@ def test_clipping_check_sees_labels_cut_inside_their_box(browser):
         page.close()
     inner = "pressure angle ≤ (deg) at the end"
     assert widths[inner][0] == widths[inner][1], f"the planted cut must be invisible to scrollWidth: {widths}"
-    assert clipped == ["pressure angle ≤ (deg) at the dwell's end", inner, "pressure angle ≤ (deg)"], widths
+    assert clipped == ["pressure angle ≤ (deg) at the dwell's end", inner, "pressure angle ≤ (deg)",
+                       "dwell (of the turn)"], widths
 
 
 def test_slider_latency():

@@ -22,8 +22,9 @@ from ..errors import MechanismError
 from . import _uses_ipympl, bare_canvas
 from .access import AltImage, announce_controls, status_line
 
-_STYLE = {"description_width": "150px"}
-_LAYOUT = W.Layout(width="420px")
+# the library's label width (widgets.SLIDER_STYLE): in 150 px, "pressure angle ≤ (deg)" (150.2 px) was cut
+_STYLE = {"description_width": "165px"}
+_LAYOUT = W.Layout(width="435px")
 
 
 class ChoosingExplorer:
@@ -127,7 +128,8 @@ class ChoosingExplorer:
         key, heading, unit, fmt = next(col for col in COLUMNS if col[0] == self.rank.value)
         first = comp.candidates[0]
         value = fmt.format(getattr(first.criteria, key))
-        return f"{head}; first by {heading}: {first.family} ({value}{' ' + unit if unit else ''})."
+        # a no-break space keeps the value and its unit on one line of the status
+        return f"{head}; first by {heading}: {first.family} ({value}{chr(0xA0) + unit if unit else ''})."
 
     def _redraw(self) -> None:
         if self.live:
