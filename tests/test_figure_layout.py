@@ -77,6 +77,23 @@ def test_press_explorer_torque_legend_clears_the_torque():
     assert not _boxes_overlap(box, ex.ax_torque.get_window_extent())
 
 
+@pytest.mark.parametrize("which", ["press_explorer", "rocker_explorer"])
+def test_force_readout_stays_clear_of_the_plots_beside_it(which):
+    """Chapter 11: the readout of the reactions, on the mechanism's side, ran into the torque plot's axis label
+    (four reactions on one line)."""
+    from mechlab.widgets import forces
+    ex = getattr(forces, which)(live=False)
+    for frame in (0, len(ex.result.phi) // 3):
+        ex.drawing.set_frame(frame)
+        ex.fig.canvas.draw()
+        renderer = ex.fig.canvas.get_renderer()
+        text = ex.drawing.text.get_window_extent(renderer)
+        assert ex.fig.bbox.x0 <= text.x0 and text.x1 <= ex.fig.bbox.x1
+        for ax in (ex.ax_torque, ex.ax_eta):
+            assert not _boxes_overlap(text, ax.get_tightbbox(renderer)), f"{which}: the readout runs into a plot"
+    plt.close("all")
+
+
 def test_cam_law_legend_is_above_the_three_panels():
     fig = plot_cam_laws()
     (legend,) = _legends_clear(fig)
@@ -159,10 +176,15 @@ def test_radar_labels_stand_outside_its_circle_in_the_glossary_notation(choosing
 
 def test_force_plan_readout_carries_units():
     from mechlab.kinetostatics.machines import press
-    anim = animate(press(), n=4)
+    anim = animate(press(), n=12)
     text = anim.drawing.text.get_text()
     assert "N·m" in text.split("\n")[0]
-    assert all(part.strip().endswith(" N") for part in text.split("\n")[1].split("  ") if part.strip())
+    parts = [part.strip() for line in text.split("\n")[1:] for part in line.split("  ") if part.strip()]
+    assert len(parts) == len(anim.drawing.names) and all(part.endswith(" N") for part in parts)
+    working = int(np.argmax(anim.drawing.result.reactions["O"].magnitude))   # the working stroke
+    anim._func(working)
+    text = anim.drawing.text.get_text()
+    assert anim.drawing.result.reactions["O"].magnitude[working] >= 1000 and "e+" not in text, text
     plt.close("all")
 
 

@@ -19,6 +19,11 @@ from .access import CATEGORY_COLOURS
 ARROW_COLOURS = CATEGORY_COLOURS[:-1]   # colour-blind safe (mechlab.draw.access); yellow is too light
 
 
+def _readable(value: float) -> str:
+    """Three significant figures, whole numbers from 1000 up ("2008", not "2.01e+03")."""
+    return f"{value:.0f}" if abs(value) >= 1000 else f"{value:.3g}"
+
+
 class ForcePlanDrawing:
     """The mechanism (its own drawing) plus reaction arrows and the balancing torque.
 
@@ -82,9 +87,11 @@ class ForcePlanDrawing:
         uv = np.array([r.force[i] for r in R]) * self.scale
         self.quiver.set_UVC(uv[:, 0], uv[:, 1])
         u = self.force_unit
-        self.text.set_text(f"φ = {np.degrees(self.result.phi[i]):.0f}°   M_b = {self.result.torque[i]:.3g} {u}·m\n"
-                           + "  ".join(f"|R {k}| = {r.magnitude[i]:.3g} {u}"
-                                       for k, r in zip(self.names, R, strict=False)))
+        parts = [f"|R {k}| = {_readable(r.magnitude[i])} {u}" for k, r in zip(self.names, R, strict=False)]
+        # two reactions a line: four on one line ran past the mechanism into the plots beside it
+        lines = ["  ".join(parts[j:j + 2]) for j in range(0, len(parts), 2)]
+        head = f"φ = {np.degrees(self.result.phi[i]):.0f}°   M_b = {_readable(self.result.torque[i])} {u}·m"
+        self.text.set_text("\n".join([head, *lines]))
         return self.artists
 
     @property
