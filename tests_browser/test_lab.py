@@ -201,7 +201,7 @@ CLIPPED_JS = """root => {
   }).map(e => e.textContent.trim());
 }"""
 
-# Chapter 12: the specification line its specification cell prints (the text's), and the line the design explorer
+# Chapter 12: the specification line its specification cell prints (the text's), and the line the marked explorer
 # shows above its table (the explorer's): the explorer must open on the text's 2/3 of the turn, not its slider's 0.67
 _SPEC_JS = """() => {
   const w = window.jupyterapp.shell.currentWidget;
@@ -212,8 +212,7 @@ _SPEC_JS = """() => {
     if (c.type === 'code' && c.sharedModel.getSource().includes('design.Specification(') && c.outputs.length)
       stated = [].concat(c.outputs.get(0).toJSON().text || '').join('').trim();
   }
-  const out = Array.from(w.node.querySelectorAll('.jp-OutputArea-output')).find(o => o.querySelector('.noUi-handle'));
-  const line = out && out.querySelector('.widget-html-content p');
+  const line = document.querySelector("[data-mechtest='explorer'] .widget-html-content p");
   return [stated, line ? line.textContent.trim() : null];
 }"""
 
@@ -256,12 +255,12 @@ def test_notebook_in_jupyterlab(tab, lab, path):
         state = page.wait_for_function(_STATE_JS, timeout=240_000, polling=500).json_value()
         assert not state["errors"], f"{path.name}: error output: {state['errors']}"
         assert state["pending"] == 0
+
+        kind = page.wait_for_function(_MARK_WIDGET_JS, timeout=30_000).json_value()
         if path.stem.startswith("12_"):
             stated, shown = page.evaluate(_SPEC_JS)
             assert stated and "dwell 0.667 of the turn" in stated, f"{path.name}: the specification printed {stated!r}"
             assert shown == stated, f"{path.name}: the explorer opened on {shown!r}, the text states {stated!r}"
-
-        kind = page.wait_for_function(_MARK_WIDGET_JS, timeout=30_000).json_value()
         widget = page.locator("[data-mechtest='explorer']")
         widget.scroll_into_view_if_needed()
         page.wait_for_timeout(1000)   # the first full drawing of a live canvas arrives

@@ -19,11 +19,11 @@ from ..design.candidates import COLUMNS
 from ..draw.access import alt_text
 from ..draw.design import FIGSIZE, ComparisonFigure
 from ..errors import MechanismError
-from . import _uses_ipympl, bare_canvas
+from . import SLIDER_STYLE, _uses_ipympl, bare_canvas
 from .access import AltImage, announce_controls, status_line
 
-# the library's label width (widgets.SLIDER_STYLE): in 150 px, "pressure angle ≤ (deg)" (150.2 px) was cut
-_STYLE = {"description_width": "165px"}
+# the library's label width: in 150 px, "pressure angle ≤ (deg)" (150.2 px) was cut
+_STYLE = SLIDER_STYLE["style"]
 _LAYOUT = W.Layout(width="435px")
 
 
